@@ -1,0 +1,82 @@
+// err_double.hpp — a double together with a proven bound on its absolute error.
+//
+// This is the floating-point filter behind every filtered predicate of flipflop
+// (a "running error bound", the dynamic variant of Shewchuk's forward error
+// analysis, [She97] §4). Each value carries `v`, the computed double, and `e`,
+// an upper bound on |V - v| where V is the exact real value of the expression.
+//
+// Rules (IEEE binary64, round to nearest, u = 2^-53, eta = 2^-1074):
+//   * an input double is exact:                         e = 0
+//   * a ± b:  v = fl(a.v ± b.v)
+//             |V - v| <= a.e + b.e + u|v|                (rounding of the sum)
+//   * a * b:  v = fl(a.v * b.v)
+//             |AB - a.v b.v| <= |a.v| b.e + |b.v| a.e + a.e b.e
+//             plus the rounding u|v| of the product.
+//   * underflow: a result in the subnormal range may be off by up to eta/2 in
+//     absolute terms, where the relative bound u|v| does not hold; every
+//     operation therefore adds 4*eta (also covering underflow inside the bound
+//     products themselves).
+//   * the bound is itself computed in floating point from non-negative terms;
+//     each of its operations can round down by a factor (1-u). A sign decision
+//     multiplies the final bound by (1 + 2^-40), which covers more than 2^12
+//     such roundings, far beyond the longest expression used (a 7x7 Laplace
+//     expansion).
+//   * overflow: an infinite or NaN value makes `sign_if_certain` answer 0
+//     ("uncertain"), because |v| > e fails for NaN and for e = inf.
+//
+// The sign is certain when |v| > e * (1 + 2^-40): then V lies in [v - e, v + e],
+// which does not contain 0. Otherwise the caller falls back to exact arithmetic.
+//
+// Header-only and __host__ __device__, so that the CUDA kernels and their OpenMP
+// build share it (DESIGN.md, "The GPU").
+#pragma once
+
+#include <cmath>
+
+#if defined(__CUDACC__)
+#define FF_HD __host__ __device__
+#else
+#define FF_HD
+#endif
+
+namespace flipflop::pred {
+
+struct ErrDouble {
+  double v = 0.0;  // computed value
+  double e = 0.0;  // bound on the absolute error of v
+
+  static constexpr double kU = 0x1p-53;      // unit roundoff
+  static constexpr double kEta4 = 0x1p-1072; // 4 * smallest subnormal
+
+  FF_HD ErrDouble() = default;
+  FF_HD explicit ErrDouble(double x) : v(x), e(0.0) {}
+  FF_HD ErrDouble(double x, double err) : v(x), e(err) {}
+};
+
+FF_HD inline ErrDouble operator+(ErrDouble a, ErrDouble b) {
+  double v = a.v + b.v;
+  return {v, a.e + b.e + std::fabs(v) * ErrDouble::kU + ErrDouble::kEta4};
+}
+
+FF_HD inline ErrDouble operator-(ErrDouble a, ErrDouble b) {
+  double v = a.v - b.v;
+  return {v, a.e + b.e + std::fabs(v) * ErrDouble::kU + ErrDouble::kEta4};
+}
+
+FF_HD inline ErrDouble operator-(ErrDouble a) { return {-a.v, a.e}; }
+
+FF_HD inline ErrDouble operator*(ErrDouble a, ErrDouble b) {
+  double v = a.v * b.v;
+  double e = std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e;
+  return {v, e + std::fabs(v) * ErrDouble::kU + ErrDouble::kEta4};
+}
+
+// +1 / -1 when the sign of the exact value is certain, 0 when it is not.
+FF_HD inline int sign_if_certain(ErrDouble a) {
+  double bound = a.e * (1.0 + 0x1p-40);
+  if (a.v > bound) return 1;
+  if (-a.v > bound) return -1;
+  return 0;  // also for NaN and infinities
+}
+
+}  // namespace flipflop::pred

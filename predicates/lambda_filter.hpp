@@ -1,0 +1,121 @@
+// lambda_filter.hpp — floating-point filters for the sign of Λ-determinants.
+//
+// Every predicate of flipflop is the sign of a "Λ-matrix" determinant
+// (Edelsbrunner–Mücke [EM90] §4): k = m+1 rows, one per point, holding the
+// point's m coordinates followed by a constant 1,
+//
+//        | a_1,1  ...  a_1,m   1 |
+//   Λ =  |  ...         ...   ... |        sign(det Λ) = orientation of the
+//        | a_k,1  ...  a_k,m   1 |        k points in R^m.
+//
+// For the lifting map (regular triangulations, thesis §2.2) the last
+// coordinate is the height h = |x|^2 - w of a weighted point.
+//
+// Evaluation. Subtracting the last row from the others and expanding along the
+// 1-column gives det Λ = det T with T_ij = a_ij - a_kj (i, j < k), an
+// (m x m) determinant of differences. For a lifted height the column of
+// differences h_i - h_k = |a_i - a_k|^2 - (w_i - w_k) + 2 a_k·(a_i - a_k); the
+// last term is the same linear combination of the other columns in every row,
+// so it is dropped without changing the determinant: lifted column entries are
+// |a_i - a_k|^2 - (w_i - w_k), which is also the numerically better form
+// (Shewchuk's incircle, [She97] §4.4).
+//
+// The determinant of T is expanded by minors (Laplace, row by row over column
+// subsets), every operation in ErrDouble, so the filter's error bound is proven
+// by construction (err_double.hpp). The result is +1/-1 when certain and 0 when
+// the exact stage must decide.
+//
+// Header-only and __host__ __device__ (used by the CUDA kernels and their OpenMP
+// build).
+#pragma once
+
+#include "err_double.hpp"
+
+namespace flipflop::pred {
+
+FF_HD constexpr int popcount_small(unsigned s) {
+  int c = 0;
+  for (; s != 0; s &= s - 1) ++c;
+  return c;
+}
+
+// Determinant of an N x N matrix of ErrDouble (row-major) by expansion over
+// column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7.
+template <int N>
+FF_HD inline ErrDouble det_by_minors(const ErrDouble* t) {
+  static_assert(N >= 1 && N <= 7, "det_by_minors supports N in 1..7");
+  if constexpr (N == 1) {
+    return t[0];
+  } else if constexpr (N == 2) {
+    return t[0] * t[3] - t[1] * t[2];
+  } else {
+    constexpr int kSubsets = 1 << N;
+    ErrDouble d[kSubsets];
+    for (int j = 0; j < N; ++j) d[1 << j] = t[j];  // row 0, single columns
+    // Process subsets in increasing popcount order: subsets of size r use
+    // row r-1 and the minors of size r-1.
+    for (int r = 2; r <= N; ++r) {
+      for (int s = 1; s < kSubsets; ++s) {
+        if (popcount_small(static_cast<unsigned>(s)) != r) continue;
+        ErrDouble acc;
+        bool first = true;
+        int pos = 0;  // position of column j inside subset s
+        for (int j = 0; j < N; ++j) {
+          if (!(s & (1 << j))) continue;
+          // Laplace along row r-1: sign (-1)^((r-1) + pos)
+          ErrDouble term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
+          bool negative = ((r - 1 + pos) & 1) != 0;
+          if (first) {
+            acc = negative ? -term : term;
+            first = false;
+          } else {
+            acc = negative ? acc - term : acc + term;
+          }
+          ++pos;
+        }
+        d[s] = acc;
+      }
+    }
+    return d[kSubsets - 1];
+  }
+}
+
+// Filtered sign of det Λ for K points in R^(K-1) given by coordinate pointers.
+// If `w` is non-null the last coordinate is the lifted height |x|^2 - w of the
+// first K-2 coordinates (the points then have K-2 real coordinates each).
+template <int K>
+FF_HD inline int lambda_sign_filter(const double* const* p, const double* w) {
+  constexpr int N = K - 1;  // size of the translated determinant
+  ErrDouble t[N * N];
+  const double* base = p[K - 1];
+  if (w == nullptr) {
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) t[i * N + j] = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+  } else {
+    constexpr int M = N - 1;  // real coordinates per point
+    for (int i = 0; i < N; ++i) {
+      ErrDouble lift = ErrDouble(0.0);
+      for (int j = 0; j < M; ++j) {
+        ErrDouble diff = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+        t[i * N + j] = diff;
+        lift = (j == 0) ? diff * diff : lift + diff * diff;
+      }
+      t[i * N + M] = lift - (ErrDouble(w[i]) - ErrDouble(w[K - 1]));
+    }
+  }
+  return sign_if_certain(det_by_minors<N>(t));
+}
+
+// Filtered sign of det Λ for K rows of K-1 coordinates that are themselves
+// uncertain (ErrDouble values with error bounds), e.g. a rounded rational
+// kernel point: rows[i * (K-1) + j] is coordinate j of row i.
+template <int K>
+FF_HD inline int lambda_sign_filter_err(const ErrDouble* rows) {
+  constexpr int N = K - 1;
+  ErrDouble t[N * N];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) t[i * N + j] = rows[i * N + j] - rows[(K - 1) * N + j];
+  return sign_if_certain(det_by_minors<N>(t));
+}
+
+}  // namespace flipflop::pred

@@ -1,0 +1,145 @@
+// predicates.hpp — the exact geometric predicates of flipflop, with Simulation
+// of Simplicity. Every geometric decision of every backend goes through here.
+//
+// ============================================================================
+// The perturbation (Simulation of Simplicity, Edelsbrunner–Mücke 1990 [EM90])
+// ============================================================================
+//
+// Inputs are IEEE binary64 values taken as exact rationals. A computation uses
+// one perturbation for all its predicates: point i (i = 0-based input index + 1)
+// has δ coordinates c(i,1..δ) — δ counts every coordinate the computation uses,
+// a lifted height included — and is replaced by the symbolic point
+//
+//        c(i,j) + ε^(2^(i·δ - j)),     ε > 0 infinitesimal.          [EM90 §4]
+//
+// Every predicate is the sign of det Λ (lambda_filter.hpp) of perturbed points:
+// rows = points, columns = coordinates 1..m then a constant 1. Expanding the
+// multilinear determinant, the perturbed value is a sum over *matchings* T
+// (sets of entries (row, column), at most one per row and per column, never
+// in the 1-column):
+//
+//     det Λ(ε) = Σ_T  cof_T · Π_{(r,c) ∈ T} ε^(2^(i_r·δ - c)),
+//
+// where cof_T is the signed complementary minor: det Λ with the rows and
+// columns of T deleted, times (-1)^(position of row + position of column) for
+// each deletion (a mixed partial derivative of det, so the order of deletions
+// does not matter). The empty matching gives det Λ itself.
+//
+// Which term dominates? The exponents 2^(iδ-j) are distinct powers of two, so
+// the ε-exponent of a matching is a sum of distinct powers of two, and two such
+// sums compare like binary numbers: the larger sum (the smaller term) is the
+// one holding the largest exponent in which the two matchings differ. Because
+// all exponents of point i lie in [(i-1)δ, iδ-1], every exponent of a point
+// exceeds the sum of all exponents of points with smaller indices. Hence:
+//
+//   Dominance order. Compare two matchings on the row of the *largest* index
+//   first, then the next largest, and so on; on a row, "not perturbed" beats
+//   any perturbed entry, and among entries the larger coordinate number j
+//   beats the smaller (its exponent iδ - j is smaller).
+//
+// The sign of det Λ(ε) is the sign of the first non-zero cof_T in this order.
+// It always exists: the matching that deletes rows 1..m (all but the largest
+// index) against all m coordinate columns leaves the 1x1 minor "1". So for
+// points with distinct indices a predicate never returns 0; with a repeated
+// index two rows are equal and the answer is 0 (the same point twice).
+//
+// The dominance order depends only on (a) the order of indices and (b) the
+// order of the coordinate columns within a row — not on δ itself. Therefore
+// orient2d of (x, y) projections, orient3d of (x, y, h) lifted points and
+// orient3d of (x, y, z) hull points are all signs of the *same* perturbed
+// configuration whenever they share their columns in this order, and all answers
+// of a computation are consistent with one real configuration in general
+// position (DESIGN.md, "The perturbation, precisely"). The lifted height
+// h = |x|^2 - w is perturbed as an independent coordinate (column m), which is
+// perturbing the weight (thesis §9.2.2, last paragraph): it is *not* recomputed
+// from perturbed x.
+//
+// Points that are not inputs. A point that is not an input (a kernel point, an
+// auxiliary point of an algorithm) takes an index after all n inputs: the first
+// such point created by a computation is n, the next n+1, ... (documented by the
+// algorithm that creates it); a larger index means a smaller perturbation, so
+// inputs never depend on the perturbation of auxiliary points. The virtual
+// vertex of an extended triangulation (thesis §2.2) has no coordinates and never
+// enters a determinant: predicates involving it are decided combinatorially by
+// the rules of §2.2 from predicates on real points.
+//
+// ============================================================================
+// Two stages, two implementations
+// ============================================================================
+//
+// Mode::filtered (default): ErrDouble filter with a proven error bound
+// (err_double.hpp); when the filter cannot certify a sign, the exact GMP stage
+// decides. Mode::gmp: GMP only (the reference). Both return the same sign on
+// every input — checked by properties in proptests/.
+//
+// Conventions (determinant with the 1-column last, i.e. Shewchuk's signs):
+//   orient2d(a,b,c) > 0  iff a, b, c are counter-clockwise.
+//   orient3d(a,b,c,d) > 0 iff d lies below the plane of a, b, c when a, b, c
+//                         appear counter-clockwise seen from above, i.e. on the
+//                         side from which (a, b, c) appears clockwise.
+//                         For a hull facet (a,b,c) counter-clockwise seen from
+//                         outside, interior points p give orient3d(a,b,c,p) > 0.
+//   power2d(a,b,c,d) = orient3d of the lifted points (x, y, x²+y²-w): for a, b,
+//                         c counter-clockwise, > 0 iff d is strictly closer than
+//                         orthogonal to the orthocircle of a, b, c (the edge
+//                         opposite d is locally non-regular); with zero weights,
+//                         > 0 iff d is inside the circumcircle (Shewchuk's
+//                         incircle).
+//   power3d(a,b,c,d,e) = 4D analogue: orient4d of lifted points.
+//   orient_d(d, p[0..d]) = sign det Λ of d+1 points in R^d (d <= 6).
+//   power_d(d, p[0..d+1], w) = orient_{d+1} of the lifted points (d <= 5).
+#pragma once
+
+#include <cstdint>
+
+namespace flipflop::pred {
+
+using PointId = std::uint64_t;
+
+enum class Mode { filtered, gmp };
+
+// A point as a predicate sees it: its index in the perturbation order and a
+// pointer to its coordinates (2, 3 or d doubles).
+struct Pt {
+  PointId id;
+  const double* x;
+};
+
+// A weighted point: index, coordinates and weight.
+struct WPt {
+  PointId id;
+  const double* x;
+  double w;
+};
+
+// ---- Exact signs of the unperturbed determinants (may be 0) -----------------
+int orient2d_exact(const double* a, const double* b, const double* c, Mode m = Mode::filtered);
+int orient3d_exact(const double* a, const double* b, const double* c, const double* d,
+                   Mode m = Mode::filtered);
+int power2d_exact(WPt a, WPt b, WPt c, WPt d, Mode m = Mode::filtered);
+int power3d_exact(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m = Mode::filtered);
+// d+1 points in R^d, 1 <= d <= 6
+int orient_d_exact(int d, const double* const* p, Mode m = Mode::filtered);
+// d+2 weighted points in R^d, 1 <= d <= 5 (lifted to R^(d+1))
+int power_d_exact(int d, const double* const* p, const double* w, Mode m = Mode::filtered);
+
+// ---- Signs under Simulation of Simplicity (never 0 for distinct ids) --------
+int orient2d(Pt a, Pt b, Pt c, Mode m = Mode::filtered);
+int orient3d(Pt a, Pt b, Pt c, Pt d, Mode m = Mode::filtered);
+int power2d(WPt a, WPt b, WPt c, WPt d, Mode m = Mode::filtered);
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m = Mode::filtered);
+int orient_d(int d, const Pt* p, Mode m = Mode::filtered);
+int power_d(int d, const WPt* p, Mode m = Mode::filtered);
+
+// ---- Small exact helpers used by certifiers --------------------------------
+// Sign of (b - a) · (c - b) in 2D, exactly.
+int dot2d_exact(const double* a, const double* b, const double* c);
+
+// The general entry point: sign of det Λ for k = dim+1 points (k <= 8).
+// `coords[i]` points to the coordinates of point i; if `weights` is non-null
+// the last column is the lifted height of the first dim-1 coordinates
+// (|x|^2 - w). `ids` may be null (no perturbation: exact sign, may be 0).
+int lambda_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
+                Mode m);
+
+}  // namespace flipflop::pred

@@ -1,0 +1,72 @@
+// certify.hpp — exact certification of convex hulls and regular triangulations.
+//
+// The certifier decides, with exact predicates, whether an index output is the
+// right answer for a point set. It accepts outputs of any program (flipflop's
+// backends, Qhull, CGAL) and names the first violated condition.
+//
+// Two levels:
+//   Level::exact      — is the output *a* correct hull / regular triangulation
+//                       of the exact input? Degeneracies are tolerated as a
+//                       demanding user would: points on a hull edge or facet
+//                       may or may not be vertices; cocircular edges may go
+//                       either way; duplicate points may be represented once.
+//   Level::canonical  — is it *the* answer under flipflop's Simulation of
+//                       Simplicity (predicates.hpp), in canonical form
+//                       (DESIGN.md)? This is what every backend must produce.
+//
+// The local-to-global theorems that make the checks sufficient:
+//   hull2 — a closed polygon whose every turn is convex and which winds once is
+//           convex; with every point on the inner side of its edges it is the
+//           hull boundary.
+//   hull3 — thesis Lemma 6.1 / Thm 6.2: a polyhedron star-shaped w.r.t. an
+//           interior point s whose edges are all convex is convex. Star-
+//           shapedness is certified by: every facet faces away from s, and the
+//           central projection from s winds exactly once around every vertex
+//           (then the projection onto the sphere is an unbranched covering of
+//           degree 1). s is the exact centroid of four affinely independent
+//           hull vertices (thesis §6.4.2: never a rounded point).
+//   rt2   — thesis Thm 2.2 [ES92]: a triangulation of conv(S) whose edges are
+//           all locally regular is the regular triangulation of its vertices;
+//           with every missing point redundant (its lifted point on or above
+//           the lifted triangle containing it) it is RT(S ⊕ W).
+//
+// Structural checks (orientation, winding, point location) use the Simulation
+// of Simplicity at both levels, so that flat triangles that the perturbation
+// legitimately creates on degenerate input are handled consistently; the
+// geometric conditions (convexity, containment, regularity, redundancy) are
+// exact and non-strict at Level::exact and perturbed and strict at
+// Level::canonical.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "reference/point_set.hpp"
+
+namespace flipflop::certify {
+
+enum class Level { exact, canonical };
+
+struct Report {
+  bool ok = true;
+  std::string condition;  // short name of the first violated condition
+  std::string detail;     // what exactly is wrong, with indices
+
+  static Report pass() { return {}; }
+  static Report fail(std::string condition, std::string detail) {
+    return {false, std::move(condition), std::move(detail)};
+  }
+  std::string message() const { return ok ? "certified" : condition + ": " + detail; }
+};
+
+// 2D hull: vertex indices in counter-clockwise order.
+Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level = Level::exact);
+
+// 3D hull: triangles counter-clockwise seen from outside.
+Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);
+
+// 2D regular triangulation (weights from ps; a Delaunay triangulation when
+// ps is unweighted): counter-clockwise triangles.
+Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);
+
+}  // namespace flipflop::certify

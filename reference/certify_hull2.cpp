@@ -1,0 +1,142 @@
+// certify_hull2.cpp — exact certification of a 2D convex hull (a vertex cycle).
+//
+// Conditions, checked in this order (the first violated one is reported):
+//   input-dimension   the points span the plane
+//   vertex-indices    indices in range, none repeated, at least 3
+//   canonical-form    (canonical) the cycle starts at its smallest index
+//   convex-turn       every turn is convex: exact level — left or straight
+//                     ahead (never folding back), after merging consecutive
+//                     vertices at one location; canonical — strictly left
+//                     under the perturbation
+//   winds-once        the edge directions turn through exactly 2π
+//   point-inside      every point is on the inner side of (or on) the edge of
+//                     the fan sector that contains it; canonical: strictly
+//                     inside for every point that is not a vertex
+// A polygon with convex turns that winds once is convex; with all points on
+// the inner side of its edges its vertices span conv(S), so every extreme
+// point is a vertex and every vertex lies on the boundary.
+#include <algorithm>
+
+#include "predicates/predicates.hpp"
+#include "reference/certify.hpp"
+#include "reference/certify_detail.hpp"
+#include "reference/dimension.hpp"
+
+namespace flipflop::certify {
+
+namespace {
+
+using detail::edge_str;
+
+struct Hull2Checker {
+  const PointSet& ps;
+  bool canonical;
+
+  const double* P(Index i) const { return ps.point(i); }
+  bool same_location(Index a, Index b) const { return P(a)[0] == P(b)[0] && P(a)[1] == P(b)[1]; }
+  // orientation used for the geometric conditions
+  int orient(Index a, Index b, Index c) const {
+    return canonical ? pred::orient2d({a, P(a)}, {b, P(b)}, {c, P(c)})
+                     : pred::orient2d_exact(P(a), P(b), P(c));
+  }
+  // Is b "above" a in the sense of the half-turn classification of directions?
+  // Exact level: compares (y, x) exactly. Canonical: compares perturbed y: equal
+  // y are separated by the perturbation ε^(2^(2i-2)), larger for smaller index.
+  bool up(Index a, Index b) const {
+    if (P(b)[1] != P(a)[1]) return P(b)[1] > P(a)[1];
+    if (canonical) return b < a;
+    return P(b)[0] > P(a)[0];
+  }
+};
+
+}  // namespace
+
+Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level) {
+  if (ps.dim != 2) return Report::fail("input-dimension", "hull2 needs 2D points");
+  if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
+  const std::size_t n = ps.size();
+  const bool canonical = level == Level::canonical;
+  Hull2Checker ck{ps, canonical};
+
+  // vertex-indices
+  if (cycle.size() < 3)
+    return Report::fail("vertex-indices", "a hull of 2D points has at least 3 vertices, the output has " +
+                                              std::to_string(cycle.size()));
+  std::vector<char> is_vertex(n, 0);
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    Index v = cycle[k];
+    if (v >= n)
+      return Report::fail("vertex-indices", "vertex " + std::to_string(k) + " names point " + std::to_string(v) +
+                                                " but the input has " + std::to_string(n) + " points");
+    if (is_vertex[v]) return Report::fail("vertex-indices", "point " + std::to_string(v) + " is listed twice");
+    is_vertex[v] = 1;
+  }
+  if (canonical && cycle[0] != *std::min_element(cycle.begin(), cycle.end()))
+    return Report::fail("canonical-form", "the cycle does not start at its smallest index");
+
+  // Working cycle: at the exact level, consecutive vertices at one location are
+  // one corner of the polygon.
+  std::vector<Index> L;
+  if (canonical) {
+    L = cycle;
+  } else {
+    for (Index v : cycle)
+      if (L.empty() || !ck.same_location(L.back(), v)) L.push_back(v);
+    while (L.size() > 1 && ck.same_location(L.back(), L.front())) L.pop_back();
+    if (L.size() < 3)
+      return Report::fail("convex-turn", "the vertices occupy fewer than 3 distinct locations");
+  }
+  const std::size_t m = L.size();
+
+  // convex-turn
+  for (std::size_t k = 0; k < m; ++k) {
+    Index a = L[(k + m - 1) % m], b = L[k], c = L[(k + 1) % m];
+    int o = ck.orient(a, b, c);
+    std::string where = "at vertex " + std::to_string(b) + " (between " + std::to_string(a) + " and " +
+                        std::to_string(c) + ")";
+    if (canonical && o <= 0)
+      return Report::fail("convex-turn", "the turn " + where + " is not strictly convex under the perturbation");
+    if (o < 0) return Report::fail("convex-turn", "the polygon turns clockwise " + where);
+    if (o == 0 && pred::dot2d_exact(ck.P(a), ck.P(b), ck.P(c)) <= 0)
+      return Report::fail("convex-turn", "the polygon folds back " + where);
+  }
+
+  // winds-once: edge direction in the upper half-turn [0, π) ↔ "up"
+  std::vector<Index> pos(m);
+  for (std::size_t k = 0; k < m; ++k) pos[k] = static_cast<Index>(k);
+  int turns = detail::count_turns(pos, true, [&](Index k) { return ck.up(L[k], L[(k + 1) % m]) ? 0 : 1; });
+  if (turns != 1)
+    return Report::fail("winds-once", "the polygon winds " + std::to_string(turns) + " times around its interior");
+
+  // point-inside: fan from a strictly convex vertex v0, sectors found by binary
+  // search on the orientation of the fan rays (monotone since the fan spans
+  // less than a half-turn).
+  std::size_t s0 = 0;
+  if (!canonical)
+    while (s0 < m && ck.orient(L[(s0 + m - 1) % m], L[s0], L[(s0 + 1) % m]) <= 0) ++s0;
+  std::rotate(L.begin(), L.begin() + static_cast<long>(s0), L.end());
+  const Index v0 = L[0];
+  for (Index p = 0; p < n; ++p) {
+    if (is_vertex[p]) continue;
+    auto outside = [&](Index a, Index b) {
+      return Report::fail("point-inside", "point " + std::to_string(p) + (canonical ? " is not strictly inside" : " lies strictly outside") +
+                                              " edge " + edge_str(a, b) +
+                                              (canonical ? " under the perturbation" : ""));
+    };
+    const int strict = canonical ? 0 : -1;  // smallest accepted orientation is strict+1
+    if (ck.orient(v0, L[1], p) <= strict) return outside(v0, L[1]);
+    if (-ck.orient(v0, L[m - 1], p) <= strict) return outside(L[m - 1], v0);
+    std::size_t lo = 1, hi = m - 2;  // largest k in [1, m-2] with orient(v0, L[k], p) >= 0
+    while (lo < hi) {
+      std::size_t mid = (lo + hi + 1) / 2;
+      if (ck.orient(v0, L[mid], p) >= 0)
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+    if (ck.orient(L[lo], L[lo + 1], p) <= strict) return outside(L[lo], L[lo + 1]);
+  }
+  return Report::pass();
+}
+
+}  // namespace flipflop::certify

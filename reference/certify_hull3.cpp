@@ -1,0 +1,284 @@
+// certify_hull3.cpp — exact certification of a 3D convex hull (triangles).
+//
+// Conditions, in order (the first violated one is reported):
+//   input-dimension      the points span R^3
+//   triangle-indices     indices in range, three distinct per triangle
+//   canonical-form       (canonical) rotation and order of DESIGN.md
+//   oriented-manifold    every directed edge appears once (consistent
+//                        orientation, at most two triangles per edge)
+//   closed-surface       every edge has its opposite twin (no hole)
+//   vertex-link          the triangles around every vertex form one cycle
+//   connected            one component
+//   euler-characteristic V - E + F = 2 (a topological sphere)
+//   interior-point       four affinely independent hull vertices exist; their
+//                        exact centroid s is then strictly inside conv(S)
+//   facet-orientation    every facet faces away from s (Lemma 6.1: its cone
+//                        from s is a proper cone)
+//   star-shaped          the projection from s winds exactly once around every
+//                        vertex; with facet-orientation the central projection
+//                        is an unbranched covering of the sphere of degree 1,
+//                        i.e. the surface is star-shaped w.r.t. s (Lemma 6.1)
+//   convex-edge          every edge is convex (Thm 6.2: then the star-shaped
+//                        surface is convex)
+//   point-inside         every point lies on the inner side of (or on) the
+//                        facet whose cone from s contains it; canonical:
+//                        strictly, for every point that is not a vertex
+// s is an auxiliary point: in the perturbation it has index n (after all
+// inputs, predicates.hpp). Structural predicates (those involving s) are
+// perturbed at both levels; geometric conditions are exact (>= 0) at the exact
+// level and perturbed and strict at the canonical level.
+#include <algorithm>
+#include <cmath>
+
+#include "predicates/predicates.hpp"
+#include "predicates/rational_point.hpp"
+#include "reference/certify.hpp"
+#include "reference/certify_detail.hpp"
+#include "reference/dimension.hpp"
+
+namespace flipflop::certify {
+
+namespace {
+
+using detail::edge_str;
+using detail::tri_str;
+
+struct Hull3Checker {
+  const PointSet& ps;
+  bool canonical;
+  pred::RationalPoint s;
+  pred::PointId s_id = 0;
+
+  const double* P(Index i) const { return ps.point(i); }
+  pred::MixedRow row(Index i) const { return {i, P(i), nullptr}; }
+  pred::MixedRow srow() const { return {s_id, nullptr, &s}; }
+
+  // orient3d(a, b, c, s) under the perturbation
+  int facet_vs_s(const Triangle& t) const {
+    pred::MixedRow r[4] = {row(t[0]), row(t[1]), row(t[2]), srow()};
+    return pred::mixed_sign(4, r, true);
+  }
+  // orient3d(s, a, b, p) under the perturbation: > 0 when p is across the
+  // plane (s, a, b) from the third vertex of a facet (a, b, c) facing away from s
+  int side(Index a, Index b, Index p) const {
+    pred::MixedRow r[4] = {srow(), row(a), row(b), row(p)};
+    return pred::mixed_sign(4, r, true);
+  }
+  // geometric orientation of p against facet (a, b, c): > 0 inner side
+  int facet_vs_point(const Triangle& t, Index p) const {
+    if (canonical) return pred::orient3d({t[0], P(t[0])}, {t[1], P(t[1])}, {t[2], P(t[2])}, {p, P(p)});
+    return pred::orient3d_exact(P(t[0]), P(t[1]), P(t[2]), P(p));
+  }
+};
+
+double dist2(const double* a, const double* b) {
+  double s = 0;
+  for (int j = 0; j < 3; ++j) s += (a[j] - b[j]) * (a[j] - b[j]);
+  return s;
+}
+
+// Four affinely independent vertices, chosen far apart by floating-point
+// estimates and confirmed by exact predicates. Returns false if the vertices
+// are coplanar.
+bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index out[4]) {
+  auto P = [&](Index i) { return ps.point(i); };
+  Index a = verts[0];
+  for (Index v : verts)
+    if (P(v)[0] < P(a)[0]) a = v;
+  Index b = a;
+  double best = -1;
+  for (Index v : verts)
+    if (double d = dist2(P(a), P(v)); d > best) best = d, b = v;
+  if (P(a)[0] == P(b)[0] && P(a)[1] == P(b)[1] && P(a)[2] == P(b)[2]) return false;
+  auto cross_norm = [&](Index c) {
+    double u[3], w[3];
+    for (int j = 0; j < 3; ++j) u[j] = P(b)[j] - P(a)[j], w[j] = P(c)[j] - P(a)[j];
+    double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+    return x * x + y * y + z * z;
+  };
+  auto collinear = [&](Index c) {
+    const int ax[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+    for (const auto& q : ax) {
+      double pa[2] = {P(a)[q[0]], P(a)[q[1]]}, pb[2] = {P(b)[q[0]], P(b)[q[1]]}, pc[2] = {P(c)[q[0]], P(c)[q[1]]};
+      if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
+    }
+    return true;
+  };
+  Index c = a;
+  best = -1;
+  for (Index v : verts)
+    if (double d = cross_norm(v); d > best) best = d, c = v;
+  if (collinear(c)) {
+    auto it = std::find_if(verts.begin(), verts.end(), [&](Index v) { return !collinear(v); });
+    if (it == verts.end()) return false;
+    c = *it;
+  }
+  auto nonflat = [&](Index d) { return pred::orient3d_exact(P(a), P(b), P(c), P(d)) != 0; };
+  auto vol_est = [&](Index d) {
+    double u[3], w[3], z[3];
+    for (int j = 0; j < 3; ++j) u[j] = P(b)[j] - P(a)[j], w[j] = P(c)[j] - P(a)[j], z[j] = P(d)[j] - P(a)[j];
+    return std::fabs(u[0] * (w[1] * z[2] - w[2] * z[1]) - u[1] * (w[0] * z[2] - w[2] * z[0]) +
+                     u[2] * (w[0] * z[1] - w[1] * z[0]));
+  };
+  Index d = a;
+  best = -1;
+  for (Index v : verts)
+    if (double e = vol_est(v); e > best) best = e, d = v;
+  if (!nonflat(d)) {
+    auto it = std::find_if(verts.begin(), verts.end(), nonflat);
+    if (it == verts.end()) return false;
+    d = *it;
+  }
+  out[0] = a, out[1] = b, out[2] = c, out[3] = d;
+  return true;
+}
+
+}  // namespace
+
+Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
+  if (ps.dim != 3) return Report::fail("input-dimension", "hull3 needs 3D points");
+  if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
+  const std::size_t n = ps.size();
+  const bool canonical = level == Level::canonical;
+
+  if (tris.size() < 4)
+    return Report::fail("triangle-indices", "a closed surface needs at least 4 triangles, the output has " +
+                                                std::to_string(tris.size()));
+  if (std::string why = detail::check_triangle_indices(tris, n); !why.empty())
+    return Report::fail("triangle-indices", why);
+  if (canonical)
+    if (std::string why = detail::check_canonical_triangles(tris); !why.empty())
+      return Report::fail("canonical-form", why);
+
+  // ---- topology -------------------------------------------------------------
+  detail::DirectedEdges edges;
+  {
+    Index a = 0, b = 0;
+    std::uint32_t t1 = 0, t2 = 0;
+    if (!edges.build(tris, a, b, t1, t2))
+      return Report::fail("oriented-manifold", "directed edge " + edge_str(a, b) + " appears in triangles " +
+                                                   tri_str(tris[t1]) + " and " + tri_str(tris[t2]) +
+                                                   " (inconsistent orientation or more than two triangles on an edge)");
+  }
+  detail::UnionFind uf(tris.size());
+  for (std::uint32_t t = 0; t < tris.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      Index a = tris[t][k], b = tris[t][(k + 1) % 3];
+      long twin = edges.find(b, a);
+      if (twin < 0)
+        return Report::fail("closed-surface", "edge " + edge_str(a, b) + " of triangle " + tri_str(tris[t]) +
+                                                  " has no opposite triangle (the surface has a hole)");
+      uf.unite(t, static_cast<std::uint32_t>(twin));
+    }
+  }
+  detail::VertexLinks links;
+  links.build(n, tris);
+  std::vector<Index> verts;
+  std::vector<char> is_vertex(n, 0);
+  std::vector<Index> cyc;
+  for (Index v = 0; v < n; ++v) {
+    if (links.degree(v) == 0) continue;
+    is_vertex[v] = 1;
+    verts.push_back(v);
+    bool closed = links.walk(v, links.edge[links.start[v]].first, cyc);
+    if (!closed || cyc.size() != links.degree(v))
+      return Report::fail("vertex-link", "the triangles around vertex " + std::to_string(v) +
+                                             " do not form a single cycle (the surface is pinched there)");
+  }
+  for (std::uint32_t t = 1; t < tris.size(); ++t)
+    if (uf.find(t) != uf.find(0))
+      return Report::fail("connected", "triangle " + tri_str(tris[t]) + " is not connected to triangle " +
+                                           tri_str(tris[0]));
+  const long V = static_cast<long>(verts.size()), E = static_cast<long>(tris.size() * 3 / 2),
+             F = static_cast<long>(tris.size());
+  if (V - E + F != 2)
+    return Report::fail("euler-characteristic", "V - E + F = " + std::to_string(V) + " - " + std::to_string(E) +
+                                                    " + " + std::to_string(F) + " = " + std::to_string(V - E + F) +
+                                                    ", a sphere has 2");
+
+  // ---- interior point ---------------------------------------------------------
+  Index tet[4];
+  if (!pick_tetrahedron(ps, verts, tet))
+    return Report::fail("interior-point", "all vertices of the surface are coplanar, the hull of the input is not");
+  const double* tp[4] = {ps.point(tet[0]), ps.point(tet[1]), ps.point(tet[2]), ps.point(tet[3])};
+  Hull3Checker ck{ps, canonical, pred::RationalPoint::centroid(tp, 4, 3), static_cast<pred::PointId>(n)};
+
+  // ---- star-shapedness w.r.t. s --------------------------------------------
+  for (const Triangle& t : tris)
+    if (ck.facet_vs_s(t) <= 0)
+      return Report::fail("facet-orientation", "facet " + tri_str(t) +
+                                                   " does not face away from the interior point (it is oriented "
+                                                   "inward or is not on the hull)");
+  for (Index v : verts) {
+    links.walk(v, links.edge[links.start[v]].first, cyc);
+    const Index u1 = cyc[0];
+    // rotation sense around the axis s→v: rot(x, y) = -orient3d(s, v, x, y) > 0
+    // for consecutive link vertices of facets facing away from s.
+    int turns = detail::count_turns(cyc, true, [&](Index u) { return (u == u1 || -ck.side(v, u1, u) > 0) ? 0 : 1; });
+    if (turns != 1)
+      return Report::fail("star-shaped", "seen from the interior point the surface winds " + std::to_string(turns) +
+                                             " times around vertex " + std::to_string(v));
+  }
+
+  // ---- convexity (Thm 6.2) ----------------------------------------------------
+  for (const Triangle& t : tris) {
+    for (int k = 0; k < 3; ++k) {
+      Index a = t[k], b = t[(k + 1) % 3];
+      if (a > b) continue;  // each undirected edge once
+      const Triangle& o = tris[static_cast<std::size_t>(edges.find(b, a))];
+      Index d = detail::third_vertex(o, a, b);
+      int sgn = ck.facet_vs_point(t, d);
+      if (canonical ? sgn <= 0 : sgn < 0)
+        return Report::fail("convex-edge", "edge " + edge_str(a, b) + " is " + (sgn < 0 ? "reflex" : "flat") +
+                                               ": vertex " + std::to_string(d) + " of facet " + tri_str(o) +
+                                               " is not on the inner side of facet " + tri_str(t) +
+                                               (canonical ? " under the perturbation" : ""));
+    }
+  }
+
+  // ---- every point inside ------------------------------------------------------
+  std::vector<Index> todo;
+  for (Index p = 0; p < n; ++p)
+    if (!is_vertex[p]) todo.push_back(p);
+  detail::morton_sort(ps, todo);
+  detail::XorShift rng;
+  std::size_t cur = 0;
+  const std::size_t cap = 4 * tris.size() + 100;
+  for (Index p : todo) {
+    // Stochastic visibility walk over the cones from s (perturbed, so no ties).
+    std::size_t steps = 0;
+    bool found = false;
+    while (steps++ < cap) {
+      const Triangle& t = tris[cur];
+      int cand[3], nc = 0;
+      for (int k = 0; k < 3; ++k)
+        if (ck.side(t[k], t[(k + 1) % 3], p) > 0) cand[nc++] = k;
+      if (nc == 0) {
+        found = true;
+        break;
+      }
+      int k = cand[nc == 1 ? 0 : rng.next() % static_cast<std::uint32_t>(nc)];
+      cur = static_cast<std::size_t>(edges.find(t[(k + 1) % 3], t[k]));
+    }
+    auto check = [&](const Triangle& t) -> Report {
+      int sgn = ck.facet_vs_point(t, p);
+      if (canonical ? sgn <= 0 : sgn < 0)
+        return Report::fail("point-inside", "point " + std::to_string(p) +
+                                                (canonical ? " is not a vertex and not strictly inside facet "
+                                                           : " lies strictly outside facet ") +
+                                                tri_str(t) + (canonical ? " under the perturbation" : ""));
+      return Report::pass();
+    };
+    if (found) {
+      if (Report r = check(tris[cur]); !r.ok) return r;
+    } else {
+      // The walk did not settle (it terminates with probability 1; this bound
+      // only protects against pathological cases): test every facet.
+      for (const Triangle& t : tris)
+        if (Report r = check(t); !r.ok) return r;
+    }
+  }
+  return Report::pass();
+}
+
+}  // namespace flipflop::certify

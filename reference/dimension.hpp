@@ -1,0 +1,19 @@
+// dimension.hpp — exact affine dimension of a point set.
+#pragma once
+
+#include <string>
+
+#include "reference/point_set.hpp"
+
+namespace flipflop {
+
+// The dimension of the affine hull of the points, decided exactly (0 when all
+// points are equal, 1 when collinear, 2 when coplanar, ...; at most ps.dim).
+// O(n) exact predicates.
+int affine_dimension(const PointSet& ps);
+
+// Empty when the set spans its space; otherwise one line saying why it does
+// not ("all 12 points are collinear (affine dimension 1)").
+std::string dimension_problem(const PointSet& ps);
+
+}  // namespace flipflop
