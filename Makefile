@@ -4,7 +4,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 PKGS  := cmake g++ make libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
-         libqhull-dev qhull-bin catch2 librapidcheck-dev
+         libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev
 
 .PHONY: all deps configure build demo test clean
 

@@ -115,30 +115,44 @@ int minor_sign(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
     if (cols & (1u << c)) ci[nc++] = c;
   if (n != nc) throw std::logic_error("minor_sign: non-square minor");
   if (n == 0) return 1;
-  // Bareiss fraction-free elimination with row pivoting.
-  mpz_class a[8][8];
+  // Bareiss fraction-free elimination with row pivoting, on raw mpz_t (only
+  // the n x n entries in use are initialised: this is the hot path of the
+  // exact stage).
+  mpz_t a[8][8];
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) a[i][j] = m.at(ri[i], ci[j]);
-  int sgn_perm = 1;
-  mpz_class prev = 1;
-  for (int p = 0; p < n - 1; ++p) {
-    if (a[p][p] == 0) {
+    for (int j = 0; j < n; ++j) mpz_init_set(a[i][j], m.at(ri[i], ci[j]).get_mpz_t());
+  mpz_t prev, tmp;
+  mpz_init_set_ui(prev, 1);
+  mpz_init(tmp);
+  int sign_perm = 1, result = 0;
+  bool singular = false;
+  for (int p = 0; p < n - 1 && !singular; ++p) {
+    if (mpz_sgn(a[p][p]) == 0) {
       int q = p + 1;
-      while (q < n && a[q][p] == 0) ++q;
-      if (q == n) return 0;
-      for (int j = 0; j < n; ++j) std::swap(a[p][j], a[q][j]);
-      sgn_perm = -sgn_perm;
+      while (q < n && mpz_sgn(a[q][p]) == 0) ++q;
+      if (q == n) {
+        singular = true;
+        break;
+      }
+      for (int j = 0; j < n; ++j) mpz_swap(a[p][j], a[q][j]);
+      sign_perm = -sign_perm;
     }
     for (int i = p + 1; i < n; ++i) {
       for (int j = p + 1; j < n; ++j) {
-        a[i][j] = a[i][j] * a[p][p] - a[i][p] * a[p][j];
-        mpz_divexact(a[i][j].get_mpz_t(), a[i][j].get_mpz_t(), prev.get_mpz_t());
+        // a[i][j] = (a[i][j] * a[p][p] - a[i][p] * a[p][j]) / prev, exactly
+        mpz_mul(tmp, a[i][j], a[p][p]);
+        mpz_submul(tmp, a[i][p], a[p][j]);
+        mpz_divexact(a[i][j], tmp, prev);
       }
-      a[i][p] = 0;
     }
-    prev = a[p][p];
+    mpz_set(prev, a[p][p]);
   }
-  return sgn_perm * sgn(a[n - 1][n - 1]);
+  if (!singular) result = sign_perm * mpz_sgn(a[n - 1][n - 1]);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) mpz_clear(a[i][j]);
+  mpz_clear(prev);
+  mpz_clear(tmp);
+  return result;
 }
 
 namespace {

@@ -1,0 +1,141 @@
+// commands.cpp — gen, hull2/hull3/rt2/dt2 and certify.
+#include "cli/commands.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "gen/generate.hpp"
+#include "io/index_io.hpp"
+#include "io/read_points.hpp"
+#include "io/write_points.hpp"
+#include "reference/brute_force.hpp"
+#include "reference/certify.hpp"
+#include "reference/dimension.hpp"
+
+namespace flipflop::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Input dimension and weights per kind.
+int dim_of(const std::string& kind) { return kind == "hull3" ? 3 : 2; }
+bool weighted(const std::string& kind) { return kind == "rt2"; }
+
+PointSet read_input(const std::string& path, const std::string& kind) {
+  PointSet ps = io::read_points(path, dim_of(kind), weighted(kind));
+  if (std::string why = dimension_problem(ps); !why.empty()) throw UsageError(path + ": " + why);
+  return ps;
+}
+
+// The brute-force reference enumerates all candidate simplices (O(n^3) for
+// hull2, O(n^4) otherwise): exact, but only for small inputs.
+std::size_t brute_limit(const std::string& kind) { return kind == "hull2" ? 5000 : 300; }
+
+void write_output(const std::string& path, const std::function<void(std::ostream&)>& body) {
+  if (path.empty() || path == "-") {
+    body(std::cout);
+    std::cout.flush();
+    if (!std::cout) throw UsageError("cannot write to standard output");
+    return;
+  }
+  io::write_file(path, body);
+}
+
+}  // namespace
+
+std::vector<std::string> available_backends() { return {"reference"}; }
+std::vector<std::string> available_algorithms() { return {"brute"}; }
+
+int run_gen(const GenArgs& a) {
+  if (a.list) {
+    for (const std::string& d : gen::distributions())
+      std::cout << d << " (" << gen::dimension_of(d) << "D)\n";
+    return 0;
+  }
+  if (a.dist.empty() || a.n == 0 || a.out.empty())
+    throw UsageError("gen needs DIST, N > 0 and -o FILE (flipflop gen --list shows the distributions)");
+  gen::Options o;
+  o.seed = a.seed;
+  o.thickness = a.thickness;
+  o.hull_points = a.hull_points;
+  if (!a.weights.empty()) {
+    double lo = 0, hi = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(a.weights.c_str(), "%lf %c %lf %c", &lo, &comma, &hi, &extra) != 3 || comma != ',' ||
+        !(lo <= hi))
+      throw UsageError("--weights expects LO,HI with LO <= HI, got '" + a.weights + "'");
+    o.weighted = true;
+    o.wlo = lo;
+    o.whi = hi;
+  }
+  PointSet ps = gen::generate(a.dist, a.n, o);
+  write_output(a.out, [&](std::ostream& os) { io::write_points(os, ps); });
+  return 0;
+}
+
+int run_compute(const ComputeArgs& a) {
+  const PointSet ps = read_input(a.in, a.kind);
+  if (ps.size() > brute_limit(a.kind))
+    throw UsageError(a.in + ": " + std::to_string(ps.size()) + " points exceed the limit of " +
+                     std::to_string(brute_limit(a.kind)) + " of the brute-force reference ('--algo brute')");
+  const auto t0 = Clock::now();
+  std::vector<Index> cycle;
+  std::vector<Triangle> tris;
+  if (a.kind == "hull2") cycle = brute::hull2(ps);
+  else if (a.kind == "hull3") tris = brute::hull3(ps);
+  else tris = brute::rt2(ps);
+  const double t_compute = seconds_since(t0);
+
+  // Never print a result that was not checked: certify the canonical answer.
+  const auto t1 = Clock::now();
+  certify::Report r = a.kind == "hull2"   ? certify::hull2(ps, cycle, certify::Level::canonical)
+                      : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
+                                          : certify::rt2(ps, tris, certify::Level::canonical);
+  const double t_certify = seconds_since(t1);
+  if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
+
+  write_output(a.out, [&](std::ostream& os) {
+    if (a.kind == "hull2") io::write_hull2(os, cycle);
+    else io::write_triangles(os, tris);
+  });
+  if (a.stats) {
+    std::cerr << a.kind << ": backend " << a.backend << ", algo " << a.algo << ", " << ps.size() << " points, "
+              << (a.kind == "hull2" ? cycle.size() : tris.size())
+              << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
+              << t_certify << " s (canonical)\n";
+  }
+  return 0;
+}
+
+int run_certify(const CertifyArgs& a) {
+  const PointSet ps = io::read_points(a.points, dim_of(a.kind), weighted(a.kind));
+  const certify::Level level = a.canonical ? certify::Level::canonical : certify::Level::exact;
+  certify::Report r;
+  std::size_t count = 0;
+  if (a.kind == "hull2") {
+    std::vector<Index> cycle = io::read_index_cycle(a.output);
+    count = cycle.size();
+    r = certify::hull2(ps, cycle, level);
+  } else {
+    std::vector<Triangle> tris = io::read_triangles(a.output);
+    count = tris.size();
+    r = a.kind == "hull3" ? certify::hull3(ps, tris, level) : certify::rt2(ps, tris, level);
+  }
+  if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
+  if (!r.ok) {
+    std::cout << "NOT certified (" << a.kind << ", " << (a.canonical ? "canonical" : "exact")
+              << "): " << r.message() << "\n";
+    return 1;
+  }
+  std::cout << "certified (" << a.kind << ", " << (a.canonical ? "canonical" : "exact") << "): " << ps.size()
+            << " points, " << count << (a.kind == "hull2" ? " vertices" : " triangles") << "\n";
+  return 0;
+}
+
+}  // namespace flipflop::cli

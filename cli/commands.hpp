@@ -1,0 +1,51 @@
+// commands.hpp — the subcommands of the flipflop tool, callable from tests.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace flipflop::cli {
+
+// Bad usage or input: one line, exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// A computed result failed its own certification: never printed, exit code 3.
+struct InternalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct GenArgs {
+  std::string dist, out, weights;
+  std::size_t n = 0, hull_points = 0;
+  std::uint64_t seed = 1;
+  double thickness = 0.01;
+  bool list = false;
+};
+
+struct ComputeArgs {
+  std::string kind;  // hull2, hull3, rt2, dt2
+  std::string in, out;
+  std::string backend = "reference";
+  std::string algo = "brute";
+  bool stats = false;
+};
+
+struct CertifyArgs {
+  std::string kind, points, output;
+  bool canonical = false;
+};
+
+// The backends and algorithms that exist in this build (the command line
+// accepts exactly these).
+std::vector<std::string> available_backends();
+std::vector<std::string> available_algorithms();
+
+int run_gen(const GenArgs& a);
+int run_compute(const ComputeArgs& a);
+int run_certify(const CertifyArgs& a);
+int run_demo();
+
+}  // namespace flipflop::cli

@@ -1,0 +1,114 @@
+// main.cpp — the `flipflop` command-line tool (DESIGN.md, "The command-line tool").
+//
+//   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
+//   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats]
+//   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical]
+//   flipflop bench ...
+//   flipflop demo
+//
+// Exit codes: 0 success (certified); 1 certification failed (certify); 2 bad
+// input or usage (one line on stderr); 3 internal error (a computed result that
+// failed its own certification is never printed).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "bench/bench.hpp"
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace flipflop::cli;
+  CLI::App app{"flipflop: convex hulls and regular triangulations by local transformation, "
+               "with exact, certified output"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "all subcommands' options");
+
+  // ---- gen ----------------------------------------------------------------
+  GenArgs g;
+  auto* gen = app.add_subcommand("gen", "generate a point set (thesis distributions and degenerate families)");
+  gen->add_option("DIST", g.dist, "distribution name (flipflop gen --list)");
+  gen->add_option("N", g.n, "number of points");
+  gen->add_option("--seed", g.seed, "random seed (output is deterministic for a seed)");
+  gen->add_option("--thickness", g.thickness, "shell/band thickness of frame, circle, box, sphere");
+  gen->add_option("--weights", g.weights, "weights uniform in LO,HI (adds a weight column)");
+  gen->add_option("--hull-points", g.hull_points, "controlled ball: number of points on the sphere");
+  gen->add_option("-o,--output", g.out, "output .xyz file");
+  gen->add_flag("--list", g.list, "list the distributions and exit");
+
+  // ---- hull2 / hull3 / rt2 / dt2 -----------------------------------------------
+  ComputeArgs c;
+  const char* compute_help[] = {"2D convex hull (input columns x y)", "3D convex hull (input columns x y z)",
+                                "2D regular triangulation (input columns x y w)",
+                                "2D Delaunay triangulation (input columns x y)"};
+  const char* kinds[] = {"hull2", "hull3", "rt2", "dt2"};
+  std::vector<CLI::App*> compute_cmds;
+  for (int k = 0; k < 4; ++k) {
+    auto* cmd = app.add_subcommand(kinds[k], compute_help[k]);
+    cmd->add_option("IN", c.in, "input point file (.xyz, .off, .ply)")->required();
+    cmd->add_option("-o,--output", c.out, "output file (default: standard output)");
+    cmd->add_option("--backend", c.backend, "backend computing the result")
+        ->check(CLI::IsMember(available_backends()));
+    cmd->add_option("--algo", c.algo, "algorithm of the backend")->check(CLI::IsMember(available_algorithms()));
+    cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");
+    compute_cmds.push_back(cmd);
+  }
+
+  // ---- certify ---------------------------------------------------------------
+  CertifyArgs v;
+  auto* cert = app.add_subcommand("certify", "check an output against its input exactly; exit 0 when certified");
+  cert->add_option("KIND", v.kind, "hull2, hull3, rt2 or dt2")->required()->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2"}));
+  cert->add_option("POINTS", v.points, "input point file")->required();
+  cert->add_option("OUTPUT", v.output, "index output to check (flipflop's or another program's, e.g. qhull i Qt)")
+      ->required();
+  cert->add_flag("--canonical", v.canonical,
+                 "also require flipflop's unique answer under Simulation of Simplicity, in canonical form");
+
+  // ---- bench / demo ---------------------------------------------------------------
+  auto* bench = app.add_subcommand("bench", "side-by-side timings against Qhull and CGAL (flipflop bench --help)");
+  bench->prefix_command();
+  bench->set_help_flag();
+  auto* demo = app.add_subcommand("demo", "run the main job on built-in generated data, certified, with timings");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    while (!msg.empty() && msg.back() == '\n') msg.pop_back();
+    std::cerr << "flipflop: error: " << msg << " (see flipflop --help)\n";
+    return 2;
+  }
+
+  try {
+    if (gen->parsed()) return run_gen(g);
+    for (int k = 0; k < 4; ++k)
+      if (compute_cmds[static_cast<std::size_t>(k)]->parsed()) {
+        c.kind = kinds[k];
+        return run_compute(c);
+      }
+    if (cert->parsed()) return run_certify(v);
+    if (bench->parsed()) {
+      std::vector<std::string> rest = bench->remaining();
+      std::vector<char*> args = {argv[0]};
+      for (std::string& s : rest) args.push_back(s.data());
+      return flipflop::bench::run(static_cast<int>(args.size()), args.data());
+    }
+    if (demo->parsed()) return run_demo();
+  } catch (const UsageError& e) {
+    std::cerr << "flipflop: error: " << e.what() << "\n";
+    return 2;
+  } catch (const InternalError& e) {
+    std::cerr << "flipflop: internal error: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "flipflop: error: " << e.what() << "\n";
+    return 2;
+  }
+  return 2;
+}

@@ -1,0 +1,29 @@
+// formats.hpp — the per-format readers behind read_points() (internal).
+// Each reads and checks one format completely, including check_count().
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "reference/point_set.hpp"
+
+namespace flipflop::io::detail {
+
+PointSet read_xyz(const std::string& path, int dim, bool weighted);
+PointSet read_off(const std::string& path, int dim, bool weighted);
+PointSet read_ply(const std::string& path, int dim, bool weighted);
+
+// Name of coordinate column c of a dim-dimensional point ("x", "y", "z"),
+// or "w" for the weight column (c == dim).
+const char* column_name(int c, int dim);
+
+// Throws InputError(path, line, ...) when ps holds no points or fewer than
+// dim + 1 ("2 points, at least 3 needed"); line 0 names no line.
+void check_count(const PointSet& ps, const std::string& path, std::size_t line);
+
+// Appends one point (and its weight) to ps; throws when the count would no
+// longer fit an Index.
+void append_point(PointSet& ps, const double* x, double w, const std::string& path,
+                  std::size_t line);
+
+}  // namespace flipflop::io::detail

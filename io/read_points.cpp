@@ -1,0 +1,60 @@
+// read_points.cpp — format dispatch and the checks shared by all formats.
+#include "io/read_points.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <limits>
+
+#include "io/formats.hpp"
+#include "io/text.hpp"
+
+namespace flipflop::io {
+
+namespace detail {
+const char* column_name(int c, int dim) {
+  static const char* names[] = {"x", "y", "z"};
+  return c < dim ? names[c] : "w";
+}
+
+void check_count(const PointSet& ps, const std::string& path, std::size_t line) {
+  const std::size_t n = ps.size();
+  const auto need = static_cast<std::size_t>(ps.dim) + 1;
+  if (n == 0) throw InputError(path, line, "no points");
+  if (n < need)
+    throw InputError(path, line,
+                     std::to_string(n) + (n == 1 ? " point" : " points") + ", at least " +
+                         std::to_string(need) + " needed");
+}
+
+void append_point(PointSet& ps, const double* x, double w, const std::string& path,
+                  std::size_t line) {
+  if (ps.size() >= std::numeric_limits<Index>::max())
+    throw InputError(path, line,
+                     "more than " + std::to_string(std::numeric_limits<Index>::max()) +
+                         " points");
+  ps.coords.insert(ps.coords.end(), x, x + ps.dim);
+  if (ps.weighted) ps.weights.push_back(w);
+}
+}  // namespace detail
+
+PointSet read_points(const std::string& path, int dim, bool weighted) {
+  if (dim != 2 && dim != 3)
+    throw InputError(path, "dimension " + std::to_string(dim) + " is not supported (2 or 3)");
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  PointSet ps;
+  if (ext == ".xyz")
+    ps = detail::read_xyz(path, dim, weighted);
+  else if (ext == ".off")
+    ps = detail::read_off(path, dim, weighted);
+  else if (ext == ".ply")
+    ps = detail::read_ply(path, dim, weighted);
+  else
+    throw InputError(path, "unknown file extension " + detail::show(ext) +
+                               " (expected .xyz, .off or .ply)");
+  return ps;
+}
+
+}  // namespace flipflop::io

@@ -1,0 +1,215 @@
+// cli_test.cpp — the command-line contract: bad input gets one clear line and
+// exit code 2; valid extreme input gets a certified answer; certify accepts
+// right answers (ours and Qhull's) and rejects wrong ones with exit code 1.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/read_points.hpp"
+#include "peers/peers.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+struct TempDir {
+  fs::path dir;
+  TempDir() {
+    dir = fs::temp_directory_path() / ("flipflop_cli_" + std::to_string(::getpid()) + "_" +
+                                       std::to_string(std::rand()));
+    fs::create_directories(dir);
+  }
+  ~TempDir() { fs::remove_all(dir); }
+  fs::path file(const std::string& name, const std::string& content) const {
+    fs::path p = dir / name;
+    std::ofstream(p) << content;
+    return p;
+  }
+};
+
+Run run(const TempDir& t, const std::string& args) {
+  fs::path out = t.dir / "stdout.txt", err = t.dir / "stderr.txt";
+  std::string cmd = std::string(FLIPFLOP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
+  int status = std::system(cmd.c_str());
+  Run r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+// One line on stderr, exit code 2, the file named.
+void expect_input_error(const Run& r, const std::string& name, const std::string& what) {
+  INFO("stderr: " << r.err);
+  CHECK(r.code == 2);
+  CHECK(lines(r.err) == 1);
+  CHECK(r.err.find(name) != std::string::npos);
+  CHECK(r.err.find(what) != std::string::npos);
+  CHECK(r.out.empty());
+}
+
+}  // namespace
+
+TEST_CASE("cli: bad input matrix gives one line and exit code 2", "[cli]") {
+  TempDir t;
+  struct Case {
+    const char* kind;
+    const char* file;
+    const char* content;
+    const char* what;  // a word the message must contain
+  };
+  const Case cases[] = {
+      {"hull2", "empty.xyz", "", "no points"},
+      {"hull2", "comments.xyz", "# only a comment\n\n", "no points"},
+      {"hull2", "one.xyz", "1 2\n", "at least 3"},
+      {"hull3", "three.xyz", "0 0 0\n1 0 0\n0 1 0\n", "at least 4"},
+      {"hull2", "equal.xyz", "1 1\n1 1\n1 1\n1 1\n", "lower-dimensional"},
+      {"hull2", "collinear.xyz", "0 0\n1 1\n2 2\n3 3\n", "collinear"},
+      {"hull3", "coplanar.xyz", "0 0 1\n1 0 1\n0 1 1\n1 1 1\n2 3 1\n", "coplanar"},
+      {"hull3", "collinear3.xyz", "0 0 0\n1 1 1\n2 2 2\n3 3 3\n", "collinear"},
+      {"hull2", "nan.xyz", "0 0\n1 0\nnan 1\n", "NaN"},
+      {"hull2", "inf.xyz", "0 0\n1 0\n0 inf\n", "Inf"},
+      {"hull2", "overflow.xyz", "0 0\n1 0\n0 1e400\n", "1e400"},
+      {"hull2", "malformed.xyz", "0 0\n1 0\n0 1x\n", "1x"},
+      {"hull2", "columns.xyz", "0 0\n1 0 5\n0 1\n", "column"},
+      {"rt2", "noweight.xyz", "0 0\n1 0\n0 1\n", "column"},
+  };
+  for (const Case& c : cases) {
+    SECTION(std::string(c.kind) + " " + c.file) {
+      fs::path p = t.file(c.file, c.content);
+      expect_input_error(run(t, std::string(c.kind) + " " + p.string()), c.file, c.what);
+    }
+  }
+  SECTION("the error names the line") {
+    fs::path p = t.file("line3.xyz", "0 0\n# comment\n1 zero\n0 1\n");
+    Run r = run(t, "hull2 " + p.string());
+    expect_input_error(r, "line3.xyz:3", "zero");
+  }
+  SECTION("unreadable file") {
+    expect_input_error(run(t, "hull2 " + (t.dir / "missing.xyz").string()), "missing.xyz", "");
+    expect_input_error(run(t, "hull2 " + t.dir.string() + "/"), t.dir.string(), "");
+  }
+  SECTION("unknown extension") {
+    fs::path p = t.file("points.txt", "0 0\n1 0\n0 1\n");
+    expect_input_error(run(t, "hull2 " + p.string()), "points.txt", "");
+  }
+  SECTION("output path that cannot be written") {
+    fs::path p = t.file("ok.xyz", "0 0\n1 0\n0 1\n");
+    Run r = run(t, "hull2 " + p.string() + " -o " + (t.dir / "no" / "such" / "dir.txt").string());
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find("dir.txt") != std::string::npos);
+  }
+  SECTION("usage errors") {
+    Run r = run(t, "hull2");
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+    r = run(t, "nosuchcommand");
+    CHECK(r.code == 2);
+    fs::path p = t.file("ok.xyz", "0 0\n1 0\n0 1\n");
+    r = run(t, "hull2 " + p.string() + " --backend nosuch");
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+  }
+}
+
+TEST_CASE("cli: extreme magnitudes give certified answers equal to CGAL's", "[cli]") {
+  TempDir t;
+  // general position, so the answer is the strictly convex hull CGAL reports
+  const char* sets[] = {
+      "1e308 1e308\n-1e308 1.5e308\n-1.7e308 -1e308\n1.2e308 -1.6e308\n1e307 2e306\n",
+      "4.9e-324 0\n1e-310 4.9e-324\n0 2e-310\n-3e-310 -1e-315\n1e-320 1e-320\n",
+      "1e-300 1e300\n-1e300 1e-300\n1e300 -1e300\n0.5 0.25\n-1e-300 -1e300\n",
+  };
+  int k = 0;
+  for (const char* content : sets) {
+    fs::path p = t.file("extreme" + std::to_string(k++) + ".xyz", content);
+    fs::path out = t.dir / "hull.txt";
+    Run r = run(t, "hull2 " + p.string() + " -o " + out.string());
+    INFO(p << ": " << r.err);
+    REQUIRE(r.code == 0);
+    Run c = run(t, "certify hull2 " + p.string() + " " + out.string() + " --canonical");
+    CHECK(c.code == 0);
+    flipflop::PointSet ps = flipflop::io::read_points(p.string(), 2, false);
+    std::string expect;
+    for (auto v : flipflop::peers::cgal_hull2(ps, flipflop::peers::Hull2Algo::akl_toussaint))
+      expect += std::to_string(v) + "\n";
+    CHECK(slurp(out) == expect);
+  }
+}
+
+TEST_CASE("cli: certify accepts Qhull's output and rejects a broken one", "[cli]") {
+  TempDir t;
+  fs::path pts = t.dir / "ball.xyz";
+  REQUIRE(run(t, "gen ball 2000 --seed 7 -o " + pts.string()).code == 0);
+  // qhull's input format: dimension, count, then the coordinates
+  fs::path qin = t.dir / "ball.qh", qout = t.dir / "ball.qhull";
+  {
+    std::ifstream in(pts);
+    std::stringstream body;
+    body << in.rdbuf();
+    std::ofstream q(qin);
+    q << "3\n" << lines(body.str()) << "\n" << body.str();
+  }
+  REQUIRE(std::system(("qhull i Qt < " + qin.string() + " > " + qout.string()).c_str()) == 0);
+  Run ok = run(t, "certify hull3 " + pts.string() + " " + qout.string());
+  INFO(ok.out << ok.err);
+  CHECK(ok.code == 0);
+  CHECK(ok.out.find("certified") == 0);
+  // break it: reverse the orientation of the last facet
+  std::string text = slurp(qout);
+  const std::size_t last = text.rfind('\n', text.size() - 2) + 1;
+  std::istringstream facet(text.substr(last));
+  long a = 0, b = 0, c = 0;
+  REQUIRE(static_cast<bool>(facet >> a >> b >> c));
+  text = text.substr(0, last) + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\n";
+  fs::path broken = t.file("broken.qhull", text);
+  Run bad = run(t, "certify hull3 " + pts.string() + " " + broken.string());
+  CHECK(bad.code == 1);
+  CHECK(bad.out.find("NOT certified") != std::string::npos);
+}
+
+TEST_CASE("cli: computed answers round-trip through certify --canonical", "[cli]") {
+  TempDir t;
+  const char* jobs[][3] = {{"grid2", "hull2", "60"}, {"grid3", "hull3", "40"}, {"sphere-lattice", "hull3", "60"},
+                           {"grid2", "dt2", "40"},   {"square", "rt2", "50"},  {"duplicates2", "dt2", "30"}};
+  for (auto& j : jobs) {
+    SECTION(std::string(j[1]) + " on " + j[0]) {
+      fs::path pts = t.dir / "in.xyz", out = t.dir / "out.txt";
+      std::string w = std::string(j[1]) == "rt2" ? " --weights 0,0.01" : "";
+      REQUIRE(run(t, std::string("gen ") + j[0] + " " + j[2] + w + " -o " + pts.string()).code == 0);
+      Run r = run(t, std::string(j[1]) + " " + pts.string() + " -o " + out.string() + " --stats");
+      INFO(r.err);
+      REQUIRE(r.code == 0);
+      CHECK(r.err.find("certify") != std::string::npos);
+      CHECK(run(t, std::string("certify ") + j[1] + " " + pts.string() + " " + out.string() + " --canonical").code == 0);
+      CHECK(run(t, std::string("certify ") + j[1] + " " + pts.string() + " " + out.string()).code == 0);
+    }
+  }
+}
