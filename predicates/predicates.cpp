@@ -182,6 +182,11 @@ int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m) {
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   return lambda_sign(5, id, p, w, m);
 }
+int compare_sos(Pt a, Pt b, int coord, Mode m) {
+  const PointId id[2] = {a.id, b.id};
+  const double* p[2] = {a.x + coord, b.x + coord};
+  return lambda_sign(2, id, p, nullptr, m);
+}
 int orient_d(int d, const Pt* pts, Mode m) {
   if (d < 1 || d > 6) throw std::invalid_argument("orient_d: d must be in 1..6");
   PointId id[8];

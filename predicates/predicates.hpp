@@ -131,6 +131,13 @@ int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m = Mode::filtered);
 int orient_d(int d, const Pt* p, Mode m = Mode::filtered);
 int power_d(int d, const WPt* p, Mode m = Mode::filtered);
 
+// Sign of a.x[coord] - b.x[coord] under the perturbation (the 1-dimensional
+// Λ-determinant of the coordinate column): equal coordinates are separated by
+// the perturbation, which is larger for the smaller index. Never 0 for
+// distinct ids. Sorting by this comparison (e.g. by x for Graham's scan) is
+// consistent with every other predicate of the computation.
+int compare_sos(Pt a, Pt b, int coord, Mode m = Mode::filtered);
+
 // ---- Small exact helpers used by certifiers --------------------------------
 // Sign of (b - a) · (c - b) in 2D, exactly.
 int dot2d_exact(const double* a, const double* b, const double* c);

@@ -40,11 +40,10 @@ struct Hull2Checker {
                      : pred::orient2d_exact(P(a), P(b), P(c));
   }
   // Is b "above" a in the sense of the half-turn classification of directions?
-  // Exact level: compares (y, x) exactly. Canonical: compares perturbed y: equal
-  // y are separated by the perturbation ε^(2^(2i-2)), larger for smaller index.
+  // Exact level: compares (y, x) exactly. Canonical: compares perturbed y.
   bool up(Index a, Index b) const {
+    if (canonical) return pred::compare_sos({b, P(b)}, {a, P(a)}, 1) > 0;
     if (P(b)[1] != P(a)[1]) return P(b)[1] > P(a)[1];
-    if (canonical) return b < a;
     return P(b)[0] > P(a)[0];
   }
 };

@@ -1,0 +1,114 @@
+// bench.cpp — command-line parsing and dispatch of `flipflop bench`.
+#include "bench/bench.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "bench/timing.hpp"
+
+namespace flipflop::bench {
+
+namespace {
+
+using detail::Args;
+using detail::Usage;
+
+const char* kUsage =
+    "usage: flipflop bench predicates [--n N] [--reps R] [--seed S]\n"
+    "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
+    "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n";
+
+unsigned long long to_count(const std::string& opt, const std::string& s) {
+  char* end = nullptr;
+  errno = 0;
+  unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+  if (s.empty() || s[0] == '-' || *end != '\0' || errno != 0)
+    throw Usage(opt + " expects a non-negative integer, got '" + s + "'");
+  return v;
+}
+
+double to_double(const std::string& opt, const std::string& s) {
+  char* end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0' || !(v == v)) throw Usage(opt + " expects a number, got '" + s + "'");
+  return v;
+}
+
+Args parse(int argc, char** argv) {
+  if (argc < 2) throw Usage("missing experiment (predicates, hull2, hull3, dt2, rt2)");
+  Args a;
+  a.experiment = argv[1];
+  bool have_n = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string opt = argv[i];
+    if (i + 1 >= argc) throw Usage("option " + opt + " needs a value");
+    const std::string val = argv[++i];
+    if (opt == "--n") {
+      a.n = static_cast<std::size_t>(to_count(opt, val));
+      have_n = true;
+    } else if (opt == "--reps") {
+      a.reps = static_cast<int>(to_count(opt, val));
+      if (a.reps < 1 || a.reps > 1000) throw Usage("--reps must be in 1..1000");
+    } else if (opt == "--seed") {
+      a.seed = to_count(opt, val);
+    } else if (opt == "--dist") {
+      a.dist = val;
+    } else if (opt == "--thickness") {
+      a.thickness = to_double(opt, val);
+    } else if (opt == "--hull-points") {
+      a.hull_points = static_cast<std::size_t>(to_count(opt, val));
+    } else if (opt == "--weights") {
+      const auto comma = val.find(',');
+      if (comma == std::string::npos) throw Usage("--weights expects LO,HI");
+      a.wlo = to_double(opt, val.substr(0, comma));
+      a.whi = to_double(opt, val.substr(comma + 1));
+      a.weighted = true;
+    } else {
+      throw Usage("unknown option " + opt);
+    }
+  }
+  if (a.experiment == "predicates") {
+    if (!have_n) a.n = 50000;
+    if (a.n == 0) throw Usage("--n must be positive");
+    return a;
+  }
+  if (a.experiment != "hull2" && a.experiment != "hull3" && a.experiment != "dt2" &&
+      a.experiment != "rt2")
+    throw Usage("unknown experiment '" + a.experiment + "' (predicates, hull2, hull3, dt2, rt2)");
+  if (a.dist.empty()) throw Usage(a.experiment + " needs --dist NAME");
+  if (!have_n || a.n == 0) throw Usage(a.experiment + " needs --n N (positive)");
+  if (a.experiment == "rt2" && !a.weighted) {
+    // The thesis' middle setting (§5.4): about 20-30 % of the points redundant.
+    a.weighted = true;
+    a.wlo = 0;
+    a.whi = 1e-5;
+  }
+  if (a.experiment != "rt2" && a.weighted)
+    throw Usage("--weights applies to rt2 only");
+  return a;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::printf("%s", kUsage);
+    return 0;
+  }
+  try {
+    Args a = parse(argc, argv);
+    if (a.experiment == "predicates") return detail::bench_predicates(a);
+    return detail::bench_peers(a);
+  } catch (const Usage& e) {
+    std::fprintf(stderr, "flipflop bench: error: %s\n%s", e.what(), kUsage);
+    return 2;
+  } catch (const std::invalid_argument& e) {  // e.g. an unknown distribution
+    std::fprintf(stderr, "flipflop bench: error: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace flipflop::bench

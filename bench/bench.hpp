@@ -1,0 +1,18 @@
+// bench.hpp — `flipflop bench ...`: timings of flipflop's building blocks and
+// of the peers a user would pick instead (DESIGN.md, "Benchmarks").
+//
+//   flipflop bench predicates [--n N] [--reps R] [--seed S]
+//   flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]
+//                  [--thickness T] [--weights LO,HI] [--hull-points H]
+//
+// Every number printed is measured in this process: medians of R runs timed
+// with std::chrono::steady_clock; input generation is never timed.
+#pragma once
+
+namespace flipflop::bench {
+
+// argv[0] is the program name, argv[1] the experiment, then its options.
+// Returns 0 on success, 2 on a usage error (one line on stderr).
+int run(int argc, char** argv);
+
+}  // namespace flipflop::bench

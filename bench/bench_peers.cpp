@@ -1,0 +1,133 @@
+// bench_peers.cpp — `flipflop bench hull2|hull3|dt2|rt2`: the peers a user
+// would pick instead of flipflop (DESIGN.md "Benchmarks"), side by side, in
+// one process, on one generated input (gen/generate.hpp; generation not timed).
+//
+//   hull2  Qhull (libqhull_r), CGAL ch_akl_toussaint, CGAL ch_graham_andrew
+//   hull3  Qhull (libqhull_r, Qt), CGAL convex_hull_3
+//   dt2    CGAL Delaunay_triangulation_2
+//   rt2    CGAL Regular_triangulation_2
+//
+// A timed run is one call of the peers/ wrapper: copying the points into the
+// peer's types, the peer's computation, and sorting its output into canonical
+// order. The peers' canonical outputs are compared with each other and the
+// result of that comparison is printed (in general position they must agree;
+// on degenerate input each peer breaks ties its own way).
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench/timing.hpp"
+#include "gen/generate.hpp"
+#include "peers/peers.hpp"
+
+namespace flipflop::bench::detail {
+
+namespace {
+
+template <class Output>
+struct Peer {
+  const char* name;
+  std::function<Output(const PointSet&)> run;
+};
+
+struct Row {
+  std::string name;
+  std::vector<double> times;
+  std::string error;  // non-empty when the peer failed
+  std::size_t size = 0;
+};
+
+template <class Output>
+int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Output>>& peers,
+                  const char* size_label) {
+  std::vector<Row> rows;
+  std::vector<Output> outputs;
+  std::vector<std::string> output_names;
+  for (const Peer<Output>& p : peers) {
+    Row row{p.name, {}, {}, 0};
+    Output out;
+    try {
+      for (int r = 0; r < a.reps; ++r) row.times.push_back(seconds([&] { out = p.run(pts); }));
+      row.size = out.size();
+      outputs.push_back(std::move(out));
+      output_names.push_back(p.name);
+    } catch (const std::exception& e) {
+      row.error = e.what();
+      row.times.clear();
+    }
+    rows.push_back(std::move(row));
+  }
+  double fastest = 0;
+  for (const Row& r : rows)
+    if (r.error.empty() && (fastest == 0 || median(r.times) < fastest)) fastest = median(r.times);
+
+  std::printf("%-34s %12s %12s %12s %12s %10s\n", "peer", "median s", "min s", "max s",
+              size_label, "/fastest");
+  for (const Row& r : rows) {
+    if (!r.error.empty()) {
+      std::printf("%-34s failed: %s\n", r.name.c_str(), r.error.c_str());
+      continue;
+    }
+    const auto [lo, hi] = std::minmax_element(r.times.begin(), r.times.end());
+    std::printf("%-34s %12.4f %12.4f %12.4f %12zu %10.2f\n", r.name.c_str(), median(r.times), *lo,
+                *hi, r.size, median(r.times) / fastest);
+  }
+  if (outputs.size() >= 2) {
+    std::string differing;
+    for (std::size_t i = 1; i < outputs.size(); ++i)
+      if (outputs[i] != outputs[0]) differing += " " + output_names[i];
+    if (differing.empty())
+      std::printf("canonical outputs identical across %zu peers\n", outputs.size());
+    else
+      std::printf("canonical outputs differ from %s's:%s\n", output_names[0].c_str(),
+                  differing.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int bench_peers(const Args& a) {
+  const int need = a.experiment == "hull3" ? 3 : 2;
+  if (gen::dimension_of(a.dist) != need)
+    throw Usage("distribution '" + a.dist + "' is not " + std::to_string(need) + "D (" +
+                a.experiment + ")");
+  gen::Options o;
+  o.seed = a.seed;
+  o.thickness = a.thickness;
+  o.weighted = a.weighted;
+  o.wlo = a.wlo;
+  o.whi = a.whi;
+  o.hull_points = a.hull_points;
+  PointSet pts;
+  const double gen_s = seconds([&] { pts = gen::generate(a.dist, a.n, o); });
+  std::printf("flipflop bench %s: dist %s, n %zu, seed %llu", a.experiment.c_str(),
+              a.dist.c_str(), pts.size(), a.seed);
+  if (a.weighted) std::printf(", weights in [%g, %g]", a.wlo, a.whi);
+  std::printf(", median of %d runs (input generated in %.3f s, not timed)\n", a.reps, gen_s);
+
+  using Cycle = std::vector<Index>;
+  using Tris = std::vector<Triangle>;
+  if (a.experiment == "hull2") {
+    return compare_peers<Cycle>(
+        a, pts,
+        {{"Qhull (libqhull_r)", peers::qhull_hull2},
+         {"CGAL ch_akl_toussaint",
+          [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::akl_toussaint); }},
+         {"CGAL ch_graham_andrew",
+          [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::graham_andrew); }}},
+        "vertices");
+  }
+  if (a.experiment == "hull3")
+    return compare_peers<Tris>(
+        a, pts, {{"Qhull (libqhull_r, Qt)", peers::qhull_hull3}, {"CGAL convex_hull_3", peers::cgal_hull3}},
+        "triangles");
+  if (a.experiment == "dt2")
+    return compare_peers<Tris>(a, pts, {{"CGAL Delaunay_triangulation_2", peers::cgal_delaunay2}},
+                               "triangles");
+  return compare_peers<Tris>(a, pts, {{"CGAL Regular_triangulation_2", peers::cgal_regular2}},
+                             "triangles");
+}
+
+}  // namespace flipflop::bench::detail

@@ -1,0 +1,51 @@
+// timing.hpp — medians of repeated runs (internal to bench/).
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace flipflop::bench::detail {
+
+// Wall-clock seconds of one call of f, by std::chrono::steady_clock.
+template <class F>
+double seconds(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  const auto t1 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double>(t1 - t0).count();
+}
+
+// The median of a sample (mean of the two middle values for an even count).
+inline double median(std::vector<double> v) {
+  if (v.empty()) throw std::logic_error("median of no runs");
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// A usage error: printed as one line, exit code 2.
+struct Usage : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Options shared by the experiments.
+struct Args {
+  std::string experiment;
+  std::string dist;
+  std::size_t n = 0;
+  int reps = 5;
+  unsigned long long seed = 1;
+  double thickness = 0.01;
+  bool weighted = false;
+  double wlo = 0, whi = 0;
+  std::size_t hull_points = 0;
+};
+
+int bench_predicates(const Args& a);
+int bench_peers(const Args& a);
+
+}  // namespace flipflop::bench::detail

@@ -1,0 +1,5 @@
+// classify_omp.cpp — classify.cuh built by the host compiler against thrust's
+// OpenMP backend (THRUST_DEVICE_SYSTEM=THRUST_DEVICE_SYSTEM_OMP, set by CMake):
+// the GPU code path, runnable and testable on any multicore CPU.
+#define FF_KERNELS_NS kernels_omp
+#include "kernels_cuda/classify.cuh"

@@ -1,0 +1,147 @@
+// qhull.cpp — Qhull (libqhull_r, the reentrant C library) as a peer.
+//
+// Qhull computes in floating point and merges facets that it cannot separate
+// reliably ("C-0" is its default in 2-d and 3-d); option "Qt" triangulates the
+// merged facets. The index of an input point is qh_pointid(vertex->point).
+//
+// Orientation (mirrors Qhull's own printers, io_r.c):
+//   2-d, qh_printextremes_2d: a facet is an edge with vertices {A, B}; when
+//     facet->toporient (xor qh_ORIENTclock, 0 by default) the hull runs from the
+//     first vertex to the second, otherwise from the second to the first; that
+//     walk is counter-clockwise.
+//   3-d, qh_printfacetNvertex_simplicial (output "i"): a simplicial facet lists
+//     its vertices in set order when facet->toporient, otherwise with the first
+//     two swapped. That order has an inward right-hand normal ("qh_ORIENTclock
+//     0 for inward pointing normals by Geomview convention", user_r.h), i.e. it
+//     is clockwise seen from outside; we reverse it.
+// proptests/peers_test.cpp checks both against CGAL and flipflop's predicates.
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "peers/canonical.hpp"
+#include "peers/peers.hpp"
+
+extern "C" {
+#include <libqhull_r/qhull_ra.h>
+}
+
+namespace flipflop::peers {
+
+namespace {
+
+// One Qhull run: builds the hull on construction, frees Qhull's memory on
+// destruction. Qhull's messages go to an in-memory stream so that an error can
+// be reported as one line.
+class QhullRun {
+ public:
+  QhullRun(const PointSet& pts, int dim, const char* options) : coords_(pts.coords) {
+    if (pts.dim != dim)
+      throw std::invalid_argument("qhull_hull" + std::to_string(dim) + ": expected " +
+                                  std::to_string(dim) + "D points, got " +
+                                  std::to_string(pts.dim) + "D");
+    err_ = open_memstream(&err_buf_, &err_len_);
+    if (!err_) throw std::runtime_error("qhull: cannot open a memory stream for messages");
+    std::string cmd = std::string("qhull ") + options;
+    // qh_new_qhull catches Qhull's internal errors (setjmp/longjmp inside C
+    // frames only) and returns a non-zero exit code.
+    exitcode_ = qh_new_qhull(&qh_, dim, static_cast<int>(pts.size()), coords_.data(),
+                             /*ismalloc=*/False, cmd.data(), /*outfile=*/nullptr, err_);
+    std::fflush(err_);
+    if (exitcode_ != 0) {
+      std::string msg = first_line();
+      release();
+      throw std::runtime_error(msg.empty() ? "qhull failed with exit code " +
+                                                 std::to_string(exitcode_)
+                                           : msg);
+    }
+  }
+  ~QhullRun() { release(); }
+  QhullRun(const QhullRun&) = delete;
+  QhullRun& operator=(const QhullRun&) = delete;
+
+  qhT* qh() { return &qh_; }
+
+ private:
+  std::string first_line() const {
+    std::string all(err_buf_ ? err_buf_ : "", err_len_);
+    std::size_t start = all.find_first_not_of(" \n\r\t");
+    if (start == std::string::npos) return {};
+    std::size_t end = all.find('\n', start);
+    return all.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  }
+  void release() {
+    if (released_) return;
+    released_ = true;
+    int curlong = 0, totlong = 0;
+    qh_freeqhull(&qh_, !qh_ALL);
+    qh_memfreeshort(&qh_, &curlong, &totlong);
+    if (err_) std::fclose(err_);
+    std::free(err_buf_);
+    err_ = nullptr;
+    err_buf_ = nullptr;
+  }
+
+  std::vector<coordT> coords_;  // Qhull wants a mutable array
+  qhT qh_{};
+  FILE* err_ = nullptr;
+  char* err_buf_ = nullptr;
+  std::size_t err_len_ = 0;
+  int exitcode_ = 0;
+  bool released_ = false;
+};
+
+}  // namespace
+
+std::vector<Index> qhull_hull2(const PointSet& pts) {
+  QhullRun run(pts, 2, "");
+  qhT* qh = run.qh();
+  // Directed hull edges A -> B (counter-clockwise), then one walk around.
+  std::map<Index, Index> next;
+  facetT* facet;
+  FORALLfacets {
+    auto* v0 = SETfirstt_(facet->vertices, vertexT);
+    auto* v1 = SETsecondt_(facet->vertices, vertexT);
+    auto a = static_cast<Index>(qh_pointid(qh, v0->point));
+    auto b = static_cast<Index>(qh_pointid(qh, v1->point));
+    if (facet->toporient ^ qh_ORIENTclock) next[a] = b;
+    else next[b] = a;
+  }
+  std::vector<Index> cycle;
+  if (next.empty()) return cycle;
+  Index start = next.begin()->first, v = start;
+  do {
+    cycle.push_back(v);
+    auto it = next.find(v);
+    if (it == next.end() || cycle.size() > next.size())
+      throw std::runtime_error("qhull_hull2: Qhull's facets do not form one cycle");
+    v = it->second;
+  } while (v != start);
+  if (cycle.size() != next.size())
+    throw std::runtime_error("qhull_hull2: Qhull's facets do not form one cycle");
+  return detail::canonical_cycle(std::move(cycle));
+}
+
+std::vector<Triangle> qhull_hull3(const PointSet& pts) {
+  QhullRun run(pts, 3, "Qt");
+  qhT* qh = run.qh();
+  std::vector<Triangle> tris;
+  facetT* facet;
+  FORALLfacets {
+    if (qh_setsize(qh, facet->vertices) != 3)
+      throw std::runtime_error("qhull_hull3: Qhull returned a non-triangular facet under Qt");
+    Triangle t;
+    for (int k = 0; k < 3; ++k) {
+      auto* v = static_cast<vertexT*>(facet->vertices->e[k].p);
+      t[static_cast<std::size_t>(k)] = static_cast<Index>(qh_pointid(qh, v->point));
+    }
+    // Qhull's printed order, then reversed to counter-clockwise from outside.
+    if (facet->toporient ^ qh_ORIENTclock) std::swap(t[0], t[1]);
+    tris.push_back(t);
+  }
+  return detail::canonical_triangles(std::move(tris));
+}
+
+}  // namespace flipflop::peers
