@@ -163,13 +163,13 @@ namespace {
 // first leaf with a non-zero complementary minor decides the sign.
 struct SosSearch {
   const IntLambda& m;
-  // memo of minor signs: index = rows * 256 + cols, value 2 = unknown
+  // memo of minor signs: index = (rows << k) | cols, value 2 = unknown
   std::vector<signed char> memo;
 
-  explicit SosSearch(const IntLambda& mat) : m(mat), memo(static_cast<size_t>(1) << 16, 2) {}
+  explicit SosSearch(const IntLambda& mat) : m(mat), memo(static_cast<size_t>(1) << (2 * mat.k), 2) {}
 
   int cached_minor(std::uint32_t rows, std::uint32_t cols) {
-    signed char& slot = memo[(rows << 8) | cols];
+    signed char& slot = memo[(rows << m.k) | cols];
     if (slot == 2) slot = static_cast<signed char>(minor_sign(m, rows, cols));
     return slot;
   }
