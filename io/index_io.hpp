@@ -23,16 +23,14 @@
 #include <vector>
 
 #include "io/input_error.hpp"
+#include "reference/canonical.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::io {
 
-// The counter-clockwise cycle rotated to start at its smallest index.
-std::vector<Index> canonical_hull2(std::vector<Index> ccw_cycle);
-
-// Each triangle rotated (cyclically) to put its smallest index first, then
-// the list sorted lexicographically.
-std::vector<Triangle> canonical_triangles(std::vector<Triangle> triangles);
+// The canonical form (reference/canonical.hpp), re-exported for writers' users.
+using ::flipflop::canonical_hull2;
+using ::flipflop::canonical_triangles;
 
 // One index per line.
 void write_hull2(std::ostream& os, const std::vector<Index>& cycle);

@@ -19,7 +19,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "peers/canonical.hpp"
+#include "reference/canonical.hpp"
 #include "peers/peers.hpp"
 
 namespace flipflop::peers {
@@ -124,7 +124,7 @@ std::vector<Index> cgal_hull2(const PointSet& pts, Hull2Algo algo) {
   if (out.size() < 3)
     throw std::runtime_error("cgal_hull2: input is lower-dimensional (all points collinear)");
   std::vector<Index> cycle(out.begin(), out.end());  // counter-clockwise
-  return detail::canonical_cycle(std::move(cycle));
+  return canonical_hull2(std::move(cycle));
 }
 
 std::vector<Triangle> cgal_hull3(const PointSet& pts) {
@@ -135,7 +135,7 @@ std::vector<Triangle> cgal_hull3(const PointSet& pts) {
     auto v = face_vertices(h.mesh, f);
     tris.push_back({h.index[v[0]], h.index[v[1]], h.index[v[2]]});
   }
-  return detail::canonical_triangles(std::move(tris));
+  return canonical_triangles(std::move(tris));
 }
 
 std::vector<Index> cgal_extreme_points_3(const PointSet& pts) {

@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-#include "peers/canonical.hpp"
+#include "reference/canonical.hpp"
 #include "peers/peers.hpp"
 
 namespace flipflop::peers {
@@ -34,7 +34,7 @@ std::vector<Triangle> finite_triangles(const T& t) {
   tris.reserve(t.number_of_faces());
   for (auto f : t.finite_face_handles())
     tris.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return detail::canonical_triangles(std::move(tris));
+  return canonical_triangles(std::move(tris));
 }
 
 }  // namespace

@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "peers/canonical.hpp"
+#include "reference/canonical.hpp"
 #include "peers/peers.hpp"
 
 extern "C" {
@@ -121,7 +121,7 @@ std::vector<Index> qhull_hull2(const PointSet& pts) {
   } while (v != start);
   if (cycle.size() != next.size())
     throw std::runtime_error("qhull_hull2: Qhull's facets do not form one cycle");
-  return detail::canonical_cycle(std::move(cycle));
+  return canonical_hull2(std::move(cycle));
 }
 
 std::vector<Triangle> qhull_hull3(const PointSet& pts) {
@@ -141,7 +141,7 @@ std::vector<Triangle> qhull_hull3(const PointSet& pts) {
     if (facet->toporient ^ qh_ORIENTclock) std::swap(t[0], t[1]);
     tris.push_back(t);
   }
-  return detail::canonical_triangles(std::move(tris));
+  return canonical_triangles(std::move(tris));
 }
 
 }  // namespace flipflop::peers

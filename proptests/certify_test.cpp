@@ -11,6 +11,7 @@
 
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
+#include "reference/canonical.hpp"
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
 
@@ -61,13 +62,6 @@ PointSet points(int dim, std::vector<double> c, std::vector<double> w = {}) {
 }
 
 bool spans(const PointSet& ps) { return dimension_problem(ps).empty(); }
-
-// canonical form of DESIGN.md (rotation to the smallest index, sorted lines)
-std::vector<Triangle> canon(std::vector<Triangle> t) {
-  for (Triangle& x : t) std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
-  std::sort(t.begin(), t.end());
-  return t;
-}
 
 }  // namespace
 
@@ -224,7 +218,7 @@ TEST_CASE("certify: broken hull3 outputs are rejected", "[certify]") {
           break;
         }
     for (std::size_t k = 1; k + 1 < cyc.size(); ++k) rest.push_back({cyc[0], cyc[k], cyc[k + 1]});
-    auto r = certify::hull3(ps, canon(rest), Level::canonical);
+    auto r = certify::hull3(ps, canonical_triangles(rest), Level::canonical);
     RC_ASSERT(!r.ok);  // point-inside, convex-edge, or a chord of the fan that already was an edge
   });
   SECTION("a facet with a point beyond it (tetrahedron missing an extreme point)") {
@@ -236,7 +230,7 @@ TEST_CASE("certify: broken hull3 outputs are rejected", "[certify]") {
     CHECK(r.detail.find("point 4") != std::string::npos);
     PointSet inside = points(3, {0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4, 1, 1, 1});
     CHECK(certify::hull3(inside, tet, Level::exact).ok);
-    CHECK(certify::hull3(inside, canon(tet), Level::canonical).ok);
+    CHECK(certify::hull3(inside, canonical_triangles(tet), Level::canonical).ok);
   }
   SECTION("two disjoint surfaces") {
     PointSet ps = points(3, {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 5, 5, 5, 6, 5, 5, 5, 6, 5, 5, 5, 6});
@@ -270,7 +264,7 @@ TEST_CASE("certify: broken rt2 outputs are rejected", "[certify]") {
               auto bad = t;
               bad[i] = {c, a, d};
               bad[j] = {d, b, c};
-              auto r = certify::rt2(ps, canon(bad), Level::canonical);
+              auto r = certify::rt2(ps, canonical_triangles(bad), Level::canonical);
               RC_ASSERT(!r.ok);
               RC_ASSERT(r.condition == "locally-regular");
               flipped_one = true;
@@ -290,7 +284,7 @@ TEST_CASE("certify: broken rt2 outputs are rejected", "[certify]") {
     auto ts = brute::rt2(sub);  // indices of sub: shift back
     for (auto& tr : ts)
       for (Index& x : tr) x = x >= p ? x + 1 : x;
-    auto r = certify::rt2(ps, canon(ts), Level::canonical);
+    auto r = certify::rt2(ps, canonical_triangles(ts), Level::canonical);
     RC_ASSERT(!r.ok);
   });
   SECTION("a clockwise triangle") {

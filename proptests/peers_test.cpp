@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "peers/peers.hpp"
+#include "reference/canonical.hpp"
 #include "predicates/predicates.hpp"
 
 using namespace flipflop;
@@ -128,13 +129,6 @@ void check_regular2(const PointSet& ps, const std::vector<Triangle>& tris,
   }
 }
 
-// Independent canonicalisation for the command-line comparison.
-std::vector<Triangle> canonical(std::vector<Triangle> t) {
-  for (auto& x : t) std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
 }  // namespace
 
 TEST_CASE("peers: Qhull and both CGAL 2D hulls agree and are the CCW convex hull", "[peers]") {
@@ -185,7 +179,7 @@ TEST_CASE("peers: cgal_hull3 reports duplicated locations under their smallest i
     for (Index i = static_cast<Index>(origin.size()); i-- > 0;) first[origin[i]] = i;
     std::vector<Triangle> expected;
     for (const Triangle& t : pp::cgal_hull3(base)) expected.push_back({first[t[0]], first[t[1]], first[t[2]]});
-    RC_ASSERT(pp::cgal_hull3(ps) == canonical(expected));
+    RC_ASSERT(pp::cgal_hull3(ps) == canonical_triangles(expected));
   });
 }
 
@@ -270,7 +264,7 @@ TEST_CASE("peers: the qhull command line agrees with libqhull_r", "[peers]") {
     // Qhull prints facets with inward normals (clockwise seen from outside,
     // qh_ORIENTclock = 0); flipflop's convention is counter-clockwise.
     for (auto& t : cli) REQUIRE(out >> t[0] >> t[2] >> t[1]);
-    REQUIRE(canonical(cli) == pp::qhull_hull3(ps));
+    REQUIRE(canonical_triangles(cli) == pp::qhull_hull3(ps));
   }
 }
 

@@ -5,16 +5,9 @@
 #include <stdexcept>
 
 #include "predicates/predicates.hpp"
+#include "reference/canonical.hpp"
 
 namespace flipflop::brute {
-
-namespace {
-std::vector<Triangle> canonical(std::vector<Triangle> tris) {
-  for (Triangle& t : tris) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-  std::sort(tris.begin(), tris.end());
-  return tris;
-}
-}  // namespace
 
 std::vector<Index> hull2(const PointSet& ps) {
   const Index n = static_cast<Index>(ps.size());
@@ -56,7 +49,7 @@ std::vector<Triangle> hull3(const PointSet& ps) {
         if (neg == 0) out.push_back({i, j, k});       // all others inside: (i,j,k) faces out
         else if (pos == 0) out.push_back({i, k, j});  // opposite orientation
       }
-  return canonical(std::move(out));
+  return canonical_triangles(std::move(out));
 }
 
 std::vector<Triangle> rt2(const PointSet& ps) {
@@ -73,7 +66,7 @@ std::vector<Triangle> rt2(const PointSet& ps) {
           if (l != i && l != j && l != k && pred::power2d(W(t[0]), W(t[1]), W(t[2]), W(l)) > 0) regular = false;
         if (regular) out.push_back(t);
       }
-  return canonical(std::move(out));
+  return canonical_triangles(std::move(out));
 }
 
 }  // namespace flipflop::brute
