@@ -13,6 +13,7 @@
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
+#include "reference/hull2.hpp"
 
 namespace flipflop::cli {
 
@@ -50,7 +51,14 @@ void write_output(const std::string& path, const std::function<void(std::ostream
 }  // namespace
 
 std::vector<std::string> available_backends() { return {"reference"}; }
-std::vector<std::string> available_algorithms() { return {"brute"}; }
+
+std::vector<std::string> available_algorithms(const std::string& kind) {
+  std::vector<std::string> algos;
+  if (kind == "hull2") algos = ref::hull2_algorithms();
+  algos.push_back("brute");
+  return algos;
+}
+std::string default_algorithm(const std::string& kind) { return available_algorithms(kind).front(); }
 
 int run_gen(const GenArgs& a) {
   if (a.list) {
@@ -81,13 +89,21 @@ int run_gen(const GenArgs& a) {
 
 int run_compute(const ComputeArgs& a) {
   const PointSet ps = read_input(a.in, a.kind);
-  if (ps.size() > brute_limit(a.kind))
+  const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
+  if (algo == "brute" && ps.size() > brute_limit(a.kind))
     throw UsageError(a.in + ": " + std::to_string(ps.size()) + " points exceed the limit of " +
                      std::to_string(brute_limit(a.kind)) + " of the brute-force reference ('--algo brute')");
   const auto t0 = Clock::now();
   std::vector<Index> cycle;
   std::vector<Triangle> tris;
-  if (a.kind == "hull2") cycle = brute::hull2(ps);
+  std::string counts;
+  if (a.kind == "hull2" && algo != "brute") {
+    ref::Hull2Stats st;
+    cycle = ref::hull2(ps, algo, &st);
+    counts = "2-1 flips " + std::to_string(st.flips_2_1) + ", flip-pop passes " + std::to_string(st.rounds) +
+             ", points discarded early " + std::to_string(st.discarded_early) + ", insertions " +
+             std::to_string(st.insertions) + ", twists " + std::to_string(st.twists);
+  } else if (a.kind == "hull2") cycle = brute::hull2(ps);
   else if (a.kind == "hull3") tris = brute::hull3(ps);
   else tris = brute::rt2(ps);
   const double t_compute = seconds_since(t0);
@@ -105,10 +121,11 @@ int run_compute(const ComputeArgs& a) {
     else io::write_triangles(os, tris);
   });
   if (a.stats) {
-    std::cerr << a.kind << ": backend " << a.backend << ", algo " << a.algo << ", " << ps.size() << " points, "
+    std::cerr << a.kind << ": backend " << a.backend << ", algo " << algo << ", " << ps.size() << " points, "
               << (a.kind == "hull2" ? cycle.size() : tris.size())
               << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
               << t_certify << " s (canonical)\n";
+    if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
   }
   return 0;
 }

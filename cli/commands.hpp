@@ -29,7 +29,7 @@ struct ComputeArgs {
   std::string kind;  // hull2, hull3, rt2, dt2
   std::string in, out;
   std::string backend = "reference";
-  std::string algo = "brute";
+  std::string algo;  // empty: the kind's default (default_algorithm)
   bool stats = false;
 };
 
@@ -38,10 +38,11 @@ struct CertifyArgs {
   bool canonical = false;
 };
 
-// The backends and algorithms that exist in this build (the command line
-// accepts exactly these).
+// The backends and, per kind, the algorithms that exist in this build (the
+// command line accepts exactly these; the first is the default).
 std::vector<std::string> available_backends();
-std::vector<std::string> available_algorithms();
+std::vector<std::string> available_algorithms(const std::string& kind);
+std::string default_algorithm(const std::string& kind);
 
 int run_gen(const GenArgs& a);
 int run_compute(const ComputeArgs& a);

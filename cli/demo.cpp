@@ -3,9 +3,9 @@
 // For each job: generate the input (thesis distributions, §4.4, §5.4, §6.5),
 // compute the answer with every program available, certify every answer
 // exactly, and print the timings. A row is printed only for an answer that was
-// computed and certified in this run. flipflop's own answers come from the
-// exact brute-force reference (small inputs); its flip-based algorithms are
-// added by later issues.
+// computed and certified in this run. flipflop's rows are its sequential exact
+// reference (thesis algorithms where they exist, the brute-force definition on
+// small degenerate inputs otherwise), certified at the canonical level.
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -17,6 +17,7 @@
 #include "peers/peers.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
+#include "reference/hull2.hpp"
 
 namespace flipflop::cli {
 
@@ -40,7 +41,10 @@ template <class Result>
 bool run_one(const std::string& job, const std::string& program, const PointSet& ps,
              const std::function<Result()>& compute,
              const std::function<certify::Report(const Result&, certify::Level)>& check, certify::Level level) {
-  Row row{job, program, ps.size()};
+  Row row;
+  row.job = job;
+  row.program = program;
+  row.n = ps.size();
   auto t0 = Clock::now();
   Result res = compute();
   row.t_compute = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -91,6 +95,10 @@ int run_demo() {
   {
     gen::Options o;
     PointSet ps = gen::generate("disk", 1000000, o);
+    all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-insert", ps, [&] { return ref::hull2_graham_insert(ps); },
+                             h2(ps), Level::canonical);
+    all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-sort", ps, [&] { return ref::hull2_graham_sort(ps); },
+                             h2(ps), Level::canonical);
     all_ok &= run_one<Cycle>("hull2 disk", "Qhull", ps, [&] { return peers::qhull_hull2(ps); }, h2(ps), Level::exact);
     all_ok &= run_one<Cycle>("hull2 disk", "CGAL ch_akl_toussaint", ps,
                              [&] { return peers::cgal_hull2(ps, peers::Hull2Algo::akl_toussaint); }, h2(ps),

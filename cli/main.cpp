@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
     cmd->add_option("-o,--output", c.out, "output file (default: standard output)");
     cmd->add_option("--backend", c.backend, "backend computing the result")
         ->check(CLI::IsMember(available_backends()));
-    cmd->add_option("--algo", c.algo, "algorithm of the backend")->check(CLI::IsMember(available_algorithms()));
+    cmd->add_option("--algo", c.algo, "algorithm (default " + default_algorithm(kinds[k]) + ")")
+        ->check(CLI::IsMember(available_algorithms(kinds[k])));
     cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");
     compute_cmds.push_back(cmd);
   }
