@@ -114,6 +114,21 @@ TEST_CASE("cli: bad input matrix gives one line and exit code 2", "[cli]") {
     expect_input_error(run(t, "hull2 " + (t.dir / "missing.xyz").string()), "missing.xyz", "");
     expect_input_error(run(t, "hull2 " + t.dir.string() + "/"), t.dir.string(), "");
   }
+  SECTION("a 2 GB file of garbage gives one line at once") {
+    // sparse: no disk space used; every byte reads as NUL
+    fs::path big = t.dir / "garbage.xyz";
+    { std::ofstream(big) << ""; }
+    fs::resize_file(big, std::uintmax_t{2} << 30);
+    expect_input_error(run(t, "hull2 " + big.string()), "garbage.xyz:1", "");
+    // random bytes in each format
+    std::string bytes;
+    std::srand(7);
+    for (int i = 0; i < 1 << 20; ++i) bytes.push_back(static_cast<char>(std::rand() & 0xff));
+    for (const char* name : {"random.xyz", "random.off", "random.ply"}) {
+      fs::path p = t.file(name, bytes);
+      expect_input_error(run(t, "hull3 " + p.string()), name, "");
+    }
+  }
   SECTION("unknown extension") {
     fs::path p = t.file("points.txt", "0 0\n1 0\n0 1\n");
     expect_input_error(run(t, "hull2 " + p.string()), "points.txt", "");
