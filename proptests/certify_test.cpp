@@ -161,6 +161,23 @@ TEST_CASE("certify: exact level accepts the alternative answers of degenerate in
     CHECK(c02 != c13);  // exactly one is the perturbed answer
     CHECK((c02 ? d02 : d13) == brute::rt2(ps));
   }
+  SECTION("a copy of a hull corner may be left out (found by the property suite)") {
+    // (0,0) twice: CGAL keeps one copy; the perturbation moves the other out of
+    // every triangle, but at the exact level it is a redundant duplicate
+    PointSet ps = points(2, {0, 0, 0, -1, 1, 0, 0, 0});
+    CHECK(certify::rt2(ps, {{0, 1, 2}}, Level::exact).message() == "certified");
+    CHECK(certify::rt2(ps, {{1, 2, 3}}, Level::exact).message() == "certified");
+    // a heavier copy lifts lower: leaving it out is wrong
+    PointSet heavy = points(2, {0, 0, 0, -1, 1, 0, 0, 0}, {0, 0, 0, 1});
+    CHECK(certify::rt2(heavy, {{0, 1, 2}}, Level::exact).condition == "missing-point-redundant");
+    CHECK(certify::rt2(heavy, {{1, 2, 3}}, Level::exact).ok);
+  }
+  SECTION("tiny coordinates (floating-point estimates underflow)") {
+    PointSet ps = points(3, {0, 0, 0, 1e-301, 0, 0, 0, 1e-301, 0, 0, 0, 1e-301});
+    auto h = brute::hull3(ps);
+    CHECK(certify::hull3(ps, h, Level::exact).message() == "certified");
+    CHECK(certify::hull3(ps, h, Level::canonical).message() == "certified");
+  }
   SECTION("a cube's facets may be split along either diagonal") {
     PointSet ps = points(3, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1});
     auto canon = brute::hull3(ps);

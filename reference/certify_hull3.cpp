@@ -89,7 +89,14 @@ bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index
   double best = -1;
   for (Index v : verts)
     if (double d = dist2(P(a), P(v)); d > best) best = d, b = v;
-  if (P(a)[0] == P(b)[0] && P(a)[1] == P(b)[1] && P(a)[2] == P(b)[2]) return false;
+  auto same = [&](Index u, Index v) { return P(u)[0] == P(v)[0] && P(u)[1] == P(v)[1] && P(u)[2] == P(v)[2]; };
+  if (same(a, b)) {
+    // the floating-point estimate underflowed (tiny coordinates): any other
+    // location will do, the exact tests below decide
+    auto it = std::find_if(verts.begin(), verts.end(), [&](Index v) { return !same(a, v); });
+    if (it == verts.end()) return false;
+    b = *it;
+  }
   auto cross_norm = [&](Index c) {
     double u[3], w[3];
     for (int j = 0; j < 3; ++j) u[j] = P(b)[j] - P(a)[j], w[j] = P(c)[j] - P(a)[j];

@@ -206,19 +206,34 @@ Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
     }
     if (found) {
       if (Report r = check(tris[cur]); !r.ok) return r;
-    } else {
-      // fallback: the triangle containing p (perturbed, so exactly one)
-      bool located = false;
-      for (const Triangle& t : tris) {
-        if (ck.orient_sos(t[0], t[1], p) > 0 && ck.orient_sos(t[1], t[2], p) > 0 && ck.orient_sos(t[2], t[0], p) > 0) {
-          if (Report r = check(t); !r.ok) return r;
-          located = true;
-          break;
-        }
-      }
-      if (!located)
-        return Report::fail("missing-point-redundant", "point " + std::to_string(p) + " lies in no triangle");
+      continue;
     }
+    // The walk left the triangulation or did not settle. Canonical level: p is
+    // then outside every perturbed triangle — a point of the perturbed hull
+    // that is not a vertex. Exact level: p may lie exactly on the boundary
+    // (a copy of a hull vertex, a point on a hull edge) while the perturbation
+    // moves it out; its lifted point is compared with the lifted surface at p
+    // through any non-flat triangle whose closed region contains p exactly
+    // (the surface is continuous, so every such triangle gives the same
+    // answer; flat triangles have no region and are skipped).
+    bool located = false;
+    for (const Triangle& t : tris) {
+      bool inside = canonical
+                        ? ck.orient_sos(t[0], t[1], p) > 0 && ck.orient_sos(t[1], t[2], p) > 0 &&
+                              ck.orient_sos(t[2], t[0], p) > 0
+                        : pred::orient2d_exact(ck.P(t[0]), ck.P(t[1]), ck.P(t[2])) > 0 &&
+                              pred::orient2d_exact(ck.P(t[0]), ck.P(t[1]), ck.P(p)) >= 0 &&
+                              pred::orient2d_exact(ck.P(t[1]), ck.P(t[2]), ck.P(p)) >= 0 &&
+                              pred::orient2d_exact(ck.P(t[2]), ck.P(t[0]), ck.P(p)) >= 0;
+      if (!inside) continue;
+      if (Report r = check(t); !r.ok) return r;
+      located = true;
+      break;
+    }
+    if (!located)
+      return Report::fail("missing-point-redundant", "point " + std::to_string(p) +
+                                                         " is not a vertex and lies in no triangle" +
+                                                         (canonical ? " under the perturbation" : ""));
   }
   return Report::pass();
 }
