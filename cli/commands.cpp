@@ -14,6 +14,7 @@
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull2.hpp"
+#include "reference/rt2.hpp"
 
 namespace flipflop::cli {
 
@@ -55,6 +56,8 @@ std::vector<std::string> available_backends() { return {"reference"}; }
 std::vector<std::string> available_algorithms(const std::string& kind) {
   std::vector<std::string> algos;
   if (kind == "hull2") algos = ref::hull2_algorithms();
+  if (kind == "rt2") algos = {"ffrt", "ffrt-vfirst"};
+  if (kind == "dt2") algos = {"ffrt", "ffrt-vfirst", "lawson"};
   algos.push_back("brute");
   return algos;
 }
@@ -103,6 +106,19 @@ int run_compute(const ComputeArgs& a) {
     counts = "2-1 flips " + std::to_string(st.flips_2_1) + ", flip-pop passes " + std::to_string(st.rounds) +
              ", points discarded early " + std::to_string(st.discarded_early) + ", insertions " +
              std::to_string(st.insertions) + ", twists " + std::to_string(st.twists);
+  } else if ((a.kind == "rt2" || a.kind == "dt2") && algo != "brute") {
+    // ffRT (§5.3): 1-3 insertions with the virtual vertex, then flip-flop
+    // (Algorithm 5: combined V/D criterion, or V-criterion first); Lawson
+    // (§3.3.1) for unweighted input.
+    ref::Rt2Stats st;
+    if (algo == "lawson") tris = ref::dt2_lawson(ps, &st);
+    else
+      tris = ref::rt2_ffrt(ps, &st,
+                           algo == "ffrt-vfirst" ? ref::FlipFlopVariant::v_first : ref::FlipFlopVariant::combined);
+    counts = "2-2 flips " + std::to_string(st.flips_2_2) + ", 3-1 flips " + std::to_string(st.flips_3_1) +
+             " (D-criterion flips among them " + std::to_string(st.flops) + "), 1-3 flips " +
+             std::to_string(st.flips_1_3) + ", labelled redundant " + std::to_string(st.labelled_redundant) + ", discarded early " +
+             std::to_string(st.discarded_early) + ", rounds " + std::to_string(st.rounds);
   } else if (a.kind == "hull2") cycle = brute::hull2(ps);
   else if (a.kind == "hull3") tris = brute::hull3(ps);
   else tris = brute::rt2(ps);

@@ -18,6 +18,7 @@
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
 #include "reference/hull2.hpp"
+#include "reference/rt2.hpp"
 
 namespace flipflop::cli {
 
@@ -111,6 +112,8 @@ int run_demo() {
     o.wlo = 0;
     o.whi = 1e-5;
     PointSet ps = gen::generate("square", 100000, o);
+    all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps),
+                            Level::canonical);
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "CGAL Regular_triangulation_2", ps,
                             [&] { return peers::cgal_regular2(ps); }, r2(ps), Level::exact);
   }
@@ -130,8 +133,8 @@ int run_demo() {
     gen::Options o;
     PointSet ps = gen::generate("grid2", 144, o);
     const std::string job = "dt2 integer grid";
-    all_ok &= run_one<Tris>(job, "flipflop reference (brute)", ps, [&] { return brute::rt2(ps); }, r2(ps),
-                            Level::canonical);
+    all_ok &= run_one<Tris>(job, "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps), Level::canonical);
+    all_ok &= run_one<Tris>(job, "flipflop Lawson", ps, [&] { return ref::dt2_lawson(ps); }, r2(ps), Level::canonical);
     all_ok &= run_one<Tris>(job, "CGAL Delaunay_triangulation_2", ps, [&] { return peers::cgal_delaunay2(ps); },
                             r2(ps), Level::exact);
   }
