@@ -6,7 +6,7 @@ JOBS  ?= $(shell nproc)
 PKGS  := cmake g++ make libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
          libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev
 
-.PHONY: all deps configure build demo test clean
+.PHONY: all deps configure build demo test sanitize asan clean
 
 all: build
 
@@ -32,5 +32,23 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# ---- sanitizers (run by .ci/run) ---------------------------------------------
+# asan: AddressSanitizer + UndefinedBehaviorSanitizer build of the whole test
+#       suite (fewer RapidCheck cases per property: the sanitizers multiply run
+#       time; the Release suite runs the full count).
+SAN_CASES ?= 300
+ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-recover=null
+
+asan: deps
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) \
+	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
+	  { cat build-asan.configure.log; exit 1; }
+	cmake --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp ctest --output-on-failure -j $(JOBS)
+
+sanitize: asan
+
 clean:
-	rm -rf $(BUILD) $(BUILD).configure.log
+	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log

@@ -122,6 +122,13 @@ TEST_CASE("certify: broken hull2 outputs are rejected", "[certify]") {
     CHECK(r.condition == "point-inside");
     CHECK(r.detail.find("point 5") != std::string::npos);
   }
+  SECTION("a corner beyond collinear boundary vertices (found by fuzz_hull2)") {
+    // 3 and 4 lie on the edge 2-0 (x = -8); leaving out corner 2 must fail
+    PointSet ps = points(2, {-8, -8, 5, 0, -8, 7, -8, 1, -8, -1});
+    CHECK(certify::hull2(ps, {0, 1, 3, 4}, Level::exact).condition == "point-inside");
+    CHECK(certify::hull2(ps, {0, 1, 2, 3, 4}, Level::exact).ok);
+    CHECK(certify::hull2(ps, {0, 1, 2}, Level::exact).ok);
+  }
   SECTION("index errors") {
     PointSet ps = points(2, {0, 0, 1, 0, 0, 1});
     CHECK(certify::hull2(ps, {0, 1, 7}, Level::exact).condition == "vertex-indices");

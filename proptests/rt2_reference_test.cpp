@@ -80,8 +80,9 @@ PointSet family(const std::string& name, std::size_t n, std::uint64_t seed, bool
   o.whi = whi;
   if (name != "collinear-one-off") return gen::generate(name, n, o);
   PointSet ps = gen::generate("collinear2", n - 1, o);
-  const double* p = ps.point(0);
-  const double* q = ps.point(n > 2 ? 1 : 0);
+  // copies: push_back below may reallocate the coordinates
+  const double p[2] = {ps.point(0)[0], ps.point(0)[1]};
+  const double q[2] = {ps.point(n > 2 ? 1 : 0)[0], ps.point(n > 2 ? 1 : 0)[1]};
   ps.coords.push_back(p[0] + (q[1] - p[1]) + 1);  // off the line through p and q
   ps.coords.push_back(p[1] - (q[0] - p[0]) + 3);
   if (weighted) ps.weights.push_back(whi / 2);

@@ -107,13 +107,20 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level) {
   if (turns != 1)
     return Report::fail("winds-once", "the polygon winds " + std::to_string(turns) + " times around its interior");
 
-  // point-inside: fan from a strictly convex vertex v0, sectors found by binary
-  // search on the orientation of the fan rays (monotone since the fan spans
-  // less than a half-turn).
-  std::size_t s0 = 0;
-  if (!canonical)
-    while (s0 < m && ck.orient(L[(s0 + m - 1) % m], L[s0], L[(s0 + 1) % m]) <= 0) ++s0;
-  std::rotate(L.begin(), L.begin() + static_cast<long>(s0), L.end());
+  // point-inside: fan from a corner v0, sectors found by binary search on the
+  // orientation of the fan rays (monotone since the fan spans less than a
+  // half-turn). At the exact level the fan runs over the strictly convex
+  // corners only: the same region (the straight vertices lie on its edges,
+  // checked above), and no two fan rays coincide — with collinear boundary
+  // vertices on v0's edges, a point on such a ray beyond the last of them
+  // would otherwise be tested against a degenerate sector.
+  if (!canonical) {
+    std::vector<Index> corners;
+    for (std::size_t k = 0; k < m; ++k)
+      if (ck.orient(L[(k + m - 1) % m], L[k], L[(k + 1) % m]) > 0) corners.push_back(L[k]);
+    L.swap(corners);
+  }
+  const std::size_t mc = L.size();
   const Index v0 = L[0];
   for (Index p = 0; p < n; ++p) {
     if (is_vertex[p]) continue;
@@ -124,8 +131,8 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level) {
     };
     const int strict = canonical ? 0 : -1;  // smallest accepted orientation is strict+1
     if (ck.orient(v0, L[1], p) <= strict) return outside(v0, L[1]);
-    if (-ck.orient(v0, L[m - 1], p) <= strict) return outside(L[m - 1], v0);
-    std::size_t lo = 1, hi = m - 2;  // largest k in [1, m-2] with orient(v0, L[k], p) >= 0
+    if (-ck.orient(v0, L[mc - 1], p) <= strict) return outside(L[mc - 1], v0);
+    std::size_t lo = 1, hi = mc - 2;  // largest k in [1, m-2] with orient(v0, L[k], p) >= 0
     while (lo < hi) {
       std::size_t mid = (lo + hi + 1) / 2;
       if (ck.orient(v0, L[mid], p) >= 0)
