@@ -1,5 +1,11 @@
-// predicates_check.cpp — decoding fuzz bytes into a predicate instance and
-// checking it (predicates_check.hpp).
+// predicates_check.cpp — fuzz_predicates: raw bytes decoded into one
+// predicate instance and checked:
+//   1. Mode::filtered == Mode::gmp for the exact and the SoS variant;
+//   2. SoS is non-zero when the ids are distinct, zero when an id repeats;
+//   3. SoS equals the exact sign whenever that is non-zero;
+//   4. swapping the first two arguments negates both signs.
+// Non-finite decoded values are skipped (the API requires finite inputs).
+// A violation prints the decoded instance (hexadecimal floats) and aborts.
 //
 // Byte layout (missing bytes read as 0, extra bytes are ignored):
 //   byte 0   predicate: index mod 13 into all_specs() — orient2d, orient3d,
@@ -20,7 +26,7 @@
 //     3: one byte per value from a table of special magnitudes: bits 0-3
 //        pick 0, 2^-1074, 1e-310, DBL_MIN, 1e-300, 0.1, 1, 3, 1e15, 2^53,
 //        1e300, DBL_MAX, ... ; bit 4 the sign; bits 5-7 a factor 1..8.
-#include "fuzz/predicates_check.hpp"
+#include "fuzz/checks.hpp"
 
 #include <cfloat>
 #include <cmath>

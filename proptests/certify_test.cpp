@@ -10,6 +10,7 @@
 #include <set>
 
 #include "predicates/predicates.hpp"
+#include "proptests/support/planar_inputs.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/canonical.hpp"
 #include "reference/certify.hpp"
@@ -18,18 +19,6 @@
 using namespace flipflop;
 using certify::Level;
 
-namespace flipflop {
-// counterexamples printed by RapidCheck
-void showValue(const PointSet& ps, std::ostream& os) {
-  os << ps.size() << " points:";
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    os << " (";
-    for (int j = 0; j < ps.dim; ++j) os << (j ? " " : "") << ps.point(i)[j];
-    if (ps.weighted) os << " w=" << ps.weights[i];
-    os << ")";
-  }
-}
-}  // namespace flipflop
 
 namespace {
 

@@ -21,6 +21,7 @@
 #include <random>
 #include <set>
 
+#include "proptests/support/planar_inputs.hpp"
 #include "gen/generate.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/rc_scaled.hpp"
@@ -35,20 +36,10 @@ using namespace flipflop;
 namespace tri = flipflop::ref::tri;
 namespace ff = flipflop::ref::ff;
 
-namespace flipflop {
-void showValue(const PointSet& ps, std::ostream& os) {
-  os << ps.size() << " points:";
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    os << " (" << ps.point(i)[0] << " " << ps.point(i)[1];
-    if (ps.weighted) os << " w=" << ps.weights[i];
-    os << ")";
-  }
-}
-}  // namespace flipflop
 
 namespace {
 
-bool spans(const PointSet& ps) { return ps.size() >= 3 && dimension_problem(ps).empty(); }
+using test::spans;
 
 bool has_duplicates(const PointSet& ps) {
   std::set<std::pair<double, double>> seen;
@@ -161,33 +152,7 @@ tri::Triangulation2 constructed(const PointSet& ps, bool discard, std::size_t ro
   return T;
 }
 
-int orient(const PointSet& ps, Index a, Index b, Index c) {
-  return pred::orient2d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)});
-}
-
-// A triangulation of conv(S) with every point a vertex: the fan of the hull,
-// then the other points inserted in a random order by 1-3 splits, no flips.
-std::vector<Triangle> random_insertion(const PointSet& ps, std::uint64_t seed) {
-  const std::vector<Index> h = brute::hull2(ps);
-  std::vector<Triangle> t;
-  for (std::size_t i = 1; i + 1 < h.size(); ++i) t.push_back({h[0], h[i], h[i + 1]});
-  std::vector<Index> order;
-  for (Index i = 0; i < ps.size(); ++i)
-    if (std::find(h.begin(), h.end(), i) == h.end()) order.push_back(i);
-  std::mt19937_64 rng(seed);
-  std::shuffle(order.begin(), order.end(), rng);
-  for (Index p : order) {
-    std::size_t k = 0;
-    while (!(orient(ps, t[k][0], t[k][1], p) > 0 && orient(ps, t[k][1], t[k][2], p) > 0 &&
-             orient(ps, t[k][2], t[k][0], p) > 0))
-      ++k;
-    const Triangle x = t[k];
-    t[k] = {x[0], x[1], p};
-    t.push_back({x[1], x[2], p});
-    t.push_back({x[2], x[0], p});
-  }
-  return t;
-}
+using test::random_insertion;
 
 // ---- inputs -------------------------------------------------------------------------
 

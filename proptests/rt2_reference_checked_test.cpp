@@ -15,6 +15,7 @@
 #include <random>
 #include <set>
 
+#include "proptests/support/planar_inputs.hpp"
 #include "gen/generate.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/rc_scaled.hpp"
@@ -36,64 +37,16 @@ namespace ff = flipflop::ref::ff;
 
 static_assert(FF_CHECKED, "this test must link the checked build of the reference");
 
-namespace flipflop {
-void showValue(const PointSet& ps, std::ostream& os) {
-  os << ps.size() << " points:";
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    os << " (" << ps.point(i)[0] << " " << ps.point(i)[1];
-    if (ps.weighted) os << " w=" << ps.weights[i];
-    os << ")";
-  }
-}
-}  // namespace flipflop
 
 namespace {
 
-bool spans(const PointSet& ps) { return ps.size() >= 3 && dimension_problem(ps).empty(); }
+using test::spans;
 
 rc::Gen<PointSet> gen_planar(int nmin, int nmax, bool weighted) {
-  return rc::gen::exec([=] {
-    const int n = *rc::gen::inRange(nmin, nmax + 1);
-    const bool integer = *rc::gen::arbitrary<bool>();
-    const int r = *rc::gen::inRange(1, 6);
-    PointSet ps;
-    ps.dim = 2;
-    ps.weighted = weighted;
-    for (int i = 0; i < 2 * n; ++i)
-      ps.coords.push_back(integer ? double(*rc::gen::inRange(0, r + 1))
-                                  : *rc::gen::inRange(-1000000, 1000001) / 1048576.0);
-    for (int i = 0; weighted && i < n; ++i)
-      ps.weights.push_back(integer ? double(*rc::gen::inRange(0, 4)) : *rc::gen::inRange(0, 1000) / 4096.0);
-    return ps;
-  });
+  return test::gen_small_points(2, nmin, nmax, weighted, 5);
 }
 
-int orient(const PointSet& ps, Index a, Index b, Index c) {
-  return pred::orient2d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)});
-}
-
-// hull fan + random-order insertion without flips: every point a vertex
-std::vector<Triangle> random_insertion(const PointSet& ps, std::uint64_t seed) {
-  const std::vector<Index> h = brute::hull2(ps);
-  std::vector<Triangle> t;
-  for (std::size_t i = 1; i + 1 < h.size(); ++i) t.push_back({h[0], h[i], h[i + 1]});
-  std::vector<Index> order;
-  for (Index i = 0; i < ps.size(); ++i)
-    if (std::find(h.begin(), h.end(), i) == h.end()) order.push_back(i);
-  std::mt19937_64 rng(seed);
-  std::shuffle(order.begin(), order.end(), rng);
-  for (Index p : order) {
-    std::size_t k = 0;
-    while (!(orient(ps, t[k][0], t[k][1], p) > 0 && orient(ps, t[k][1], t[k][2], p) > 0 &&
-             orient(ps, t[k][2], t[k][0], p) > 0))
-      ++k;
-    const Triangle x = t[k];
-    t[k] = {x[0], x[1], p};
-    t.push_back({x[1], x[2], p});
-    t.push_back({x[2], x[0], p});
-  }
-  return t;
-}
+using test::random_insertion;
 
 // Every algorithm on ps, with all checks on; results equal brute force (or,
 // beyond 35 points, the certified answer of ffRT).

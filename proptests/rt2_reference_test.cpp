@@ -19,6 +19,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "proptests/support/planar_inputs.hpp"
 #include "gen/generate.hpp"
 #include "io/index_io.hpp"
 #include "peers/peers.hpp"
@@ -36,39 +37,13 @@ using certify::Level;
 using ref::FlipFlopVariant;
 using ref::Rt2Stats;
 
-namespace flipflop {
-// counterexamples printed by RapidCheck
-void showValue(const PointSet& ps, std::ostream& os) {
-  os << ps.size() << " points:";
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    os << " (" << ps.point(i)[0] << " " << ps.point(i)[1];
-    if (ps.weighted) os << " w=" << ps.weights[i];
-    os << ")";
-  }
-}
-}  // namespace flipflop
 
 namespace {
 
-bool spans(const PointSet& ps) { return ps.size() >= 3 && dimension_problem(ps).empty(); }
+using test::spans;
 
-// Small planar sets: integer coordinates in [0, r] (collinear, cocircular and
-// duplicate points) with integer weights, or random doubles with weights.
 rc::Gen<PointSet> gen_planar(int nmin, int nmax, bool weighted) {
-  return rc::gen::exec([=] {
-    const int n = *rc::gen::inRange(nmin, nmax + 1);
-    const bool integer = *rc::gen::arbitrary<bool>();
-    const int r = *rc::gen::inRange(1, 5);
-    PointSet ps;
-    ps.dim = 2;
-    ps.weighted = weighted;
-    for (int i = 0; i < 2 * n; ++i)
-      ps.coords.push_back(integer ? double(*rc::gen::inRange(0, r + 1))
-                                  : *rc::gen::inRange(-1000000, 1000001) / 1048576.0);
-    for (int i = 0; weighted && i < n; ++i)
-      ps.weights.push_back(integer ? double(*rc::gen::inRange(0, 4)) : *rc::gen::inRange(0, 1000) / 4096.0);
-    return ps;
-  });
+  return test::gen_small_points(2, nmin, nmax, weighted, 4);
 }
 
 // A generator family, or "collinear-one-off": collinear2 plus one point off the line.
@@ -171,13 +146,6 @@ std::vector<Index> non_hull_points(const PointSet& ps) {
   return out;
 }
 
-// Every point a vertex, inserted in a random order into the hull fan.
-std::vector<Triangle> random_insertion_triangulation(const PointSet& ps, std::uint64_t seed) {
-  std::vector<Index> order = non_hull_points(ps);
-  std::mt19937_64 rng(seed);
-  std::shuffle(order.begin(), order.end(), rng);
-  return insert_without_flips(ps, hull_fan(ps), order);
-}
 
 PointSet with_zero_weights(PointSet ps) {
   ps.weighted = false;
@@ -331,7 +299,7 @@ TEST_CASE("dt2: Lawson == flip-flop with zero weights == ffRT with zero weights 
         REQUIRE(ref::rt2_ffrt(zero) == ffrt);
         REQUIRE(ref::dt2_lawson(zero) == lawson);
         const auto ff_fan = ref::flip_flop(ps, hull_fan(ps));
-        const auto ff_all = ref::flip_flop(ps, random_insertion_triangulation(ps, seed));
+        const auto ff_all = ref::flip_flop(ps, test::random_insertion(ps, seed));
         REQUIRE(lawson == ffrt);
         REQUIRE(ff_fan == ffrt);
         REQUIRE(ff_all == ffrt);
@@ -340,7 +308,7 @@ TEST_CASE("dt2: Lawson == flip-flop with zero weights == ffRT with zero weights 
         io::write_triangles(b, ffrt);
         REQUIRE(a.str() == b.str());
         if (f != "duplicates2") {  // distinct points: all are vertices, Lawson's theorem applies
-          REQUIRE(ref::lawson(ps, random_insertion_triangulation(ps, seed + 100)) == ffrt);
+          REQUIRE(ref::lawson(ps, test::random_insertion(ps, seed + 100)) == ffrt);
         }
         ++cases;
       }
@@ -407,7 +375,7 @@ TEST_CASE("rt2: flip-flop from deliberately bad triangulations reaches the same 
           INFO(f << " n=" << n << " seed=" << seed << " whi=" << whi);
           const auto want = brute::rt2(ps);
           // every point a vertex, random insertion order, no flips: many redundant vertices
-          const auto all = random_insertion_triangulation(ps, seed);
+          const auto all = test::random_insertion(ps, seed);
           for (auto variant : {FlipFlopVariant::combined, FlipFlopVariant::v_first}) {
             Rt2Stats st;
             REQUIRE(ref::flip_flop(ps, all, variant, &st) == want);

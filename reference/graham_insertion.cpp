@@ -47,7 +47,8 @@ ChainPolygon graham_insertion_polygon(const PointSet& ps, Hull2Stats* stats, con
   std::mt19937_64 rng(options.seed);
 
   // line 1: {v_l, v_r} <- the leftmost and rightmost points of S
-  const auto [vl, vr] = leftmost_rightmost(ps);
+  const auto lr_pair = leftmost_rightmost(ps);
+  const Index vl = lr_pair.first, vr = lr_pair.second;
   // line 3: P <- <v_r, v_l>: the edges v_r -> v_l (upper) and v_l -> v_r (lower).
   // An edge is named by its first vertex: p names p -> next[p].
   std::vector<Index> next(n, kNone);

@@ -1,0 +1,154 @@
+// hull2_check.cpp — fuzz_hull2: every reference 2D hull algorithm against the
+// definition, and the certifier against small edits of the answer.
+//
+// Bytes: a 2D point set of 1..64 points (fuzz_input.hpp: small integers,
+// duplicates, collinear runs, ulp jitter, huge / tiny magnitudes), then bytes
+// choosing the edits below. Checked:
+//   * input that does not span the plane (affine_dimension < 2): every
+//     algorithm throws std::invalid_argument and the certifier rejects any
+//     cycle at both levels;
+//   * otherwise every algorithm of ref::hull2_algorithms() (graham-sort,
+//     graham-insert, twist — all fast at this size) returns the same canonical
+//     cycle, equal to brute::hull2 (the definition, for n <= 40), and
+//     certify::hull2 accepts it at Level::canonical and Level::exact;
+//   * the certifier at Level::canonical accepts only THE answer (the SoS hull
+//     is unique): removing a vertex, swapping two neighbours, reversing the
+//     cycle, inserting a non-vertex and rotating the start are all rejected;
+//   * at Level::exact a rotation is still accepted (it is a correct hull), a
+//     reversal is rejected, and so is removing a vertex that is a strict
+//     corner in exact arithmetic (orient2d_exact(prev, v, next) > 0 and no
+//     other vertex at its location): v then lies strictly outside the polygon.
+#include <algorithm>
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "fuzz/checks.hpp"
+#include "fuzz/fuzz_input.hpp"
+#include "predicates/predicates.hpp"
+#include "reference/brute_force.hpp"
+#include "reference/certify.hpp"
+#include "reference/dimension.hpp"
+#include "reference/hull2.hpp"
+
+namespace flipflop::fuzz {
+
+namespace {
+
+const char* kTarget = "fuzz_hull2";
+constexpr std::size_t kMaxPoints = 64;
+constexpr std::size_t kMaxBrute = 40;
+
+using certify::Level;
+
+void expect(bool accept, const PointSet& ps, const std::vector<Index>& cycle, Level level, const std::string& what) {
+  const certify::Report r = certify::hull2(ps, cycle, level);
+  if (r.ok != accept)
+    fail(kTarget,
+         std::string("certify::hull2 at Level::") + (level == Level::canonical ? "canonical" : "exact") +
+             (accept ? " rejected " : " accepted ") + what + ": " + r.message(),
+         describe(ps) + "cycle " + describe(cycle));
+}
+
+bool same_location(const PointSet& ps, Index a, Index b) {
+  return ps.point(a)[0] == ps.point(b)[0] && ps.point(a)[1] == ps.point(b)[1];
+}
+
+}  // namespace
+
+bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
+  ByteReader r{data, size};
+  PointSet ps;
+  if (!decode_points(r, 2, false, 1, kMaxPoints, ps)) return false;
+  const std::size_t n = ps.size();
+
+  if (affine_dimension(ps) < 2) {
+    for (const std::string& algo : ref::hull2_algorithms()) {
+      try {
+        (void)ref::hull2(ps, algo);
+        fail(kTarget, algo + " returned a hull of input that does not span the plane", describe(ps));
+      } catch (const std::invalid_argument&) {
+      } catch (const std::exception& e) {
+        fail(kTarget, algo + " threw " + e.what() + " instead of std::invalid_argument", describe(ps));
+      }
+    }
+    if (n >= 3) {
+      expect(false, ps, {0, 1, 2}, Level::exact, "a cycle of input that does not span the plane");
+      expect(false, ps, {0, 1, 2}, Level::canonical, "a cycle of input that does not span the plane");
+    }
+    return true;
+  }
+
+  std::vector<Index> answer;
+  std::string answer_from;
+  if (n <= kMaxBrute) {
+    answer = brute::hull2(ps);
+    answer_from = "brute::hull2";
+  }
+  for (const std::string& algo : ref::hull2_algorithms()) {
+    std::vector<Index> out;
+    ref::Hull2Stats stats;
+    try {
+      out = ref::hull2(ps, algo, &stats);
+    } catch (const std::exception& e) {
+      fail(kTarget, algo + " threw: " + e.what(), describe(ps));
+    }
+    if (answer_from.empty()) {
+      answer = out;
+      answer_from = algo;
+    } else if (out != answer) {
+      fail(kTarget, algo + " differs from " + answer_from,
+           describe(ps) + algo + " " + describe(out) + "\n" + answer_from + " " + describe(answer));
+    }
+    if (stats.hull_vertices != out.size())
+      fail(kTarget, algo + ": stats.hull_vertices != size of the result", describe(ps));
+  }
+  expect(true, ps, answer, Level::canonical, "the answer");
+  expect(true, ps, answer, Level::exact, "the answer");
+
+  const std::size_t m = answer.size();
+  const std::size_t k = r.byte() % m;
+  {  // remove vertex k
+    std::vector<Index> c = answer;
+    c.erase(c.begin() + static_cast<long>(k));
+    expect(false, ps, c, Level::canonical, "the answer without vertex " + std::to_string(answer[k]));
+    const Index prev = answer[(k + m - 1) % m], v = answer[k], next = answer[(k + 1) % m];
+    bool alone = true;
+    for (std::size_t j = 0; j < m; ++j)
+      if (j != k && same_location(ps, answer[j], v)) alone = false;
+    if (alone && pred::orient2d_exact(ps.point(prev), ps.point(v), ps.point(next)) > 0)
+      expect(false, ps, c, Level::exact, "the answer without its strict corner " + std::to_string(v));
+  }
+  {  // swap vertices k and k + 1
+    std::vector<Index> c = answer;
+    std::swap(c[k], c[(k + 1) % m]);
+    expect(false, ps, c, Level::canonical, "the answer with two neighbours swapped");
+  }
+  {  // reverse
+    std::vector<Index> c(answer.rbegin(), answer.rend());
+    expect(false, ps, c, Level::canonical, "the reversed answer");
+    expect(false, ps, c, Level::exact, "the reversed (clockwise) answer");
+  }
+  {  // rotate the start
+    std::vector<Index> c = answer;
+    std::rotate(c.begin(), c.begin() + 1, c.end());
+    expect(false, ps, c, Level::canonical, "a rotation of the answer");
+    expect(true, ps, c, Level::exact, "a rotation of the answer");
+  }
+  {  // insert a point that is not a vertex after position k
+    std::vector<char> is_vertex(n, 0);
+    for (Index v : answer) is_vertex[v] = 1;
+    const std::size_t start = r.byte() % n;
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto p = static_cast<Index>((start + j) % n);
+      if (is_vertex[p]) continue;
+      std::vector<Index> c = answer;
+      c.insert(c.begin() + static_cast<long>(k) + 1, p);
+      expect(false, ps, c, Level::canonical, "the answer with non-vertex " + std::to_string(p) + " inserted");
+      break;
+    }
+  }
+  return true;
+}
+
+}  // namespace flipflop::fuzz
