@@ -320,21 +320,27 @@ Outcome same_answers(const Algorithms& algos, const PointSet& ps, const PointSet
   return Outcome::pass();
 }
 
+// Every algorithm (but those `skip` names) rejects input that does not span
+// the plane with std::invalid_argument.
+template <class Algos, class Skip>
+Outcome expect_flat_input_rejected(const PointSet& ps, const Algos& algos, Skip skip) {
+  for (const auto& a : algos) {
+    if (skip(a)) continue;
+    bool threw = false;
+    try {
+      a.run(ps, nullptr);
+    } catch (const std::invalid_argument&) {
+      threw = true;
+    }
+    FF_EXPECT(threw, a.name << ": input that does not span the plane was not rejected");
+  }
+  return Outcome::pass();
+}
+
 inline Outcome hull2_canonical(const PointSet& ps, const Params&) {
   const auto algos = hull2_algorithms(ps.size());
-  if (!spans(ps)) {
-    for (const auto& a : algos) {
-      if (a.name == "brute") continue;  // defined under SoS for any input; not an algorithm's contract
-      bool threw = false;
-      try {
-        a.run(ps, nullptr);
-      } catch (const std::invalid_argument&) {
-        threw = true;
-      }
-      FF_EXPECT(threw, a.name << ": input that does not span the plane was not rejected");
-    }
-    return Outcome::pass();
-  }
+  if (!spans(ps))  // brute: defined under SoS for any input; not an algorithm's contract
+    return expect_flat_input_rejected(ps, algos, [](const auto& a) { return a.name == "brute"; });
   std::string first;
   for (const auto& a : algos) {
     const auto h = a.run(ps, nullptr);
@@ -557,19 +563,9 @@ inline std::size_t boundary_edges(const std::vector<Triangle>& tris) {
 }
 
 inline Outcome rt2_canonical(const PointSet& ps, const Params&) {
-  if (!spans(ps)) {
-    for (const auto& a : rt2_algorithms(ps)) {
-      if (a.name == "brute" || a.initial) continue;  // brute: defined for any input; fans need a hull
-      bool threw = false;
-      try {
-        a.run(ps, nullptr);
-      } catch (const std::invalid_argument&) {
-        threw = true;
-      }
-      FF_EXPECT(threw, a.name << ": input that does not span the plane was not rejected");
-    }
-    return Outcome::pass();
-  }
+  if (!spans(ps))  // brute: defined for any input; fans need a hull
+    return expect_flat_input_rejected(ps, rt2_algorithms(ps),
+                                      [](const auto& a) { return a.name == "brute" || a.initial; });
   const auto answer = ref::rt2_ffrt(ps);
   const std::string first = text(answer);
   const certify::Report r = certify::rt2(ps, answer, certify::Level::canonical);
