@@ -3,10 +3,10 @@
 #   make test   set up, build, run the whole test suite through ctest
 BUILD ?= build
 JOBS  ?= $(shell nproc)
-PKGS  := cmake g++ make libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
+PKGS  := cmake g++ make clang libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
          libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev
 
-.PHONY: all deps configure build demo test sanitize asan clean
+.PHONY: all deps configure build demo test sanitize asan tsan clean
 
 all: build
 
@@ -48,7 +48,27 @@ asan: deps
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp ctest --output-on-failure -j $(JOBS)
 
-sanitize: asan
+# tsan: ThreadSanitizer build (clang) of the multithreaded tests (TSAN_TESTS):
+#       the TBB kernels (fork/join declared to TSan by kernels_cpu/tsan.hpp,
+#       since Debian's libtbb is not instrumented) and the thrust/OpenMP kernels
+#       built against LLVM's libomp, whose synchronisation TSan learns through
+#       the Archer OMPT tool (libarcher.so, loaded by OMP_TOOL_LIBRARIES).
+TSAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
+TSAN_TESTS := kernels_test
+ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
+
+tsan: deps
+	@test -n "$(ARCHER)" || { echo "tsan: libarcher.so (libomp-14-dev) not found"; exit 1; }
+	@CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON \
+	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan.configure.log 2>&1 || \
+	  { cat build-tsan.configure.log; exit 1; }
+	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)
+	cd build-tsan && OMP_TOOL_LIBRARIES=$(ARCHER) ARCHER_OPTIONS=verbose=1 \
+	  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/.ci/tsan.supp \
+	  ctest --output-on-failure -j $(JOBS) -R '^kernels'
+
+sanitize: asan tsan
 
 clean:
-	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log
+	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log build-tsan build-tsan.configure.log

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels_cpu/tsan.hpp"
 #include "predicates/predicates.hpp"
 
 namespace flipflop::kernels_cpu {
@@ -33,10 +34,14 @@ void validate(const PointSet& pts, const std::vector<std::array<Index, D>>& face
 template <class SignOf>
 std::vector<int> for_all_points(std::size_t n, SignOf sign_of) {
   std::vector<int> sign(n);
+  tsan::ForkJoin fj;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
+                      fj.task_begin();
                       for (std::size_t i = r.begin(); i != r.end(); ++i) sign[i] = sign_of(i);
+                      fj.task_end();
                     });
+  fj.joined();
   return sign;
 }
 
