@@ -1,0 +1,213 @@
+// strict_view_test.cpp — the strict view of a 3D hull (strict_hull3.hpp)
+// against CGAL, on every input: random, degenerate (grids, cospherical
+// lattices, duplicates, points on hull edges and facets, flat-plus-one).
+//
+// Oracles, independent of strict_hull3's own merging:
+//   * extreme points: peers::cgal_extreme_points_3 (CGAL's convex_hull_3 with
+//     Epick, vertices whose facets span three planes, smallest index per
+//     location), compared as sorted lists;
+//   * facets: CGAL's triangles (peers::cgal_hull3) merged HERE by union-find
+//     over edge-adjacent triangles whose four points are exactly coplanar
+//     (orient3d_exact == 0), each class reduced to its strictly extreme
+//     vertices (by CGAL's list) — compared as vertex sets;
+//   * polygon order: every facet counter-clockwise seen from outside and
+//     strictly convex — orient3d_exact(v_i, v_i+1, v_i+2, q) > 0 for every
+//     corner and (up to three) extreme points q off its plane — starting at
+//     its smallest index.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+#include "peers/peers.hpp"
+#include "predicates/predicates.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "proptests/support/splay_inputs.hpp"
+#include "reference/brute_force.hpp"
+#include "reference/dimension.hpp"
+#include "reference/hull3/initial_stars.hpp"
+#include "reference/hull3/strict_hull3.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+bool spans_3d(const PointSet& ps) { return ps.size() >= 4 && affine_dimension(ps) == 3; }
+
+bool collinear(const double* a, const double* b, const double* c) {
+  for (int i = 0; i < 3; ++i) {
+    const double pa[2] = {a[i], a[(i + 1) % 3]}, pb[2] = {b[i], b[(i + 1) % 3]}, pc[2] = {c[i], c[(i + 1) % 3]};
+    if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
+  }
+  return true;
+}
+
+// CGAL's facets: its triangles merged across exactly coplanar edges, each
+// class as the sorted set of its strictly extreme vertices.
+std::set<std::vector<Index>> cgal_facets(const PointSet& ps, const std::vector<Index>& extreme) {
+  const auto tris = peers::cgal_hull3(ps);
+  const std::set<Index> ext(extreme.begin(), extreme.end());
+  std::vector<std::size_t> up(tris.size());
+  std::iota(up.begin(), up.end(), std::size_t{0});
+  auto find = [&](std::size_t x) {
+    while (up[x] != x) x = up[x] = up[up[x]];
+    return x;
+  };
+  std::map<std::pair<Index, Index>, std::size_t> at;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& T = tris[t];
+    // CGAL's hull has no flat triangle (the merging below relies on it)
+    REQUIRE_FALSE(collinear(ps.point(T[0]), ps.point(T[1]), ps.point(T[2])));
+    for (int e = 0; e < 3; ++e) at[{T[e], T[(e + 1) % 3]}] = t;
+  }
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& T = tris[t];
+    for (int e = 0; e < 3; ++e) {
+      const std::size_t u = at.at({T[(e + 1) % 3], T[e]});
+      for (Index d : tris[u])
+        if (pred::orient3d_exact(ps.point(T[0]), ps.point(T[1]), ps.point(T[2]), ps.point(d)) != 0) goto next_edge;
+      up[find(t)] = find(u);
+    next_edge:;
+    }
+  }
+  std::map<std::size_t, std::set<Index>> classes;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (Index v : tris[t])
+      if (ext.count(v)) classes[find(t)].insert(v);
+  std::set<std::vector<Index>> out;
+  for (const auto& [root, vs] : classes) out.insert(std::vector<Index>(vs.begin(), vs.end()));
+  return out;
+}
+
+void check_polygons(const PointSet& ps, const ref::StrictHull3& h) {
+  for (const auto& f : h.facets) {
+    INFO("facet of " << f.size() << " vertices starting at " << f[0]);
+    REQUIRE(f.size() >= 3);
+    REQUIRE(*std::min_element(f.begin(), f.end()) == f[0]);
+    const double *a = ps.point(f[0]), *b = ps.point(f[1]), *c = ps.point(f[2]);
+    bool planar = true, convex = true;
+    for (Index v : f) planar = planar && pred::orient3d_exact(a, b, c, ps.point(v)) == 0;
+    int off = 0;  // a few extreme points off the plane (all on its inner side)
+    for (std::size_t j = 0; j < h.extreme_points.size() && off < 3; ++j) {
+      const double* q = ps.point(h.extreme_points[j]);
+      if (pred::orient3d_exact(a, b, c, q) == 0) continue;
+      ++off;
+      for (std::size_t i = 0; i < f.size(); ++i)
+        convex = convex && pred::orient3d_exact(ps.point(f[i]), ps.point(f[(i + 1) % f.size()]),
+                                                ps.point(f[(i + 2) % f.size()]), q) > 0;
+    }
+    REQUIRE(planar);
+    REQUIRE(off > 0);
+    REQUIRE(convex);
+  }
+  REQUIRE(std::is_sorted(h.facets.begin(), h.facets.end()));
+}
+
+void check_against_cgal(const PointSet& ps, const ref::StrictHull3& h) {
+  const auto ext = peers::cgal_extreme_points_3(ps);
+  REQUIRE(h.extreme_points == ext);
+  std::set<std::vector<Index>> mine;
+  for (auto f : h.facets) {
+    std::sort(f.begin(), f.end());
+    REQUIRE(mine.insert(f).second);
+  }
+  REQUIRE(mine == cgal_facets(ps, ext));
+  check_polygons(ps, h);
+}
+
+// The text form read back: counts, extreme points, facets.
+ref::StrictHull3 parse(const std::string& text) {
+  std::istringstream in(text);
+  std::size_t e = 0, f = 0;
+  in >> e >> f;
+  ref::StrictHull3 h;
+  h.extreme_points.resize(e);
+  for (auto& v : h.extreme_points) in >> v;
+  std::string line;
+  std::getline(in, line);
+  for (std::size_t i = 0; i < f; ++i) {
+    std::getline(in, line);
+    std::istringstream ls(line);
+    std::vector<Index> facet;
+    for (Index v; ls >> v;) facet.push_back(v);
+    h.facets.push_back(facet);
+  }
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("strict: view equals CGAL: 4..40 points, random and degenerate", "[strict]") {
+  test::prop_scaled("extreme points and facets", 8, [] {
+    const PointSet ps = *test::degenerate_points(3, 4, 40, false);
+    RC_PRE(spans_3d(ps));
+    const auto h = ref::strict_hull3(ps, brute::hull3(ps));
+    check_against_cgal(ps, h);
+    RC_ASSERT(parse(ref::format_strict_hull3(h)) == h);
+  });
+}
+
+TEST_CASE("strict: view equals CGAL on every generator family", "[strict]") {
+  for (const std::string& fam : test::splay_families())
+    for (std::size_t n : {8u, 50u, 3000u}) {
+      const PointSet ps = test::family3(fam, n, 5);
+      INFO(fam << " " << n);
+      if (!spans_3d(ps)) continue;
+      const auto h = ref::strict_hull3(ps, ref::hull3_splay(ps));
+      check_against_cgal(ps, h);
+      if (n <= 50) REQUIRE(ref::strict_hull3(ps, brute::hull3(ps)) == h);
+    }
+}
+
+TEST_CASE("strict: view: points on hull edges and facets, duplicated corners", "[strict]") {
+  // The cube [0,4]^3 sampled on its integer lattice (points inside facets,
+  // on edges, inside), corners repeated, in a shuffled order.
+  PointSet ps;
+  ps.dim = 3;
+  for (int x = 0; x <= 4; ++x)
+    for (int y = 0; y <= 4; ++y)
+      for (int z = 0; z <= 4; ++z) ps.coords.insert(ps.coords.end(), {double(x), double(y), double(z)});
+  for (int c = 0; c < 8; ++c) ps.coords.insert(ps.coords.end(), {4.0 * (c & 1), 4.0 * (c >> 1 & 1), 4.0 * (c >> 2 & 1)});
+  std::vector<std::size_t> order(ps.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937_64 rng(3);
+  std::shuffle(order.begin(), order.end(), rng);
+  PointSet shuffled;
+  shuffled.dim = 3;
+  for (std::size_t i : order) test::add_point(shuffled, ps.point(i));
+  const auto h = ref::strict_hull3(shuffled, ref::hull3_splay(shuffled));
+  REQUIRE(h.extreme_points.size() == 8);  // the 8 corners, smallest copy each
+  REQUIRE(h.facets.size() == 6);          // 6 squares
+  for (const auto& f : h.facets) REQUIRE(f.size() == 4);
+  check_against_cgal(shuffled, h);
+  // an octahedron with points on its edges and facets
+  PointSet oct;
+  oct.dim = 3;
+  oct.coords = {2, 0, 0, -2, 0, 0, 0, 2, 0, 0, -2, 0, 0, 0, 2, 0, 0, -2, 1, 1, 0, 0, 1, 1, 1, 0, 1, 0, 0, 0, 2, 0, 0, 0.5, 0.5, 1};
+  const auto o = ref::strict_hull3(oct, brute::hull3(oct));
+  REQUIRE(o.extreme_points == std::vector<Index>{0, 1, 2, 3, 4, 5});
+  REQUIRE(o.facets.size() == 8);
+  check_against_cgal(oct, o);
+}
+
+TEST_CASE("strict: view: malformed triangle lists are rejected", "[strict]") {
+  const PointSet ps = test::family3("ball", 20, 1);
+  auto hull = brute::hull3(ps);
+  REQUIRE_NOTHROW(ref::strict_hull3(ps, hull));
+  auto open = hull;
+  open.pop_back();
+  REQUIRE_THROWS_AS(ref::strict_hull3(ps, open), std::invalid_argument);
+  auto out_of_range = hull;
+  out_of_range[0][1] = 99;
+  REQUIRE_THROWS_AS(ref::strict_hull3(ps, out_of_range), std::invalid_argument);
+  auto twice = hull;
+  twice.push_back(hull[0]);
+  REQUIRE_THROWS_AS(ref::strict_hull3(ps, twice), std::invalid_argument);
+  PointSet flat = ps;
+  flat.dim = 2;
+  REQUIRE_THROWS_AS(ref::strict_hull3(flat, hull), std::invalid_argument);
+}
