@@ -1,17 +1,22 @@
-// bench_peers.cpp — `flipflop bench hull2|hull3|dt2|rt2`: the peers a user
-// would pick instead of flipflop (DESIGN.md "Benchmarks"), side by side, in
-// one process, on one generated input (gen/generate.hpp; generation not timed).
+// bench_peers.cpp — `flipflop bench hull2|hull3|dt2|rt2`: flipflop's
+// reference algorithms next to the peers a user would pick instead (DESIGN.md
+// "Benchmarks"), side by side, in one process, on one generated input
+// (gen/generate.hpp; generation not timed).
 //
-//   hull2  Qhull (libqhull_r), CGAL ch_akl_toussaint, CGAL ch_graham_andrew
-//   hull3  Qhull (libqhull_r, Qt), CGAL convex_hull_3
-//   dt2    CGAL Delaunay_triangulation_2
-//   rt2    CGAL Regular_triangulation_2
+//   hull2  flipflop graham-sort, graham-insert; Qhull (libqhull_r), CGAL
+//          ch_akl_toussaint, CGAL ch_graham_andrew
+//   hull3  flipflop ffhull, splay (twist-flip, quadratic, for n <= 20000);
+//          Qhull (libqhull_r, Qt), CGAL convex_hull_3
+//   dt2    flipflop ffrt, lawson; CGAL Delaunay_triangulation_2
+//   rt2    flipflop ffrt; CGAL Regular_triangulation_2
 //
-// A timed run is one call of the peers/ wrapper: copying the points into the
-// peer's types, the peer's computation, and sorting its output into canonical
-// order. The peers' canonical outputs are compared with each other and the
+// A timed run is one call: for a peer, the peers/ wrapper (copying the points
+// into the peer's types, the peer's computation, and sorting its output into
+// canonical order); for flipflop, the exact reference algorithm returning its
+// canonical output (not certified inside the timing). The peers' canonical outputs are compared with each other and the
 // result of that comparison is printed (in general position they must agree;
-// on degenerate input each peer breaks ties its own way).
+// on degenerate input each peer breaks ties its own way, and flipflop's
+// algorithms agree with each other byte for byte).
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -20,6 +25,9 @@
 #include "bench/timing.hpp"
 #include "gen/generate.hpp"
 #include "peers/peers.hpp"
+#include "reference/hull2.hpp"
+#include "reference/hull3/hull3.hpp"
+#include "reference/rt2.hpp"
 
 namespace flipflop::bench::detail {
 
@@ -112,22 +120,38 @@ int bench_peers(const Args& a) {
   if (a.experiment == "hull2") {
     return compare_peers<Cycle>(
         a, pts,
-        {{"Qhull (libqhull_r)", peers::qhull_hull2},
+        {{"flipflop graham-sort (exact)", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
+         {"flipflop graham-insert (exact)", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
+         {"Qhull (libqhull_r)", peers::qhull_hull2},
          {"CGAL ch_akl_toussaint",
           [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::akl_toussaint); }},
          {"CGAL ch_graham_andrew",
           [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::graham_andrew); }}},
         "vertices");
   }
-  if (a.experiment == "hull3")
-    return compare_peers<Tris>(
-        a, pts, {{"Qhull (libqhull_r, Qt)", peers::qhull_hull3}, {"CGAL convex_hull_3", peers::cgal_hull3}},
-        "triangles");
+  if (a.experiment == "hull3") {
+    std::vector<Peer<Tris>> rows = {
+        {"flipflop ffhull (exact)", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
+        {"flipflop splay (exact)", [](const PointSet& p) { return ref::hull3(p, "splay"); }}};
+    // twist-flip's twisting stage is a bubble sort (thesis Thm 8.1): O(n^2)
+    if (pts.size() <= 20000)
+      rows.push_back({"flipflop twist-flip (exact)", [](const PointSet& p) { return ref::hull3(p, "twist-flip"); }});
+    rows.push_back({"Qhull (libqhull_r, Qt)", peers::qhull_hull3});
+    rows.push_back({"CGAL convex_hull_3", peers::cgal_hull3});
+    return compare_peers<Tris>(a, pts, rows, "triangles");
+  }
   if (a.experiment == "dt2")
-    return compare_peers<Tris>(a, pts, {{"CGAL Delaunay_triangulation_2", peers::cgal_delaunay2}},
-                               "triangles");
-  return compare_peers<Tris>(a, pts, {{"CGAL Regular_triangulation_2", peers::cgal_regular2}},
-                             "triangles");
+    return compare_peers<Tris>(
+        a, pts,
+        {{"flipflop ffrt (exact)", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
+         {"flipflop lawson (exact)", [](const PointSet& p) { return ref::dt2_lawson(p); }},
+         {"CGAL Delaunay_triangulation_2", peers::cgal_delaunay2}},
+        "triangles");
+  return compare_peers<Tris>(
+      a, pts,
+      {{"flipflop ffrt (exact)", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
+       {"CGAL Regular_triangulation_2", peers::cgal_regular2}},
+      "triangles");
 }
 
 }  // namespace flipflop::bench::detail

@@ -14,6 +14,8 @@
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull2.hpp"
+#include "reference/hull3/hull3.hpp"
+#include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2.hpp"
 
 namespace flipflop::cli {
@@ -58,6 +60,7 @@ std::vector<std::string> available_algorithms(const std::string& kind) {
   if (kind == "hull2") algos = ref::hull2_algorithms();
   if (kind == "rt2") algos = {"ffrt", "ffrt-vfirst"};
   if (kind == "dt2") algos = {"ffrt", "ffrt-vfirst", "lawson"};
+  if (kind == "hull3") algos = ref::hull3_algorithms();
   algos.push_back("brute");
   return algos;
 }
@@ -90,7 +93,30 @@ int run_gen(const GenArgs& a) {
   return 0;
 }
 
+namespace {
+
+// The counts an algorithm reports (the others stay 0 and are left out).
+std::string hull3_counts(const ref::Hull3Stats& st) {
+  const std::pair<const char*, std::uint64_t> all[] = {
+      {"2-2 flips", st.flips_2_2},        {"3-1 flips", st.flips_3_1},
+      {"1-3 flips", st.flips_1_3},        {"labelled non-extreme", st.labelled_non_extreme},
+      {"insertions", st.insertions},      {"discarded early", st.discarded_early},
+      {"splay insertions", st.splay_insertions}, {"splay removals", st.splay_removals},
+      {"dead stars", st.dead_stars},      {"twists", st.twists},
+      {"fold flips", st.fold_flips},      {"rounds", st.rounds}};
+  std::string out;
+  for (const auto& [name, value] : all) {
+    if (value == 0) continue;
+    if (!out.empty()) out += ", ";
+    out += std::string(name) + " " + std::to_string(value);
+  }
+  return out.empty() ? "no operations" : out;
+}
+
+}  // namespace
+
 int run_compute(const ComputeArgs& a) {
+  if (a.strict && a.kind != "hull3") throw UsageError("--strict applies to hull3 only");
   const PointSet ps = read_input(a.in, a.kind);
   const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
@@ -119,6 +145,10 @@ int run_compute(const ComputeArgs& a) {
              " (D-criterion flips among them " + std::to_string(st.flops) + "), 1-3 flips " +
              std::to_string(st.flips_1_3) + ", labelled redundant " + std::to_string(st.labelled_redundant) + ", discarded early " +
              std::to_string(st.discarded_early) + ", rounds " + std::to_string(st.rounds);
+  } else if (a.kind == "hull3" && algo != "brute") {
+    ref::Hull3Stats st;
+    tris = ref::hull3(ps, algo, &st);
+    counts = hull3_counts(st);
   } else if (a.kind == "hull2") cycle = brute::hull2(ps);
   else if (a.kind == "hull3") tris = brute::hull3(ps);
   else tris = brute::rt2(ps);
@@ -132,8 +162,12 @@ int run_compute(const ComputeArgs& a) {
   const double t_certify = seconds_since(t1);
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
 
+  // The strict view is derived from the certified canonical hull.
+  std::string strict_text;
+  if (a.strict) strict_text = ref::format_strict_hull3(ref::strict_hull3(ps, tris));
   write_output(a.out, [&](std::ostream& os) {
-    if (a.kind == "hull2") io::write_hull2(os, cycle);
+    if (a.strict) os << strict_text;
+    else if (a.kind == "hull2") io::write_hull2(os, cycle);
     else io::write_triangles(os, tris);
   });
   if (a.stats) {

@@ -31,6 +31,7 @@ struct ComputeArgs {
   std::string backend = "reference";
   std::string algo;  // empty: the kind's default (default_algorithm)
   bool stats = false;
+  bool strict = false;  // hull3: strictly extreme points and merged coplanar facets
 };
 
 struct CertifyArgs {

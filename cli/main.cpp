@@ -1,7 +1,9 @@
 // main.cpp — the `flipflop` command-line tool (DESIGN.md, "The command-line tool").
 //
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
-//   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats]
+//   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3)]
+//   flipflop rtd IN --dim d [-o OUT] [--stats]
+//   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical]
 //   flipflop bench ...
 //   flipflop demo
@@ -18,6 +20,7 @@
 
 #include "bench/bench.hpp"
 #include "cli/commands.hpp"
+#include "cli/rtd_commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace flipflop::cli;
@@ -54,8 +57,29 @@ int main(int argc, char** argv) {
     cmd->add_option("--algo", c.algo, "algorithm (default " + default_algorithm(kinds[k]) + ")")
         ->check(CLI::IsMember(available_algorithms(kinds[k])));
     cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");
+    if (std::string(kinds[k]) == "hull3")
+      cmd->add_flag("--strict", c.strict,
+                    "write the strict view: strictly extreme points and coplanar facets merged into polygons");
     compute_cmds.push_back(cmd);
   }
+
+  // ---- rtd / instant-flip (thesis ch. 9) -----------------------------------------
+  RtdArgs r;
+  auto* rtd = app.add_subcommand("rtd", "d-dimensional regular triangulation (input: d coordinates and a weight per line)");
+  rtd->add_option("IN", r.in, "input point file (.xyz)")->required();
+  rtd->add_option("--dim", r.dim, "dimension d (2 to 5)")->required()->check(CLI::Range(2, 5));
+  rtd->add_option("-o,--output", r.out, "output simplex list (default: standard output)");
+  rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
+  InstantFlipArgs f;
+  auto* iflip = app.add_subcommand(
+      "instant-flip", "RT(S+W) -> RT(S+U) by the monotonic instant flip (thesis §9.2, Algorithm 14)");
+  iflip->add_option("POINTS", f.points, "the points (.xyz, d coordinates per line)")->required();
+  iflip->add_option("--dim", f.dim, "dimension d (2 to 5)")->required()->check(CLI::Range(2, 5));
+  iflip->add_option("--from", f.from, "the points with their start weights W as a last column")->required();
+  iflip->add_option("--to", f.to, "the points with their target weights U as a last column")->required();
+  iflip->add_option("-o,--output", f.out, "output simplex list of RT(S+U) (default: standard output)");
+  iflip->add_flag("--stats", f.stats, "print flips by type and queue operations to standard error");
+  iflip->add_flag("--timeline", f.timeline, "print the time lines (§9.3) of the start and the result to standard error");
 
   // ---- certify ---------------------------------------------------------------
   CertifyArgs v;
@@ -93,6 +117,8 @@ int main(int argc, char** argv) {
         c.kind = kinds[k];
         return run_compute(c);
       }
+    if (rtd->parsed()) return run_rtd(r);
+    if (iflip->parsed()) return run_instant_flip(f);
     if (cert->parsed()) return run_certify(v);
     if (bench->parsed()) {
       std::vector<std::string> rest = bench->remaining();

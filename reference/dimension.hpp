@@ -9,7 +9,7 @@ namespace flipflop {
 
 // The dimension of the affine hull of the points, decided exactly (0 when all
 // points are equal, 1 when collinear, 2 when coplanar, ...; at most ps.dim).
-// O(n) exact predicates.
+// O(n) exact predicates (d <= 3); exact rational elimination for d >= 4.
 int affine_dimension(const PointSet& ps);
 
 // Empty when the set spans its space; otherwise one line saying why it does

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "reference/hull3/ffhull.hpp"
-#include "reference/hull3/star_splaying.hpp"
+#include "reference/hull3/initial_stars.hpp"
 #include "reference/hull3/twist_flip.hpp"
 
 namespace flipflop::ref {

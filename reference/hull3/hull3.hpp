@@ -5,7 +5,7 @@
 //               point, furthest-point insertion with early removal, then
 //               flip-flop (§6.2 Algorithm 6)                  (ffhull.hpp)
 //   splay       star splaying (§3.3.2, Shewchuk) from initial stars of a
-//               cheap approximation                            (star_splaying.hpp)
+//               cheap approximation   (star_splaying.hpp, initial_stars.hpp)
 //   twist-flip  a polyhedron whose topmost vertex is joined to all others,
 //               made star-shaped by twist-flip (§8.4.1 Algorithms 12, 13),
 //               then flip-flop                                 (twist_flip.hpp)

@@ -1,0 +1,248 @@
+// rtd_commands.cpp — `flipflop rtd` and `flipflop instant-flip` (see the header).
+#include "cli/rtd_commands.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <string_view>
+
+#include "cli/commands.hpp"
+#include "io/input_error.hpp"
+#include "io/read_points.hpp"
+#include "io/text.hpp"
+#include "io/write_points.hpp"
+#include "reference/dimension.hpp"
+#include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/instant_flip.hpp"
+#include "reference/rtd/perturbation_order.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+#include "reference/rtd/timeline.hpp"
+
+namespace flipflop::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+void check_dim(int d) {
+  if (d < 2 || d > 5) throw UsageError("--dim " + std::to_string(d) + " is not supported (2..5)");
+}
+
+// .xyz with d coordinates (+ a weight): one point per line, '#' comments.
+PointSet read_xyz_d(const std::string& path, int d, bool weighted) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".xyz")
+    throw io::InputError(path, "unknown file extension '" + ext + "' (expected .xyz for dimension " +
+                                   std::to_string(d) + ")");
+  PointSet ps;
+  ps.dim = d;
+  ps.weighted = weighted;
+  const std::size_t cols = static_cast<std::size_t>(d) + (weighted ? 1 : 0);
+  io::detail::LineReader in(path, '#');
+  std::string_view line;
+  std::string_view tok[8];
+  double x[8];
+  while (in.next(line)) {
+    const std::size_t k = io::detail::split(line, tok, 8);
+    if (k == 0) continue;
+    if (k != cols)
+      throw io::InputError(path, in.line_number(),
+                           "expected " + std::to_string(cols) + " columns (" + std::to_string(d) +
+                               " coordinates" + (weighted ? " and a weight" : "") + "), found " +
+                               std::to_string(k));
+    for (std::size_t c = 0; c < cols; ++c) {
+      const io::detail::Num s = io::detail::parse_real(tok[c], x[c]);
+      if (s != io::detail::Num::ok)
+        throw io::InputError(path, in.line_number(),
+                             io::detail::describe(s, tok[c]) + " in column " + std::to_string(c + 1));
+    }
+    ps.coords.insert(ps.coords.end(), x, x + d);
+    if (weighted) ps.weights.push_back(x[d]);
+  }
+  if (ps.size() < static_cast<std::size_t>(d) + 1)
+    throw io::InputError(path, std::to_string(ps.size()) + " points, at least " +
+                                   std::to_string(d + 1) + " needed");
+  return ps;
+}
+
+PointSet read_d(const std::string& path, int d, bool weighted) {
+  try {
+    // io/read_points reads 2 and 3 dimensions in every format it knows.
+    return d <= 3 ? io::read_points(path, d, weighted) : read_xyz_d(path, d, weighted);
+  } catch (const io::InputError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+// reference/dimension.hpp: exact affine dimension in any d.
+void check_spans(const PointSet& ps, const std::string& path) {
+  if (std::string why = dimension_problem(ps); !why.empty()) throw UsageError(path + ": " + why);
+}
+
+// Runs f; a std::invalid_argument (input the algorithms reject: lower-
+// dimensional, degenerate for the instant flip) becomes a UsageError naming
+// the file.
+template <class F>
+auto with_input_errors(const std::string& path, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+}
+
+void write_result(const std::string& path, const std::vector<std::vector<Index>>& simplices) {
+  const auto body = [&](std::ostream& os) { write_simplices(os, simplices); };
+  if (path.empty() || path == "-") {
+    body(std::cout);
+    std::cout.flush();
+    if (!std::cout) throw UsageError("cannot write to standard output");
+    return;
+  }
+  try {
+    io::write_file(path, body);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+}
+
+std::string index_list(const std::vector<Index>& v, std::size_t limit = 50) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size() && i < limit; ++i) s += " " + std::to_string(v[i]);
+  if (v.size() > limit) s += " ...";
+  return s;
+}
+
+void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
+  if (!redundant.empty())
+    std::cerr << cmd << ": " << redundant.size() << " redundant point"
+              << (redundant.size() == 1 ? "" : "s") << " (not vertices):" << index_list(redundant)
+              << "\n";
+}
+
+void certify_or_throw(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
+                      const std::string& what) {
+  const certify::Report r = ref::certify_rtd(ps, simplices);
+  if (!r.ok) throw InternalError(what + " failed certification: " + r.message());
+}
+
+std::vector<Index> non_vertices(const ref::rtd::TriangulationD& T) {
+  std::vector<Index> out;
+  for (Index p = 0; p < T.n; ++p)
+    if (!T.is_vertex(p)) out.push_back(p);
+  return out;
+}
+
+}  // namespace
+
+int run_rtd(const RtdArgs& a) {
+  check_dim(a.dim);
+  const PointSet ps = read_d(a.in, a.dim, true);
+  check_spans(ps, a.in);
+  const auto t0 = Clock::now();
+  ref::RtdStats st;
+  const ref::Rtd rt = with_input_errors(a.in, [&] { return ref::rtd_incremental(ps, &st); });
+  const double t_compute = seconds_since(t0);
+  const auto t1 = Clock::now();
+  certify_or_throw(ps, rt.simplices, "the rtd result");
+  const double t_certify = seconds_since(t1);
+  write_result(a.out, rt.simplices);
+  report_redundant("rtd", rt.redundant);
+  if (a.stats) {
+    std::cerr << "rtd: " << ps.size() << " points in R^" << a.dim << ", " << rt.simplices.size()
+              << " simplices, " << rt.redundant.size() << " redundant; flips";
+    for (int k = 1; k <= a.dim + 1; ++k)
+      std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
+    std::cerr << ", queue pushes " << st.queue_pushes << ", pops " << st.queue_pops
+              << "; compute " << t_compute << " s, certify " << t_certify << " s\n";
+  }
+  return 0;
+}
+
+int run_instant_flip(const InstantFlipArgs& a) {
+  check_dim(a.dim);
+  if (a.from.empty() || a.to.empty()) throw UsageError("instant-flip needs --from W.xyz and --to U.xyz");
+  const PointSet pts = read_d(a.points, a.dim, false);
+  const PointSet pw = read_d(a.from, a.dim, true);
+  const PointSet pu = read_d(a.to, a.dim, true);
+  for (const auto* other : {&pw, &pu}) {
+    const std::string& path = other == &pw ? a.from : a.to;
+    if (other->size() != pts.size())
+      throw UsageError(path + ": " + std::to_string(other->size()) + " points, but " + a.points +
+                       " has " + std::to_string(pts.size()) +
+                       " (W and U must hold the points of POINTS, in order)");
+    for (std::size_t i = 0; i < pts.coords.size(); ++i)
+      if (std::memcmp(&pts.coords[i], &other->coords[i], sizeof(double)) != 0)
+        throw UsageError(path + ": point " + std::to_string(i / static_cast<std::size_t>(a.dim)) +
+                         " differs from point " + std::to_string(i / static_cast<std::size_t>(a.dim)) +
+                         " of " + a.points + " (W and U must hold the points of POINTS, in order)");
+  }
+  check_spans(pts, a.points);
+
+  // RT(S ⊕ W), then a perturbation order under which it is strongly regular.
+  const auto t0 = Clock::now();
+  ref::RtdStats build_stats;
+  ref::rtd::TriangulationD T =
+      with_input_errors(a.points, [&] { return ref::build_rtd(pw, &build_stats); });
+  const double t_build = seconds_since(t0);
+  const auto t1 = Clock::now();
+  const std::vector<std::vector<Index>> start = ref::rtd::real_simplices(T);
+  ref::PerturbationOrderResult po = with_input_errors(
+      a.from, [&] { return ref::find_perturbation_order(pts, pw.weights, start); });
+  if (!po.order)
+    throw UsageError(a.from + ": RT(S+W) admits no perturbation order for the instant flip: " +
+                     po.reason);
+  const double t_order = seconds_since(t1);
+  const ref::MovingModel mm(pts, pw.weights, pu.weights);
+  if (a.timeline)
+    std::cerr << "instant-flip: start, RT(S+W)\n"
+              << ref::format_timeline(ref::build_timeline(mm, start, *po.order));
+
+  // Algorithm 14.
+  const auto t2 = Clock::now();
+  ref::InstantFlipOptions opt;
+  opt.order = *po.order;
+  const ref::InstantFlipStats st =
+      with_input_errors(a.to, [&] { return ref::instant_flip(T, pw.weights, pu.weights, opt); });
+  const double t_flip = seconds_since(t2);
+  const std::vector<Index> back = ref::reappearing_points(T, pu.weights);
+  if (!back.empty())
+    throw UsageError(a.to + ": " + std::to_string(back.size()) +
+                     " point(s) redundant under W are not redundant under U (" +
+                     index_list(back, 10).substr(1) +
+                     "): the instant flip inserts no vertices (thesis §9.2); `flipflop rtd` computes RT(S+U) directly");
+  const std::vector<std::vector<Index>> result = ref::rtd::real_simplices(T);
+  const auto t3 = Clock::now();
+  certify_or_throw(pu, result, "the instant-flip result");
+  const double t_certify = seconds_since(t3);
+  if (a.timeline)
+    std::cerr << "instant-flip: final, RT(S+U)\n"
+              << ref::format_timeline(ref::build_timeline(mm, result, *po.order));
+  write_result(a.out, result);
+  report_redundant("instant-flip", non_vertices(T));
+  if (a.stats) {
+    std::cerr << "instant-flip: " << pts.size() << " points in R^" << a.dim << ", "
+              << start.size() << " -> " << result.size() << " simplices; flips";
+    for (int k = 2; k <= a.dim + 1; ++k)
+      std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
+    std::cerr << " (" << st.total_flips() << " in all, " << st.removed_vertices
+              << " vertices removed); queue: " << st.initial_ridges << " ridges examined, "
+              << st.pushes << " pushes, " << st.pops << " pops, " << st.stale << " stale, "
+              << st.deferred << " deferred, max " << st.max_queue << "; perturbation order: "
+              << (po.flat_ridges == 0 ? "index order (no flat ridge)"
+                                      : std::to_string(po.flat_ridges) + " flat ridges")
+              << "; build " << t_build << " s, order " << t_order << " s, instant flip " << t_flip
+              << " s, certify " << t_certify << " s\n";
+  }
+  return 0;
+}
+
+}  // namespace flipflop::cli

@@ -1,0 +1,154 @@
+// cgal_regular_d.cpp — CGAL's dD Regular_triangulation (Epick_d) and
+// Regular_triangulation_3 as peers. See cgal_regular_d.hpp.
+//
+// Orientation: CGAL's Orientation_d and flipflop's orient_d may differ by a
+// dimension-dependent sign. flipflop's sign of the reference simplex
+// (0, e_1, ..., e_d) is (-1)^d (det[x_i 1] with the 1-column last: moving
+// the origin's row last takes d transpositions and leaves det[[I 1];[0 1]]
+// = 1); CGAL's sign of the same simplex is asked from CGAL at run time. A
+// cell's flipflop sign is then CGAL's sign times that ratio — on points in
+// general position, where both are non-zero.
+// GCC's -Warray-bounds misfires inside Eigen's fixed-capacity matrices that
+// Epick_d instantiates (a false positive in third-party code, reported at
+// the instantiation point, so it cannot be scoped to the includes).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#endif
+#ifndef CGAL_EIGEN3_ENABLED
+#define CGAL_EIGEN3_ENABLED 1  // Epick_d's linear algebra (Eigen 3, linked by peers/CMakeLists.txt)
+#endif
+#include <CGAL/Epick_d.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Regular_triangulation_cell_base_3.h>
+#include <CGAL/Regular_triangulation_vertex_base_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "peers/cgal_regular_d.hpp"
+#include "reference/rtd/canonical_d.hpp"
+
+namespace flipflop::peers {
+
+namespace {
+
+std::vector<Index> hidden(std::size_t n, const std::vector<std::vector<Index>>& simplices) {
+  std::vector<char> is_vertex(n, 0);
+  for (const auto& t : simplices)
+    for (Index x : t) is_vertex[x] = 1;
+  std::vector<Index> out;
+  for (Index i = 0; i < n; ++i)
+    if (!is_vertex[i]) out.push_back(i);
+  return out;
+}
+
+template <int D>
+std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>* redundant) {
+  using K = CGAL::Epick_d<CGAL::Dimension_tag<D>>;
+  using Traits = CGAL::Regular_triangulation_traits_adapter<K>;
+  using Vb = CGAL::Triangulation_vertex<Traits, Index>;
+  using Cb = CGAL::Triangulation_full_cell<Traits>;
+  using Tds = CGAL::Triangulation_data_structure<typename K::Dimension, Vb, Cb>;
+  using RT = CGAL::Regular_triangulation<K, Tds>;
+  using Point = typename K::Point_d;
+  using WPoint = typename K::Weighted_point_d;
+
+  RT rt(D);
+  typename RT::Vertex_handle hint;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const double* x = ps.point(i);
+    WPoint wp(Point(D, x, x + D), ps.weight(i));
+    auto v = hint == typename RT::Vertex_handle() ? rt.insert(wp) : rt.insert(wp, hint);
+    if (v != typename RT::Vertex_handle()) {
+      v->data() = static_cast<Index>(i);
+      hint = v;
+    }
+  }
+  if (rt.current_dimension() < D)
+    throw std::runtime_error("cgal_regular_d: the regular triangulation is lower-dimensional");
+  auto ori = K().orientation_d_object();
+  std::vector<Point> ref;
+  {
+    std::vector<double> e(D, 0.0);
+    ref.emplace_back(D, e.begin(), e.end());
+    for (int j = 0; j < D; ++j) {
+      std::fill(e.begin(), e.end(), 0.0);
+      e[static_cast<std::size_t>(j)] = 1.0;
+      ref.emplace_back(D, e.begin(), e.end());
+    }
+  }
+  const int flipflop_ref = D % 2 == 0 ? 1 : -1;
+  const int ratio = static_cast<int>(ori(ref.begin(), ref.end())) * flipflop_ref;
+  std::vector<std::vector<Index>> out;
+  for (auto c = rt.finite_full_cells_begin(); c != rt.finite_full_cells_end(); ++c) {
+    std::vector<Index> t;
+    std::vector<Point> pts;
+    for (int j = 0; j <= D; ++j) {
+      t.push_back(c->vertex(j)->data());
+      pts.push_back(c->vertex(j)->point().point());
+    }
+    const int sign = static_cast<int>(ori(pts.begin(), pts.end())) * ratio;
+    if (sign == 0) throw std::runtime_error("cgal_regular_d: a flat cell (degenerate input)");
+    if (sign < 0) std::swap(t[0], t[1]);
+    out.push_back(std::move(t));
+  }
+  out = canonical_simplices(std::move(out));
+  if (redundant) *redundant = hidden(ps.size(), out);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<Index>> cgal_regular_d(const PointSet& ps, std::vector<Index>* redundant) {
+  switch (ps.dim) {
+    case 2: return regular_d<2>(ps, redundant);
+    case 3: return regular_d<3>(ps, redundant);
+    case 4: return regular_d<4>(ps, redundant);
+    case 5: return regular_d<5>(ps, redundant);
+    default:
+      throw std::invalid_argument("cgal_regular_d: expected 2..5-dimensional points, got " + std::to_string(ps.dim) + "D");
+  }
+}
+
+std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<Index>* redundant) {
+  if (ps.dim != 3)
+    throw std::invalid_argument("cgal_regular_3: expected 3D points, got " + std::to_string(ps.dim) + "D");
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<Index, K, CGAL::Regular_triangulation_vertex_base_3<K>>;
+  using Cb = CGAL::Regular_triangulation_cell_base_3<K>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+  using RT = CGAL::Regular_triangulation_3<K, Tds>;
+  std::vector<std::pair<RT::Weighted_point, Index>> input;
+  input.reserve(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const double* x = ps.point(i);
+    input.emplace_back(RT::Weighted_point(K::Point_3(x[0], x[1], x[2]), ps.weight(i)), static_cast<Index>(i));
+  }
+  RT rt(input.begin(), input.end());
+  if (rt.dimension() < 3)
+    throw std::runtime_error("cgal_regular_3: the regular triangulation is lower-dimensional");
+  // flipflop's sign of (0, e1, e2, e3) is -1; ask CGAL for its own
+  const int ratio = static_cast<int>(CGAL::orientation(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0),
+                                                      K::Point_3(0, 0, 1))) * -1;
+  std::vector<std::vector<Index>> out;
+  for (auto c : rt.finite_cell_handles()) {
+    std::vector<Index> t;
+    for (int j = 0; j < 4; ++j) t.push_back(c->vertex(j)->info());
+    const int sign = static_cast<int>(CGAL::orientation(c->vertex(0)->point().point(), c->vertex(1)->point().point(),
+                                                        c->vertex(2)->point().point(), c->vertex(3)->point().point())) *
+                     ratio;
+    if (sign == 0) throw std::runtime_error("cgal_regular_3: a flat cell (degenerate input)");
+    if (sign < 0) std::swap(t[0], t[1]);
+    out.push_back(std::move(t));
+  }
+  out = canonical_simplices(std::move(out));
+  if (redundant) *redundant = hidden(ps.size(), out);
+  return out;
+}
+
+}  // namespace flipflop::peers

@@ -1,0 +1,184 @@
+// instant_flip_cli_test.cpp — `flipflop rtd` and `flipflop instant-flip`
+// (cli/rtd_commands.hpp), called as functions on small files: good input gives
+// the canonical simplex list that the certifier accepts and a fresh
+// construction reproduces; bad input gives one UsageError line.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+// The command functions are compiled into this test directly (the tool's
+// executable is the only other place they are built).
+#include "cli/rtd_commands.hpp"
+#include "support/instant_flip_oracles.hpp"
+
+namespace fs = std::filesystem;
+using namespace flipflop;
+using namespace flipflop::test_if;
+
+namespace {
+
+struct TempDir {
+  fs::path dir;
+  TempDir() {
+    dir = fs::temp_directory_path() / ("flipflop_rtdcli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+void write_xyz(const std::string& path, const PointSet& ps, const std::vector<double>* w) {
+  std::ofstream f(path);
+  f.precision(17);
+  f << "# test points\n";
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    for (int j = 0; j < ps.dim; ++j) f << (j ? " " : "") << ps.point(i)[j];
+    if (w) f << " " << (*w)[i];
+    f << "\n";
+  }
+}
+
+std::string slurp(const std::string& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// Reads back what the writer wrote (the files hold %.17g: exact round trip).
+PointSet read_back(const std::string& path, int d) { return cli::read_xyz_d(path, d, true); }
+
+}  // namespace
+
+TEST_CASE("cli rtd: certified canonical output in d = 2..5", "[instant_flip][cli]") {
+  TempDir tmp;
+  for (int d = 2; d <= 5; ++d) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(d));
+    const std::size_t n = d == 2 ? 60 : (d == 3 ? 40 : 20);
+    const PointSet pts = random_points(d, n, rng);
+    const std::vector<double> w = random_weights(n, 0.02, rng);
+    const std::string in = tmp.path("in" + std::to_string(d) + ".xyz"), out = tmp.path("out.txt");
+    write_xyz(in, pts, &w);
+    cli::RtdArgs a;
+    a.in = in;
+    a.out = out;
+    a.dim = d;
+    a.stats = true;
+    REQUIRE(cli::run_rtd(a) == 0);
+    const std::vector<std::vector<Index>> got = parse_simplices(slurp(out), d);
+    const PointSet pw = read_back(in, d);
+    CHECK(certify::rtd(pw, got).ok);
+    CHECK(got == ref::rtd_incremental(pw).simplices);
+  }
+}
+
+TEST_CASE("cli instant-flip: RT(S+U) from RT(S+W), and --timeline", "[instant_flip][cli]") {
+  TempDir tmp;
+  for (int d = 2; d <= 4; ++d) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(10 + d));
+    const std::size_t n = d == 2 ? 60 : (d == 3 ? 35 : 18);
+    const PointSet pts = random_points(d, n, rng);
+    const std::vector<double> w(n, 0.0), u = random_weights(n, 0.02, rng);
+    const std::string p = tmp.path("p.xyz"), fw = tmp.path("w.xyz"), fu = tmp.path("u.xyz"),
+                      out = tmp.path("out.txt");
+    write_xyz(p, pts, nullptr);
+    write_xyz(fw, pts, &w);
+    write_xyz(fu, pts, &u);
+    cli::InstantFlipArgs a;
+    a.points = p;
+    a.from = fw;
+    a.to = fu;
+    a.out = out;
+    a.dim = d;
+    a.stats = true;
+    a.timeline = d == 2;
+    REQUIRE(cli::run_instant_flip(a) == 0);
+    const std::vector<std::vector<Index>> got = parse_simplices(slurp(out), d);
+    const PointSet pu = read_back(fu, d);
+    CHECK(certify::rtd(pu, got).ok);
+    CHECK(got == ref::rtd_incremental(pu).simplices);
+  }
+}
+
+TEST_CASE("cli rtd / instant-flip: bad input is one UsageError", "[instant_flip][cli]") {
+  TempDir tmp;
+  std::mt19937_64 rng(3);
+  const PointSet pts = random_points(3, 20, rng);
+  const std::vector<double> w = random_weights(20, 0.01, rng), u = random_weights(20, 0.01, rng);
+  const std::string p = tmp.path("p.xyz"), fw = tmp.path("w.xyz"), fu = tmp.path("u.xyz"),
+                    out = tmp.path("out.txt");
+  write_xyz(p, pts, nullptr);
+  write_xyz(fw, pts, &w);
+  write_xyz(fu, pts, &u);
+  auto expect_usage = [&](auto run, const auto& args, const std::string& needle) {
+    fs::remove(out);
+    try {
+      run(args);
+      FAIL("no error for: " << needle);
+    } catch (const cli::UsageError& e) {
+      const std::string msg = e.what();
+      CHECK(msg.find('\n') == std::string::npos);
+      CHECK(msg.find(needle) != std::string::npos);
+      INFO(msg);
+    }
+    CHECK_FALSE(fs::exists(out));  // nothing written
+  };
+  const auto rtd = [](const cli::RtdArgs& a) { return cli::run_rtd(a); };
+  const auto iflip = [](const cli::InstantFlipArgs& a) { return cli::run_instant_flip(a); };
+
+  cli::RtdArgs r{fw, out, 3, false};
+  expect_usage(rtd, cli::RtdArgs{fw, out, 6, false}, "--dim 6");
+  expect_usage(rtd, cli::RtdArgs{tmp.path("missing.xyz"), out, 3, false}, "missing.xyz");
+  expect_usage(rtd, cli::RtdArgs{p, out, 3, false}, "columns");  // no weight column
+  expect_usage(rtd, cli::RtdArgs{fw, out, 4, false}, "columns");  // 4 columns read as 4D + weight
+  {
+    std::ofstream f(tmp.path("nan.xyz"));
+    f << "0 0 0 0\n1 0 0 0\n0 1 0 nan\n0 0 1 0\n";
+  }
+  expect_usage(rtd, cli::RtdArgs{tmp.path("nan.xyz"), out, 3, false}, "NaN");
+  {
+    std::ofstream f(tmp.path("flat.xyz"));
+    f << "0 0 0 0\n1 0 0 0\n0 1 0 0\n1 1 0 0\n2 3 0 1\n";
+  }
+  expect_usage(rtd, cli::RtdArgs{tmp.path("flat.xyz"), out, 3, false}, "flat.xyz");
+  REQUIRE(cli::run_rtd(r) == 0);  // and the good one works
+
+  // instant-flip: points of W differ from POINTS
+  PointSet moved = pts;
+  moved.coords[7] += 1e-9;
+  write_xyz(tmp.path("moved.xyz"), moved, &w);
+  expect_usage(iflip, cli::InstantFlipArgs{p, tmp.path("moved.xyz"), fu, out, 3, false, false}, "differs");
+  // a point fewer
+  PointSet fewer = pts;
+  fewer.coords.resize(fewer.coords.size() - 3);
+  std::vector<double> u_fewer(u.begin(), u.end() - 1);
+  write_xyz(tmp.path("fewer.xyz"), fewer, &u_fewer);
+  expect_usage(iflip, cli::InstantFlipArgs{p, fw, tmp.path("fewer.xyz"), out, 3, false, false}, "19 points");
+  expect_usage(iflip, cli::InstantFlipArgs{p, "", fu, out, 3, false, false}, "--from");
+  // a point redundant under W comes back under U: out of the instant flip's scope
+  std::size_t mid = 0;  // the point nearest the centre: not a hull vertex
+  double best = 1e300;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    double s = 0;
+    for (int j = 0; j < 3; ++j) s += (pts.point(i)[j] - 0.5) * (pts.point(i)[j] - 0.5);
+    if (s < best) best = s, mid = i;
+  }
+  std::vector<double> heavy = w;
+  heavy[mid] = -1.0;  // redundant under W (lifted far up) ...
+  std::vector<double> light = w;
+  light[mid] = 1.0;   // ... and a vertex under U (lifted far down)
+  write_xyz(tmp.path("heavy.xyz"), pts, &heavy);
+  write_xyz(tmp.path("light.xyz"), pts, &light);
+  expect_usage(iflip, cli::InstantFlipArgs{p, tmp.path("heavy.xyz"), tmp.path("light.xyz"), out, 3, false, false},
+               "inserts no vertices");
+  REQUIRE(cli::run_instant_flip(cli::InstantFlipArgs{p, fw, fu, out, 3, false, false}) == 0);
+}

@@ -1,0 +1,157 @@
+// rtd_certify_test.cpp — the d-dimensional certifier
+// (reference/rtd/certify_rtd.hpp) accepts every RT+1 output and CGAL's answer
+// on input in general position, and rejects mutated outputs, each with the
+// condition the mutation violates:
+//   a flipped ridge            (a valid triangulation, not regular)  locally-regular
+//   a missing simplex          (a hole)                              boundary-is-hull / facet-manifold
+//   a dropped non-redundant point (the RT of S with that point made
+//                               redundant by a huge negative weight)  missing-point-redundant
+//   a reversed / unsorted / repeated simplex                         canonical-form / simplex-orientation
+//   the triangulation of a subset of the hull                        boundary-is-hull or missing-point-redundant
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "peers/cgal_regular_d.hpp"
+#include "proptests/support/rtd_inputs.hpp"
+#include "reference/rtd/bistellar_flip.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+
+using namespace flipflop;
+using namespace flipflop::ref::rtd;
+
+namespace {
+
+PointSet input(std::uint64_t seed) {
+  const int d = 2 + static_cast<int>(seed % 3);
+  const std::size_t n = static_cast<std::size_t>(d + 4) + (seed >> 2) % (d == 4 ? 40 : 80);
+  if ((seed >> 9) % 3 == 0) {
+    PointSet lat = test::rtd_lattice(d, n, seed, 3, static_cast<int>((seed >> 11) % 3));
+    bool spans = true;
+    try {
+      ref::rtd_incremental(lat);
+    } catch (const std::invalid_argument&) {
+      spans = false;
+    }
+    if (spans) return lat;
+  }
+  return test::rtd_uniform(d, n, seed, (seed >> 12) % 2 ? 0.05 : 0.0);
+}
+
+}  // namespace
+
+TEST_CASE("rtd certify: accepts RT+1 outputs and CGAL's answer") {
+  for (std::uint64_t seed = 1; seed <= 150 / test::kRtdSanitizerDivisor; ++seed) {  // random and lattice input for d 2 to 4
+    const PointSet ps = input(seed * 0x9E3779B97F4A7C15ull);
+    const ref::Rtd r = ref::rtd_incremental(ps);
+    const certify::Report rep = certify::rtd(ps, r.simplices);
+    INFO(rep.message());
+    REQUIRE(rep.ok);
+  }
+  for (int d = 2; d <= 4; ++d) {
+    const PointSet ps = test::rtd_uniform(d, 300, 9 + static_cast<std::uint64_t>(d), 0.02);
+    REQUIRE(certify::rtd(ps, peers::cgal_regular_d(ps)).ok);
+  }
+}
+
+TEST_CASE("rtd certify: rejects a flipped ridge or a missing simplex or a dropped point") {
+  for (std::uint64_t s = 1; s <= 100 / test::kRtdSanitizerDivisor; ++s) {  // a loop over seeds: each case builds two RTs
+    const std::uint64_t seed = s * 0xD1B54A32D192ED03ull;
+    const PointSet ps = input(seed);
+    const int d = ps.dim;
+    std::mt19937_64 g(seed);
+    TriangulationD T = ref::build_rtd(ps);
+    const auto good = real_simplices(T);
+    // 1. a flipped ridge: every flip of an interior ridge of RT(S) is a flip
+    // of a locally regular ridge; the result is a valid but non-regular
+    // triangulation of conv(S)
+    std::vector<RidgeD> fr;
+    for (const RidgeD& r : ridges(T))
+      if (interior(T, r) && flip_shape(T, r).flippable) fr.push_back(r);
+    if (!fr.empty()) {
+      const FlipResult res = flip(T, fr[g() % fr.size()]);
+      auto flipped = real_simplices(T);
+      const certify::Report rep = certify::rtd(ps, flipped);
+      REQUIRE(!rep.ok);
+      // a (d+1)-1 flip drops a vertex: then the dropped point is the culprit
+      if (res.removed == kNoVertex) REQUIRE(rep.condition == "locally-regular");
+      else REQUIRE((rep.condition == "locally-regular" || rep.condition == "missing-point-redundant"));
+    }
+    // 2. a missing simplex
+    {
+      auto holed = good;
+      holed.erase(holed.begin() + static_cast<long>(g() % holed.size()));
+      const certify::Report rep = certify::rtd(ps, holed);
+      REQUIRE(!rep.ok);
+      REQUIRE((rep.condition == "boundary-is-hull" || rep.condition == "facet-manifold" ||
+                rep.condition == "simplex-indices"));
+    }
+    // 3. a dropped non-redundant point: RT(S) with vertex x made redundant
+    {
+      std::vector<Index> verts;
+      for (const auto& t : good)
+        for (Index x : t) verts.push_back(x);
+      std::sort(verts.begin(), verts.end());
+      verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+      const Index x = verts[g() % verts.size()];
+      PointSet heavy = ps;
+      heavy.weighted = true;
+      heavy.weights.resize(ps.size(), 0.0);
+      for (std::size_t i = 0; i < ps.size(); ++i) heavy.weights[i] = ps.weight(i);
+      heavy.weights[x] = -1e6;  // lifted far above everything: redundant, unless a hull vertex
+      const ref::Rtd without = ref::rtd_incremental(heavy);
+      if (std::binary_search(without.redundant.begin(), without.redundant.end(), x)) {
+        const certify::Report rep = certify::rtd(ps, without.simplices);
+        REQUIRE(!rep.ok);
+        REQUIRE((rep.condition == "missing-point-redundant" || rep.condition == "locally-regular"));
+      } else {
+        // x is a hull vertex (never redundant): its output is still RT(heavy)
+        REQUIRE(certify::rtd(heavy, without.simplices).ok);
+      }
+    }
+    // 4. form: a reversed simplex, an unsorted list, a repeat
+    {
+      auto rev = good;
+      auto& t = rev[g() % rev.size()];
+      std::swap(t[static_cast<std::size_t>(d - 1)], t[static_cast<std::size_t>(d)]);
+      const certify::Report rep = certify::rtd(ps, rev);
+      REQUIRE(!rep.ok);
+      REQUIRE((rep.condition == "canonical-form" || rep.condition == "simplex-orientation"));
+      if (good.size() >= 2) {
+        auto unsorted = good;
+        std::swap(unsorted.front(), unsorted.back());
+        REQUIRE(certify::rtd(ps, unsorted).condition == "canonical-form");
+      }
+      auto rep2 = good;
+      rep2.insert(rep2.begin() + 1, rep2.front());
+      REQUIRE(!certify::rtd(ps, rep2).ok);
+    }
+  }
+}
+
+TEST_CASE("rtd certify: rejects bad indices and wrong dimension and a triangulation of a subset") {
+  const PointSet ps = test::rtd_uniform(3, 40, 5, 0.0);
+  const ref::Rtd r = ref::rtd_incremental(ps);
+  REQUIRE(certify::rtd(ps, {}).condition == "simplex-indices");
+  auto bad = r.simplices;
+  bad[0][1] = 40;
+  REQUIRE(certify::rtd(ps, bad).condition == "simplex-indices");
+  bad = r.simplices;
+  bad[0].pop_back();
+  REQUIRE(certify::rtd(ps, bad).condition == "simplex-indices");
+  // the triangulation of the first 20 points is not one of all 40
+  PointSet half = ps;
+  half.coords.resize(20 * 3);
+  half.weights.resize(20);
+  const ref::Rtd rh = ref::rtd_incremental(half);
+  const certify::Report rep = certify::rtd(ps, rh.simplices);
+  REQUIRE(!rep.ok);
+  INFO(rep.message());
+  REQUIRE((rep.condition == "missing-point-redundant" || rep.condition == "boundary-is-hull"));
+  PointSet six;
+  six.dim = 6;
+  six.coords.assign(60, 0.5);
+  REQUIRE(certify::rtd(six, r.simplices).condition == "input-dimension");
+}

@@ -1,0 +1,130 @@
+// canonical_d.hpp — the canonical form of d-dimensional simplex output
+// (DESIGN.md "Canonical output": "d-dimensional: one simplex per line,
+// positively oriented, sorted the same way"), the one definition used by
+// every d-dimensional algorithm, peer, writer and the certifier.
+//
+// A simplex is given as a POSITIVELY ORIENTED tuple (orient_d > 0 under SoS).
+// Its canonical tuple: the smallest index first, the others ascending; when
+// that order is an odd permutation of the given (positive) tuple, the LAST
+// TWO entries are swapped (an odd permutation restores the orientation).
+// Orientation is a property of the parity of the ordering, so this needs no
+// predicate: of the two orderings "smallest first, the rest ascending" and
+// "the same with the last two swapped" exactly one is an even permutation
+// of the given positive tuple, and that one is the canonical tuple.
+// A list is canonical when every tuple is and the list is sorted
+// lexicographically (no duplicates).
+//
+// For d = 2 this is canonical_triangles of reference/canonical.hpp: the
+// positively oriented (counter-clockwise) triangle rotated to its smallest
+// index is (m, x, y) with x < y or, if that is clockwise, (m, y, x) — the
+// rule above (a rotation of a triangle is even).
+//
+// Text format: one simplex per line, d+1 indices separated by single spaces,
+// '\n' after each line; nothing else.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <istream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "reference/point_set.hpp"
+
+namespace flipflop {
+
+// Parity of the permutation sorting `s` (true = odd). Entries distinct.
+inline bool odd_sorting_parity(std::vector<Index> s) {
+  bool odd = false;
+  for (std::size_t i = 0; i < s.size(); ++i)  // selection sort, counting swaps
+    for (std::size_t j = i + 1; j < s.size(); ++j)
+      if (s[j] < s[i]) {
+        std::swap(s[i], s[j]);
+        odd = !odd;
+      }
+  return odd;
+}
+
+// The canonical tuple of a positively oriented simplex tuple.
+inline std::vector<Index> canonical_simplex(const std::vector<Index>& positive) {
+  std::vector<Index> c = positive;
+  const bool odd = odd_sorting_parity(c);
+  std::sort(c.begin(), c.end());
+  if (odd && c.size() >= 2) std::swap(c[c.size() - 1], c[c.size() - 2]);
+  return c;
+}
+
+// Is a tuple in canonical form (given that it is positively oriented, which
+// this does not check)? Smallest first, the middle ascending, the last two in
+// either order but the whole above the first.
+inline bool is_canonical_shape(const std::vector<Index>& t) {
+  if (t.size() < 2) return false;
+  std::vector<Index> s = t;
+  if (s.size() >= 2 && s[s.size() - 1] < s[s.size() - 2]) std::swap(s[s.size() - 1], s[s.size() - 2]);
+  for (std::size_t i = 1; i < s.size(); ++i)
+    if (!(s[i - 1] < s[i])) return false;
+  return true;
+}
+
+inline std::vector<std::vector<Index>> canonical_simplices(std::vector<std::vector<Index>> positive) {
+  for (auto& t : positive) t = canonical_simplex(t);
+  std::sort(positive.begin(), positive.end());
+  return positive;
+}
+
+// Writer: one simplex per line.
+inline void write_simplices(std::ostream& out, const std::vector<std::vector<Index>>& simplices) {
+  for (const auto& t : simplices) {
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (i) out << ' ';
+      out << t[i];
+    }
+    out << '\n';
+  }
+}
+
+inline std::string simplices_text(const std::vector<std::vector<Index>>& simplices) {
+  std::ostringstream o;
+  write_simplices(o, simplices);
+  return o.str();
+}
+
+// Reader: every non-empty line holds exactly d+1 non-negative integers (the
+// tuple as written, not re-canonicalised). Throws std::invalid_argument with
+// the line number on anything else.
+inline std::vector<std::vector<Index>> read_simplices(std::istream& in, int d) {
+  std::vector<std::vector<Index>> out;
+  std::string line;
+  std::size_t lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream ls(line);
+    std::vector<Index> t;
+    std::string tok;
+    while (ls >> tok) {
+      if (tok.empty() || tok.find_first_not_of("0123456789") != std::string::npos || tok.size() > 10)
+        throw std::invalid_argument("simplex line " + std::to_string(lineno) + ": '" + tok +
+                                    "' is not a point index");
+      unsigned long long v = std::stoull(tok);
+      if (v >= 0xffffffffULL)
+        throw std::invalid_argument("simplex line " + std::to_string(lineno) + ": index " + tok + " is too large");
+      t.push_back(static_cast<Index>(v));
+    }
+    if (t.size() != static_cast<std::size_t>(d + 1))
+      throw std::invalid_argument("simplex line " + std::to_string(lineno) + " has " + std::to_string(t.size()) +
+                                  " indices, a " + std::to_string(d) + "-simplex has " + std::to_string(d + 1));
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+inline std::vector<std::vector<Index>> parse_simplices(const std::string& text, int d) {
+  std::istringstream in(text);
+  return read_simplices(in, d);
+}
+
+}  // namespace flipflop

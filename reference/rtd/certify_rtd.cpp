@@ -1,0 +1,273 @@
+// certify_rtd.cpp — exact certification of a d-dimensional regular
+// triangulation at the canonical level (SoS). The conditions and the
+// local-to-global argument (thesis Thm 2.2 [ES92]) are in certify_rtd.hpp.
+#include "reference/rtd/certify_rtd.hpp"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
+#include "predicates/predicates.hpp"
+#include "reference/rtd/canonical_d.hpp"
+
+namespace flipflop::certify {
+
+namespace {
+
+constexpr int kMaxD = 5;
+using FacetKey = std::array<Index, kMaxD>;  // sorted facet vertices, unused = ~0
+
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (Index x : k) h = (h ^ x) * 0x100000001B3ull + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+std::string simplex_str(const std::vector<Index>& t) {
+  std::string o = "(";
+  for (std::size_t i = 0; i < t.size(); ++i) o += (i ? "," : "") + std::to_string(t[i]);
+  return o + ")";
+}
+
+// The facet structure of a list of positive simplices: for each simplex and
+// position i, the simplex across the facet opposite t[i] (-1: boundary).
+struct Facets {
+  int d = 0;
+  std::vector<std::int64_t> across;  // simplices * (d+1)
+  std::int64_t nb(std::size_t s, int i) const { return across[s * static_cast<std::size_t>(d + 1) + static_cast<std::size_t>(i)]; }
+};
+
+struct Checker {
+  const PointSet& ps;
+  int d;
+  pred::Pt P(Index i) const { return {i, ps.point(i)}; }
+  pred::WPt W(Index i) const { return {i, ps.point(i), ps.weight(i)}; }
+  int orient(const Index* t) const {
+    pred::Pt p[kMaxD + 1];
+    for (int i = 0; i <= d; ++i) p[i] = P(t[i]);
+    return pred::orient_d(d, p);
+  }
+  // orient of t with entry i replaced by x
+  int orient_with(const std::vector<Index>& t, int i, Index x) const {
+    Index u[kMaxD + 1];
+    for (int j = 0; j <= d; ++j) u[j] = t[static_cast<std::size_t>(j)];
+    u[i] = x;
+    return orient(u);
+  }
+  // power_d(t, x) > 0 iff x's lifted point is strictly below the lifted t
+  int power(const std::vector<Index>& t, Index x) const {
+    pred::WPt p[kMaxD + 2];
+    for (int i = 0; i <= d; ++i) p[i] = W(t[static_cast<std::size_t>(i)]);
+    p[d + 1] = W(x);
+    return pred::power_d(d, p);
+  }
+};
+
+std::string index_problem(const std::vector<std::vector<Index>>& simplices, std::size_t n, int d) {
+  if (simplices.empty()) return "simplex-indices: the output has no simplices";
+  for (std::size_t k = 0; k < simplices.size(); ++k) {
+    const auto& t = simplices[k];
+    if (t.size() != static_cast<std::size_t>(d + 1))
+      return "simplex-indices: simplex " + std::to_string(k) + " has " + std::to_string(t.size()) +
+             " vertices, a " + std::to_string(d) + "-simplex has " + std::to_string(d + 1);
+    for (Index x : t)
+      if (x >= n)
+        return "simplex-indices: simplex " + std::to_string(k) + " " + simplex_str(t) + " names point " +
+               std::to_string(x) + " but the input has " + std::to_string(n) + " points";
+    std::vector<Index> s = t;
+    std::sort(s.begin(), s.end());
+    if (std::adjacent_find(s.begin(), s.end()) != s.end())
+      return "simplex-indices: simplex " + std::to_string(k) + " " + simplex_str(t) + " repeats a vertex";
+  }
+  return {};
+}
+
+// Conditions simplex-orientation, facet-manifold, boundary-is-hull (header).
+// Fills `F` for the later conditions.
+std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, Facets& F) {
+  const int d = ck.d;
+  const std::size_t w = static_cast<std::size_t>(d + 1);
+  for (const auto& t : S)
+    if (ck.orient(t.data()) <= 0)
+      return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
+  // facet -> (simplex, position, induced orientation sign)
+  struct Entry {
+    std::uint32_t s;
+    int i;
+    bool odd;
+    int count;
+    std::uint32_t s2;
+    int i2;
+  };
+  std::unordered_map<FacetKey, Entry, FacetKeyHash> facets;
+  facets.reserve(S.size() * w);
+  for (std::uint32_t s = 0; s < S.size(); ++s) {
+    for (int i = 0; i <= d; ++i) {
+      std::vector<Index> f;
+      for (int j = 0; j <= d; ++j)
+        if (j != i) f.push_back(S[s][static_cast<std::size_t>(j)]);
+      // induced orientation of the facet: (-1)^i (t without t_i); compare
+      // with its sorted order
+      const bool odd = odd_sorting_parity(f) != (i % 2 != 0);
+      std::sort(f.begin(), f.end());
+      FacetKey key;
+      key.fill(~Index{0});
+      std::copy(f.begin(), f.end(), key.begin());
+      auto [it, fresh] = facets.try_emplace(key, Entry{s, i, odd, 1, 0, 0});
+      if (fresh) continue;
+      Entry& e = it->second;
+      if (e.count >= 2)
+        return "facet-manifold: facet " + simplex_str(f) + " lies in three or more simplices";
+      if (e.odd == odd)
+        return "facet-manifold: simplices " + simplex_str(S[e.s]) + " and " + simplex_str(S[s]) +
+               " lie on the same side of their common facet " + simplex_str(f);
+      e.count = 2;
+      e.s2 = s;
+      e.i2 = i;
+    }
+  }
+  F.d = d;
+  F.across.assign(S.size() * w, -1);
+  std::vector<std::pair<std::uint32_t, int>> boundary;
+  for (const auto& [key, e] : facets) {
+    (void)key;
+    if (e.count == 2) {
+      F.across[e.s * w + static_cast<std::size_t>(e.i)] = e.s2;
+      F.across[e.s2 * w + static_cast<std::size_t>(e.i2)] = e.s;
+    } else {
+      boundary.emplace_back(e.s, e.i);
+    }
+  }
+  if (boundary.empty()) return "boundary-is-hull: the simplices have no boundary";
+  std::sort(boundary.begin(), boundary.end());
+  std::vector<Index> bverts;
+  for (const auto& [s, i] : boundary)
+    for (int j = 0; j <= d; ++j)
+      if (j != i) bverts.push_back(S[s][static_cast<std::size_t>(j)]);
+  std::sort(bverts.begin(), bverts.end());
+  bverts.erase(std::unique(bverts.begin(), bverts.end()), bverts.end());
+  for (const auto& [s, i] : boundary) {
+    const auto& t = S[s];
+    for (Index x : bverts) {
+      if (std::find(t.begin(), t.end(), x) != t.end() && x != t[static_cast<std::size_t>(i)]) continue;  // on f
+      if (x == t[static_cast<std::size_t>(i)]) continue;  // the simplex's own apex: inside by orientation
+      if (ck.orient_with(t, i, x) <= 0) {
+        std::vector<Index> f;
+        for (int j = 0; j <= d; ++j)
+          if (j != i) f.push_back(t[static_cast<std::size_t>(j)]);
+        return "boundary-is-hull: boundary vertex " + std::to_string(x) + " is not strictly inside the boundary facet " +
+               simplex_str(f) + " of simplex " + simplex_str(t);
+      }
+    }
+  }
+  return {};
+}
+
+Report fail_from(const std::string& why) {
+  const auto colon = why.find(':');
+  return Report::fail(why.substr(0, colon), colon == std::string::npos ? why : why.substr(colon + 2));
+}
+
+}  // namespace
+
+namespace rtd_detail {
+std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices) {
+  if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2..5";
+  if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
+  Checker ck{ps, ps.dim};
+  Facets F;
+  return tiling(ck, positive_simplices, F);
+}
+}  // namespace rtd_detail
+
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
+  const int d = ps.dim;
+  if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2..5");
+  const std::size_t n = ps.size();
+  if (n < static_cast<std::size_t>(d) + 1)
+    return Report::fail("input-dimension", std::to_string(n) + " points, at least " + std::to_string(d + 1) +
+                                               " needed in " + std::to_string(d) + "D");
+  if (std::string why = index_problem(S, n, d); !why.empty()) return fail_from(why);
+  for (std::size_t k = 0; k < S.size(); ++k) {
+    if (!is_canonical_shape(S[k]))
+      return Report::fail("canonical-form", "simplex " + simplex_str(S[k]) + " is not in canonical order");
+    if (k > 0 && !(S[k - 1] < S[k]))
+      return Report::fail("canonical-form", "simplices " + simplex_str(S[k - 1]) + " and " + simplex_str(S[k]) +
+                                                " are not sorted or repeat");
+  }
+  Checker ck{ps, d};
+  Facets F;
+  if (std::string why = tiling(ck, S, F); !why.empty()) return fail_from(why);
+  // (the tiling covers a full-dimensional convex region, so the input spans R^d)
+
+  // Theorem 2.2: every interior facet locally regular
+  const std::size_t w = static_cast<std::size_t>(d + 1);
+  for (std::size_t s = 0; s < S.size(); ++s)
+    for (int i = 0; i <= d; ++i) {
+      const std::int64_t o = F.nb(s, i);
+      if (o < static_cast<std::int64_t>(s)) continue;  // boundary, or checked from the other side
+      const auto& u = S[static_cast<std::size_t>(o)];
+      Index b = 0;
+      for (Index x : u)
+        if (std::find(S[s].begin(), S[s].end(), x) == S[s].end()) b = x;
+      if (ck.power(S[s], b) >= 0)
+        return Report::fail("locally-regular", "the facet between " + simplex_str(S[s]) + " and " + simplex_str(u) +
+                                                   " is not locally regular: the lifted point of " + std::to_string(b) +
+                                                   " is not strictly above the lifted " + simplex_str(S[s]));
+    }
+
+  // every missing point redundant: locate it (visibility walk, perturbed),
+  // compare with the lifted simplex containing it
+  std::vector<char> is_vertex(n, 0);
+  for (const auto& t : S)
+    for (Index x : t) is_vertex[x] = 1;
+  std::uint64_t rng = 0x9E3779B97F4A7C15ull;
+  std::size_t cur = 0;
+  const std::size_t cap = 4 * S.size() + 100;
+  for (Index p = 0; p < n; ++p) {
+    if (is_vertex[p]) continue;
+    std::size_t steps = 0;
+    long found = -1;
+    bool outside = false;
+    while (steps++ < cap) {
+      int cand[kMaxD + 1], nc = 0;
+      for (int i = 0; i <= d; ++i)
+        if (ck.orient_with(S[cur], i, p) < 0) cand[nc++] = i;
+      if (nc == 0) {
+        found = static_cast<long>(cur);
+        break;
+      }
+      rng ^= rng << 13;
+      rng ^= rng >> 7;
+      rng ^= rng << 17;
+      const int i = cand[nc == 1 ? 0 : static_cast<int>((rng >> 11) % static_cast<std::uint64_t>(nc))];
+      const std::int64_t next = F.nb(cur, i);
+      if (next < 0) {  // strictly beyond a boundary facet: outside the tiled hull
+        outside = true;
+        break;
+      }
+      cur = static_cast<std::size_t>(next);
+    }
+    if (found < 0 && !outside) {  // the walk did not settle (cannot happen after regularity): scan
+      for (std::size_t s = 0; s < S.size() && found < 0; ++s) {
+        bool in = true;
+        for (int i = 0; i <= d && in; ++i) in = ck.orient_with(S[s], i, p) > 0;
+        if (in) found = static_cast<long>(s);
+      }
+    }
+    if (found < 0)
+      return Report::fail("missing-point-redundant", "point " + std::to_string(p) +
+                                                         " is not a vertex and lies outside every simplex (under the perturbation)");
+    if (ck.power(S[static_cast<std::size_t>(found)], p) >= 0)
+      return Report::fail("missing-point-redundant",
+                          "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is not "
+                          "strictly above the lifted simplex " + simplex_str(S[static_cast<std::size_t>(found)]));
+    cur = static_cast<std::size_t>(found);
+  }
+  (void)w;
+  return Report::pass();
+}
+
+}  // namespace flipflop::certify

@@ -1,0 +1,86 @@
+// certify_rtd.hpp — exact certification of a d-dimensional regular
+// triangulation RT(S ⊕ W) (2 <= d <= 5) at the canonical level: is the
+// output THE answer under flipflop's Simulation of Simplicity (predicates.hpp),
+// in canonical form (canonical_d.hpp)? Accepts any program's output.
+//
+// Conditions, in order (the first violated one is reported):
+//   input-dimension          ps.dim in 2..5 and the points span R^d
+//   simplex-indices          d+1 distinct in-range indices per simplex, at
+//                            least one simplex
+//   canonical-form           every tuple canonical, the list sorted, no repeats
+//   simplex-orientation      every simplex positive (orient_d > 0, SoS)
+//   facet-manifold           every facet (d-1 face) lies in one or two
+//                            simplices; when in two, they induce opposite
+//                            orientations on it (they lie on its two sides)
+//   boundary-is-hull         the boundary facets (in one simplex), each on the
+//                            inner side of its simplex, have every boundary
+//                            vertex not on them strictly on their inner side
+//   locally-regular          every interior facet is locally regular (Thm 2.2):
+//                            power_d(C1, b) < 0 — b's lifted point strictly
+//                            above the lifted C1
+//   missing-point-redundant  every input point that is not a vertex lies
+//                            strictly inside a simplex (SoS) whose lifted
+//                            hyperplane passes strictly below its lifted point
+//
+// Why these suffice (the local-to-global argument, in the perturbed
+// configuration, which is a real configuration in general position):
+//  1. Tiling. Let C be the chain of all simplices with their (positive)
+//     orientations. The facet-manifold condition makes interior facets
+//     cancel in ∂C, so ∂C = B, the boundary facets with their induced
+//     orientation. For a point y off all facets, the number of simplices
+//     containing y is Σ_σ wind(∂σ, y) = wind(B, y) (every simplex is positive).
+//     Let P be the intersection of the inner half-spaces of the facets of B.
+//     boundary-is-hull puts every vertex of B in P, so every facet of B lies
+//     on ∂P, outward. A non-zero (d-1)-cycle on ∂P forces P bounded, and then
+//     B = m[∂P] with m the number of facets of B covering a generic point of
+//     ∂P. Such a point y in the relative interior of a facet f of B has a
+//     unique supporting hyperplane, so every facet of B through y lies in the
+//     hyperplane of f; all its vertices are then vertices of f (the others are
+//     STRICTLY inside), so it is f itself: m = 1. Hence every point of P lies
+//     in exactly one simplex and no point outside P lies in any: the simplices
+//     tile P = conv(vertices of B), and every vertex of a simplex lies in P.
+//  2. Hull. Every input point is a vertex (in P) or, by the last condition,
+//     inside a simplex (in P): P = conv(S). So the simplices form a
+//     triangulation of conv(S) (thesis §2.1).
+//  3. Regularity. Theorem 2.2 [ES92] (thesis §2.2): "A triangulation with its
+//     weighted vertex set S ⊕ W in R^d is RT(S ⊕ W) if and only if all its
+//     ridges are locally regular": the lifted triangulation is then locally
+//     convex at every interior ridge, hence (a locally convex piecewise-linear
+//     function on a convex domain is convex) the lower hull of the lifted
+//     vertices. Under SoS the comparison is strict, so it is THE regular
+//     triangulation of its vertex set.
+//  4. Redundancy. A missing point whose lifted point lies strictly above the
+//     lifted simplex containing it lies strictly above the lower hull (which
+//     is that convex function), so it is redundant: the triangulation is
+//     RT(S ⊕ W), the unique lower hull of all perturbed lifted points.
+// Cost: O(|B-vertices| · |B|) orient_d for the hull condition, O(#simplices)
+// power_d, and a visibility walk per missing point.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "reference/certify.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::certify {
+
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices);
+
+namespace rtd_detail {
+// The structural part (conditions simplex-indices, simplex-orientation,
+// facet-manifold, boundary-is-hull on the vertices of the simplices; no
+// canonical form, no regularity): empty when the simplices — given POSITIVELY
+// ORIENTED — tile the convex hull of their vertices, otherwise the condition
+// and what is wrong. Used by rtd::from_simplices.
+std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices);
+}  // namespace rtd_detail
+
+}  // namespace flipflop::certify
+
+namespace flipflop::ref {
+// The brief's name: certify_rtd(ps, simplices) == certify::rtd(ps, simplices).
+inline certify::Report certify_rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices) {
+  return certify::rtd(ps, simplices);
+}
+}  // namespace flipflop::ref

@@ -1,0 +1,1 @@
+flipflop_reference_part(flipflop_instant_flip SOURCES ${CMAKE_CURRENT_LIST_DIR}/failure_time.cpp ${CMAKE_CURRENT_LIST_DIR}/instant_flip.cpp ${CMAKE_CURRENT_LIST_DIR}/perturbation_order.cpp ${CMAKE_CURRENT_LIST_DIR}/timeline.cpp DEPENDS flipflop_rtd)
