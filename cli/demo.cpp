@@ -18,7 +18,11 @@
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
 #include "reference/hull2.hpp"
+#include "reference/hull3/hull3.hpp"
 #include "reference/rt2.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/instant_flip.hpp"
+#include "reference/rtd/rt_incremental.hpp"
 
 namespace flipflop::cli {
 
@@ -33,7 +37,7 @@ struct Row {
 };
 
 void print_row(const Row& r) {
-  std::printf("%-28s %-26s %9zu %9zu %10.3f %10.3f  %s\n", r.job.c_str(), r.program.c_str(), r.n, r.size,
+  std::printf("%-30s %-28s %9zu %9zu %10.3f %10.3f  %s\n", r.job.c_str(), r.program.c_str(), r.n, r.size,
               r.t_compute, r.t_certify, r.verdict.c_str());
   std::fflush(stdout);
 }
@@ -66,7 +70,7 @@ int run_demo() {
   bool all_ok = true;
   std::printf("flipflop demo: every answer below was computed in this run and checked by the exact certifier.\n");
   std::printf("Times in seconds (one run each; `flipflop bench` reports medians).\n\n");
-  std::printf("%-28s %-26s %9s %9s %10s %10s  %s\n", "job", "program", "points", "size", "compute", "certify",
+  std::printf("%-30s %-28s %9s %9s %10s %10s  %s\n", "job", "program", "points", "size", "compute", "certify",
               "verdict");
 
   using Tris = std::vector<Triangle>;
@@ -89,6 +93,10 @@ int run_demo() {
     gen::Options o;
     PointSet ps = gen::generate(dist, n, o);
     std::string job = std::string("hull3 ") + dist;
+    all_ok &= run_one<Tris>(job, "flipflop ffHull", ps, [&] { return ref::hull3(ps, "ffhull"); }, h3(ps),
+                            Level::canonical);
+    all_ok &= run_one<Tris>(job, "flipflop star splaying", ps, [&] { return ref::hull3(ps, "splay"); }, h3(ps),
+                            Level::canonical);
     all_ok &= run_one<Tris>(job, "Qhull (qhull Qt)", ps, [&] { return peers::qhull_hull3(ps); }, h3(ps), Level::exact);
     all_ok &= run_one<Tris>(job, "CGAL convex_hull_3", ps, [&] { return peers::cgal_hull3(ps); }, h3(ps), Level::exact);
   }
@@ -124,6 +132,10 @@ int run_demo() {
     gen::Options o;
     PointSet ps = gen::generate("sphere-lattice", 120, o);
     const std::string job = "hull3 cospherical lattice";
+    all_ok &= run_one<Tris>(job, "flipflop ffHull", ps, [&] { return ref::hull3(ps, "ffhull"); }, h3(ps),
+                            Level::canonical);
+    all_ok &= run_one<Tris>(job, "flipflop twist-flip", ps, [&] { return ref::hull3(ps, "twist-flip"); }, h3(ps),
+                            Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop reference (brute)", ps, [&] { return brute::hull3(ps); }, h3(ps),
                             Level::canonical);
     all_ok &= run_one<Tris>(job, "Qhull (qhull Qt)", ps, [&] { return peers::qhull_hull3(ps); }, h3(ps), Level::exact);
@@ -137,6 +149,34 @@ int run_demo() {
     all_ok &= run_one<Tris>(job, "flipflop Lawson", ps, [&] { return ref::dt2_lawson(ps); }, r2(ps), Level::canonical);
     all_ok &= run_one<Tris>(job, "CGAL Delaunay_triangulation_2", ps, [&] { return peers::cgal_delaunay2(ps); },
                             r2(ps), Level::exact);
+  }
+  // 3D regular triangulation (thesis ch. 9): RT+1, then the monotonic instant
+  // flip to new weights, certified against the definition (Thm 2.2).
+  {
+    gen::Options o;
+    o.weighted = true;
+    o.wlo = 0;
+    o.whi = 1e-4;
+    PointSet ps = gen::generate("cube", 20000, o);
+    using Simplices = std::vector<std::vector<Index>>;
+    auto rd = [](const PointSet& p) {
+      return std::function<certify::Report(const Simplices&, Level)>(
+          [&p](const Simplices& t, Level) { return certify::rtd(p, t); });
+    };
+    all_ok &= run_one<Simplices>("rtd d=3 cube w[0,1e-4]", "flipflop RT+1", ps,
+                                 [&] { return ref::rtd_incremental(ps).simplices; }, rd(ps), Level::canonical);
+    // From the Delaunay triangulation (weights W = 0: every point a vertex)
+    // to the weights above (U): vertices that become redundant leave by
+    // (d+1)-1 flips; the instant flip inserts none, and needs none here.
+    PointSet p0 = ps;
+    std::fill(p0.weights.begin(), p0.weights.end(), 0.0);
+    all_ok &= run_one<Simplices>("rtd d=3 cube w=0 -> w[0,1e-4]", "flipflop instant flip", ps,
+                                 [&] {
+                                   ref::rtd::TriangulationD T = ref::build_rtd(p0);
+                                   ref::instant_flip(T, p0.weights, ps.weights);
+                                   return ref::rtd::real_simplices(T);
+                                 },
+                                 rd(ps), Level::canonical);
   }
   std::printf("\n%s\n", all_ok ? "all answers certified" : "SOME ANSWERS WERE NOT CERTIFIED (see above)");
   return all_ok ? 0 : 1;
