@@ -4,14 +4,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <string_view>
 
 #include "cli/commands.hpp"
 #include "io/input_error.hpp"
 #include "io/read_points.hpp"
-#include "io/text.hpp"
 #include "io/write_points.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
@@ -34,49 +32,11 @@ void check_dim(int d) {
   if (d < 2 || d > 5) throw UsageError("--dim " + std::to_string(d) + " is not supported (2..5)");
 }
 
-// .xyz with d coordinates (+ a weight): one point per line, '#' comments.
-PointSet read_xyz_d(const std::string& path, int d, bool weighted) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (ext != ".xyz")
-    throw io::InputError(path, "unknown file extension '" + ext + "' (expected .xyz for dimension " +
-                                   std::to_string(d) + ")");
-  PointSet ps;
-  ps.dim = d;
-  ps.weighted = weighted;
-  const std::size_t cols = static_cast<std::size_t>(d) + (weighted ? 1 : 0);
-  io::detail::LineReader in(path, '#');
-  std::string_view line;
-  std::string_view tok[8];
-  double x[8];
-  while (in.next(line)) {
-    const std::size_t k = io::detail::split(line, tok, 8);
-    if (k == 0) continue;
-    if (k != cols)
-      throw io::InputError(path, in.line_number(),
-                           "expected " + std::to_string(cols) + " columns (" + std::to_string(d) +
-                               " coordinates" + (weighted ? " and a weight" : "") + "), found " +
-                               std::to_string(k));
-    for (std::size_t c = 0; c < cols; ++c) {
-      const io::detail::Num s = io::detail::parse_real(tok[c], x[c]);
-      if (s != io::detail::Num::ok)
-        throw io::InputError(path, in.line_number(),
-                             io::detail::describe(s, tok[c]) + " in column " + std::to_string(c + 1));
-    }
-    ps.coords.insert(ps.coords.end(), x, x + d);
-    if (weighted) ps.weights.push_back(x[d]);
-  }
-  if (ps.size() < static_cast<std::size_t>(d) + 1)
-    throw io::InputError(path, std::to_string(ps.size()) + " points, at least " +
-                                   std::to_string(d + 1) + " needed");
-  return ps;
-}
 
 PointSet read_d(const std::string& path, int d, bool weighted) {
   try {
-    // io/read_points reads 2 and 3 dimensions in every format it knows.
-    return d <= 3 ? io::read_points(path, d, weighted) : read_xyz_d(path, d, weighted);
+    // io/read_points: .xyz in d = 2..5, .off/.ply in 2 and 3 dimensions
+    return io::read_points(path, d, weighted);
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
   }

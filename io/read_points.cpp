@@ -13,8 +13,10 @@ namespace flipflop::io {
 
 namespace detail {
 const char* column_name(int c, int dim) {
-  static const char* names[] = {"x", "y", "z"};
-  return c < dim ? names[c] : "w";
+  static const char* xyz[] = {"x", "y", "z"};
+  static const char* xd[] = {"x1", "x2", "x3", "x4", "x5"};
+  if (c >= dim) return "w";
+  return dim <= 3 ? xyz[c] : xd[c];
 }
 
 void check_count(const PointSet& ps, const std::string& path, std::size_t line) {
@@ -39,12 +41,16 @@ void append_point(PointSet& ps, const double* x, double w, const std::string& pa
 }  // namespace detail
 
 PointSet read_points(const std::string& path, int dim, bool weighted) {
-  if (dim != 2 && dim != 3)
-    throw InputError(path, "dimension " + std::to_string(dim) + " is not supported (2 or 3)");
+  if (dim < 2 || dim > detail::kMaxXyzColumns - 1)
+    throw InputError(path, "dimension " + std::to_string(dim) + " is not supported (2 to " +
+                               std::to_string(detail::kMaxXyzColumns - 1) + ")");
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   PointSet ps;
+  if (dim > 3 && ext != ".xyz")
+    throw InputError(path, "unknown file extension " + detail::show(ext) + " (expected .xyz for dimension " +
+                               std::to_string(dim) + ")");
   if (ext == ".xyz")
     ps = detail::read_xyz(path, dim, weighted);
   else if (ext == ".off")

@@ -16,14 +16,15 @@ PointSet read_xyz(const std::string& path, int dim, bool weighted) {
   ps.dim = dim;
   ps.weighted = weighted;
   const std::size_t cols = static_cast<std::size_t>(dim) + (weighted ? 1 : 0);
-  const char* layout = dim == 2 ? (weighted ? "x y w" : "x y") : (weighted ? "x y z w" : "x y z");
+  std::string layout;  // "x y z w", "x1 x2 x3 x4 w"
+  for (int c = 0; c < static_cast<int>(cols); ++c) layout += (c ? " " : "") + std::string(column_name(c, dim));
 
   LineReader in(path, '#');
   std::string_view line;
-  std::string_view tok[5];
-  double x[4];
+  std::string_view tok[kMaxXyzColumns + 1];
+  double x[kMaxXyzColumns];
   while (in.next(line)) {
-    const std::size_t k = split(line, tok, 5);
+    const std::size_t k = split(line, tok, kMaxXyzColumns + 1);
     if (k == 0) continue;  // blank or comment
     if (k != cols)
       throw InputError(path, in.line_number(),

@@ -14,7 +14,12 @@
 
 // The command functions are compiled into this test directly (the tool's
 // executable is the only other place they are built).
+#include "cli/commands.hpp"
 #include "cli/rtd_commands.hpp"
+#include "io/read_points.hpp"
+#include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/rt_incremental.hpp"
 #include "support/instant_flip_oracles.hpp"
 
 namespace fs = std::filesystem;
@@ -55,7 +60,7 @@ std::string slurp(const std::string& p) {
 }
 
 // Reads back what the writer wrote (the files hold %.17g: exact round trip).
-PointSet read_back(const std::string& path, int d) { return cli::read_xyz_d(path, d, true); }
+PointSet read_back(const std::string& path, int d) { return io::read_points(path, d, true); }
 
 }  // namespace
 
