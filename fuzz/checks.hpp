@@ -22,5 +22,7 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size);         // h
 bool check_certify_input(const std::uint8_t* data, std::size_t size);       // certify_check.cpp
 bool check_kernels_input(const std::uint8_t* data, std::size_t size);       // kernels_check.cpp
 bool check_rt2_input(const std::uint8_t* data, std::size_t size);           // rt2_check.cpp
+bool check_hull3_input(const std::uint8_t* data, std::size_t size);         // hull3_check.cpp
+bool check_rtd_input(const std::uint8_t* data, std::size_t size);           // rtd_check.cpp
 
 }  // namespace flipflop::fuzz

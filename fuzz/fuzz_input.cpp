@@ -110,8 +110,13 @@ bool decode_points(ByteReader& r, int dim, bool weighted, std::size_t min_n, std
           p[0] = q[0];
           p[1] = q[1];
         } else {
-          const auto q = sphere_point(r.byte());
-          for (std::size_t c = 0; c < d; ++c) p[c] = q[c];
+          // |p|^2 = 9; in d > 3 the three coordinates of the sphere point
+          // go to three consecutive places (cyclically) chosen by a byte
+          const std::uint8_t b = r.byte();
+          const auto q = sphere_point(b);
+          const std::size_t shift = d > 3 ? static_cast<std::size_t>(b / 30) % d : 0;
+          for (std::size_t c = 0; c < d; ++c) p[c] = 0;
+          for (std::size_t c = 0; c < 3 && c < d; ++c) p[(c + shift) % d] = q[c];
         }
         break;
     }

@@ -25,7 +25,8 @@
 //        1e-300, 0.1, 1, 3, 1e15, 2^53, 1e300, DBL_MAX/8, 0.5, 1e-15, 7,
 //        1e-3 (bits 0-3), sign (bit 4), factor 1..8 (bits 5-7)
 //     7  an integer point on the circle x²+y² = 25 (2D, 12 of them) or the
-//        sphere x²+y²+z² = 9 (3D, 30 of them): cocircular / cospherical
+//        sphere x²+y²+z² = 9 (3D, 30 of them; in d > 3 its coordinates in
+//        three consecutive places chosen by the byte): cocircular / cospherical
 // Modes 2-4 fall back to mode 0 when there are not enough earlier points.
 // fuzz/make_seed_corpus.py writes seeds in this layout.
 #pragma once

@@ -11,6 +11,7 @@
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/rt_incremental.hpp"
+#include "support/rtd_oracles.hpp"
 #include "support/instant_flip_oracles.hpp"
 
 using namespace flipflop;
@@ -18,26 +19,6 @@ using namespace flipflop::test_if;
 
 namespace {
 
-// RT(V ⊕ U) for the vertex set V of T by a fresh construction on the sub-point
-// set (indices in increasing order, so the Simulation of Simplicity orders them
-// the same way), mapped back to input indices.
-std::vector<std::vector<Index>> fresh_on_vertices(const PointSet& ps, const std::vector<double>& u,
-                                                  const std::vector<Index>& vertices) {
-  PointSet sub;
-  sub.dim = ps.dim;
-  sub.weighted = true;
-  for (Index v : vertices) {
-    sub.coords.insert(sub.coords.end(), ps.point(v), ps.point(v) + ps.dim);
-    sub.weights.push_back(u[v]);
-  }
-  ref::Rtd rt = ref::rtd_incremental(sub);
-  std::vector<std::vector<Index>> mapped;
-  for (auto s : rt.simplices) {
-    for (Index& x : s) x = vertices[x];
-    mapped.push_back(s);
-  }
-  return canonical_simplices(mapped);  // a monotone relabelling keeps orientation
-}
 
 struct Case {
   int d;
@@ -71,7 +52,7 @@ void run_case(const Case& c, std::uint64_t seed) {
   const std::vector<std::vector<Index>> got = ref::rtd::real_simplices(T);
 
   // 1. the regular triangulation of (vertices of RT(S ⊕ W)) ⊕ U, built afresh
-  CHECK(got == fresh_on_vertices(pts, u, w_vertices));
+  CHECK(got == test::fresh_on(pts, u, w_vertices));
   // 2. when no W-redundant point comes back under U, it is RT(S ⊕ U) itself
   const std::vector<Index> back = ref::reappearing_points(T, u);
   const ref::Rtd full = ref::rtd_incremental(pu);

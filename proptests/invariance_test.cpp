@@ -18,13 +18,20 @@
 //
 // Case counts: RC_PARAMS' max_success (2000 under ctest) divided by the
 // divisor given to each property (prop_scaled, support/rc_scaled.hpp), chosen
-// by cost per case so that the whole file takes about 15 s of CPU in a
-// Release build (one core); at 2000:
+// by cost per case so that the whole file takes about 25 s of CPU in a
+// Release build (one core; each TEST_CASE is its own ctest test); at 2000:
 //   hull2    canonical n<=40 2000, n<=300 200; scale 1000; translate 2000;
 //            permute 2000; counts 1000
 //   rt2      canonical n<=12 2000, n<=60 200; scale 500; translate 2000;
 //            permute 2000; counts 500
-//   hull3    canonical 2000; scale 1000; translate 2000; permute 2000
+//   hull3    (ffHull, star splaying, twist-flip, brute force n<=12, CGAL)
+//            canonical n<=12 1000, n<=60 100; scale n<=30 250; translate
+//            n<=30 500; permute n<=30 500; counts n<=24 200
+//   rtd      (d = 2..5, n <= 24/16/12/9 for d = 2/3/4/5; RT+1, rt2_ffrt for
+//            d = 2, brute force for small n) canonical 1000; scale (d<=4) 250;
+//            translate (d<=4) 1000; permute (d<=4) 1000; counts 500
+//   instant flip (d = 2..5, U drawn from the seed) every family 1000,
+//            coordinates in general position 1000; scale (d<=4) 500
 //   classify 2D 1000, 3D 1000
 // (translate / permute discard the inputs that are not in general position;
 // RapidCheck counts only the cases that ran.)
@@ -102,14 +109,47 @@ TEST_CASE("properties: 2D regular / Delaunay triangulation, every algorithm", "[
 }
 #endif
 
-TEST_CASE("properties: 3D hull, brute force and peers", "[properties][hull3]") {
-  property("every family, n in [4, 12]", "hull3_canonical", 1, degenerate_points(3, 4, 12, false));
-  property("every family, n in [4, 12], x -> 2^k x", "hull3_scale", 2, degenerate_points(3, 4, 12, false));
-  property("integer input in general position, n in [4, 12]", "hull3_translate", 1,
-           integer_candidates(3, 4, 12, false));
-  property("input in general position, n in [4, 12]", "hull3_permute", 1,
-           general_position_candidates(3, 4, 12, false));
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+TEST_CASE("properties: 3D hull, every algorithm", "[properties][hull3]") {
+  property("every family, n in [4, 12], brute force included", "hull3_canonical", 2, degenerate_points(3, 4, 12, false));
+  property("every family, n in [4, 60]", "hull3_canonical", 20, degenerate_points(3, 4, 60, false));
+  property("every family, n in [4, 30], x -> 2^k x", "hull3_scale", 8, degenerate_points(3, 4, 30, false));
+  property("integer input in general position, n in [4, 30]", "hull3_translate", 4,
+           integer_candidates(3, 4, 30, false));
+  property("input in general position, n in [4, 30]", "hull3_permute", 4,
+           general_position_candidates(3, 4, 30, false));
+  property("every family, n in [4, 24]", "hull3_counts", 10, degenerate_points(3, 4, 24, false));
 }
+#endif
+
+#ifdef FLIPFLOP_TEST_HAVE_RTD
+namespace {
+// Points per dimension for the d-dimensional properties (brute force is
+// O(n^(d+2)), general position O(n^(d+2)) exact predicates).
+int rtd_nmax(int d) { return d == 2 ? 24 : d == 3 ? 16 : d == 4 ? 12 : 9; }
+}  // namespace
+
+TEST_CASE("properties: d-dimensional regular triangulation, every algorithm", "[properties][rtd]") {
+  property("every family, d in [2, 5], weighted or not, brute force for small n", "rtd_canonical", 2,
+           any_dimension(degenerate_points_d, 2, 5, rtd_nmax));
+  property("every family, d in [2, 4], x -> 2^k x, w -> 2^2k w", "rtd_scale", 8,
+           any_dimension(degenerate_points_d, 2, 4, rtd_nmax));
+  property("integer input in general position, d in [2, 4]", "rtd_translate", 2,
+           any_dimension(integer_candidates_d, 2, 4, rtd_nmax));
+  property("input in general position, d in [2, 4]", "rtd_permute", 2,
+           any_dimension(general_position_candidates_d, 2, 4, rtd_nmax));
+  property("every family, d in [2, 5]", "rtd_counts", 4, any_dimension(degenerate_points_d, 2, 5, rtd_nmax));
+}
+
+TEST_CASE("properties: the instant flip", "[properties][rtd][instant_flip]") {
+  property("every family, d in [2, 5], U from the seed", "instant_flip_canonical", 2,
+           any_dimension(degenerate_points_d, 2, 5, rtd_nmax));
+  property("coordinates in general position, d in [2, 5], U from the seed", "instant_flip_canonical", 2,
+           any_dimension(general_position_candidates_d, 2, 5, rtd_nmax));
+  property("every family, d in [2, 4], x -> 2^k x, W, U -> 2^2k W, U", "instant_flip_scale", 4,
+           any_dimension(degenerate_points_d, 2, 4, rtd_nmax));
+}
+#endif
 
 TEST_CASE("properties: point classification kernels equal Mode::gmp", "[properties][kernels]") {
   property("every 2D family, n in [3, 200]", "classify2", 2, degenerate_points(2, 3, 200, false));

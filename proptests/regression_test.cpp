@@ -3,8 +3,9 @@
 //
 // The mechanism (support/regressions.hpp):
 //   * Every property of invariance_test.cpp is a named check (hull2_canonical,
-//     hull2_scale, ..., rt2_counts, hull3_*, classify2/3) run on generated
-//     input with parameters (scale exponent k, integer shift, seed).
+//     hull2_scale, ..., rt2_counts, hull3_*, rtd_*, instant_flip_*,
+//     classify2/3) run on generated input with parameters (scale exponent k,
+//     integer shift, seed).
 //   * When a case fails, check_or_save writes its input, before failing it, to
 //       proptests/regressions/<check>/<hash>.xyz
 //     in the source tree ($FLIPFLOP_REGRESSIONS_DIR overrides the folder):
@@ -17,8 +18,10 @@
 //   * Commit that file with the fix. This test then replays every file under
 //     proptests/regressions/: the check it was saved for must pass (and must
 //     apply: a saved input that the check skips would test nothing), and every
-//     other check of the same dimension — every algorithm and backend — must
-//     pass or skip, with the saved parameters.
+//     other check that applies to its dimension (NamedCheck::applies; the
+//     rtd_* and instant_flip_* checks apply to d = 2..5) — every algorithm and
+//     backend — must pass or skip, with the saved parameters. Files of d > 3
+//     are read by read_points_d (io::read_points reads 2D and 3D).
 //   * A file can also be made by hand: write the points with the header line
 //     above (any property name of all_checks()); the round-trip test below
 //     asks for the exact text save_regression writes, so run the points
@@ -74,7 +77,7 @@ TEST_CASE("regressions: every saved input passes every check", "[regressions]") 
     const Regression r = load_regression(path);
     INFO(path << " (" << r.points.size() << " points)");
     const NamedCheck* own = find_check(r.property);
-    if (own == nullptr) {  // e.g. an rt2 check in a build without reference/rt2.hpp
+    if (own == nullptr) {  // e.g. an rtd check in a build without reference/rtd linked
       WARN(path << ": no check named " << r.property << " in this build; not replayed");
       continue;
     }
@@ -82,7 +85,7 @@ TEST_CASE("regressions: every saved input passes every check", "[regressions]") 
     INFO(r.property << ": " << kind_name(o.kind) << " " << o.message);
     CHECK(o.kind == Outcome::Kind::pass);
     for (const NamedCheck& c : all_checks()) {
-      if (c.dim != r.points.dim) continue;
+      if (!c.applies(r.points.dim)) continue;
       const Outcome x = run_check(c, r.points, r.params);
       INFO(c.name << ": " << kind_name(x.kind) << " " << x.message);
       CHECK(x.kind != Outcome::Kind::fail);

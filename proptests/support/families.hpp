@@ -21,6 +21,15 @@
 // degenerate_points mixes all of them; general_position_candidates mixes
 // the ones that are usually in general position (the properties check it
 // exactly and discard the others).
+// In R^d (d = 2..5, the d-dimensional regular triangulations) the same
+// roles are played by degenerate_points_d / general_position_candidates_d /
+// integer_candidates_d, which add
+//   uniform_d          dyadic coordinates k·2^-20 in [0, 1)^d, weights
+//                      k·2^-40 in [0, f] with f in {0, 1e-3, 1e-2, 0.1};
+//   hyperplane_plus_one all points on an integer hyperplane but one;
+//   cospherical_d      integer points of the sphere |x|^2 = 9 (and its
+//                      centre): every d+2 of them on one sphere,
+// and use gen/'s families where they exist (d = 2, 3).
 //
 // Shrinking. The family generators draw their seed without shrinking (a new
 // seed is a new input, not a smaller one); instead the mixers
@@ -344,6 +353,149 @@ inline rc::Gen<PointSet> integer_candidates(int dim, int nmin, int nmax, bool we
   };
   if (dim == 2) gens.push_back({2, family_points({"circle-lattice"}, nmin, nmax, weighted)});
   return thinned(one_of(gens));
+}
+
+// ---- d-dimensional point sets (d = 2..5) --------------------------------------
+
+// Dyadic coordinates k·2^-20 in [0, 1)^d (exact, almost surely in general
+// position); weights k·2^-40 in [0, f], f in {0, 1e-3, 1e-2, 0.1}.
+inline rc::Gen<PointSet> uniform_d(int dim, int nmin, int nmax, bool weighted) {
+  return rc::gen::exec([=] {
+    const int n = *point_count(nmin, nmax);
+    PointSet ps;
+    ps.dim = dim;
+    for (int i = 0; i < n * dim; ++i)
+      ps.coords.push_back(std::ldexp(static_cast<double>(*uniform<std::int64_t>(0, (1 << 20) - 1)), -20));
+    if (weighted) {
+      ps.weighted = true;
+      const double f = *rc::gen::element(0.0, 1e-3, 1e-2, 0.1);
+      const auto top = static_cast<std::int64_t>(std::ldexp(f, 40));
+      for (int i = 0; i < n; ++i) ps.weights.push_back(std::ldexp(static_cast<double>(*uniform<std::int64_t>(0, top)), -40));
+    }
+    return ps;
+  });
+}
+
+// All points on the integer hyperplane x_k = c + Σ_{j != k} a_j x_j (small
+// integers a_j and c, free coordinates integers in [-8, 8]), and one point
+// moved off it along x_k, at a random position in the order. Integer weights.
+inline rc::Gen<PointSet> hyperplane_plus_one(int dim, int nmin, int nmax, bool weighted) {
+  return rc::gen::exec([=] {
+    const int n = std::max(*point_count(nmin, nmax), dim + 1);
+    const int odd = *uniform(0, n - 1);
+    const int k = *uniform(0, dim - 1);
+    std::vector<std::int64_t> a(static_cast<std::size_t>(dim));
+    for (auto& x : a) x = *symmetric(2);
+    const std::int64_t c = *symmetric(10);
+    PointSet ps;
+    ps.dim = dim;
+    for (int i = 0; i < n; ++i) {
+      std::vector<double> x(static_cast<std::size_t>(dim));
+      std::int64_t sum = c;
+      for (int j = 0; j < dim; ++j)
+        if (j != k) {
+          const std::int64_t v = *symmetric(8);
+          x[static_cast<std::size_t>(j)] = static_cast<double>(v);
+          sum += a[static_cast<std::size_t>(j)] * v;
+        }
+      x[static_cast<std::size_t>(k)] = static_cast<double>(sum);
+      if (i == odd) x[static_cast<std::size_t>(k)] += static_cast<double>(*uniform<std::int64_t>(1, 5));
+      add_point(ps, x.data());
+    }
+    if (weighted) {
+      ps.weighted = true;
+      ps.weights = integer_weights(ps.size(), 40);
+    }
+    return ps;
+  });
+}
+
+// The integer points of the sphere |x|^2 = 9 in R^d (cached per d).
+inline const std::vector<std::vector<double>>& sphere9_points(int dim) {
+  static std::vector<std::vector<double>> cache[8];
+  auto& pts = cache[dim];
+  if (pts.empty()) {
+    std::vector<int> x(static_cast<std::size_t>(dim), -3);
+    for (;;) {
+      int r = 0;
+      for (int v : x) r += v * v;
+      if (r == 9) pts.emplace_back(x.begin(), x.end());
+      int j = 0;
+      while (j < dim && x[static_cast<std::size_t>(j)] == 3) x[static_cast<std::size_t>(j++)] = -3;
+      if (j == dim) break;
+      ++x[static_cast<std::size_t>(j)];
+    }
+  }
+  return pts;
+}
+
+// n integer points of |x|^2 = 9 (repeats possible), the centre with
+// probability 1/2; weights all 0 (cospherical: every lifted point on one
+// hyperplane) or small integers.
+inline rc::Gen<PointSet> cospherical_d(int dim, int nmin, int nmax, bool weighted) {
+  return rc::gen::exec([=] {
+    const int n = *point_count(nmin, nmax);
+    const auto& sphere = sphere9_points(dim);
+    const bool centre = *rc::gen::arbitrary<bool>();
+    PointSet ps;
+    ps.dim = dim;
+    for (int i = 0; i < n; ++i) {
+      if (centre && i == n / 2) {
+        const std::vector<double> o(static_cast<std::size_t>(dim), 0.0);
+        add_point(ps, o.data());
+      } else {
+        add_point(ps, sphere[static_cast<std::size_t>(*uniform<std::size_t>(0, sphere.size() - 1))].data());
+      }
+    }
+    if (weighted) {
+      ps.weighted = true;
+      ps.weights = integer_weights(ps.size(), 3);
+    }
+    return ps;
+  });
+}
+
+// Every d-dimensional family, thinned: gen/'s families where d = 2, 3, and
+// the generators above.
+inline rc::Gen<PointSet> degenerate_points_d(int dim, int nmin, int nmax, bool weighted) {
+  std::vector<std::pair<int, rc::Gen<PointSet>>> gens = {
+      {4, uniform_d(dim, nmin, nmax, weighted)},
+      {3, small_integers(dim, nmin, nmax, weighted)},
+      {1, duplicated_except(dim, nmin, nmax, weighted)},
+      {1, hyperplane_plus_one(dim, nmin, nmax, weighted)},
+      {2, cospherical_d(dim, nmin, nmax, weighted)},
+      {1, huge_tiny_mix(dim, nmin, nmax, weighted)},
+  };
+  if (dim <= 3) gens.push_back({3, family_points(dim, nmin, nmax, weighted)});
+  return thinned(one_of(gens));
+}
+
+// Usually in general position (coordinates and lifted points): wide
+// integers, uniform dyadics, small integer sets of few points.
+inline rc::Gen<PointSet> general_position_candidates_d(int dim, int nmin, int nmax, bool weighted) {
+  return thinned(one_of({
+      {4, wide_integers(dim, nmin, nmax, weighted)},
+      {4, uniform_d(dim, nmin, nmax, weighted)},
+      {1, small_integers(dim, dim + 1, dim + 3, weighted)},
+  }));
+}
+
+// Integer input, usually in general position.
+inline rc::Gen<PointSet> integer_candidates_d(int dim, int nmin, int nmax, bool weighted) {
+  return thinned(one_of({
+      {6, wide_integers(dim, nmin, nmax, weighted)},
+      {1, small_integers(dim, dim + 1, dim + 3, weighted)},
+  }));
+}
+
+// A dimension d in [dmin, dmax] (shrinks towards dmin), then g(d, n range of
+// d, weighted or not at random). nmax_of(d) bounds n per dimension.
+inline rc::Gen<PointSet> any_dimension(rc::Gen<PointSet> (*g)(int, int, int, bool), int dmin, int dmax,
+                                       int (*nmax_of)(int)) {
+  return rc::gen::exec([=] {
+    const int d = *uniform(dmin, dmax);
+    return *g(d, d + 1, nmax_of(d), *rc::gen::arbitrary<bool>());
+  });
 }
 
 }  // namespace flipflop::test

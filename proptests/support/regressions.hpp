@@ -23,9 +23,26 @@
 //   rt2_*            the same for the 2D regular / Delaunay triangulations
 //                    (reference/rt2.hpp: ffRT, flip-flop, Lawson; brute::rt2
 //                    for n <= 12; CGAL at Level::exact), when rt2.hpp exists.
-//   hull3_canonical, hull3_scale, hull3_translate, hull3_permute: brute::hull3
-//                    (n <= 12), CGAL certified at Level::exact and equal to
-//                    brute on input in general position.
+//   hull3_canonical, hull3_scale, hull3_translate, hull3_permute: the same
+//                    for the 3D hull: ffHull, star splaying and twist-flip
+//                    (reference/hull3, when the test links them) and
+//                    brute::hull3 (n <= 12); CGAL certified at Level::exact
+//                    and equal on input in general position.
+//   hull3_counts     (d) ffHull's, twist-flip's and star splaying's counters,
+//                    and flip-flop in random orders from several star-shaped
+//                    polyhedra (see the check).
+//   rtd_*            the same for the d-dimensional regular triangulation
+//                    (d = 2..5; reference/rtd: RT+1 rtd_incremental and
+//                    build_rtd, rt2_ffrt for d = 2, the definition brute_rtd
+//                    for small n), certified by certify::rtd; general
+//                    position means no d+1 points on a hyperplane and no d+2
+//                    lifted points on one, exactly.
+//   instant_flip_canonical, instant_flip_scale: the instant flip (§9.2.1,
+//                    Alg 14) from RT(S ⊕ W) to target weights U drawn from
+//                    the seed: RT(S ⊕ U) where no point reappears, Lemma 9.4
+//                    along the run, the counters; invariant when x -> 2^k x,
+//                    W, U -> 2^2k W, U (see the checks).
+// A check applies to one dimension or a range (NamedCheck::applies).
 //   classify2, classify3: kernels_cpu (TBB) and kernels_omp (when built) equal
 //                    a Mode::gmp loop, also after scaling, permutation and
 //                    (integer input) translation.
@@ -55,7 +72,8 @@
 // term dominates. On degenerate input the answer legitimately depends on
 // frame and order (DESIGN.md). In general position — every exact orient2d of
 // three points, power2d of four (triangulations) and orient3d of four (3D) is
-// non-zero, checked exactly — no answer consults the perturbation, so the
+// non-zero (in R^d: orient_d of d+1 points and power_d of d+2), checked
+// exactly — no answer consults the perturbation, so the
 // output is the exact geometric answer: invariant and equivariant.
 //
 // Saving. check_or_save(outcome, points, property, params), called inside a
@@ -101,12 +119,33 @@
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull2.hpp"
+#include "reference/hull3/hull3_stats.hpp"
+#include "reference/rtd/canonical_d.hpp"
 #if __has_include("reference/rt2.hpp") && __has_include("reference/ffrt.hpp") && \
     __has_include("reference/flip_flop_2d.hpp")
 #define FLIPFLOP_TEST_HAVE_RT2 1
 #include "reference/ffrt.hpp"
 #include "reference/flip_flop_2d.hpp"
 #include "reference/rt2.hpp"
+#endif
+// The reference parts (reference/hull3, reference/rtd: libraries of their
+// own, always linked through flipflop_all).
+#define FLIPFLOP_TEST_HAVE_HULL3 1
+#define FLIPFLOP_TEST_HAVE_RTD 1
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+#include "reference/hull3/ffhull.hpp"
+#include "reference/hull3/flip_flop_3d.hpp"
+#include "reference/hull3/hull3.hpp"
+#include "reference/hull3/initial_stars.hpp"
+#include "reference/hull3/rational_kernel.hpp"
+#include "reference/hull3/twist_flip.hpp"
+#endif
+#ifdef FLIPFLOP_TEST_HAVE_RTD
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/instant_flip.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+#include "rtd_brute.hpp"
+#include "rtd_oracles.hpp"
 #endif
 
 namespace flipflop::test {
@@ -127,7 +166,7 @@ struct Outcome {
 // The random choices of a check besides its points.
 struct Params {
   int scale = 0;                         // k: coordinates x 2^k, weights x 2^(2k) (clamped, see scale_exponent)
-  std::array<std::int64_t, 3> shift{};  // integer translation, |t| <= 2^20
+  std::array<std::int64_t, 3> shift{};  // integer translation, |t| <= 2^20 (coordinate j: shift[j % 3])
   std::uint64_t seed = 0;                // permutation, flip orders, facets of the classification
 };
 
@@ -195,7 +234,7 @@ inline bool integer_input(const PointSet& ps) {
 inline PointSet translated(const PointSet& ps, const std::array<std::int64_t, 3>& t) {
   PointSet out = ps;
   const auto d = static_cast<std::size_t>(ps.dim);
-  for (std::size_t i = 0; i < out.coords.size(); ++i) out.coords[i] += static_cast<double>(t[i % d]);
+  for (std::size_t i = 0; i < out.coords.size(); ++i) out.coords[i] += static_cast<double>(t[i % d % 3]);
   return out;
 }
 
@@ -228,6 +267,11 @@ inline std::vector<Triangle> map_back(std::vector<Triangle> v, const std::vector
   for (Triangle& t : v)
     for (Index& i : t) i = perm[i];
   return canonical_triangles(v);
+}
+inline std::vector<std::vector<Index>> map_back(std::vector<std::vector<Index>> v, const std::vector<Index>& perm) {
+  for (auto& t : v)
+    for (Index& i : t) i = perm[i];
+  return canonical_simplices(std::move(v));  // the same points in the same order: still positive
 }
 
 // ============================================================================
@@ -278,6 +322,10 @@ inline std::string text(const std::vector<Triangle>& tris) {
   io::write_triangles(os, tris);
   return os.str();
 }
+// d-dimensional simplices (canonical_d.hpp)
+using Simplices = std::vector<std::vector<Index>>;
+inline std::string text(const Simplices& s) { return simplices_text(s); }
+
 inline std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   return s.size() > 400 ? s.substr(0, 400) + "..." : s;
@@ -703,20 +751,46 @@ inline constexpr std::size_t kBruteHull3Max = 12;  // brute::hull3 is O(n^4)
 
 struct Hull3Algorithm {
   std::string name;
-  std::function<std::vector<Triangle>(const PointSet&, void*)> run;
+  std::function<std::vector<Triangle>(const PointSet&, ref::Hull3Stats*)> run;
 };
 
-// The canonical 3D hull algorithms present: brute force (the reference's own
-// 3D algorithms join here when they exist).
-inline std::vector<Hull3Algorithm> hull3_algorithms() {
-  return {{"brute", [](const PointSet& q, void*) { return brute::hull3(q); }}};
+// The canonical 3D hull algorithms present: the reference's
+// (ref::hull3_algorithms(): ffHull, star splaying, twist-flip + flip-flop;
+// when the test links them) and brute force for n <= kBruteHull3Max.
+inline std::vector<Hull3Algorithm> hull3_algorithms(std::size_t n) {
+  std::vector<Hull3Algorithm> out;
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+  for (const std::string& name : ref::hull3_algorithms())  // new algorithms join automatically
+    out.push_back({name, [name](const PointSet& q, ref::Hull3Stats* st) { return ref::hull3(q, name, st); }});
+#endif
+  if (n <= kBruteHull3Max)
+    out.push_back({"brute", [](const PointSet& q, ref::Hull3Stats*) { return brute::hull3(q); }});
+  return out;
 }
 
+inline std::set<Index> hull_vertices(const std::vector<Triangle>& tris) {
+  std::set<Index> v;
+  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
+  return v;
+}
+
+// Every algorithm returns the same canonical text, certified canonical;
+// brute force is the definition (n <= 12). CGAL's hull is certified at
+// Level::exact and, in general position, equal. Input that does not span
+// R^3 is rejected by every algorithm (brute force is defined for any input).
 inline Outcome hull3_canonical(const PointSet& ps, const Params&) {
-  if (!spans(ps) || ps.size() > kBruteHull3Max) return Outcome::skip("not a small 3D set spanning space");
-  const auto h = brute::hull3(ps);
+  const auto algos = hull3_algorithms(ps.size());
+  if (algos.empty()) return Outcome::skip("no 3D hull algorithm for this size in this build");
+  if (!spans(ps)) return expect_flat_input_rejected(ps, algos, [](const auto& a) { return a.name == "brute"; });
+  const auto h = algos.front().run(ps, nullptr);
+  const std::string first = text(h);
   const certify::Report r = certify::hull3(ps, h, certify::Level::canonical);
-  FF_EXPECT(r.ok, "brute::hull3 not certified canonical: " << r.message());
+  FF_EXPECT(r.ok, algos.front().name << ": not certified canonical: " << r.message());
+  for (const auto& a : algos) {
+    const std::string t = text(a.run(ps, nullptr));
+    FF_EXPECT(t == first, a.name << " differs from " << algos.front().name << ": " << one_line(t) << " vs "
+                                 << one_line(first));
+  }
   const auto cgal = peers::cgal_hull3(ps);
   const certify::Report rc = certify::hull3(ps, cgal, certify::Level::exact);
   FF_EXPECT(rc.ok, "CGAL's 3D hull not certified exact: " << rc.message());
@@ -725,26 +799,456 @@ inline Outcome hull3_canonical(const PointSet& ps, const Params&) {
 }
 
 inline Outcome hull3_scale(const PointSet& ps, const Params& p) {
-  if (!spans(ps) || ps.size() > kBruteHull3Max) return Outcome::skip("not a small 3D set spanning space");
+  const auto algos = hull3_algorithms(ps.size());
+  if (algos.empty() || !spans(ps)) return Outcome::skip("no algorithm for this size, or not spanning R^3");
   const int k = scale_exponent(ps, p.scale);
-  return same_answers(hull3_algorithms(), ps, scaled(ps, k), [](auto v) { return v; },
-                      ("scaling by 2^" + std::to_string(k)).c_str());
+  return same_answers(algos, ps, scaled(ps, k), [](auto v) { return v; }, ("scaling by 2^" + std::to_string(k)).c_str());
 }
 
 inline Outcome hull3_translate(const PointSet& ps, const Params& p) {
-  if (!integer_input(ps) || ps.size() > kBruteHull3Max) return Outcome::skip("not small integer input");
+  const auto algos = hull3_algorithms(ps.size());
+  if (algos.empty() || !integer_input(ps)) return Outcome::skip("not integer input (or no algorithm for this size)");
   if (!spans(ps) || !general_position_3d(ps)) return Outcome::skip("not in general position");
-  return same_answers(hull3_algorithms(), ps, translated(ps, p.shift), [](auto v) { return v; },
-                      "integer translation");
+  return same_answers(algos, ps, translated(ps, p.shift), [](auto v) { return v; }, "integer translation");
 }
 
 inline Outcome hull3_permute(const PointSet& ps, const Params& p) {
-  if (ps.size() > kBruteHull3Max) return Outcome::skip("too large for brute::hull3");
+  const auto algos = hull3_algorithms(ps.size());
+  if (algos.empty()) return Outcome::skip("no 3D hull algorithm for this size in this build");
   if (!spans(ps) || !general_position_3d(ps)) return Outcome::skip("not in general position");
   const auto perm = permutation(ps.size(), p.seed);
-  return same_answers(hull3_algorithms(), ps, permuted(ps, perm),
-                      [&](const auto& v) { return map_back(v, perm); }, "a permutation of the input");
+  return same_answers(algos, ps, permuted(ps, perm), [&](const auto& v) { return map_back(v, perm); },
+                      "a permutation of the input");
 }
+
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+// The counters' lemmas (thesis §6.2-6.4, §3.3.2, §8.4.1), V = hull vertices:
+//   ffhull (Alg 7): every point but the initial tetrahedron is inserted
+//     (a 1-3 flip, line 9) or discarded as interior (lines 13-14):
+//     insertions = flips_1_3, 4 + insertions + discarded_early = n; flip-flop
+//     (Alg 6) adds no vertex and each 3-1 flip removes one for good:
+//     V = 4 + insertions - flips_3_1; a vertex is labelled at most once and
+//     every labelled vertex is removed (Lemma 6.5, Thm 6.2):
+//     labelled_non_extreme <= flips_3_1;
+//   twist-flip: every point is a vertex of the polyhedron flip-flop starts
+//     from (v joined to all others): V = n - flips_3_1, no 1-3 flip;
+//   splay: a star dies only with a death certificate (the point is not
+//     extreme) and every alive star at the end is a hull vertex (the
+//     consistent stars form one polytope, star_splaying.hpp): dead_stars +
+//     V = n; no flips;
+//   flip-flop in a random order (free execution order, §3.2; Thm 6.12) from
+//     ffHull's constructed polyhedron and from one built by inserting every
+//     point in a random order (dents included): the same hull; a removed
+//     vertex never reappears; removed vertices = flips_3_1; no labelled or
+//     removed vertex is a hull vertex; V = |vertices(start)| - flips_3_1.
+inline Outcome hull3_counts(const PointSet& ps, const Params& p) {
+  if (!spans(ps)) return Outcome::skip("does not span R^3");
+  const std::size_t n = ps.size();
+  const auto answer = ref::hull3_ffhull(ps);
+  const std::size_t V = hull_vertices(answer).size();
+  {
+    ref::Hull3Stats st;
+    ref::hull3_ffhull(ps, &st);
+    FF_EXPECT(st.insertions == st.flips_1_3, "ffhull: " << st.insertions << " insertions, " << st.flips_1_3 << " 1-3 flips");
+    FF_EXPECT(4 + st.insertions + st.discarded_early == n,
+              "ffhull: 4 + inserted " << st.insertions << " + discarded " << st.discarded_early << " != " << n);
+    FF_EXPECT(4 + st.insertions == V + st.flips_3_1,
+              "ffhull: " << V << " hull vertices from " << 4 + st.insertions << " with " << st.flips_3_1 << " 3-1 flips");
+    FF_EXPECT(st.labelled_non_extreme <= st.flips_3_1, "ffhull: labelled " << st.labelled_non_extreme);
+    FF_EXPECT(st.splay_insertions + st.dead_stars + st.twists + st.fold_flips == 0, "ffhull: counts of other algorithms");
+  }
+  {
+    ref::Hull3Stats st;
+    ref::hull3_twist_flip(ps, &st);
+    FF_EXPECT(V + st.flips_3_1 == n, "twist-flip: " << V << " hull vertices with " << st.flips_3_1 << " 3-1 flips of " << n);
+    FF_EXPECT(st.flips_1_3 + st.insertions + st.discarded_early == 0, "twist-flip: points inserted or discarded");
+    FF_EXPECT(st.labelled_non_extreme <= st.flips_3_1, "twist-flip: labelled " << st.labelled_non_extreme);
+  }
+  {
+    ref::Hull3Stats st;
+    ref::hull3_splay(ps, &st);
+    FF_EXPECT(st.dead_stars + V == n, "splay: " << st.dead_stars << " dead stars, " << V << " hull vertices of " << n);
+    FF_EXPECT(st.flips_2_2 + st.flips_3_1 + st.flips_1_3 == 0, "splay: flips counted");
+  }
+  // flip-flop in a random order
+  const std::array<Index, 4> tet = ref::ffhull::initial_tetrahedron(ps);
+  const ref::RationalKernel s = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
+  for (bool furthest : {true, false}) {
+    ref::ffhull::BuildOptions opt;
+    opt.furthest = furthest;
+    opt.discard_inside = furthest;
+    opt.seed = p.seed;
+    ref::Hull3Stats bs;
+    const auto start = ref::ffhull::construct(ps, s, tet, opt, &bs);
+    const std::size_t v0 = hull_vertices(start).size();
+    if (!furthest) FF_EXPECT(v0 == n && bs.discarded_early == 0, "ffhull::construct without discarding: " << v0 << " vertices");
+    ref::ff3::State st = ref::ff3::make_state(ps, s, ref::poly::build(n, start));
+    std::mt19937_64 rng(p.seed);
+    std::string reappeared;
+    ref::Hull3Stats fs;
+    ref::ff3::run(st, &fs, [&](const std::vector<ref::ff3::Candidate>& C) {
+      for (Index i = 0; i < n; ++i)
+        if (st.removed[i] && st.P.is_vertex(i)) reappeared = std::to_string(i);
+      return static_cast<std::size_t>(rng() % C.size());
+    });
+    const char* what = furthest ? "flip-flop in a random order from ffHull's polyhedron"
+                                : "flip-flop in a random order from a random star-shaped polyhedron";
+    FF_EXPECT(reappeared.empty(), what << ": removed vertex " << reappeared << " is back");
+    FF_EXPECT(canonical_triangles(ref::poly::triangles(st.P)) == answer, what << ": not the hull");
+    std::size_t removed = 0;
+    for (Index i = 0; i < n; ++i) {
+      removed += st.removed[i] != 0;
+      FF_EXPECT(!((st.removed[i] || st.labelled[i]) && st.P.is_vertex(i)), what << ": vertex " << i << " removed or labelled");
+    }
+    FF_EXPECT(removed == fs.flips_3_1, what << ": " << removed << " removed by " << fs.flips_3_1 << " 3-1 flips");
+    FF_EXPECT(v0 == V + fs.flips_3_1, what << ": " << V << " hull vertices from " << v0);
+    FF_EXPECT(fs.labelled_non_extreme <= fs.flips_3_1 && fs.flips_1_3 == 0, what << ": labelled " << fs.labelled_non_extreme);
+  }
+  return Outcome::pass();
+}
+#endif  // FLIPFLOP_TEST_HAVE_HULL3
+
+// ============================================================================
+// d-dimensional regular triangulations and the instant flip
+// ============================================================================
+
+
+
+// The points span R^d: some d+1 of them have a non-zero exact orientation
+// (dimension_problem for d <= 3; for d > 3 every (d+1)-subset is tried).
+inline bool spans_d(const PointSet& ps) {
+  if (ps.dim <= 3) return spans(ps);
+  return !for_each_subset(ps.size(), ps.dim + 1, [&](const std::vector<Index>& t) { return orient_exact(ps, t) == 0; });
+}
+
+// No d+1 points on a hyperplane (exact orient_d != 0); with `power`, also no
+// d+2 lifted points on a hyperplane (exact power_d != 0).
+inline bool general_position_d(const PointSet& ps, bool power) {
+  const int d = ps.dim;
+  if (!for_each_subset(ps.size(), d + 1, [&](const std::vector<Index>& t) { return orient_exact(ps, t) != 0; }))
+    return false;
+  return !power || for_each_subset(ps.size(), d + 2, [&](const std::vector<Index>& t) { return power_exact(ps, t) != 0; });
+}
+
+inline PointSet with_weights(PointSet ps, const std::vector<double>& w) {
+  ps.weighted = true;
+  ps.weights = w;
+  return ps;
+}
+
+inline std::vector<double> weights_of(const PointSet& ps) {
+  std::vector<double> w;
+  for (std::size_t i = 0; i < ps.size(); ++i) w.push_back(ps.weight(i));
+  return w;
+}
+
+#ifdef FLIPFLOP_TEST_HAVE_RTD
+
+inline std::size_t brute_rtd_max(int d) { return d == 2 ? 12 : d == 3 ? 10 : 9; }  // O(n^(d+2))
+
+struct RtdAlgorithm {
+  std::string name;
+  std::function<Simplices(const PointSet&, ref::RtdStats*)> run;
+};
+
+// RT+1 (rtd_incremental and its structure build_rtd), for d = 2 the 2D
+// reference ffRT (the same canonical text, rt_incremental.hpp), and the
+// definition (support/rtd_brute.hpp) for small n.
+inline std::vector<RtdAlgorithm> rtd_algorithms(const PointSet& ps) {
+  std::vector<RtdAlgorithm> out = {
+      {"rtd_incremental", [](const PointSet& q, ref::RtdStats* st) { return ref::rtd_incremental(q, st).simplices; }},
+      {"build_rtd", [](const PointSet& q, ref::RtdStats* st) { return ref::rtd::real_simplices(ref::build_rtd(q, st)); }},
+  };
+#ifdef FLIPFLOP_TEST_HAVE_RT2
+  if (ps.dim == 2)
+    out.push_back({"rt2_ffrt", [](const PointSet& q, ref::RtdStats*) {
+                     Simplices s;
+                     for (const Triangle& t : ref::rt2_ffrt(q)) s.push_back({t[0], t[1], t[2]});
+                     return s;
+                   }});
+#endif
+  if (ps.size() <= brute_rtd_max(ps.dim))
+    out.push_back({"brute", [](const PointSet& q, ref::RtdStats*) { return brute_rtd(q); }});
+  return out;
+}
+
+// (a)(b): certified by certify::rtd (canonical), every algorithm the same
+// text, the redundant points exactly the non-vertices. Input that does not
+// span R^d is rejected by every algorithm.
+inline Outcome rtd_canonical(const PointSet& ps, const Params&) {
+  const auto algos = rtd_algorithms(ps);
+  if (!spans_d(ps)) return expect_flat_input_rejected(ps, algos, [](const auto& a) { return a.name == "brute"; });
+  const ref::Rtd answer = ref::rtd_incremental(ps);
+  const certify::Report r = certify::rtd(ps, answer.simplices);
+  FF_EXPECT(r.ok, "rtd_incremental: not certified: " << r.message());
+  const std::set<Index> v = simplex_vertices(answer.simplices);
+  std::vector<Index> missing;
+  for (Index i = 0; i < ps.size(); ++i)
+    if (!v.count(i)) missing.push_back(i);
+  FF_EXPECT(missing == answer.redundant, "rtd_incremental: the redundant list is not the non-vertices");
+  const std::string first = text(answer.simplices);
+  for (const auto& a : algos) {
+    const std::string t = text(a.run(ps, nullptr));
+    FF_EXPECT(t == first, a.name << " differs from rtd_incremental: " << one_line(t) << " vs " << one_line(first));
+  }
+  return Outcome::pass();
+}
+
+inline Outcome rtd_scale(const PointSet& ps, const Params& p) {
+  if (!spans_d(ps)) return Outcome::skip("does not span R^d");
+  const int k = scale_exponent(ps, p.scale);
+  return same_answers(rtd_algorithms(ps), ps, scaled(ps, k), [](auto v) { return v; },
+                      ("scaling by 2^" + std::to_string(k) + " (weights by 2^" + std::to_string(2 * k) + ")").c_str());
+}
+
+inline Outcome rtd_translate(const PointSet& ps, const Params& p) {
+  if (!integer_input(ps)) return Outcome::skip("not integer input");
+  if (!spans_d(ps) || !general_position_d(ps, true)) return Outcome::skip("not in general position");
+  return same_answers(rtd_algorithms(ps), ps, translated(ps, p.shift), [](auto v) { return v; }, "integer translation");
+}
+
+inline Outcome rtd_permute(const PointSet& ps, const Params& p) {
+  if (!spans_d(ps) || !general_position_d(ps, true)) return Outcome::skip("not in general position");
+  const auto perm = permutation(ps.size(), p.seed);
+  return same_answers(rtd_algorithms(ps), ps, permuted(ps, perm), [&](const auto& v) { return map_back(v, perm); },
+                      "a permutation of the input");
+}
+
+// The counters of RT+1 (rt_incremental.hpp, [ES92]): the first d+1 points
+// form a simplex, every other point is placed (outside the hull), inserted
+// by a 1-(d+1) flip or proved redundant by its simplex (redundant for good:
+// more points only lower the lower hull):
+//   insertions = d+1 + placed + flips[1],
+//   insertions + (redundant - removed) = n,
+// a vertex leaves only by a (d+1)-1 flip: removed = flips[d+1]; the output
+// has n - redundant vertices; no k-(d+2-k) flip with k outside 1..d+1; the
+// queue runs empty (pops = pushes). The instant flip from RT(S ⊕ W) to the
+// same weights flips nothing (no ridge moves: no failure time in (0, 1));
+// on degenerate coordinates it may instead throw as documented.
+inline Outcome rtd_counts(const PointSet& ps, const Params&) {
+  if (!spans_d(ps)) return Outcome::skip("does not span R^d");
+  const std::size_t n = ps.size();
+  const auto d = static_cast<std::uint64_t>(ps.dim);
+  ref::RtdStats st;
+  const ref::Rtd out = ref::rtd_incremental(ps, &st);
+  FF_EXPECT(st.insertions == d + 1 + st.placed + st.flips[1],
+            "insertions " << st.insertions << " != d+1 + placed " << st.placed << " + 1-(d+1) flips " << st.flips[1]);
+  FF_EXPECT(st.insertions + st.redundant - st.removed == n,
+            "inserted " << st.insertions << " + redundant " << st.redundant << " - removed " << st.removed << " != " << n);
+  FF_EXPECT(st.removed == st.flips[d + 1], "removed " << st.removed << " != (d+1)-1 flips " << st.flips[d + 1]);
+  FF_EXPECT(st.redundant == out.redundant.size() && simplex_vertices(out.simplices).size() == n - st.redundant,
+            "redundant " << st.redundant << ", listed " << out.redundant.size());
+  FF_EXPECT(st.flips[0] == 0, "0-(d+2) flips");
+  for (std::uint64_t k = d + 2; k < 7; ++k) FF_EXPECT(st.flips[k] == 0, k << "-flips in dimension " << d);
+  FF_EXPECT(st.queue_pops == st.queue_pushes, "queue: " << st.queue_pushes << " pushes, " << st.queue_pops << " pops");
+  const PointSet pw = with_weights(ps, weights_of(ps));  // T keeps a pointer to it
+  ref::rtd::TriangulationD T = ref::build_rtd(pw);
+  ref::InstantFlipStats fs;
+  try {
+    fs = ref::instant_flip(T, pw.weights, pw.weights);
+  } catch (const std::logic_error& e) {  // std::invalid_argument included
+    // documented for degenerate coordinates only (instant_flip.hpp)
+    FF_EXPECT(!general_position_d(ps, false), "instant flip from W to W threw: " << e.what());
+    return Outcome::pass();
+  }
+  FF_EXPECT(fs.total_flips() == 0 && fs.pushes == 0, "instant flip from W to W: " << fs.total_flips() << " flips");
+  FF_EXPECT(ref::rtd::real_simplices(T) == out.simplices, "instant flip from W to W changed the triangulation");
+  return Outcome::pass();
+}
+
+// ---- the instant flip (thesis §9.2.1, Algorithm 14) ---------------------------
+
+// The target weights U, from the seed (coordinates are never touched): with
+// E = 2^e the binade of the squared extent of the set,
+//   kind 0: u_i = w_i + δ_i, δ_i = k_i·E/2^10, k_i in [-256, 256];
+//   kind 1: u_i = k_i·E/2^10, k_i in [0, 1024] (many points redundant);
+//   kind 2: U = W permuted (kind 1 when all weights are equal);
+//   kind 3: U = 0, Delaunay (kind 0 when W = 0).
+// All values finite unless w_i + δ_i overflows (the checks skip the input).
+inline std::vector<double> target_weights(const PointSet& ps, std::uint64_t seed) {
+  std::mt19937_64 rng(seed ^ 0x5bd1e995u);
+  const std::size_t n = ps.size();
+  const int e = squared_extent_exponent(ps);
+  auto pick = [&](std::int64_t lo, std::int64_t hi) {
+    return static_cast<double>(lo + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(hi - lo + 1)));
+  };
+  bool equal = true, zero = true;
+  for (std::size_t i = 0; i < n; ++i) equal &= ps.weight(i) == ps.weight(0), zero &= ps.weight(i) == 0;
+  std::uint64_t kind = seed % 4;
+  if (kind == 2 && equal) kind = 1;
+  if (kind == 3 && zero) kind = 0;
+  std::vector<double> u(n, 0.0);
+  if (kind == 0)
+    for (std::size_t i = 0; i < n; ++i) u[i] = ps.weight(i) + std::ldexp(pick(-256, 256), e - 10);
+  if (kind == 1)
+    for (std::size_t i = 0; i < n; ++i) u[i] = std::ldexp(pick(0, 1024), e - 10);
+  if (kind == 2) {
+    const auto perm = permutation(n, seed);
+    for (std::size_t i = 0; i < n; ++i) u[i] = ps.weight(perm[i]);
+  }
+  return u;
+}
+
+struct InstantFlipRun {
+  enum class Kind { ok, invalid_argument, logic_error } kind = Kind::ok;
+  std::string what;                  // the exception's message
+  Simplices start, out;              // RT(S ⊕ W); the result
+  std::vector<Index> start_vertices;
+  ref::InstantFlipStats stats;
+  std::vector<Index> reappearing;    // reappearing_points(result, U)
+  std::string lemma;                 // a violated Lemma 9.4 consequence (with lemmas)
+};
+
+inline std::set<std::vector<Index>> ridges_of(const Simplices& s) {
+  std::set<std::vector<Index>> r;
+  for (const auto& t : s)
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      std::vector<Index> f;
+      for (std::size_t j = 0; j < t.size(); ++j)
+        if (j != i) f.push_back(t[j]);
+      std::sort(f.begin(), f.end());
+      r.insert(f);
+    }
+  return r;
+}
+
+// T = build_rtd(S ⊕ W), then instant_flip(T, W, U). With `lemmas`, every
+// flip is checked against Lemma 9.4 ("any ridge appears at most once") and
+// its consequences (§9.2.1): a ridge (real, as a vertex set) that has left
+// never comes back, a removed vertex never comes back, and a simplex of both
+// RT(S ⊕ W) and the result is never removed in between.
+inline InstantFlipRun run_instant_flip(const PointSet& ps, const std::vector<double>& u, bool lemmas) {
+  InstantFlipRun R;
+  const PointSet pw = with_weights(ps, weights_of(ps));  // T keeps a pointer to it
+  ref::rtd::TriangulationD T = ref::build_rtd(pw);
+  R.start = ref::rtd::real_simplices(T);
+  R.start_vertices = ref::rtd::vertices(T);
+  std::set<std::vector<Index>> present = ridges_of(R.start), gone;
+  const std::set<std::vector<Index>> start_set(R.start.begin(), R.start.end());
+  std::set<std::vector<Index>> start_left;  // simplices of RT(S ⊕ W) removed at some point
+  std::set<Index> removed;
+  ref::InstantFlipOptions opt;
+  if (lemmas)
+    opt.on_flip = [&](const ref::rtd::TriangulationD& now, const ref::InstantFlipEvent& ev) {
+      if (!R.lemma.empty()) return;
+      if (ev.removed != ref::rtd::kNoVertex) removed.insert(ev.removed);
+      for (Index x : removed)
+        if (now.is_vertex(x)) R.lemma = "removed vertex " + std::to_string(x) + " is back";
+      const Simplices s = ref::rtd::real_simplices(now);
+      const std::set<std::vector<Index>> r = ridges_of(s), sset(s.begin(), s.end());
+      for (const auto& f : present)
+        if (!r.count(f)) gone.insert(f);
+      for (const auto& f : r)
+        if (gone.count(f)) R.lemma = "a ridge appeared twice (Lemma 9.4)";
+      present = r;
+      for (const auto& t : start_set)
+        if (!sset.count(t)) start_left.insert(t);
+    };
+  try {
+    R.stats = ref::instant_flip(T, pw.weights, u, opt);
+  } catch (const std::invalid_argument& e) {
+    R.kind = InstantFlipRun::Kind::invalid_argument;
+    R.what = e.what();
+    return R;
+  } catch (const std::logic_error& e) {
+    R.kind = InstantFlipRun::Kind::logic_error;
+    R.what = e.what();
+    return R;
+  }
+  R.out = ref::rtd::real_simplices(T);
+  R.reappearing = ref::reappearing_points(T, u);
+  if (R.lemma.empty())
+    for (const auto& t : R.out)
+      if (start_set.count(t) && start_left.count(t)) R.lemma = "a simplex of RT(S+W) and RT(S+U) was modified";
+  return R;
+}
+
+
+
+// (a)(b)(d) for the instant flip from RT(S ⊕ W) (W: the input's weights) to
+// U = target_weights(seed). Coordinates in general position (no d+1 points
+// on a hyperplane, exactly): the weight perturbation of §9.2.2 under the
+// index order decides every sign like the Simulation of Simplicity
+// (failure_time.hpp), so the run must succeed and end at RT(V ⊕ U), V the
+// vertices of RT(S ⊕ W) (fresh construction); that is RT(S ⊕ U) (certified)
+// when reappearing_points is empty, and otherwise RT(S ⊕ U) has a vertex
+// among the reported points. The counters: every pop is a flip, stale or
+// deferred, the queue runs empty, a vertex leaves only by a (d+1)-1 flip and
+// never comes back; Lemma 9.4 (run_instant_flip). Degenerate coordinates: the
+// documented exceptions (std::invalid_argument: a zero-volume simplex met;
+// std::logic_error: simultaneous events left unflippable) or a triangulation
+// that passes weak_regularity_problem — never a wrong answer.
+inline Outcome instant_flip_canonical(const PointSet& ps, const Params& p) {
+  if (!spans_d(ps)) return Outcome::skip("does not span R^d");
+  const std::vector<double> u = target_weights(ps, p.seed);
+  for (double x : u)
+    if (!std::isfinite(x)) return Outcome::skip("target weight overflows");
+  const PointSet pu = with_weights(ps, u);
+  const bool general = general_position_d(ps, false);
+  const InstantFlipRun R = run_instant_flip(ps, u, general);
+  using Kind = InstantFlipRun::Kind;
+  if (!general) {
+    if (R.kind != Kind::ok) return Outcome::pass();
+    const std::string why = weak_regularity_problem(pu, R.out, R.start_vertices);
+    FF_EXPECT(why.empty(), "instant flip on degenerate coordinates: " << why << ": " << one_line(text(R.out)));
+    return Outcome::pass();
+  }
+  FF_EXPECT(R.kind == Kind::ok, "instant flip threw on coordinates in general position: " << R.what);
+  FF_EXPECT(R.lemma.empty(), "instant flip: " << R.lemma);
+  const ref::InstantFlipStats& st = R.stats;
+  const auto d = static_cast<std::size_t>(ps.dim);
+  FF_EXPECT(st.pops == st.total_flips() + st.stale + st.deferred,
+            "pops " << st.pops << " != flips " << st.total_flips() << " + stale " << st.stale << " + deferred " << st.deferred);
+  FF_EXPECT(st.pushes == st.pops, "pushes " << st.pushes << " != pops " << st.pops);
+  FF_EXPECT(st.removed_vertices == st.flips[d + 1], "removed " << st.removed_vertices << " != (d+1)-1 flips");
+  FF_EXPECT(simplex_vertices(R.out).size() + st.removed_vertices == R.start_vertices.size(),
+            simplex_vertices(R.out).size() << " vertices from " << R.start_vertices.size() << " with "
+                                           << st.removed_vertices << " removed");
+  const std::string got = text(R.out);
+  FF_EXPECT(got == text(fresh_on(ps, u, R.start_vertices)), "not RT(V+U) of the vertices V of RT(S+W): " << one_line(got));
+  const ref::Rtd full = ref::rtd_incremental(pu);
+  if (R.reappearing.empty()) {
+    FF_EXPECT(R.out == full.simplices, "not RT(S+U) although no point reappears: " << one_line(got));
+    const certify::Report r = certify::rtd(pu, R.out);
+    FF_EXPECT(r.ok, "not certified: " << r.message());
+  } else {
+    bool some_vertex = false;
+    for (Index x : R.reappearing) some_vertex |= !std::binary_search(full.redundant.begin(), full.redundant.end(), x);
+    FF_EXPECT(some_vertex, "reappearing_points lists no vertex of RT(S+U)");
+    FF_EXPECT(R.out != full.simplices, "reappearing points but the result is RT(S+U)");
+  }
+  return Outcome::pass();
+}
+
+// (c) Coordinates x 2^k, W and U x 2^(2k): every lifted height scales by
+// 2^(2k), every orientation minor M_r by a positive power of two, A_F, B_F
+// and D_F of a ridge by one common positive factor, the time comparison
+// B_F A_G - A_F B_G and the perturbation coefficients c_G(p) D_F - c_F(p) D_G
+// (failure_time.hpp) by positive factors: every SoS sign and every decision
+// is the same, degenerate input included — the same triangulation, counts
+// and outcome (the same exception type when it throws).
+inline Outcome instant_flip_scale(const PointSet& ps, const Params& p) {
+  if (!spans_d(ps)) return Outcome::skip("does not span R^d");
+  const std::vector<double> u = target_weights(ps, p.seed);
+  for (double x : u)
+    if (!std::isfinite(x)) return Outcome::skip("target weight overflows");
+  const PointSet pu = with_weights(ps, u);
+  const auto [lo, hi] = exact_scale_range(pu);
+  const int k = std::min(std::max(scale_exponent(ps, p.scale), lo), hi);  // both ranges hold 0
+  std::vector<double> su = u;
+  for (double& x : su) x = std::ldexp(x, 2 * k);
+  const InstantFlipRun A = run_instant_flip(ps, u, false), B = run_instant_flip(scaled(ps, k), su, false);
+  FF_EXPECT(A.kind == B.kind, "outcome changes under scaling by 2^" << k << ": '" << A.what << "' vs '" << B.what << "'");
+  FF_EXPECT(A.out == B.out, "result changes under scaling by 2^" << k << ": " << one_line(text(A.out)) << " vs "
+                                                                  << one_line(text(B.out)));
+  for (std::size_t j = 0; j < 8; ++j) FF_EXPECT(A.stats.flips[j] == B.stats.flips[j], j << "-flips change under scaling");
+  FF_EXPECT(A.stats.pushes == B.stats.pushes && A.stats.pops == B.stats.pops && A.stats.stale == B.stats.stale &&
+                A.stats.deferred == B.stats.deferred,
+            "queue counts change under scaling by 2^" << k);
+  return Outcome::pass();
+}
+
+#endif  // FLIPFLOP_TEST_HAVE_RTD
 
 // ============================================================================
 // Point classification kernels
@@ -856,8 +1360,10 @@ inline Outcome classify(const PointSet& ps, const Params& p) {
 
 struct NamedCheck {
   const char* name;
-  int dim;
+  int dim;  // the dimensions it applies to: dim .. max(dim, dim_max)
   Outcome (*run)(const PointSet&, const Params&);
+  int dim_max = 0;
+  bool applies(int d) const { return d >= dim && d <= std::max(dim, dim_max); }
 };
 
 inline const std::vector<NamedCheck>& all_checks() {
@@ -878,6 +1384,18 @@ inline const std::vector<NamedCheck>& all_checks() {
       {"hull3_scale", 3, hull3_scale},
       {"hull3_translate", 3, hull3_translate},
       {"hull3_permute", 3, hull3_permute},
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+      {"hull3_counts", 3, hull3_counts},
+#endif
+#ifdef FLIPFLOP_TEST_HAVE_RTD
+      {"rtd_canonical", 2, rtd_canonical, 5},
+      {"rtd_scale", 2, rtd_scale, 5},
+      {"rtd_translate", 2, rtd_translate, 5},
+      {"rtd_permute", 2, rtd_permute, 5},
+      {"rtd_counts", 2, rtd_counts, 5},
+      {"instant_flip_canonical", 2, instant_flip_canonical, 5},
+      {"instant_flip_scale", 2, instant_flip_scale, 5},
+#endif
       {"classify2", 2, classify},
       {"classify3", 3, classify},
   };
@@ -892,7 +1410,7 @@ inline const NamedCheck* find_check(const std::string& name) {
 
 // Runs a check; an exception escaping it is a failure (never a crash).
 inline Outcome run_check(const NamedCheck& c, const PointSet& ps, const Params& p) {
-  if (ps.dim != c.dim) return Outcome::skip("wrong dimension");
+  if (!c.applies(ps.dim)) return Outcome::skip("wrong dimension");
   try {
     return c.run(ps, p);
   } catch (const std::exception& e) {
@@ -999,8 +1517,39 @@ inline void check_or_save(bool cond, const PointSet& ps, const std::string& prop
 inline void check_property(const std::string& name, const PointSet& ps, const Params& p) {
   const NamedCheck* c = find_check(name);
   RC_ASSERT(c != nullptr);
-  RC_PRE(ps.size() >= static_cast<std::size_t>(ps.dim) + 1);  // what io::read_points accepts
+  RC_PRE(ps.size() >= static_cast<std::size_t>(ps.dim) + 1);  // what the point readers accept
   check_or_save(run_check(*c, ps, p), ps, name, p);
+}
+
+// The points of a saved file in R^d, d > 3 (io::read_points reads 2D and 3D
+// only): '#' lines skipped, d (+1 weight) decimals per line, read exactly
+// (std::strtod rounds correctly; the writer wrote shortest round-trip
+// decimals).
+inline PointSet read_points_d(const std::string& path, int dim, bool weighted) {
+  std::ifstream is(path);
+  PointSet ps;
+  ps.dim = dim;
+  ps.weighted = weighted;
+  std::string line;
+  std::size_t lineno = 0;
+  while (std::getline(is, line)) {
+    ++lineno;
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::vector<double> v;
+    std::string tok;
+    while (ls >> tok) {
+      char* end = nullptr;
+      v.push_back(std::strtod(tok.c_str(), &end));
+      if (end != tok.c_str() + tok.size() || !std::isfinite(v.back()))
+        throw std::runtime_error(path + ":" + std::to_string(lineno) + ": bad number '" + tok + "'");
+    }
+    if (v.size() != static_cast<std::size_t>(dim + (weighted ? 1 : 0)))
+      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": wrong number of columns");
+    ps.coords.insert(ps.coords.end(), v.begin(), v.begin() + dim);
+    if (weighted) ps.weights.push_back(v.back());
+  }
+  return ps;
 }
 
 struct Regression {
@@ -1038,7 +1587,7 @@ inline Regression load_regression(const std::string& path) {
     } else
       throw std::runtime_error(path + ": unknown header field '" + k + "'");
   }
-  r.points = io::read_points(path, dim, weighted != 0);
+  r.points = dim > 3 ? read_points_d(path, dim, weighted != 0) : io::read_points(path, dim, weighted != 0);
   return r;
 }
 
