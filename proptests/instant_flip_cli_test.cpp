@@ -155,6 +155,14 @@ TEST_CASE("cli rtd / instant-flip: bad input is one UsageError", "[instant_flip]
     f << "0 0 0 0\n1 0 0 0\n0 1 0 0\n1 1 0 0\n2 3 0 1\n";
   }
   expect_usage(rtd, cli::RtdArgs{tmp.path("flat.xyz"), out, 3, false}, "flat.xyz");
+  {
+    // d = 4 and 5: points in a hyperplane (x4 = x1 + x2) and in a plane
+    std::ofstream f4(tmp.path("flat4.xyz")), f5(tmp.path("flat5.xyz"));
+    f4 << "0 0 0 0 0\n1 0 0 1 0\n0 1 0 1 0\n0 0 1 0 0\n1 1 1 2 0\n3 1 2 4 1\n";
+    f5 << "0 0 0 0 0 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n1 1 0 0 0 0\n2 5 0 0 0 1\n3 1 0 0 0 1\n7 2 0 0 0 0\n";
+  }
+  expect_usage(rtd, cli::RtdArgs{tmp.path("flat4.xyz"), out, 4, false}, "affine subspace of dimension 3");
+  expect_usage(rtd, cli::RtdArgs{tmp.path("flat5.xyz"), out, 5, false}, "are coplanar (affine dimension 2)");
   REQUIRE(cli::run_rtd(r) == 0);  // and the good one works
 
   // instant-flip: points of W differ from POINTS
