@@ -37,15 +37,6 @@ namespace flipflop::peers {
 
 namespace {
 
-std::vector<Index> hidden(std::size_t n, const std::vector<std::vector<Index>>& simplices) {
-  std::vector<char> is_vertex(n, 0);
-  for (const auto& t : simplices)
-    for (Index x : t) is_vertex[x] = 1;
-  std::vector<Index> out;
-  for (Index i = 0; i < n; ++i)
-    if (!is_vertex[i]) out.push_back(i);
-  return out;
-}
 
 template <int D>
 std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>* redundant) {
@@ -98,7 +89,7 @@ std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>
     out.push_back(std::move(t));
   }
   out = canonical_simplices(std::move(out));
-  if (redundant) *redundant = hidden(ps.size(), out);
+  if (redundant) *redundant = non_vertices(ps.size(), out);
   return out;
 }
 
@@ -147,7 +138,7 @@ std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<I
     out.push_back(std::move(t));
   }
   out = canonical_simplices(std::move(out));
-  if (redundant) *redundant = hidden(ps.size(), out);
+  if (redundant) *redundant = non_vertices(ps.size(), out);
   return out;
 }
 

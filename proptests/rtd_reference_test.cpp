@@ -28,16 +28,6 @@ using namespace flipflop;
 
 namespace {
 
-std::vector<Index> non_vertices(std::size_t n, const std::vector<std::vector<Index>>& simplices) {
-  std::vector<char> is_vertex(n, 0);
-  for (const auto& t : simplices)
-    for (Index x : t) is_vertex[x] = 1;
-  std::vector<Index> out;
-  for (Index i = 0; i < n; ++i)
-    if (!is_vertex[i]) out.push_back(i);
-  return out;
-}
-
 void check_certified(const PointSet& ps, const ref::Rtd& r) {
   const certify::Report rep = certify::rtd(ps, r.simplices);
   INFO(rep.message());

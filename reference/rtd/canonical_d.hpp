@@ -69,6 +69,18 @@ inline bool is_canonical_shape(const std::vector<Index>& t) {
   return true;
 }
 
+// The indices 0..n-1 that are vertices of no simplex (sorted): the points a
+// regular triangulation left out as redundant.
+inline std::vector<Index> non_vertices(std::size_t n, const std::vector<std::vector<Index>>& simplices) {
+  std::vector<char> is_vertex(n, 0);
+  for (const auto& t : simplices)
+    for (Index x : t) is_vertex[x] = 1;
+  std::vector<Index> out;
+  for (Index i = 0; i < n; ++i)
+    if (!is_vertex[i]) out.push_back(i);
+  return out;
+}
+
 inline std::vector<std::vector<Index>> canonical_simplices(std::vector<std::vector<Index>> positive) {
   for (auto& t : positive) t = canonical_simplex(t);
   std::sort(positive.begin(), positive.end());

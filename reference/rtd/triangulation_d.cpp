@@ -237,26 +237,35 @@ void virtual_tuple(int d, const Index* t, int i, Index v, Index* out) {
   std::swap(out[j1], out[j2]);
 }
 
+// Facets waiting for their partner, by sorted vertex set: (slot, position).
+using OpenFacets = std::map<std::vector<Index>, std::pair<std::int32_t, int>>;
+
+// The facet of slot s opposite position i: linked to the open facet with the
+// same vertex set if there is one (both leave `open`), else left open.
+void glue_facet(TriangulationD& T, OpenFacets& open, std::int32_t s, int i) {
+  std::vector<Index> key;
+  for (int j = 0; j <= T.d; ++j)
+    if (j != i) key.push_back(T.vertex(s, j));
+  std::sort(key.begin(), key.end());
+  auto it = open.find(key);
+  if (it == open.end()) {
+    open.emplace(std::move(key), std::make_pair(s, i));
+  } else {
+    set_neighbor(T, s, i, it->second.first);
+    set_neighbor(T, it->second.first, it->second.second, s);
+    open.erase(it);
+  }
+}
+
 // Links every facet of the given slots to the other slot (among them or
 // already linked) holding the same facet vertex set; facets are matched by
 // their sorted vertex sets.
 void link_facets(TriangulationD& T, const std::vector<std::int32_t>& slots) {
-  std::map<std::vector<Index>, std::pair<std::int32_t, int>> open;
+  OpenFacets open;
   for (std::int32_t s : slots)
     for (int i = 0; i <= T.d; ++i) {
       if (T.neighbor(s, i) != kNone) continue;
-      std::vector<Index> key;
-      for (int j = 0; j <= T.d; ++j)
-        if (j != i) key.push_back(T.vertex(s, j));
-      std::sort(key.begin(), key.end());
-      auto it = open.find(key);
-      if (it == open.end()) {
-        open.emplace(std::move(key), std::make_pair(s, i));
-      } else {
-        set_neighbor(T, s, i, it->second.first);
-        set_neighbor(T, it->second.first, it->second.second, s);
-        open.erase(it);
-      }
+      glue_facet(T, open, s, i);
     }
   if (!open.empty()) throw std::logic_error("rtd: a facet is not shared by two simplices");
 }
@@ -335,21 +344,10 @@ TriangulationD from_simplices(const PointSet& ps, const std::vector<std::vector<
     slots.push_back(s);
   }
   // real facets first (a facet without a real partner is a hull facet) ...
-  std::map<std::vector<Index>, std::pair<std::int32_t, int>> open;
+  OpenFacets open;
   for (std::int32_t s : slots)
     for (int i = 0; i <= d; ++i) {
-      std::vector<Index> key;
-      for (int j = 0; j <= d; ++j)
-        if (j != i) key.push_back(T.vertex(s, j));
-      std::sort(key.begin(), key.end());
-      auto it = open.find(key);
-      if (it == open.end()) {
-        open.emplace(std::move(key), std::make_pair(s, i));
-      } else {
-        set_neighbor(T, s, i, it->second.first);
-        set_neighbor(T, it->second.first, it->second.second, s);
-        open.erase(it);
-      }
+      glue_facet(T, open, s, i);
     }
   // ... then one virtual simplex per hull facet, linked among themselves
   std::vector<std::int32_t> virt;
