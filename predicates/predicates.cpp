@@ -2,49 +2,23 @@
 // The derivation of the perturbation is in predicates.hpp.
 #include "predicates.hpp"
 
+#include <cmath>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "exact.hpp"
 #include "lambda_filter.hpp"
 #include "rational_point.hpp"
+#include "staged.hpp"
+#include "static_filter.hpp"
 
 namespace flipflop::pred {
 
 namespace {
 
-int filter_dispatch(int k, const double* const* c, const double* w) {
-  switch (k) {
-    case 2: return lambda_sign_filter<2>(c, w);
-    case 3: return lambda_sign_filter<3>(c, w);
-    case 4: return lambda_sign_filter<4>(c, w);
-    case 5: return lambda_sign_filter<5>(c, w);
-    case 6: return lambda_sign_filter<6>(c, w);
-    case 7: return lambda_sign_filter<7>(c, w);
-    case 8: return lambda_sign_filter<8>(c, w);
-    default: return 0;
-  }
-}
-
-// Sorts row positions by point index (insertion sort on at most 8 rows) and
-// returns the parity of the permutation, or 0 if an index repeats: then two
-// rows are the same point and the determinant is 0 even under perturbation.
-int sort_by_id(int k, const PointId* ids, int* order) {
-  for (int i = 0; i < k; ++i) order[i] = i;
-  if (!ids) return 1;
-  int parity = 1;
-  for (int i = 1; i < k; ++i) {
-    for (int j = i; j > 0 && ids[order[j - 1]] > ids[order[j]]; --j) {
-      std::swap(order[j - 1], order[j]);
-      parity = -parity;
-    }
-  }
-  for (int i = 1; i < k; ++i)
-    if (ids[order[i - 1]] == ids[order[i]]) return 0;
-  return parity;
-}
-
+// ---- the GMP oracle (Mode::gmp) ------------------------------------------------
 // The exact stage: sign of det of the (row-sorted) integer Λ-matrix, then the
 // Simulation of Simplicity when it is 0 and a perturbation is requested.
 int exact_stage(const exact::IntLambda& mat, int parity, bool sos) {
@@ -54,41 +28,108 @@ int exact_stage(const exact::IntLambda& mat, int parity, bool sos) {
   return parity * exact::sos_sign(mat);
 }
 
-}  // namespace
-
-int lambda_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
-                Mode m) {
-  if (k < 2 || k > 8) throw std::invalid_argument("lambda_sign: k must be in 2..8");
-  if (weights && k < 3) throw std::invalid_argument("lambda_sign: a lifted matrix needs k >= 3");
+int gmp_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
+             bool sos) {
   int order[8];
-  const int parity = sort_by_id(k, ids, order);
+  const int parity = sort_rows_by_id(k, sos ? ids : static_cast<const PointId*>(nullptr), order);
   if (parity == 0) return 0;
-  if (m == Mode::filtered) {
-    if (int s = filter_dispatch(k, coords, weights)) return s;
-  }
   const double* sorted_c[8];
   double sorted_w[8];
   for (int i = 0; i < k; ++i) {
     sorted_c[i] = coords[order[i]];
     if (weights) sorted_w[i] = weights[order[i]];
   }
-  return exact_stage(exact::build_lambda(k, sorted_c, weights ? sorted_w : nullptr), parity,
-                     ids != nullptr);
+  return exact_stage(exact::build_lambda(k, sorted_c, weights ? sorted_w : nullptr), parity, sos);
 }
+
+void check_k(int k, const double* weights) {
+  if (k < 2 || k > 8) throw std::invalid_argument("lambda_sign: k must be in 2..8");
+  if (weights && k < 3) throw std::invalid_argument("lambda_sign: a lifted matrix needs k >= 3");
+}
+
+// Dispatch of a template <int K> call over k = 2..8.
+template <class F>
+int dispatch(int k, F&& f) {
+  switch (k) {
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 7: return f(std::integral_constant<int, 7>{});
+    default: return f(std::integral_constant<int, 8>{});
+  }
+}
+
+}  // namespace
+
+int lambda_sign(const StaticFilter* f, int k, const PointId* ids, const double* const* coords,
+                const double* weights, Mode m) {
+  check_k(k, weights);
+  if (m == Mode::gmp) {
+    if (repeated_id(k, ids)) return 0;
+    return gmp_sign(k, ids, coords, weights, ids != nullptr);
+  }
+  return dispatch(k, [&](auto K) { return lambda_sign_staged<decltype(K)::value>(f, ids, coords, weights); });
+}
+
+int lambda_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
+                Mode m) {
+  return lambda_sign(nullptr, k, ids, coords, weights, m);
+}
+
+// ---- each stage alone ------------------------------------------------------------
+namespace stage {
+int static_filter(const StaticFilter& f, int k, const double* const* p, const double* w) {
+  check_k(k, w);
+  return dispatch(k, [&](auto K) { return static_sign<decltype(K)::value>(f, p, w); });
+}
+int semi_static(int k, const double* const* p, const double* w) {
+  check_k(k, w);
+  return dispatch(k, [&](auto K) { return semi_static_sign<decltype(K)::value>(p, w); });
+}
+int dynamic(int k, const double* const* p, const double* w) {
+  check_k(k, w);
+  return dispatch(k, [&](auto K) { return lambda_sign_filter<decltype(K)::value>(p, w); });
+}
+int expansion(int k, const double* const* p, const double* w) {
+  check_k(k, w);
+  return dispatch(k, [&](auto K) { return xp::lambda_exact<decltype(K)::value>(p, w, false); });
+}
+int expansion_sos(int k, const PointId* ids, const double* const* p, const double* w) {
+  check_k(k, w);
+  return dispatch(k, [&](auto K) {
+    return lambda_exact_sorted<decltype(K)::value>(ids, p, w, ids != nullptr);
+  });
+}
+int gmp(int k, const double* const* p, const double* w) {
+  check_k(k, w);
+  return gmp_sign(k, nullptr, p, w, false);
+}
+int gmp_sos(int k, const PointId* ids, const double* const* p, const double* w) {
+  check_k(k, w);
+  if (repeated_id(k, ids)) return 0;
+  return gmp_sign(k, ids, p, w, ids != nullptr);
+}
+}  // namespace stage
 
 // ---- rows mixing doubles and exact rational points (rational_point.hpp) ------
 RationalPoint RationalPoint::centroid(const double* const* pts, int count, int dim) {
-  if (count <= 0 || (count & (count - 1)) != 0 || dim < 1 || dim > 3)
-    throw std::invalid_argument("RationalPoint::centroid: count must be a power of two, dim <= 3");
+  if (count <= 0 || count > 8 || (count & (count - 1)) != 0 || dim < 1 || dim > 3)
+    throw std::invalid_argument("RationalPoint::centroid: count must be a power of two <= 8, dim <= 3");
   int shift = 0;
   while ((1 << shift) < count) ++shift;
   RationalPoint r;
   r.dim = dim;
+  r.count = count;
   r.exact.resize(static_cast<size_t>(dim));
   for (int j = 0; j < dim; ++j) {
     exact::Dyadic sum;
     ErrDouble approx(0.0);
     for (int i = 0; i < count; ++i) {
+      if (!std::isfinite(pts[i][j]))
+        throw std::invalid_argument("RationalPoint::centroid: non-finite coordinate");
+      r.src[i * dim + j] = pts[i][j];
       sum = exact::add(sum, exact::to_dyadic(pts[i][j]));
       approx = (i == 0) ? ErrDouble(pts[i][j]) : approx + ErrDouble(pts[i][j]);
     }
@@ -101,26 +142,65 @@ RationalPoint RationalPoint::centroid(const double* const* pts, int count, int d
   return r;
 }
 
-int mixed_sign(int k, const MixedRow* rows, bool sos) {
+RationalPoint RationalPoint::project(const int* cols, int m) const {
+  if (m < 1 || m > dim) throw std::invalid_argument("RationalPoint::project: bad coordinate count");
+  RationalPoint r;
+  r.dim = m;
+  r.count = count;
+  r.exact.resize(static_cast<size_t>(m));
+  for (int j = 0; j < m; ++j) {
+    const int c = cols[j];
+    if (c < 0 || c >= dim) throw std::invalid_argument("RationalPoint::project: bad coordinate");
+    r.approx[j] = approx[c];
+    r.exact[static_cast<size_t>(j)] = exact[static_cast<size_t>(c)];
+    for (int i = 0; i < count; ++i) r.src[i * m + j] = src[i * dim + c];
+  }
+  return r;
+}
+
+int mixed_sign(int k, const MixedRow* rows, bool sos, Mode m) {
   if (k < 2 || k > 4) throw std::invalid_argument("mixed_sign: k must be in 2..4");
   const int dim = k - 1;
-  ErrDouble approx[4 * 3];
   PointId ids[4];
   for (int i = 0; i < k; ++i) {
     ids[i] = rows[i].id;
-    for (int j = 0; j < dim; ++j)
-      approx[i * dim + j] = rows[i].x ? ErrDouble(rows[i].x[j]) : rows[i].r->approx[j];
+    if (!rows[i].x && (rows[i].r == nullptr || rows[i].r->dim != dim))
+      throw std::invalid_argument("mixed_sign: a rational row of the wrong dimension");
+  }
+  if (sos && repeated_id(k, ids)) return 0;
+  if (m == Mode::filtered) {
+    ErrDouble approx[4 * 3];
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < dim; ++j)
+        approx[i * dim + j] = rows[i].x ? ErrDouble(rows[i].x[j]) : rows[i].r->approx[j];
+    int s = 0;
+    switch (k) {
+      case 2: s = lambda_sign_filter_err<2>(approx); break;
+      case 3: s = lambda_sign_filter_err<3>(approx); break;
+      default: s = lambda_sign_filter_err<4>(approx); break;
+    }
+    if (s != 0) return s;
   }
   int order[8];
-  const int parity = sort_by_id(k, sos ? ids : nullptr, order);
+  const int parity = sort_rows_by_id(k, sos ? ids : static_cast<const PointId*>(nullptr), order);
   if (parity == 0) return 0;
-  int s = 0;
-  switch (k) {
-    case 2: s = lambda_sign_filter_err<2>(approx); break;
-    case 3: s = lambda_sign_filter_err<3>(approx); break;
-    default: s = lambda_sign_filter_err<4>(approx); break;
+  if (m == Mode::filtered) {
+    xp::MixedRowX xr[4];
+    for (int i = 0; i < k; ++i) {
+      const MixedRow& row = rows[order[i]];
+      if (row.x) {
+        xr[i].x = row.x;
+      } else {
+        xr[i].src = row.r->src;
+        xr[i].count = row.r->count;
+      }
+    }
+    switch (k) {
+      case 2: return parity * xp::lambda_exact_mixed<2>(xr, sos);
+      case 3: return parity * xp::lambda_exact_mixed<3>(xr, sos);
+      default: return parity * xp::lambda_exact_mixed<4>(xr, sos);
+    }
   }
-  if (s != 0) return s;
   std::vector<exact::Dyadic> entries(static_cast<size_t>(k * dim));
   for (int i = 0; i < k; ++i) {
     const MixedRow& row = rows[order[i]];
@@ -208,6 +288,29 @@ int power_d(int d, const WPt* pts, Mode m) {
     w[i] = pts[i].w;
   }
   return lambda_sign(d + 2, id, p, w, m);
+}
+
+int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
+  const PointId id[3] = {a.id, b.id, c.id};
+  const double* p[3] = {a.x, b.x, c.x};
+  return lambda_sign_staged<3>(&f, id, p, static_cast<const double*>(nullptr));
+}
+int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d) {
+  const PointId id[4] = {a.id, b.id, c.id, d.id};
+  const double* p[4] = {a.x, b.x, c.x, d.x};
+  return lambda_sign_staged<4>(&f, id, p, static_cast<const double*>(nullptr));
+}
+int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
+  const PointId id[4] = {a.id, b.id, c.id, d.id};
+  const double* p[4] = {a.x, b.x, c.x, d.x};
+  const double w[4] = {a.w, b.w, c.w, d.w};
+  return lambda_sign_staged<4>(&f, id, p, w);
+}
+int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
+  const PointId id[5] = {a.id, b.id, c.id, d.id, e.id};
+  const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
+  const double w[5] = {a.w, b.w, c.w, d.w, e.w};
+  return lambda_sign_staged<5>(&f, id, p, w);
 }
 
 int dot2d_exact(const double* a, const double* b, const double* c) {

@@ -112,6 +112,13 @@ struct WPt {
   double w;
 };
 
+// ---- Per-input static filter (static_filter.hpp) ------------------------------
+// StaticFilter::for_points(coords, n, dim, weights) computes, once per input,
+// error bounds valid for every predicate call on points of that input; the
+// overloads below taking a StaticFilter try it first (then the per-call
+// stages). A default-constructed StaticFilter decides nothing.
+class StaticFilter;
+
 // ---- Exact signs of the unperturbed determinants (may be 0) -----------------
 int orient2d_exact(const double* a, const double* b, const double* c, Mode m = Mode::filtered);
 int orient3d_exact(const double* a, const double* b, const double* c, const double* d,
@@ -148,5 +155,32 @@ int dot2d_exact(const double* a, const double* b, const double* c);
 // (|x|^2 - w). `ids` may be null (no perturbation: exact sign, may be 0).
 int lambda_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
                 Mode m);
+// The same, first trying the per-input static filter `f` (may be null).
+int lambda_sign(const StaticFilter* f, int k, const PointId* ids, const double* const* coords,
+                const double* weights, Mode m = Mode::filtered);
+
+// ---- The default path with a per-input static filter -------------------------
+// Same answers as the overloads above (the filter only decides sooner).
+int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c);
+int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d);
+int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d);
+int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e);
+
+// ---- Each stage alone (benchmarks and tests) --------------------------------
+// On the Λ-matrix of k points (2 <= k <= 8), p[i] the coordinates of point i,
+// `w` the weights (lifted matrix, k >= 3) or null, as for lambda_sign. Rows
+// are taken in the given order (no sorting by id).
+//   filters: +1 / -1 when they decide, 0 when they cannot;
+//   exact stages: the exact sign of the unperturbed determinant (may be 0);
+//   *_sos: the Simulation-of-Simplicity sign (ids distinct: never 0).
+namespace stage {
+int static_filter(const StaticFilter& f, int k, const double* const* p, const double* w);
+int semi_static(int k, const double* const* p, const double* w);   // bound from this call's magnitudes
+int dynamic(int k, const double* const* p, const double* w);       // ErrDouble running bound
+int expansion(int k, const double* const* p, const double* w);     // exact, expansion arithmetic
+int expansion_sos(int k, const PointId* ids, const double* const* p, const double* w);
+int gmp(int k, const double* const* p, const double* w);           // exact, GMP (the oracle)
+int gmp_sos(int k, const PointId* ids, const double* const* p, const double* w);
+}  // namespace stage
 
 }  // namespace flipflop::pred

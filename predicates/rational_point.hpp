@@ -19,11 +19,19 @@ namespace flipflop::pred {
 struct RationalPoint {
   int dim = 0;
   ErrDouble approx[3];               // filter view: value and error bound
-  std::vector<exact::Dyadic> exact;  // exact coordinates
+  std::vector<exact::Dyadic> exact;  // exact coordinates (the GMP oracle, Mode::gmp)
+  // The same point for the expansion stage (exact_expansion.hpp): the centroid
+  // of `count` input points src[i * dim + j] (row-major), never rounded.
+  int count = 0;
+  double src[8 * 3] = {};
 
-  // The centroid of `count` points (count a power of two, so the centroid is
-  // dyadic and exact) with `dim` <= 3 coordinates each.
+  // The centroid of `count` points (count a power of two <= 8, so the
+  // centroid is dyadic and exact) with `dim` <= 3 coordinates each.
   static RationalPoint centroid(const double* const* pts, int count, int dim);
+
+  // The point seen through some of its coordinates (cols[0..m-1]), e.g. its
+  // y coordinate alone for a 1D comparison.
+  RationalPoint project(const int* cols, int m) const;
 };
 
 // One row of a mixed Λ-matrix: an input point (x != nullptr) or a rational point.
@@ -36,6 +44,8 @@ struct MixedRow {
 // Sign of det Λ of k = dim+1 mixed rows (2 <= k <= 4), filtered then exact.
 // With `sos` the answer is the Simulation-of-Simplicity sign (never 0 for
 // distinct ids), otherwise the exact sign (may be 0).
-int mixed_sign(int k, const MixedRow* rows, bool sos);
+// Mode::filtered: ErrDouble filter, then expansion arithmetic (no GMP);
+// Mode::gmp: the GMP oracle.
+int mixed_sign(int k, const MixedRow* rows, bool sos, Mode m = Mode::filtered);
 
 }  // namespace flipflop::pred

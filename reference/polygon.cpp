@@ -35,9 +35,8 @@ StarKernel::StarKernel(const PointSet& ps, const pred::RationalPoint& s)
   // coordinate it holds does not change the dominance order of the perturbation
   // (predicates.hpp: rows are compared by index, the column is the only one), so
   // a copy of s holding only its y is compared with pointers to input y's.
-  s_y_.dim = 1;
-  s_y_.approx[0] = s.approx[1];
-  s_y_.exact = {s.exact[1]};
+  const int y = 1;
+  s_y_ = s.project(&y, 1);
 }
 
 int StarKernel::orient(Index p, Index q) const {

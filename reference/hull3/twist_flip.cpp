@@ -268,10 +268,8 @@ TwistFlip::TwistFlip(const PointSet& ps, Index v, Prepared prep)
   pos_.assign(ps.size(), 0);
   for (std::uint32_t i = 0; i < order_.size(); ++i) pos_[order_[i]] = i;
   const pred::RationalPoint& s = kernel_.secondary();
-  s_yz_.dim = 2;
-  s_yz_.approx[0] = s.approx[1];
-  s_yz_.approx[1] = s.approx[2];
-  s_yz_.exact = {s.exact[1], s.exact[2]};
+  const int yz[2] = {1, 2};
+  s_yz_ = s.project(yz, 2);
 }
 
 // ============================================================================

@@ -1,0 +1,648 @@
+// exact_expansion.hpp — the exact stage of every predicate: the sign of
+// det Λ (lambda_filter.hpp), and its Simulation-of-Simplicity sign
+// (predicates.hpp, "The perturbation"), in expansion arithmetic
+// (expansion.hpp). No heap, no recursion, no GMP; header-only,
+// __host__ __device__.
+//
+// Λ is evaluated as it stands (raw coordinates, lifted heights |x|^2 - w
+// computed exactly as expansions, the 1-column): its determinant and every
+// minor the perturbation asks for are then determinants of submatrices of the
+// same matrix. A minor is expanded by Laplace over column subsets, row by row
+// (as det_by_minors, one level at a time), products of expansions by
+// scale_zeroelim, sums by sum_zeroelim, and every intermediate result is
+// compressed so that its length obeys the bound of expansion.hpp.
+//
+// ============================================================================
+// Which arithmetic: the window (correct over the whole double range)
+// ============================================================================
+// Let D be the degree of det Λ in the input values (k - 1 coordinate columns
+// of degree 1; a lifted column counts 2), E the largest exponent with
+// |v| < 2^E over all values v of the call (coordinates, weights), and L the
+// exponent of the lowest set bit over all of them; E+ = max(E, 0),
+// L- = min(L, 0).
+//   * Grid: every entry of Λ is a multiple of 2^(2 L-) (2^(L-) for
+//     coordinates), so every product of at most D factors, every minor and
+//     every expansion component built from them is a multiple of 2^(D L-)
+//     (two_sum and two_product keep a common grid: rounding a multiple of a
+//     power of two to 53 bits gives a multiple of it).
+//   * If D L- >= -1074, every such multiple is a binary64 value or rounds to
+//     one with a representable error: a product's rounding error is a multiple
+//     of 2^-1074 of at most 53 bits, so two_product is exact even where the
+//     product is subnormal; sums are always exact (two_sum).
+//   * If D (E+ + 1) <= 950, every entry (also a difference of two values, or
+//     a lifted entry |x_i - x_k|^2 - (w_i - w_k)) is below 2^(2(E+ + 1) + 3),
+//     every product of entries below 2^(D (E+ + 1) + 5), every sum of at most
+//     8! of them and every partial sum inside the expansion algorithms below
+//     2^(D (E+ + 1) + 23) <= 2^973: nothing overflows, and Veltkamp's split
+//     (|x| < 2^995) is valid.
+// Inside this window the double components (xp::Dbl) are exact; the lengths
+// are then at most (973 + 1074)/52 + 2 < 42 (expansion.hpp, length bound):
+// kCapD = 44. Outside it (1e±300 inputs, subnormals mixed with large values)
+// the same algorithms run on xp::XDbl, whose exponent is unbounded: exact on
+// every finite input. There H <= 1024 D + 23 and L >= -1074 D, so lengths
+// are at most (2098 D + 23)/52 + 2: kCapX(K) with D <= K.
+//
+// Stack per call (bytes, the buffers below; K = number of rows):
+//   Λ entries: K^2 x 16 components;  Dbl minors: 2 levels of C(K, K/2)
+//   expansions of kCapD doubles (K = 4: 2 x 6 x 360 ~ 4.4 KB, K = 5: 7.3 KB,
+//   K = 8: 51 KB); XDbl: about 9 kCapX(K) x 16 bytes (K = 4: 23 KB, K = 5:
+//   29 KB, K = 8: 47 KB); the SoS memo 2^(2K-1) bytes (K = 5: 512 B,
+//   K = 8: 32 KB). The Dbl and XDbl paths are never live together.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include "predicates/expansion.hpp"
+#include "predicates/lambda_filter.hpp"
+
+namespace flipflop::pred::xp {
+
+constexpr int kCapD = 44;
+FF_HD constexpr int cap_x(int k) { return (2098 * k + 23) / 52 + 3; }
+constexpr int kEntryCap = 28;  // one Λ or T entry: raw lifted <= 2(K-2)+1, translated lifted <= 4(K-2)+2, centroid row <= 8
+
+FF_HD inline int ctz64(std::uint64_t x) {
+#if defined(__CUDA_ARCH__)
+  return __ffsll(static_cast<long long>(x)) - 1;
+#else
+  return __builtin_ctzll(x);
+#endif
+}
+FF_HD inline int clz64(std::uint64_t x) {
+#if defined(__CUDA_ARCH__)
+  return __clzll(static_cast<long long>(x));
+#else
+  return __builtin_clzll(x);
+#endif
+}
+FF_HD inline int popcount32(unsigned x) {
+#if defined(__CUDA_ARCH__)
+  return __popc(x);
+#else
+  // SWAR popcount (no dependence on -mpopcnt)
+  x = x - ((x >> 1) & 0x55555555u);
+  x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
+  x = (x + (x >> 4)) & 0x0f0f0f0fu;
+  return static_cast<int>((x * 0x01010101u) >> 24);
+#endif
+}
+
+// Exponent range of the values of one call (see the window above).
+struct Range {
+  int ehi = -100000;  // |v| < 2^ehi for every v
+  int llo = 100000;   // every v is a multiple of 2^llo
+  FF_HD void add(double v) {
+    if (v == 0.0) return;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+    int e = 0, low = 0;
+    if (biased == 0) {  // subnormal: mant 2^-1074
+      e = 64 - clz64(mant) - 1074;
+      low = ctz64(mant) - 1074;
+    } else {
+      mant |= std::uint64_t{1} << 52;
+      e = biased - 1022;
+      low = biased - 1075 + ctz64(mant);
+    }
+    if (e > ehi) ehi = e;
+    if (low < llo) llo = low;
+  }
+  // Inside the window for a determinant of degree D?
+  FF_HD bool fits(int degree) const {
+    const int ep = ehi > 0 ? ehi : 0;
+    const int lm = llo < 0 ? llo : 0;
+    return degree * (ep + 1) <= 950 && degree * lm >= -1074;
+  }
+};
+
+// One entry of Λ: a short expansion.
+template <class A>
+struct Entry {
+  using T = typename A::T;
+  int n = 1;
+  T c[kEntryCap];
+  FF_HD Entry() { c[0] = A::zero(); }
+  FF_HD void set(double v) {
+    n = 1;
+    c[0] = A::from_double(v);
+  }
+  FF_HD bool zero() const { return n == 1 && A::is_zero(c[0]); }
+};
+
+// Exact lifted height |x|^2 - w of m coordinates.
+template <class A>
+FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A>& out) {
+  using T = typename A::T;
+  T buf[kEntryCap], tmp[kEntryCap];
+  int len = 1;
+  buf[0] = A::neg(A::from_double(w));
+  for (int j = 0; j < m; ++j) {
+    T sq[2];
+    const T xj = A::from_double(x[j]);
+    A::two_product(xj, xj, sq[1], sq[0]);
+    const int sl = A::is_zero(sq[0]) ? 1 : 2;
+    const T* sp = A::is_zero(sq[0]) ? sq + 1 : sq;
+    len = sum_zeroelim<A>(len, buf, sl, sp, tmp);
+    len = compress<A>(len, tmp);
+    for (int i = 0; i < len; ++i) buf[i] = tmp[i];
+  }
+  out.n = len;
+  for (int i = 0; i < len; ++i) out.c[i] = buf[i];
+}
+
+// Exact sum of `count` doubles (a centroid row scaled by count).
+template <class A>
+FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A>& out) {
+  using T = typename A::T;
+  T buf[kEntryCap], tmp[kEntryCap];
+  int len = 1;
+  buf[0] = A::from_double(v[0]);
+  for (int i = 1; i < count; ++i) {
+    const T x = A::from_double(v[i * stride]);
+    len = sum_zeroelim<A>(len, buf, 1, &x, tmp);
+    len = compress<A>(len, tmp);
+    for (int j = 0; j < len; ++j) buf[j] = tmp[j];
+  }
+  out.n = len;
+  for (int i = 0; i < len; ++i) out.c[i] = buf[i];
+}
+
+// Λ of K rows as expansions.
+template <class A, int K>
+struct LambdaX {
+  Entry<A> a[K][K];
+};
+
+// binomial(n, r), compile time only (buffer sizes)
+constexpr int binom(int n, int r) {
+  return (r < 0 || r > n) ? 0 : (r == 0 || r == n) ? 1 : binom(n - 1, r - 1) + binom(n - 1, r);
+}
+
+// acc (len n <= cap) += sign * (entry x m), m of length <= cap; returns the new
+// length (<= cap: compressed when longer, which the length bound of
+// expansion.hpp makes at most cap). `scaled` holds 2 cap, `part` and `sum`
+// 3 cap components.
+template <class A>
+FF_HD inline int add_product(int cap, int n, typename A::T* acc, const Entry<A>& entry, int mlen,
+                             const typename A::T* m, bool negative, typename A::T* scaled,
+                             typename A::T* part, typename A::T* sum) {
+  using T = typename A::T;
+  int plen = 0;
+  if (entry.n == 1 && A::is_one(entry.c[0])) {  // the 1-column: no product
+    for (int j = 0; j < mlen; ++j) part[j] = negative ? A::neg(m[j]) : m[j];
+    plen = mlen;
+  } else
+  for (int i = 0; i < entry.n; ++i) {
+    T b = negative ? A::neg(entry.c[i]) : entry.c[i];
+    if (A::is_zero(b)) continue;
+    const int sl = scale_zeroelim<A>(mlen, m, b, scaled);
+    if (plen == 0) {
+      for (int j = 0; j < sl; ++j) part[j] = scaled[j];
+      plen = sl;
+    } else {
+      plen = sum_zeroelim<A>(plen, part, sl, scaled, sum);
+      for (int j = 0; j < plen; ++j) part[j] = sum[j];
+    }
+    // Compress only when needed to keep the next step inside the buffers
+    // (part: 3 cap, every input <= cap): zero elimination keeps typical
+    // expansions far shorter than the bound.
+    if (plen > cap) plen = compress<A>(plen, part);
+  }
+  if (plen == 0) return n;
+  if (plen > cap) plen = compress<A>(plen, part);
+  int len = sum_zeroelim<A>(n, acc, plen, part, sum);
+  if (len > cap) len = compress<A>(len, sum);
+  for (int j = 0; j < len; ++j) acc[j] = sum[j];
+  return len;
+}
+
+// ---- Dbl: minors by Laplace over column subsets, one level at a time -------
+template <int K>
+struct MinorDbl {
+  static constexpr int kLevel = binom(K, K / 2);
+  using E = Exp<Dbl, kCapD>;
+
+  // sign of the minor of L on the kept rows / columns (bit masks, equal popcount)
+  FF_HD static int sign(const LambdaX<Dbl, K>& L, unsigned rows, unsigned cols) {
+    int ri[K], ci[K], r = 0, nc = 0;
+    for (int i = 0; i < K; ++i)
+      if (rows & (1u << i)) ri[r++] = i;
+    for (int j = 0; j < K; ++j)
+      if (cols & (1u << j)) ci[nc++] = j;
+    if (r == 0) return 1;
+    E lev[2][kLevel];
+    double scaled[2 * kCapD], part[3 * kCapD], sum[3 * kCapD];
+    // rank of each column subset among the subsets of its size (in increasing order)
+    unsigned char rank[1u << K];
+    int counter[K + 1] = {};
+    for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
+    auto subset_rank = [&](unsigned s) { return rank[s]; };
+    // level 1: row ri[0], single columns
+    for (int j = 0; j < r; ++j) {
+      const Entry<Dbl>& e = L.a[ri[0]][ci[j]];
+      E& d = lev[1][subset_rank(1u << j)];
+      d.n = e.n;
+      for (int t = 0; t < e.n; ++t) d.c[t] = e.c[t];
+    }
+    const unsigned full = (1u << r) - 1u;
+    for (int l = 2; l <= r; ++l) {
+      E* cur = lev[l & 1];
+      const E* prev = lev[(l - 1) & 1];
+      for (unsigned s = 1; s <= full; ++s) {
+        if (popcount32(s) != l) continue;
+        E& d = cur[subset_rank(s)];
+        d.n = 1;
+        d.c[0] = 0.0;
+        int pos = 0;
+        for (int j = 0; j < r; ++j) {
+          if (!(s & (1u << j))) continue;
+          const E& sub = prev[subset_rank(s & ~(1u << j))];
+          const Entry<Dbl>& e = L.a[ri[l - 1]][ci[j]];
+          const bool negative = ((l - 1 + pos) & 1) != 0;  // (-1)^((l-1) + pos)
+          ++pos;
+          if (sub.zero() || e.zero()) continue;
+          d.n = add_product<Dbl>(kCapD, d.n, d.c, e, sub.n, sub.c, negative, scaled, part, sum);
+        }
+      }
+    }
+    return lev[r & 1][0].sign();
+  }
+};
+
+// ---- XDbl: minors as sums over permutations (little memory) ------------------
+template <int K>
+struct MinorX {
+  static constexpr int kCap = cap_x(K);
+  using T = XD;
+
+  FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
+    int ri[K], ci[K], r = 0, nc = 0;
+    for (int i = 0; i < K; ++i)
+      if (rows & (1u << i)) ri[r++] = i;
+    for (int j = 0; j < K; ++j)
+      if (cols & (1u << j)) ci[nc++] = j;
+    if (r == 0) return 1;
+    T acc[kCap], term[kCap], scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
+    int alen = 1;
+    acc[0] = XDbl::zero();
+    // Heap's algorithm, iterative: every permutation once, one swap apart.
+    int perm[K], cnt[K];
+    for (int i = 0; i < r; ++i) perm[i] = i, cnt[i] = 0;
+    int parity = 1;  // sign of perm
+    for (int i = 0;;) {
+      // the term Π_t a[ri[t]][ci[perm[t]]]
+      bool zero = false;
+      for (int t = 0; t < r && !zero; ++t) zero = L.a[ri[t]][ci[perm[t]]].zero();
+      if (!zero) {
+        const Entry<XDbl>& e0 = L.a[ri[0]][ci[perm[0]]];
+        int tlen = e0.n;
+        for (int t = 0; t < tlen; ++t) term[t] = e0.c[t];
+        for (int t = 1; t < r; ++t) {
+          T prod[kCap];
+          int plen = 1;
+          prod[0] = XDbl::zero();
+          plen = add_product<XDbl>(kCap, plen, prod, L.a[ri[t]][ci[perm[t]]], tlen, term, false,
+                                   scaled, part, sum);
+          for (int q = 0; q < plen; ++q) term[q] = prod[q];
+          tlen = plen;
+        }
+        // acc += parity * term
+        if (parity < 0)
+          for (int q = 0; q < tlen; ++q) term[q] = XDbl::neg(term[q]);
+        alen = sum_zeroelim<XDbl>(alen, acc, tlen, term, sum);
+        if (alen > kCap) alen = compress<XDbl>(alen, sum);
+        for (int q = 0; q < alen; ++q) acc[q] = sum[q];
+      }
+      // next permutation (Heap)
+      while (i < r && cnt[i] >= i) {
+        cnt[i] = 0;
+        ++i;
+      }
+      if (i >= r) break;
+      if (i % 2 == 0) {
+        const int tmp = perm[0];
+        perm[0] = perm[i];
+        perm[i] = tmp;
+      } else {
+        const int tmp = perm[cnt[i]];
+        perm[cnt[i]] = perm[i];
+        perm[i] = tmp;
+      }
+      parity = -parity;
+      ++cnt[i];
+      i = 0;
+    }
+    return sign_of<XDbl>(alen, acc);
+  }
+};
+
+template <class A, int K>
+struct MinorOf;
+template <int K>
+struct MinorOf<Dbl, K> : MinorDbl<K> {};
+template <int K>
+struct MinorOf<XDbl, K> : MinorX<K> {};
+
+// ---- Simulation of Simplicity ----------------------------------------------
+// The sign of det Λ(ε) is the sign of the first non-zero signed complementary
+// minor in the dominance order of predicates.hpp: rows from the largest index
+// (the last row: rows are sorted by increasing index) to the smallest; on each
+// row first "not perturbed", then the coordinate columns from the last to the
+// first; the 1-column is never perturbed. The depth-first search over these
+// matchings is written with an explicit stack (no recursion); minor signs are
+// memoised (a minor recurs under many matchings).
+// An ErrDouble view of an entry (its components summed with a proven bound).
+template <class A>
+FF_HD inline ErrDouble approx_entry(const Entry<A>& e) {
+  if constexpr (A::kExtended) {
+    ErrDouble acc(0.0);
+    for (int i = 0; i < e.n; ++i) {
+      const double m = e.c[i].m;
+      const int ex = e.c[i].e;
+      if (ex > 1000 || ex < -900) return ErrDouble(0.0, HUGE_VAL);  // leave it to the exact stage
+      acc = (i == 0) ? ErrDouble(std::ldexp(m, ex)) : acc + ErrDouble(std::ldexp(m, ex));
+    }
+    return acc;
+  } else {
+    ErrDouble acc(e.c[0]);
+    for (int i = 1; i < e.n; ++i) acc = acc + ErrDouble(e.c[i]);
+    return acc;
+  }
+}
+
+// Cheap decisions on a minor before the exact evaluation: 0 when two kept
+// rows are equal or a kept column is zero (duplicated points, lattices), the
+// ErrDouble filter's sign when it is certain; 2 when undecided.
+template <class A, int K>
+FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsigned rows,
+                             unsigned cols) {
+  int ri[K], ci[K], r = 0, nc = 0;
+  for (int i = 0; i < K; ++i)
+    if (rows & (1u << i)) ri[r++] = i;
+  for (int j = 0; j < K; ++j)
+    if (cols & (1u << j)) ci[nc++] = j;
+  if (r == 0) return 1;
+  for (int j = 0; j < r; ++j) {
+    bool zero = true;
+    for (int i = 0; i < r && zero; ++i) zero = L.a[ri[i]][ci[j]].zero();
+    if (zero) return 0;
+  }
+  for (int a = 1; a < r; ++a)
+    for (int b = 0; b < a; ++b) {
+      bool same = true;
+      for (int j = 0; j < r && same; ++j) {
+        const Entry<A>& x = L.a[ri[a]][ci[j]];
+        const Entry<A>& y = L.a[ri[b]][ci[j]];
+        same = x.n == y.n;
+        for (int t = 0; t < x.n && same; ++t) same = !A::abs_less(x.c[t], y.c[t]) &&
+                                                    !A::abs_less(y.c[t], x.c[t]) &&
+                                                    A::sign(x.c[t]) == A::sign(y.c[t]);
+      }
+      if (same) return 0;
+    }
+  ErrDouble t[K * K];
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < r; ++j) t[i * r + j] = ap[ri[i] * K + ci[j]];
+  int s = 0;
+  switch (r) {
+    case 1: s = sign_if_certain(t[0]); break;
+    case 2: s = sign_if_certain(det_by_minors<2>(t)); break;
+    case 3: s = sign_if_certain(det_by_minors<3>(t)); break;
+    case 4: s = sign_if_certain(det_by_minors<4>(t)); break;
+    case 5: s = sign_if_certain(det_by_minors<5>(t)); break;
+    case 6: s = sign_if_certain(det_by_minors<6>(t)); break;
+    case 7: s = sign_if_certain(det_by_minors<7>(t)); break;
+    default: s = 0; break;
+  }
+  return s != 0 ? s : 2;
+}
+
+template <class A, int K>
+FF_HD inline int sos_sign(const LambdaX<A, K>& L) {
+  constexpr unsigned kAll = (1u << K) - 1u;
+  constexpr unsigned kColMask = (1u << (K - 1)) - 1u;  // the 1-column (bit K-1) is always kept
+  signed char memo[1u << (2 * K - 1)];
+  for (unsigned i = 0; i < (1u << (2 * K - 1)); ++i) memo[i] = 2;
+  ErrDouble ap[K * K];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) ap[i * K + j] = approx_entry<A>(L.a[i][j]);
+  auto minor = [&](unsigned kr, unsigned kc) -> int {
+    signed char& slot = memo[(kr << (K - 1)) | (kc & kColMask)];
+    if (slot == 2) {
+      int q = minor_quick<A, K>(L, ap, kr, kc);
+      if (q == 2) q = MinorOf<A, K>::sign(L, kr, kc);
+      slot = static_cast<signed char>(q);
+    }
+    return slot;
+  };
+  int choice[K];
+  unsigned skr[K], skc[K];
+  int ssg[K];
+  int r = K - 1;
+  skr[r] = kAll;
+  skc[r] = kAll;
+  ssg[r] = 1;
+  choice[r] = -1;
+  // options on a row: 0 = not perturbed, o = 1..K-1 = column K-1-o (K-2 .. 0)
+  while (true) {
+    const int opt = ++choice[r];
+    if (opt > K - 1) {  // row exhausted: back to the row above (larger index)
+      ++r;
+      if (r > K - 1) return 0;  // impossible for a Λ-matrix (the 1x1 minor "1")
+      continue;
+    }
+    unsigned kr = skr[r], kc = skc[r];
+    int sg = ssg[r];
+    if (opt >= 1) {
+      const int c = K - 1 - opt;
+      if (!(kc & (1u << c))) continue;
+      const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
+      if (parity & 1) sg = -sg;
+      kr &= ~(1u << r);
+      kc &= ~(1u << c);
+    }
+    if (r == 0) {
+      if (const int s = minor(kr, kc)) return sg * s;
+      continue;
+    }
+    --r;
+    skr[r] = kr;
+    skc[r] = kc;
+    ssg[r] = sg;
+    choice[r] = -1;
+  }
+}
+
+template <class A, int K>
+FF_HD inline int det_or_sos(const LambdaX<A, K>& L, bool sos) {
+  constexpr unsigned kAll = (1u << K) - 1u;
+  const int s = MinorOf<A, K>::sign(L, kAll, kAll);
+  if (s != 0 || !sos) return s;
+  return sos_sign<A, K>(L);
+}
+
+// Λ of K points: p[i] coordinates, w weights (lifted: K-2 coordinates and the
+// height) or null (K-1 coordinates).
+template <class A, int K>
+FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<A, K>& L) {
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) L.a[i][j].set(p[i][j]);
+    if (w) lifted_entry<A>(p[i], ncoord, w[i], L.a[i][K - 2]);
+    L.a[i][K - 1].set(1.0);
+  }
+}
+
+// det Λ = det T, T the (K-1) x (K-1) matrix of exact differences
+// t_ij = p_i[j] - p_{K-1}[j] (two_sum: one or two components); a lifted column
+// holds |p_i - p_{K-1}|^2 - (w_i - w_{K-1}), exactly (lambda_filter.hpp: the
+// dropped term 2 p_{K-1}.(p_i - p_{K-1}) is the same combination of the other
+// columns in every row). Fewer levels and smaller entries than Λ itself.
+template <class A, int K>
+FF_HD inline void build_translated(const double* const* p, const double* w, LambdaX<A, K - 1>& T) {
+  using V = typename A::T;
+  constexpr int N = K - 1;
+  const int ncoord = w ? K - 2 : K - 1;
+  const double* base = p[K - 1];
+  for (int i = 0; i < N; ++i) {
+    Entry<A> lift;
+    for (int j = 0; j < ncoord; ++j) {
+      V hi, lo;
+      A::two_sum(A::from_double(p[i][j]), A::neg(A::from_double(base[j])), hi, lo);
+      Entry<A>& e = T.a[i][j];
+      if (A::is_zero(lo)) {
+        e.n = 1;
+        e.c[0] = hi;
+      } else {
+        e.n = 2;
+        e.c[0] = lo;
+        e.c[1] = hi;
+      }
+    }
+    if (w) {
+      // |d|^2 - (w_i - w_k): products of the difference expansions, then the weights
+      V buf[kEntryCap + 8], tmp[kEntryCap + 8], sq[8], wd[2];
+      int len = 0;
+      A::two_sum(A::from_double(w[i]), A::neg(A::from_double(w[K - 1])), wd[1], wd[0]);
+      wd[0] = A::neg(wd[0]);
+      wd[1] = A::neg(wd[1]);
+      if (A::is_zero(wd[0])) {
+        buf[0] = wd[1];
+        len = 1;
+      } else {
+        buf[0] = wd[0];
+        buf[1] = wd[1];
+        len = 2;
+      }
+      for (int j = 0; j < ncoord; ++j) {
+        const Entry<A>& d = T.a[i][j];
+        // d^2 = Σ_c d_c d (a scale per component, summed)
+        int slen = 0;
+        for (int c = 0; c < d.n; ++c) {
+          V part[4];
+          const int pl = scale_zeroelim<A>(d.n, d.c, d.c[c], part);
+          if (slen == 0) {
+            for (int q = 0; q < pl; ++q) sq[q] = part[q];
+            slen = pl;
+          } else {
+            V t2[8];
+            slen = sum_zeroelim<A>(slen, sq, pl, part, t2);
+            slen = compress<A>(slen, t2);
+            for (int q = 0; q < slen; ++q) sq[q] = t2[q];
+          }
+        }
+        len = sum_zeroelim<A>(len, buf, slen, sq, tmp);
+        len = compress<A>(len, tmp);
+        for (int q = 0; q < len; ++q) buf[q] = tmp[q];
+      }
+      Entry<A>& e = T.a[i][N - 1];
+      e.n = len;
+      for (int q = 0; q < len; ++q) e.c[q] = buf[q];
+    }
+  }
+}
+
+template <class A, int K>
+FF_HD inline int det_translated(const double* const* p, const double* w) {
+  LambdaX<A, K - 1> T;
+  build_translated<A, K>(p, w, T);
+  constexpr unsigned kAll = (1u << (K - 1)) - 1u;
+  return MinorOf<A, K - 1>::sign(T, kAll, kAll);
+}
+
+// Exact sign of det Λ of K points in the given row order; with `sos`, the
+// Simulation-of-Simplicity sign (rows must then be sorted by increasing,
+// distinct point index).
+template <int K>
+FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos) {
+  Range range;
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) range.add(p[i][j]);
+    if (w) range.add(w[i]);
+  }
+  const int degree = w ? K : K - 1;
+  if (range.fits(degree)) {
+    const int s = det_translated<Dbl, K>(p, w);
+    if (s != 0 || !sos) return s;
+    LambdaX<Dbl, K> L;
+    build_lambda<Dbl, K>(p, w, L);
+    return sos_sign<Dbl, K>(L);
+  }
+  const int s = det_translated<XDbl, K>(p, w);
+  if (s != 0 || !sos) return s;
+  LambdaX<XDbl, K> L;
+  build_lambda<XDbl, K>(p, w, L);
+  return sos_sign<XDbl, K>(L);
+}
+
+// A row of a mixed Λ-matrix for the exact stage: an input point (x) or the
+// centroid of `count` input points (src, row-major, `dim` coordinates each),
+// taken as the row (Σ src, count) = count x (centroid, 1) — a positive
+// multiple of the centroid's row, so every sign is unchanged.
+struct MixedRowX {
+  const double* x = nullptr;
+  const double* src = nullptr;
+  int count = 0;
+};
+
+template <class A, int K>
+FF_HD inline void build_lambda_mixed(const MixedRowX* rows, LambdaX<A, K>& L) {
+  constexpr int dim = K - 1;
+  for (int i = 0; i < K; ++i) {
+    if (rows[i].x) {
+      for (int j = 0; j < dim; ++j) L.a[i][j].set(rows[i].x[j]);
+      L.a[i][K - 1].set(1.0);
+    } else {
+      for (int j = 0; j < dim; ++j) sum_entry<A>(rows[i].src + j, dim, rows[i].count, L.a[i][j]);
+      L.a[i][K - 1].set(static_cast<double>(rows[i].count));
+    }
+  }
+}
+
+template <int K>
+FF_HD inline int lambda_exact_mixed(const MixedRowX* rows, bool sos) {
+  constexpr int dim = K - 1;
+  Range range;
+  for (int i = 0; i < K; ++i) {
+    if (rows[i].x) {
+      for (int j = 0; j < dim; ++j) range.add(rows[i].x[j]);
+    } else {
+      for (int t = 0; t < rows[i].count * dim; ++t) range.add(rows[i].src[t]);
+      range.add(8.0 * rows[i].count);  // sums of up to 8 values: 3 more bits of magnitude
+    }
+  }
+  if (range.fits(K - 1)) {
+    LambdaX<Dbl, K> L;
+    build_lambda_mixed<Dbl, K>(rows, L);
+    return det_or_sos<Dbl, K>(L, sos);
+  }
+  LambdaX<XDbl, K> L;
+  build_lambda_mixed<XDbl, K>(rows, L);
+  return det_or_sos<XDbl, K>(L, sos);
+}
+
+}  // namespace flipflop::pred::xp

@@ -1,0 +1,86 @@
+// staged.hpp — the default evaluation of every predicate, stage by stage,
+// header-only and __host__ __device__ (the CUDA kernels and their thrust/OpenMP
+// build call it directly; predicates.cpp dispatches to it):
+//
+//   1. static filter      per-input bound (static_filter.hpp), when a
+//                         StaticFilter of the input is given;
+//   2. semi-static filter per-call bound from the column magnitudes
+//                         (static_filter.hpp);
+//   3. dynamic filter     ErrDouble running error bound (lambda_filter.hpp);
+//   4. exact              expansion arithmetic (exact_expansion.hpp), rows
+//                         sorted by point index;
+//   5. SoS                the perturbation terms on the same expansions, when
+//                         the exact determinant is 0 and ids are given.
+//
+// Stages 1-3 return a sign only when it is certain; 4-5 always decide. No
+// stage allocates memory or recurses. GMP (Mode::gmp in predicates.hpp) is the
+// independent oracle the property tests compare every stage with.
+#pragma once
+
+#include "predicates/exact_expansion.hpp"
+#include "predicates/lambda_filter.hpp"
+#include "predicates/static_filter.hpp"
+
+namespace flipflop::pred {
+
+// Sorts row positions by point index (insertion sort, K <= 8) and returns the
+// parity of the permutation, or 0 if an index repeats (two rows are the same
+// point: the determinant is 0 even under the perturbation).
+template <class Id>
+FF_HD inline int sort_rows_by_id(int k, const Id* ids, int* order) {
+  for (int i = 0; i < k; ++i) order[i] = i;
+  if (!ids) return 1;
+  int parity = 1;
+  for (int i = 1; i < k; ++i) {
+    for (int j = i; j > 0 && ids[order[j - 1]] > ids[order[j]]; --j) {
+      const int t = order[j - 1];
+      order[j - 1] = order[j];
+      order[j] = t;
+      parity = -parity;
+    }
+  }
+  for (int i = 1; i < k; ++i)
+    if (ids[order[i - 1]] == ids[order[i]]) return 0;
+  return parity;
+}
+
+template <class Id>
+FF_HD inline bool repeated_id(int k, const Id* ids) {
+  if (!ids) return false;
+  for (int i = 1; i < k; ++i)
+    for (int j = 0; j < i; ++j)
+      if (ids[i] == ids[j]) return true;
+  return false;
+}
+
+// Stages 4-5: exact sign (sos = false, may be 0) or SoS sign of det Λ with the
+// rows in the given order (the rows are sorted by id internally).
+template <int K, class Id>
+FF_HD inline int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
+                                     bool sos) {
+  int order[K];
+  const int parity = sort_rows_by_id(K, sos ? ids : static_cast<const Id*>(nullptr), order);
+  if (parity == 0) return 0;
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w ? w[order[i]] : 0.0;
+  }
+  return parity * xp::lambda_exact<K>(sp, w ? sw : nullptr, sos);
+}
+
+// The whole default path for K points. `f` may be null (no static filter);
+// `ids` may be null (exact sign, may be 0).
+template <int K, class Id>
+FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p,
+                                    const double* w) {
+  if (repeated_id(K, ids)) return 0;
+  if (f)
+    if (const int s = static_sign<K>(*f, p, w)) return s;
+  if (const int s = semi_static_sign<K>(p, w)) return s;
+  if (const int s = lambda_sign_filter<K>(p, w)) return s;
+  return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+}
+
+}  // namespace flipflop::pred

@@ -1,0 +1,288 @@
+// static_filter.hpp — the two cheap filters in front of every predicate: a
+// per-input *static* bound (thesis §6.4.2, "precomputed error bound"; CGAL's
+// static filters) and a per-call *semi-static* bound (CGAL's semi-static
+// filters, Shewchuk's errbound A with magnitudes taken column by column).
+//
+// Both evaluate det Λ as det T, the (N x N) determinant of differences of
+// lambda_filter.hpp (N = k - 1): t_ij = fl(p_i[j] - p_k[j]), and for a lifted
+// matrix the last column t_iN = fl(fl(Σ_j fl(d_ij^2)) - fl(w_i - w_k)), d_ij the
+// rounded differences; then det T by the same Laplace expansion over column
+// subsets as det_by_minors (plain doubles, no error terms).
+//
+// ============================================================================
+// The bound (derivation)
+// ============================================================================
+// Notation: u = 2^-53 (unit roundoff), gamma_m = m u / (1 - m u) [Higham,
+// Lemma 3.1]: a product of m factors (1 + δ_i)^{±1}, |δ_i| <= u, equals
+// 1 + θ with |θ| <= gamma_m.
+//
+// (1) Without underflow, every floating-point operation is fl(x op y) =
+//     (x op y)(1 + δ). The computed determinant is then Σ_σ sgn σ Π_i t_iσ(i)
+//     (1 + θ_σ), where t are the *exact* entries and θ_σ collects the
+//     roundings along the path of the term σ:
+//       - one per entry (the difference p_i[j] - p_k[j]);
+//       - one per product of a level (det_by_minors levels 2..N: N - 1);
+//       - the additions of each level: level r adds r terms, a term passes
+//         through at most r - 1 of them: Σ_{r=2..N} (r - 1) = N(N-1)/2.
+//     For a lifted entry, each monomial d_ij^2 takes 2 (the difference,
+//     squared) + 1 (the square) + (N - 2) (the sum over N - 1 monomials and
+//     the weight difference) roundings, and w_i - w_k takes 1 + (N - 1);
+//     both are <= N + 1, i.e. N more than a plain entry. Hence
+//         m_plain(N)  = N + (N - 1) + N(N-1)/2,
+//         m_lifted(N) = m_plain(N) + N,
+//     and |computed - exact| <= gamma_m · per(|T|), where per(|T|) is the
+//     permanent of the entries' magnitudes, a lifted entry counting as
+//     Σ_j d_ij^2 + |w_i - w_k| (exact). per(|T|) <= N! Π_c m_c for any column
+//     bounds m_c >= max_i |t_ic|.
+// (2) The bounds m_c are themselves computed: from rounded entries (|t| <=
+//     |fl(t)| / (1 - u)), multiplied in floating point (N - 1 roundings down)
+//     and multiplied by the constant (1 more). All of it is covered by the
+//     factor (1 + 2^-30) on the constant (needs (1 - u)^{-3N} <= 1 + 2^-30,
+//     true for N <= 7 by a margin of 2^20).
+// (3) Underflow. Sums and differences are exact when their result is
+//     subnormal (IEEE 754 gradual underflow), so only products can lose more
+//     than the relative bound: at most 2^-1075 absolutely each.
+//     - static filter: the bound is used only when every input coordinate and
+//       weight is a multiple of 2^L with D·min(L, 0) >= -1074, D the degree of
+//       the determinant (N, or N + 1 lifted). Every computed value is then a
+//       multiple of 2^-1074 (rounding keeps multiples of a power of two), so a
+//       product never loses bits to underflow and (1) holds as stated.
+//     - semi-static filter: the bound is used only when every column bound
+//       lies in [2^-B, 2^B] with B = floor(960 / N). An absolute error of at
+//       most 2^-1075 per product is multiplied afterwards only by entries of
+//       other columns, |t| <= max(m_c, 1), so the total is at most
+//       P_N 2^-1075 Π_c max(m_c, 1) <= P_N 2^-1075 2^{BN} Π_c m_c
+//       <= 2^{12-1075+960} Π_c m_c = 2^-103 Π_c m_c (P_N <= N 2^N + N^2 <= 2^12
+//       products), covered by adding 2^-100 to the constant.
+// (4) Overflow: the semi-static window keeps Π_c m_c <= 2^960 and every
+//     intermediate below 2^1000; the static filter is disabled when
+//     N! Π_c m_c >= 2^1000. An infinite or NaN computed value never passes
+//     the test |det| > bound.
+// Sign decision: |fl(det)| > bound, with bound = C_N Π_c m_c computed as above.
+//
+// Static column bounds (once per input): M = the largest |coordinate| of the
+// input, W = the largest |weight|: plain columns m = 2M (|fl(a - b)| <= fl(2M)
+// by monotonicity of rounding), the lifted column m = (N - 1)(2M)^2 + 2W
+// (times (1 + 2^-40) for the roundings of this bound itself).
+//
+// Header-only and __host__ __device__.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#include "predicates/err_double.hpp"
+#include "predicates/lambda_filter.hpp"
+
+namespace flipflop::pred {
+
+namespace filter_detail {
+
+// number of roundings along the path of one term of det T (see (1))
+FF_HD constexpr int rounding_depth(int n, bool lifted) {
+  return n + (n - 1) + n * (n - 1) / 2 + (lifted ? n : 0);
+}
+FF_HD constexpr double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+// C_N of (1)-(3): gamma_m N! (1 + 2^-30) + 2^-100, rounded up generously.
+FF_HD constexpr double bound_constant(int n, bool lifted) {
+  const double m = rounding_depth(n, lifted);
+  const double u = 0x1p-53;
+  return (m * u / (1.0 - m * u)) * factorial(n) * (1.0 + 0x1p-30) + 0x1p-100;
+}
+// semi-static window exponent B_N of (3)
+FF_HD constexpr int window_exponent(int n) { return 960 / n; }
+
+// Entries of T in plain doubles (the evaluation the bounds are derived for);
+// `mag` receives the column bounds m_c (max |t_ic|; for a lifted column the
+// max of Σ d^2 + |Δw|).
+template <int K, bool kMag = true>
+FF_HD inline void differences(const double* const* p, const double* w, double* t, double* mag) {
+  constexpr int N = K - 1;
+  const double* base = p[K - 1];
+  if constexpr (kMag)
+    for (int j = 0; j < N; ++j) mag[j] = 0.0;
+  if (w == nullptr) {
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const double d = p[i][j] - base[j];
+        t[i * N + j] = d;
+        if constexpr (kMag) mag[j] = std::fmax(mag[j], std::fabs(d));
+      }
+  } else {
+    constexpr int M = N - 1;
+    for (int i = 0; i < N; ++i) {
+      double lift = 0.0;
+      for (int j = 0; j < M; ++j) {
+        const double d = p[i][j] - base[j];
+        t[i * N + j] = d;
+        if constexpr (kMag) mag[j] = std::fmax(mag[j], std::fabs(d));
+        lift = (j == 0) ? d * d : lift + d * d;
+      }
+      const double dw = w[i] - w[K - 1];
+      t[i * N + M] = lift - dw;
+      if constexpr (kMag) mag[M] = std::fmax(mag[M], lift + std::fabs(dw));
+    }
+  }
+}
+
+// det T by Laplace expansion over column subsets, plain doubles (same
+// operation structure as det_by_minors<N>; explicit for N = 2, 3).
+template <int N>
+FF_HD inline double det_plain(const double* t) {
+  if constexpr (N == 1) {
+    return t[0];
+  } else if constexpr (N == 2) {
+    return t[0] * t[3] - t[1] * t[2];
+  } else if constexpr (N == 3) {
+    const double m01 = t[0] * t[4] - t[1] * t[3];
+    const double m02 = t[0] * t[5] - t[2] * t[3];
+    const double m12 = t[1] * t[5] - t[2] * t[4];
+    return t[6] * m12 - t[7] * m02 + t[8] * m01;
+  } else {
+    constexpr int kSubsets = 1 << N;
+    double d[kSubsets];
+    for (int j = 0; j < N; ++j) d[1 << j] = t[j];
+    for (int r = 2; r <= N; ++r) {
+      for (int s = 1; s < kSubsets; ++s) {
+        if (popcount_small(static_cast<unsigned>(s)) != r) continue;
+        double acc = 0.0;
+        bool first = true;
+        int pos = 0;
+        for (int j = 0; j < N; ++j) {
+          if (!(s & (1 << j))) continue;
+          const double term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
+          const bool negative = ((r - 1 + pos) & 1) != 0;
+          if (first) {
+            acc = negative ? -term : term;
+            first = false;
+          } else {
+            acc = negative ? acc - term : acc + term;
+          }
+          ++pos;
+        }
+        d[s] = acc;
+      }
+    }
+    return d[kSubsets - 1];
+  }
+}
+
+FF_HD inline int sign_beyond(double det, double bound) {
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return 0;  // also NaN
+}
+
+}  // namespace filter_detail
+
+// Per-call semi-static filter on K points (see (1)-(4)).
+template <int K>
+FF_HD inline int semi_static_sign(const double* const* p, const double* w) {
+  constexpr int N = K - 1;
+  double t[N * N], mag[N];
+  filter_detail::differences<K>(p, w, t, mag);
+  const int B = filter_detail::window_exponent(N);
+  const double wlo = std::ldexp(1.0, -B), whi = std::ldexp(1.0, B);
+  double prod = filter_detail::bound_constant(N, w != nullptr);
+  for (int c = 0; c < N; ++c) {
+    if (!(mag[c] >= wlo && mag[c] <= whi)) return 0;  // outside the window (or NaN)
+    prod *= mag[c];
+  }
+  return filter_detail::sign_beyond(filter_detail::det_plain<N>(t), prod);
+}
+
+// The per-input static filter: bounds for every k (2..8), plain and lifted.
+class StaticFilter {
+ public:
+  // A filter that decides nothing (bounds +inf).
+  FF_HD StaticFilter() {
+    for (int i = 0; i < 9; ++i) plain_[i] = lifted_[i] = HUGE_VAL;
+  }
+
+  // From n points of `dim` coordinates (row-major) and optional weights.
+  // Every predicate call whose coordinates and weights are among these values
+  // (any subset of points, any coordinate projection) may use the bounds.
+  static StaticFilter for_points(const double* coords, std::size_t n, int dim,
+                                 const double* weights = nullptr) {
+    StaticFilter f;
+    double M = 0.0, W = 0.0;
+    int lsb = 0;  // min(L, 0) over every value, L the exponent of its lowest set bit
+    bool finite = true;
+    auto scan = [&](double x, double& mx) {
+      if (!std::isfinite(x)) {
+        finite = false;
+        return;
+      }
+      mx = std::fmax(mx, std::fabs(x));
+      if (x != 0.0) {
+        int e = 0;
+        double frac = std::frexp(x, &e);  // x = frac 2^e, 53-bit integer mantissa frac 2^53
+        auto mant = static_cast<std::int64_t>(std::ldexp(std::fabs(frac), 53));
+        int tz = 0;
+        while ((mant & 1) == 0) {
+          mant >>= 1;
+          ++tz;
+        }
+        const int low = e - 53 + tz;
+        if (low < lsb) lsb = low;
+      }
+    };
+    for (std::size_t i = 0; i < n * static_cast<std::size_t>(dim); ++i) scan(coords[i], M);
+    if (weights)
+      for (std::size_t i = 0; i < n; ++i) scan(weights[i], W);
+    if (!finite || n == 0) return f;
+    for (int k = 2; k <= 8; ++k) {
+      const int N = k - 1;
+      // plain: degree N
+      if (static_cast<long>(N) * lsb >= -1074) {
+        double b = filter_detail::bound_constant(N, false);
+        for (int c = 0; c < N; ++c) b *= 2.0 * M;
+        if (b * filter_detail::factorial(N) < 0x1p1000 && b > 0.0) f.plain_[k] = b;
+        if (M == 0.0) f.plain_[k] = HUGE_VAL;
+      }
+      // lifted: degree N + 1
+      if (k >= 3 && static_cast<long>(N + 1) * lsb >= -1074) {
+        const double liftmag = ((N - 1) * (2.0 * M) * (2.0 * M) + 2.0 * W) * (1.0 + 0x1p-40);
+        double b = filter_detail::bound_constant(N, true) * liftmag;
+        for (int c = 0; c + 1 < N; ++c) b *= 2.0 * M;
+        if (b * filter_detail::factorial(N) < 0x1p1000 && b > 0.0 && M > 0.0) f.lifted_[k] = b;
+      }
+    }
+    return f;
+  }
+
+  // The bound for det Λ of k points, lifted or not (+inf: cannot decide).
+  FF_HD double bound(int k, bool lifted) const {
+    if (k < 2 || k > 8) return HUGE_VAL;
+    return lifted ? lifted_[k] : plain_[k];
+  }
+
+  // Test hook: every bound multiplied by `factor` (a weakened filter for the
+  // sensitivity check of the test suite; never used by the library).
+  StaticFilter scaled_for_testing(double factor) const {
+    StaticFilter g = *this;
+    for (int i = 0; i < 9; ++i) {
+      g.plain_[i] *= factor;
+      g.lifted_[i] *= factor;
+    }
+    return g;
+  }
+
+ private:
+  double plain_[9];
+  double lifted_[9];
+};
+
+// Static filter sign of det Λ of K points: +1/-1 when |det| exceeds the
+// per-input bound, 0 otherwise.
+template <int K>
+FF_HD inline int static_sign(const StaticFilter& f, const double* const* p, const double* w) {
+  constexpr int N = K - 1;
+  double t[N * N];
+  filter_detail::differences<K, false>(p, w, t, nullptr);
+  return filter_detail::sign_beyond(filter_detail::det_plain<N>(t), f.bound(K, w != nullptr));
+}
+
+}  // namespace flipflop::pred
