@@ -40,7 +40,7 @@
 // kCapD = 44. Outside it (1e±300 inputs, subnormals mixed with large values)
 // the same algorithms run on xp::XDbl, whose exponent is unbounded: exact on
 // every finite input. There H <= 1024 D + 23 and L >= -1074 D, so lengths
-// are at most (2098 D + 23)/52 + 2: kCapX(K) with D <= K.
+// are at most (2098 D + 23)/52 + 2: cap_x(D), D <= K + 1 for a K x K minor.
 //
 // Stack per call (bytes, the buffers below; K = number of rows):
 //   Λ entries: K^2 x 16 components;  Dbl minors: 2 levels of C(K, K/2)
@@ -60,7 +60,18 @@ namespace flipflop::pred::xp {
 
 constexpr int kCapD = 44;
 FF_HD constexpr int cap_x(int k) { return (2098 * k + 23) / 52 + 3; }
-constexpr int kEntryCap = 28;  // one Λ or T entry: raw lifted <= 2(K-2)+1, translated lifted <= 4(K-2)+2, centroid row <= 8
+// Components of one Λ or T entry (K <= 8). Without compression an entry has
+// at most as many components as the terms it sums (sum_zeroelim and compress
+// never lengthen): raw lifted |x|^2 - w <= 2(K-2) + 1 = 13, centroid sum <= 8,
+// translated lifted |d|^2 - (w_i - w_k) <= 8(K-2) + 2 = 50 (each d_j^2 of a
+// two-component difference <= 8). Dbl compresses to the window's length bound
+// (expansion.hpp): values below 2^(2(E+ + 1) + 3), grid 2^(2 L-), D >= 4 for a
+// lifted entry: (1900/4 + 3 + 2148/4)/52 + 2 < 22 <= 28. XDbl has no window:
+// the term count, 50.
+template <class A>
+constexpr int entry_cap() {
+  return A::kExtended ? 50 : 28;
+}
 
 FF_HD inline int ctz64(std::uint64_t x) {
 #if defined(__CUDA_ARCH__)
@@ -122,8 +133,9 @@ struct Range {
 template <class A>
 struct Entry {
   using T = typename A::T;
+  static constexpr int kCap = entry_cap<A>();
   int n = 1;
-  T c[kEntryCap];
+  T c[kCap];
   FF_HD Entry() { c[0] = A::zero(); }
   FF_HD void set(double v) {
     n = 1;
@@ -136,7 +148,7 @@ struct Entry {
 template <class A>
 FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A>& out) {
   using T = typename A::T;
-  T buf[kEntryCap], tmp[kEntryCap];
+  T buf[entry_cap<A>()], tmp[entry_cap<A>()];
   int len = 1;
   buf[0] = A::neg(A::from_double(w));
   for (int j = 0; j < m; ++j) {
@@ -157,7 +169,7 @@ FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A>& out) 
 template <class A>
 FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A>& out) {
   using T = typename A::T;
-  T buf[kEntryCap], tmp[kEntryCap];
+  T buf[entry_cap<A>()], tmp[entry_cap<A>()];
   int len = 1;
   buf[0] = A::from_double(v[0]);
   for (int i = 1; i < count; ++i) {
@@ -219,14 +231,26 @@ FF_HD inline int add_product(int cap, int n, typename A::T* acc, const Entry<A>&
   return len;
 }
 
-// ---- Dbl: minors by Laplace over column subsets, one level at a time -------
-template <int K>
-struct MinorDbl {
+// ---- Minors by Laplace over column subsets, one level at a time ---------------
+// Level l holds the l x l minors on the first l kept rows and every l-subset of
+// the kept columns; level l+1 expands each of its minors along its last row:
+// Σ_l C(r, l) l = r 2^(r-1) products in all (against r! r for the sum over
+// permutations). Capacity per expansion: kCapD (Dbl, the window's bound) or
+// cap_x(K + 1) (XDbl, see the top of this file).
+template <class A>
+FF_HD constexpr int minor_cap(int k) {
+  return A::kExtended ? cap_x(k + 1) : kCapD;
+}
+
+template <class A, int K>
+struct MinorLaplace {
   static constexpr int kLevel = binom(K, K / 2);
-  using E = Exp<Dbl, kCapD>;
+  static constexpr int kCap = minor_cap<A>(K);
+  using T = typename A::T;
+  using E = Exp<A, kCap>;
 
   // sign of the minor of L on the kept rows / columns (bit masks, equal popcount)
-  FF_HD static int sign(const LambdaX<Dbl, K>& L, unsigned rows, unsigned cols) {
+  FF_HD static int sign(const LambdaX<A, K>& L, unsigned rows, unsigned cols) {
     int ri[K], ci[K], r = 0, nc = 0;
     for (int i = 0; i < K; ++i)
       if (rows & (1u << i)) ri[r++] = i;
@@ -234,16 +258,15 @@ struct MinorDbl {
       if (cols & (1u << j)) ci[nc++] = j;
     if (r == 0) return 1;
     E lev[2][kLevel];
-    double scaled[2 * kCapD], part[3 * kCapD], sum[3 * kCapD];
+    T scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
     // rank of each column subset among the subsets of its size (in increasing order)
     unsigned char rank[1u << K];
     int counter[K + 1] = {};
     for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
-    auto subset_rank = [&](unsigned s) { return rank[s]; };
     // level 1: row ri[0], single columns
     for (int j = 0; j < r; ++j) {
-      const Entry<Dbl>& e = L.a[ri[0]][ci[j]];
-      E& d = lev[1][subset_rank(1u << j)];
+      const Entry<A>& e = L.a[ri[0]][ci[j]];
+      E& d = lev[1][rank[1u << j]];
       d.n = e.n;
       for (int t = 0; t < e.n; ++t) d.c[t] = e.c[t];
     }
@@ -253,18 +276,18 @@ struct MinorDbl {
       const E* prev = lev[(l - 1) & 1];
       for (unsigned s = 1; s <= full; ++s) {
         if (popcount32(s) != l) continue;
-        E& d = cur[subset_rank(s)];
+        E& d = cur[rank[s]];
         d.n = 1;
-        d.c[0] = 0.0;
+        d.c[0] = A::zero();
         int pos = 0;
         for (int j = 0; j < r; ++j) {
           if (!(s & (1u << j))) continue;
-          const E& sub = prev[subset_rank(s & ~(1u << j))];
-          const Entry<Dbl>& e = L.a[ri[l - 1]][ci[j]];
+          const E& sub = prev[rank[s & ~(1u << j)]];
+          const Entry<A>& e = L.a[ri[l - 1]][ci[j]];
           const bool negative = ((l - 1 + pos) & 1) != 0;  // (-1)^((l-1) + pos)
           ++pos;
           if (sub.zero() || e.zero()) continue;
-          d.n = add_product<Dbl>(kCapD, d.n, d.c, e, sub.n, sub.c, negative, scaled, part, sum);
+          d.n = add_product<A>(kCap, d.n, d.c, e, sub.n, sub.c, negative, scaled, part, sum);
         }
       }
     }
@@ -275,7 +298,9 @@ struct MinorDbl {
 // ---- XDbl: minors as sums over permutations (little memory) ------------------
 template <int K>
 struct MinorX {
-  static constexpr int kCap = cap_x(K);
+  // degree of a K x K minor in the input values: at most K + 1 (a lifted
+  // column counts 2) — the translated T of K + 1 points is K x K of degree K + 1
+  static constexpr int kCap = cap_x(K + 1);
   using T = XD;
 
   FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
@@ -339,12 +364,25 @@ struct MinorX {
   }
 };
 
+// Which minor algorithm: Laplace levels, except XDbl on the device, where the
+// levels' stack (2 C(K, K/2) cap_x(K+1) x 16 bytes: 78 KB at K = 5) would
+// dominate the kernel's frame and the sum over permutations needs about
+// 11 cap_x(K+1) x 16 bytes (43 KB at K = 5). FF_XDBL_PERMUTATIONS selects the
+// device choice on the host too (tests: exact_expansion_minor_test).
+#if defined(__CUDA_ARCH__) || defined(FF_XDBL_PERMUTATIONS)
+constexpr bool kXdblPermutations = true;
+#else
+constexpr bool kXdblPermutations = false;
+#endif
 template <class A, int K>
-struct MinorOf;
+struct MinorOf : MinorLaplace<A, K> {};
 template <int K>
-struct MinorOf<Dbl, K> : MinorDbl<K> {};
-template <int K>
-struct MinorOf<XDbl, K> : MinorX<K> {};
+struct MinorOf<XDbl, K> {
+  FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
+    if constexpr (kXdblPermutations) return MinorX<K>::sign(L, rows, cols);
+    else return MinorLaplace<XDbl, K>::sign(L, rows, cols);
+  }
+};
 
 // ---- Simulation of Simplicity ----------------------------------------------
 // The sign of det Λ(ε) is the sign of the first non-zero signed complementary
@@ -524,7 +562,7 @@ FF_HD inline void build_translated(const double* const* p, const double* w, Lamb
     }
     if (w) {
       // |d|^2 - (w_i - w_k): products of the difference expansions, then the weights
-      V buf[kEntryCap + 8], tmp[kEntryCap + 8], sq[8], wd[2];
+      V buf[entry_cap<A>() + 8], tmp[entry_cap<A>() + 8], sq[8], wd[2];
       int len = 0;
       A::two_sum(A::from_double(w[i]), A::neg(A::from_double(w[K - 1])), wd[1], wd[0]);
       wd[0] = A::neg(wd[0]);

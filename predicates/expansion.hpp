@@ -46,6 +46,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "predicates/err_double.hpp"  // FF_HD
 
@@ -119,12 +120,31 @@ struct XDbl {
   using T = XD;
   static constexpr bool kExtended = true;
 
+  // v 2^e as (m, e): frexp by its bits for a normal v (every value two_sum and
+  // two_product below produce: they are >= 2^-114 in magnitude), the library
+  // frexp for a subnormal input value.
   FF_HD static T norm(double v, int e) {
     T r;
     if (v == 0.0) return r;
-    int ex = 0;
-    r.m = std::frexp(v, &ex);  // exact
-    r.e = e + ex;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    if (biased == 0) {
+      int ex = 0;
+      r.m = std::frexp(v, &ex);  // exact
+      r.e = e + ex;
+      return r;
+    }
+    bits = (bits & ~(std::uint64_t{0x7ff} << 52)) | (std::uint64_t{1022} << 52);
+    std::memcpy(&r.m, &bits, sizeof bits);  // same significand, in [1/2, 1)
+    r.e = e + biased - 1022;
+    return r;
+  }
+  // 2^d for -1022 <= d <= 1023 (a normal power of two, built from its bits)
+  FF_HD static double pow2(int d) {
+    const std::uint64_t bits = static_cast<std::uint64_t>(d + 1023) << 52;
+    double r = 0.0;
+    std::memcpy(&r, &bits, sizeof bits);
     return r;
   }
   FF_HD static T from_double(double x) { return norm(x, 0); }
@@ -167,7 +187,7 @@ struct XDbl {
       y = a_big ? b : a;
       return;
     }
-    const double am = std::ldexp(a.m, a.e - E), bm = std::ldexp(b.m, b.e - E);
+    const double am = a.m * pow2(a.e - E), bm = b.m * pow2(b.e - E);  // exact: >= 2^-61
     double s = 0.0, t = 0.0;
     Dbl::two_sum(am, bm, s, t);
     x = norm(s, E);

@@ -317,10 +317,31 @@ int dot2d_exact(const double* a, const double* b, const double* c) {
   ErrDouble ux = ErrDouble(b[0]) - ErrDouble(a[0]), uy = ErrDouble(b[1]) - ErrDouble(a[1]);
   ErrDouble vx = ErrDouble(c[0]) - ErrDouble(b[0]), vy = ErrDouble(c[1]) - ErrDouble(b[1]);
   if (int s = sign_if_certain(ux * vx + uy * vy)) return s;
-  using namespace exact;
-  Dyadic dux = sub(to_dyadic(b[0]), to_dyadic(a[0])), duy = sub(to_dyadic(b[1]), to_dyadic(a[1]));
-  Dyadic dvx = sub(to_dyadic(c[0]), to_dyadic(b[0])), dvy = sub(to_dyadic(c[1]), to_dyadic(b[1]));
-  return sign(add(mul(dux, dvx), mul(duy, dvy)));
+  // exactly, in unbounded-exponent expansion arithmetic (any finite input):
+  // each difference is an expansion of <= 2 components, each product <= 8,
+  // their sum <= 16.
+  using A = xp::XDbl;
+  using V = A::T;
+  auto diff = [](double p, double q, V* out) {
+    V hi, lo;
+    A::two_sum(A::from_double(p), A::neg(A::from_double(q)), hi, lo);
+    out[0] = lo;
+    out[1] = hi;
+  };
+  auto product = [](const V* u, const V* v, V* out) {
+    V s0[4], s1[4];
+    const int l0 = xp::scale_zeroelim<A>(2, u, v[0], s0);
+    const int l1 = xp::scale_zeroelim<A>(2, u, v[1], s1);
+    return xp::sum_zeroelim<A>(l0, s0, l1, s1, out);
+  };
+  V dux[2], duy[2], dvx[2], dvy[2], px[8], py[8], sum[16];
+  diff(b[0], a[0], dux);
+  diff(b[1], a[1], duy);
+  diff(c[0], b[0], dvx);
+  diff(c[1], b[1], dvy);
+  const int lx = product(dux, dvx, px), ly = product(duy, dvy, py);
+  const int len = xp::sum_zeroelim<A>(lx, px, ly, py, sum);
+  return xp::sign_of<A>(len, sum);
 }
 
 }  // namespace flipflop::pred

@@ -64,13 +64,20 @@
 // the rules of §2.2 from predicates on real points.
 //
 // ============================================================================
-// Two stages, two implementations
+// Stages (staged.hpp), two implementations
 // ============================================================================
 //
-// Mode::filtered (default): ErrDouble filter with a proven error bound
-// (err_double.hpp); when the filter cannot certify a sign, the exact GMP stage
-// decides. Mode::gmp: GMP only (the reference). Both return the same sign on
-// every input — checked by properties in proptests/.
+// Mode::filtered (default): no GMP, no heap, header-usable on the device —
+//   1. static filter (static_filter.hpp): an error bound computed once per
+//      input from its largest magnitudes (overloads taking a StaticFilter);
+//   2. semi-static filter: a bound from this call's column magnitudes;
+//   3. dynamic filter: ErrDouble running error bound (err_double.hpp);
+//   4. exact: Shewchuk's expansion arithmetic (expansion.hpp,
+//      exact_expansion.hpp), double components inside a proven exponent
+//      window, unbounded-exponent components outside it (1e±300, subnormals);
+//   5. Simulation of Simplicity on the same expansions.
+// Mode::gmp: GMP only — the independent oracle of the property tests. Both
+// return the same sign on every input (proptests/predicates_stages_test.cpp).
 //
 // Conventions (determinant with the 1-column last, i.e. Shewchuk's signs):
 //   orient2d(a,b,c) > 0  iff a, b, c are counter-clockwise.
