@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernels_cuda/backend.cuh"
 #include "kernels_cuda/classify.hpp"
 #include "predicates/err_double.hpp"
 #include "predicates/lambda_filter.hpp"
@@ -59,50 +60,8 @@ struct IsUndecided {
 };
 
 // ---- Where the data lives and how steps run ---------------------------------
-#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-// OpenMP: the "device" is the host. Buffers are std::vector, the functor reads
-// the caller's arrays in place, and below a grain size one thread does the
-// work: opening a parallel region costs more than it saves there, and on a
-// loaded machine OpenMP's spinning barriers cost most of all.
+// Buffers and steps: backend.cuh; the OpenMP grain size for this kernel.
 constexpr std::size_t kParallelFrom = std::size_t{1} << 14;
-template <class T>
-using Buffer = std::vector<T>;
-template <class T>
-const T* to_device(const T* first, std::size_t, Buffer<T>&) {
-  return first;
-}
-template <class T>
-std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
-  b.resize(count);
-  return std::move(b);
-}
-template <class Step>
-void run_step(std::size_t n, Step&& step) {
-  if (n < kParallelFrom)
-    step(thrust::seq);
-  else
-    step(thrust::omp::par);
-}
-#else
-// CUDA: copies to and from device memory; every step runs on the device.
-template <class T>
-using Buffer = thrust::device_vector<T>;
-template <class T>
-const T* to_device(const T* first, std::size_t count, Buffer<T>& b) {
-  b.assign(first, first + count);
-  return thrust::raw_pointer_cast(b.data());
-}
-template <class T>
-std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
-  std::vector<T> h(count);
-  thrust::copy(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(count), h.begin());
-  return h;
-}
-template <class Step>
-void run_step(std::size_t, Step&& step) {
-  step(thrust::device);
-}
-#endif
 
 // Host-side checks of the preconditions (classify.hpp).
 template <int D>
@@ -127,28 +86,28 @@ std::vector<int> classify(const PointSet& pts, std::size_t n_facets, const Index
                           const char* who) {
   validate<D>(pts, n_facets, facets, facet_of_point, who);
   const std::size_t n = pts.size();
-  Buffer<double> b_coords;
-  Buffer<Index> b_facets, b_fop;
-  const double* coords = to_device(pts.coords.data(), pts.coords.size(), b_coords);
-  const Index* d_facets = to_device(facets, n_facets * D, b_facets);
-  const Index* d_fop = to_device(facet_of_point.data(), n, b_fop);
+  backend::Buffer<double> b_coords;
+  backend::Buffer<Index> b_facets, b_fop;
+  const double* coords = backend::to_device(pts.coords.data(), pts.coords.size(), b_coords);
+  const Index* d_facets = backend::to_device(facets, n_facets * D, b_facets);
+  const Index* d_fop = backend::to_device(facet_of_point.data(), n, b_fop);
   thrust::counting_iterator<std::size_t> first(0), last(n);
 
   // Stage 1: filtered signs for all points.
-  Buffer<int> b_sign(n);
+  backend::Buffer<int> b_sign(n);
   const FilterSign<D + 1> filter{coords, d_facets, d_fop};
-  run_step(n, [&](auto policy) { thrust::transform(policy, first, last, b_sign.begin(), filter); });
+  backend::run_step<kParallelFrom>(n, [&](auto policy) { thrust::transform(policy, first, last, b_sign.begin(), filter); });
 
   // Compact the undecided points (stream compaction keeps stage 2 small).
-  Buffer<std::size_t> b_undecided(n);
+  backend::Buffer<std::size_t> b_undecided(n);
   std::size_t n_undecided = 0;
-  run_step(n, [&](auto policy) {
+  backend::run_step<kParallelFrom>(n, [&](auto policy) {
     n_undecided = static_cast<std::size_t>(
         thrust::copy_if(policy, first, last, b_sign.begin(), b_undecided.begin(), IsUndecided()) -
         b_undecided.begin());
   });
-  std::vector<int> sign = to_host(b_sign, n);
-  const std::vector<std::size_t> undecided = to_host(b_undecided, n_undecided);
+  std::vector<int> sign = backend::to_host(b_sign, n);
+  const std::vector<std::size_t> undecided = backend::to_host(b_undecided, n_undecided);
 
   // Stage 2: exact signs (GMP) for the undecided points, on the host.
   for (std::size_t i : undecided) {

@@ -4,6 +4,7 @@
 // with 77, which ctest reports as skipped (SKIP_RETURN_CODE), never as passed.
 #include <cstdio>
 
+#include "kernels_cuda/device_test.hpp"
 #include "kernels_cuda/classify.hpp"
 #include "kernels_cuda/classify_inputs.hpp"
 
@@ -30,12 +31,7 @@ bool check(kt::Family fam, std::size_t n, std::uint64_t seed) {
 }  // namespace
 
 int main() {
-  const int devices = kernels_cuda::device_count();
-  if (devices <= 0) {
-    std::printf("no CUDA device: skipped\n");
-    return 77;
-  }
-  std::printf("CUDA devices: %d\n", devices);
+  kernels_cuda::require_device();
   bool ok = true;
   for (kt::Family fam : {kt::Family::random, kt::Family::lattice, kt::Family::near_degenerate})
     for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{1000}, std::size_t{200000}}) {

@@ -52,6 +52,9 @@
 
 #include <cstdint>
 #include <cstring>
+#if !defined(__CUDA_ARCH__)
+#include <stdexcept>
+#endif
 
 #include "predicates/expansion.hpp"
 #include "predicates/lambda_filter.hpp"
@@ -69,7 +72,7 @@ FF_HD constexpr int cap_x(int k) { return (2098 * k + 23) / 52 + 3; }
 // lifted entry: (1900/4 + 3 + 2148/4)/52 + 2 < 22 <= 28. XDbl has no window:
 // the term count, 50.
 template <class A>
-constexpr int entry_cap() {
+FF_HD constexpr int entry_cap() {
   return A::kExtended ? 50 : 28;
 }
 
@@ -103,11 +106,16 @@ FF_HD inline int popcount32(unsigned x) {
 struct Range {
   int ehi = -100000;  // |v| < 2^ehi for every v
   int llo = 100000;   // every v is a multiple of 2^llo
+  bool finite = true;
   FF_HD void add(double v) {
     if (v == 0.0) return;
     std::uint64_t bits = 0;
     std::memcpy(&bits, &v, sizeof bits);
     const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+    if (biased == 0x7ff) {  // inf or NaN: no exact sign
+      finite = false;
+      return;
+    }
     std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
     int e = 0, low = 0;
     if (biased == 0) {  // subnormal: mant 2^-1074
@@ -128,6 +136,18 @@ struct Range {
     return degree * (ep + 1) <= 950 && degree * lm >= -1074;
   }
 };
+
+// Inputs must be finite. The filters never decide on an infinite or NaN value
+// (their tests fail on them), so the exact stage is where one arrives: on the
+// host it throws, as the GMP stage does; on the device (no exceptions) the
+// precondition is documented by the callers and the answer is 0.
+FF_HD inline int non_finite_input() {
+#if defined(__CUDA_ARCH__)
+  return 0;
+#else
+  throw std::domain_error("exact predicate on a non-finite value");
+#endif
+}
 
 // One entry of Λ: a short expansion.
 template <class A>
@@ -368,7 +388,8 @@ struct MinorX {
 // levels' stack (2 C(K, K/2) cap_x(K+1) x 16 bytes: 78 KB at K = 5) would
 // dominate the kernel's frame and the sum over permutations needs about
 // 11 cap_x(K+1) x 16 bytes (43 KB at K = 5). FF_XDBL_PERMUTATIONS selects the
-// device choice on the host too (tests: exact_expansion_minor_test).
+// device choice on the host (whole program only: it changes an inline
+// definition); predicates_stages_test compares both algorithms directly.
 #if defined(__CUDA_ARCH__) || defined(FF_XDBL_PERMUTATIONS)
 constexpr bool kXdblPermutations = true;
 #else
@@ -622,6 +643,7 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
     for (int j = 0; j < ncoord; ++j) range.add(p[i][j]);
     if (w) range.add(w[i]);
   }
+  if (!range.finite) return non_finite_input();
   const int degree = w ? K : K - 1;
   if (range.fits(degree)) {
     const int s = det_translated<Dbl, K>(p, w);
@@ -673,6 +695,7 @@ FF_HD inline int lambda_exact_mixed(const MixedRowX* rows, bool sos) {
       range.add(8.0 * rows[i].count);  // sums of up to 8 values: 3 more bits of magnitude
     }
   }
+  if (!range.finite) return non_finite_input();
   if (range.fits(K - 1)) {
     LambdaX<Dbl, K> L;
     build_lambda_mixed<Dbl, K>(rows, L);

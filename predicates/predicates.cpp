@@ -47,20 +47,6 @@ void check_k(int k, const double* weights) {
   if (weights && k < 3) throw std::invalid_argument("lambda_sign: a lifted matrix needs k >= 3");
 }
 
-// Dispatch of a template <int K> call over k = 2..8.
-template <class F>
-int dispatch(int k, F&& f) {
-  switch (k) {
-    case 2: return f(std::integral_constant<int, 2>{});
-    case 3: return f(std::integral_constant<int, 3>{});
-    case 4: return f(std::integral_constant<int, 4>{});
-    case 5: return f(std::integral_constant<int, 5>{});
-    case 6: return f(std::integral_constant<int, 6>{});
-    case 7: return f(std::integral_constant<int, 7>{});
-    default: return f(std::integral_constant<int, 8>{});
-  }
-}
-
 }  // namespace
 
 int lambda_sign(const StaticFilter* f, int k, const PointId* ids, const double* const* coords,
@@ -70,7 +56,7 @@ int lambda_sign(const StaticFilter* f, int k, const PointId* ids, const double* 
     if (repeated_id(k, ids)) return 0;
     return gmp_sign(k, ids, coords, weights, ids != nullptr);
   }
-  return dispatch(k, [&](auto K) { return lambda_sign_staged<decltype(K)::value>(f, ids, coords, weights); });
+  return with_k(k, [&](auto K) { return lambda_sign_staged<decltype(K)::value>(f, ids, coords, weights); });
 }
 
 int lambda_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
@@ -82,23 +68,23 @@ int lambda_sign(int k, const PointId* ids, const double* const* coords, const do
 namespace stage {
 int static_filter(const StaticFilter& f, int k, const double* const* p, const double* w) {
   check_k(k, w);
-  return dispatch(k, [&](auto K) { return static_sign<decltype(K)::value>(f, p, w); });
+  return with_k(k, [&](auto K) { return static_sign<decltype(K)::value>(f, p, w); });
 }
 int semi_static(int k, const double* const* p, const double* w) {
   check_k(k, w);
-  return dispatch(k, [&](auto K) { return semi_static_sign<decltype(K)::value>(p, w); });
+  return with_k(k, [&](auto K) { return semi_static_sign<decltype(K)::value>(p, w); });
 }
 int dynamic(int k, const double* const* p, const double* w) {
   check_k(k, w);
-  return dispatch(k, [&](auto K) { return lambda_sign_filter<decltype(K)::value>(p, w); });
+  return with_k(k, [&](auto K) { return lambda_sign_filter<decltype(K)::value>(p, w); });
 }
 int expansion(int k, const double* const* p, const double* w) {
   check_k(k, w);
-  return dispatch(k, [&](auto K) { return xp::lambda_exact<decltype(K)::value>(p, w, false); });
+  return with_k(k, [&](auto K) { return xp::lambda_exact<decltype(K)::value>(p, w, false); });
 }
 int expansion_sos(int k, const PointId* ids, const double* const* p, const double* w) {
   check_k(k, w);
-  return dispatch(k, [&](auto K) {
+  return with_k(k, [&](auto K) {
     return lambda_exact_sorted<decltype(K)::value>(ids, p, w, ids != nullptr);
   });
 }
@@ -169,6 +155,26 @@ int mixed_sign(int k, const MixedRow* rows, bool sos, Mode m) {
   }
   if (sos && repeated_id(k, ids)) return 0;
   if (m == Mode::filtered) {
+    // one rational row (the kernel point of a hull): the semi-static filter (5)
+    int nrat = 0, r = 0;
+    for (int i = 0; i < k; ++i)
+      if (!rows[i].x) ++nrat, r = i;
+    if (nrat == 1) {
+      const double* p[4];
+      double q[3], err[3];
+      for (int j = 0; j < dim; ++j) {
+        q[j] = rows[r].r->approx[j].v;
+        err[j] = rows[r].r->approx[j].e;
+      }
+      for (int i = 0; i < k; ++i) p[i] = rows[i].x ? rows[i].x : q;
+      int s = 0;
+      switch (k) {
+        case 2: s = mixed_semi_static_sign<2>(p, r, err); break;
+        case 3: s = mixed_semi_static_sign<3>(p, r, err); break;
+        default: s = mixed_semi_static_sign<4>(p, r, err); break;
+      }
+      if (s != 0) return s;
+    }
     ErrDouble approx[4 * 3];
     for (int i = 0; i < k; ++i)
       for (int j = 0; j < dim; ++j)

@@ -17,6 +17,8 @@
 // independent oracle the property tests compare every stage with.
 #pragma once
 
+#include <type_traits>
+
 #include "predicates/exact_expansion.hpp"
 #include "predicates/lambda_filter.hpp"
 #include "predicates/static_filter.hpp"
@@ -81,6 +83,22 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
   if (const int s = semi_static_sign<K>(p, w)) return s;
   if (const int s = lambda_sign_filter<K>(p, w)) return s;
   return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+}
+
+// Calls f(std::integral_constant<int, K>{}) for the run-time k, 2 <= k <= 8
+// (8 for anything larger: callers check k first). Host code: the templates
+// above take K at compile time.
+template <class F>
+inline auto with_k(int k, F&& f) {
+  switch (k) {
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 7: return f(std::integral_constant<int, 7>{});
+    default: return f(std::integral_constant<int, 8>{});
+  }
 }
 
 }  // namespace flipflop::pred

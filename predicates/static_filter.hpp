@@ -84,7 +84,11 @@ namespace filter_detail {
 FF_HD constexpr int rounding_depth(int n, bool lifted) {
   return n + (n - 1) + n * (n - 1) / 2 + (lifted ? n : 0);
 }
-FF_HD constexpr double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+FF_HD constexpr double factorial(int n) {  // a loop: no recursion on the device
+  double f = 1.0;
+  for (int i = 2; i <= n; ++i) f *= i;
+  return f;
+}
 // C_N of (1)-(3): gamma_m N! (1 + 2^-30) + 2^-100, rounded up generously.
 FF_HD constexpr double bound_constant(int n, bool lifted) {
   const double m = rounding_depth(n, lifted);
@@ -93,6 +97,16 @@ FF_HD constexpr double bound_constant(int n, bool lifted) {
 }
 // semi-static window exponent B_N of (3)
 FF_HD constexpr int window_exponent(int n) { return 960 / n; }
+// 2^e, exact, evaluated at compile time where e is a constant (no libm call)
+FF_HD constexpr double pow2i(int e) {
+  double r = 1.0;
+  for (; e > 0; --e) r *= 2.0;
+  for (; e < 0; ++e) r *= 0.5;
+  return r;
+}
+// max(a, b) without a libm call; like fmax, a NaN b is ignored (a NaN input
+// makes the determinant NaN, which no filter test accepts)
+FF_HD inline double max_of(double a, double b) { return b > a ? b : a; }
 
 // Entries of T in plain doubles (the evaluation the bounds are derived for);
 // `mag` receives the column bounds m_c (max |t_ic|; for a lifted column the
@@ -108,7 +122,7 @@ FF_HD inline void differences(const double* const* p, const double* w, double* t
       for (int j = 0; j < N; ++j) {
         const double d = p[i][j] - base[j];
         t[i * N + j] = d;
-        if constexpr (kMag) mag[j] = std::fmax(mag[j], std::fabs(d));
+        if constexpr (kMag) mag[j] = max_of(mag[j], std::fabs(d));
       }
   } else {
     constexpr int M = N - 1;
@@ -117,12 +131,12 @@ FF_HD inline void differences(const double* const* p, const double* w, double* t
       for (int j = 0; j < M; ++j) {
         const double d = p[i][j] - base[j];
         t[i * N + j] = d;
-        if constexpr (kMag) mag[j] = std::fmax(mag[j], std::fabs(d));
+        if constexpr (kMag) mag[j] = max_of(mag[j], std::fabs(d));
         lift = (j == 0) ? d * d : lift + d * d;
       }
       const double dw = w[i] - w[K - 1];
       t[i * N + M] = lift - dw;
-      if constexpr (kMag) mag[M] = std::fmax(mag[M], lift + std::fabs(dw));
+      if constexpr (kMag) mag[M] = max_of(mag[M], lift + std::fabs(dw));
     }
   }
 }
@@ -183,14 +197,77 @@ FF_HD inline int semi_static_sign(const double* const* p, const double* w) {
   constexpr int N = K - 1;
   double t[N * N], mag[N];
   filter_detail::differences<K>(p, w, t, mag);
-  const int B = filter_detail::window_exponent(N);
-  const double wlo = std::ldexp(1.0, -B), whi = std::ldexp(1.0, B);
-  double prod = filter_detail::bound_constant(N, w != nullptr);
+  constexpr int B = filter_detail::window_exponent(N);
+  constexpr double wlo = filter_detail::pow2i(-B), whi = filter_detail::pow2i(B);
+  constexpr double kPlain = filter_detail::bound_constant(N, false);
+  constexpr double kLifted = filter_detail::bound_constant(N, true);
+  double prod = w != nullptr ? kLifted : kPlain;
   for (int c = 0; c < N; ++c) {
     if (!(mag[c] >= wlo && mag[c] <= whi)) return 0;  // outside the window (or NaN)
     prod *= mag[c];
   }
   return filter_detail::sign_beyond(filter_detail::det_plain<N>(t), prod);
+}
+
+// Per-call semi-static filter for a Λ-matrix with one row known only
+// approximately: the exact kernel point of the reference's hulls (a centroid
+// of input points, rational_point.hpp), seen as q_j = k_j ± e_j (its filter
+// value and a bound on the error, ErrDouble). Unlifted, K <= 4.
+//
+// (5) Derivation. Move the approximate row r last (a row swap: the sign flips
+//     when r != K - 1). det Λ is affine in that row: with c_j the cofactor of
+//     Λ at (K-1, j),
+//         det Λ(q) = det Λ(k) + Σ_j (q_j - k_j) c_j,
+//     so |det Λ(q) - fl(det T(k))| <= bound(1)-(4) on the rows with k in place
+//     + U, U = Σ_j e_j |c_j|. The cofactor c_j is ± the determinant of rows
+//     0..K-2 on the columns other than j (the 1-column included); subtracting
+//     row 0 gives the (N-1) x (N-1) determinant of differences x_i - x_0 on
+//     the coordinate columns c != j, so |c_j| <= (N-1)! Π_{c != j} G_c with
+//     G_c = max_i |x_ic - x_0c|. U is computed in floating point from upper
+//     bounds only: e_j and every non-zero G_c are raised to at least 2^-B
+//     (B = floor(960 / N), as in (3)), so no product underflows (N factors
+//     >= 2^-960) and, with every factor <= 2^B, none overflows; the roundings
+//     (2N operations, and |exact G| <= fl(G)(1 + u)) are covered by the factor
+//     1 + 2^-30, and the final addition bound + U by 1 + 2^-40. A zero G_c is
+//     exact (column c constant on those rows: the cofactors with c have a zero
+//     column).
+template <int K>
+FF_HD inline int mixed_semi_static_sign(const double* const* rows, int r, const double* err) {
+  static_assert(K >= 2 && K <= 4, "mixed rows: K <= 4");
+  constexpr int N = K - 1;
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = rows[i];
+  const int flip = (r == K - 1) ? 1 : -1;
+  p[r] = rows[K - 1];
+  p[K - 1] = rows[r];
+  double t[N * N], mag[N];
+  filter_detail::differences<K>(p, nullptr, t, mag);
+  constexpr int B = filter_detail::window_exponent(N);
+  constexpr double wlo = filter_detail::pow2i(-B), whi = filter_detail::pow2i(B);
+  double bound = filter_detail::bound_constant(N, false);
+  for (int c = 0; c < N; ++c) {
+    if (!(mag[c] >= wlo && mag[c] <= whi)) return 0;  // outside the window (or NaN)
+    bound *= mag[c];
+  }
+  // G_c over rows 0..K-2 (the exact rows), raised to 2^-B when non-zero
+  double G[N];
+  for (int c = 0; c < N; ++c) {
+    double g = 0.0;
+    for (int i = 1; i < N; ++i) g = filter_detail::max_of(g, std::fabs(p[i][c] - p[0][c]));
+    if (!(g <= whi)) return 0;
+    G[c] = (g == 0.0) ? 0.0 : filter_detail::max_of(g, wlo);
+  }
+  double U = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const double e = err[j];
+    if (!(e <= whi)) return 0;  // also NaN
+    double term = filter_detail::max_of(e, wlo) * filter_detail::factorial(N - 1);
+    for (int c = 0; c < N; ++c)
+      if (c != j) term *= G[c];
+    U += term;
+  }
+  const double total = (bound + U * (1.0 + 0x1p-30)) * (1.0 + 0x1p-40);
+  return flip * filter_detail::sign_beyond(filter_detail::det_plain<N>(t), total);
 }
 
 // The per-input static filter: bounds for every k (2..8), plain and lifted.
@@ -237,17 +314,21 @@ class StaticFilter {
       const int N = k - 1;
       // plain: degree N
       if (static_cast<long>(N) * lsb >= -1074) {
-        double b = filter_detail::bound_constant(N, false);
-        for (int c = 0; c < N; ++c) b *= 2.0 * M;
-        if (b * filter_detail::factorial(N) < 0x1p1000 && b > 0.0) f.plain_[k] = b;
+        // (4): the test is on N! Π m_c itself (every intermediate of det T is
+        // at most that), not on the bound, which is ~2^-50 smaller
+        double prod = 1.0;
+        for (int c = 0; c < N; ++c) prod *= 2.0 * M;
+        const double b = filter_detail::bound_constant(N, false) * prod;
+        if (prod * filter_detail::factorial(N) < 0x1p1000 && b > 0.0) f.plain_[k] = b;
         if (M == 0.0) f.plain_[k] = HUGE_VAL;
       }
       // lifted: degree N + 1
       if (k >= 3 && static_cast<long>(N + 1) * lsb >= -1074) {
         const double liftmag = ((N - 1) * (2.0 * M) * (2.0 * M) + 2.0 * W) * (1.0 + 0x1p-40);
-        double b = filter_detail::bound_constant(N, true) * liftmag;
-        for (int c = 0; c + 1 < N; ++c) b *= 2.0 * M;
-        if (b * filter_detail::factorial(N) < 0x1p1000 && b > 0.0 && M > 0.0) f.lifted_[k] = b;
+        double prod = liftmag;
+        for (int c = 0; c + 1 < N; ++c) prod *= 2.0 * M;
+        const double b = filter_detail::bound_constant(N, true) * prod;
+        if (prod * filter_detail::factorial(N) < 0x1p1000 && b > 0.0 && M > 0.0) f.lifted_[k] = b;
       }
     }
     return f;

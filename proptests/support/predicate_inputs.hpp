@@ -99,22 +99,32 @@ inline double gen_extreme_value() {
   return *rc::gen::arbitrary<bool>() ? -v : v;
 }
 
-// k distinct ids: a permutation of 0..k-1 stretched by a random stride and
-// shifted by a random offset (small ids, huge ids, ids near 2^64 - 1).
+// The affine map i -> offset + stride i of distinct ids for n points: small
+// ids, huge ids, or ids near 2^64 - 1.
+struct IdStretch {
+  PointId stride = 1, offset = 0;
+  PointId operator()(std::uint64_t i) const { return offset + stride * static_cast<PointId>(i); }
+};
+inline IdStretch gen_id_stretch(std::uint64_t n) {
+  const int mode = *rc::gen::inRange(0, 3);
+  IdStretch m;
+  if (mode == 1) {
+    m.stride = *rc::gen::inRange<PointId>(1, PointId(1) << 40);
+    m.offset = *rc::gen::inRange<PointId>(0, PointId(1) << 20);
+  } else if (mode == 2) {
+    m.stride = *rc::gen::inRange<PointId>(1, 1000);
+    m.offset = std::numeric_limits<PointId>::max() - m.stride * static_cast<PointId>(n);
+  }
+  return m;
+}
+
+// k distinct ids: a permutation of 0..k-1 stretched by gen_id_stretch.
 inline std::vector<PointId> gen_distinct_ids(int k) {
   const std::vector<int> perm = gen_permutation(k);
-  const int mode = *rc::gen::inRange(0, 3);
-  PointId stride = 1, offset = 0;
-  if (mode == 1) {
-    stride = *rc::gen::inRange<PointId>(1, PointId(1) << 40);
-    offset = *rc::gen::inRange<PointId>(0, PointId(1) << 20);
-  } else if (mode == 2) {
-    stride = *rc::gen::inRange<PointId>(1, 1000);
-    offset = std::numeric_limits<PointId>::max() - stride * static_cast<PointId>(k);
-  }
+  const IdStretch m = gen_id_stretch(static_cast<std::uint64_t>(k));
   std::vector<PointId> ids(static_cast<size_t>(k));
   for (int i = 0; i < k; ++i)
-    ids[static_cast<size_t>(i)] = offset + stride * static_cast<PointId>(perm[static_cast<size_t>(i)]);
+    ids[static_cast<size_t>(i)] = m(static_cast<std::uint64_t>(perm[static_cast<size_t>(i)]));
   return ids;
 }
 

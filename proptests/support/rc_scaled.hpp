@@ -15,24 +15,18 @@
 #include <string>
 #include <utility>
 
+#include "proptests/support/rc_check.hpp"
+
 namespace flipflop::test {
 
 template <typename Testable>
 void prop_scaled(const std::string& description, int divisor, Testable&& testable) {
   SECTION(description) {
-    using namespace rc::detail;
-    TestParams params = configuration().testParams;
-    params.maxSuccess = std::max(1, params.maxSuccess / std::max(1, divisor));
-    TestMetadata metadata;
-    metadata.id = description;
-    metadata.description = description;
-    const auto result = checkTestable(std::forward<Testable>(testable), metadata, params);
-    if (result.template is<SuccessResult>()) {
+    const ScaledResult r = check_scaled(description, divisor, std::forward<Testable>(testable));
+    if (r.ok) {
       SUCCEED();
     } else {
-      std::ostringstream ss;
-      printResultMessage(result, ss);
-      INFO(ss.str() << "\n");
+      INFO(r.message << "\n");
       FAIL();
     }
   }

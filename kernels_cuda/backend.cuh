@@ -1,0 +1,69 @@
+// backend.cuh — where a kernel's data lives and how its steps run, for every
+// thrust kernel of kernels_cuda/ (classify.cuh, predicates_device.cuh), in the
+// namespace FF_KERNELS_NS::backend of the including build:
+//   OpenMP backend (host compiler): the "device" is the host. Buffers are
+//     std::vector, the functors read the caller's arrays in place, and below a
+//     grain size (a template argument: it depends on the cost of one item) one
+//     thread does the work — opening a parallel region costs more than it saves
+//     there, and on a loaded machine OpenMP's spinning barriers cost most.
+//   CUDA: copies to and from device memory; every step runs on the device.
+#pragma once
+
+#ifndef FF_KERNELS_NS
+#error "define FF_KERNELS_NS (kernels_omp or kernels_cuda) before including backend.cuh"
+#endif
+
+#include <thrust/copy.h>
+#include <thrust/device_vector.h>
+#include <thrust/execution_policy.h>
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+#include <thrust/system/omp/execution_policy.h>
+#endif
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace flipflop::FF_KERNELS_NS::backend {
+
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+template <class T>
+using Buffer = std::vector<T>;
+template <class T>
+const T* to_device(const T* first, std::size_t, Buffer<T>&) {
+  return first;
+}
+template <class T>
+std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
+  b.resize(count);
+  return std::move(b);
+}
+template <std::size_t ParallelFrom, class Step>
+void run_step(std::size_t n, Step&& step) {
+  if (n < ParallelFrom)
+    step(thrust::seq);
+  else
+    step(thrust::omp::par);
+}
+#else
+template <class T>
+using Buffer = thrust::device_vector<T>;
+template <class T>
+const T* to_device(const T* first, std::size_t count, Buffer<T>& b) {
+  if (count == 0) return nullptr;
+  b.assign(first, first + count);
+  return thrust::raw_pointer_cast(b.data());
+}
+template <class T>
+std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
+  std::vector<T> h(count);
+  thrust::copy(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(count), h.begin());
+  return h;
+}
+template <std::size_t ParallelFrom, class Step>
+void run_step(std::size_t, Step&& step) {
+  step(thrust::device);
+}
+#endif
+
+}  // namespace flipflop::FF_KERNELS_NS::backend
