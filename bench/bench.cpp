@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <string>
 
 #include "bench/timing.hpp"
@@ -17,7 +18,7 @@ using detail::Args;
 using detail::Usage;
 
 const char* kUsage =
-    "usage: flipflop bench predicates [--n N] [--reps R] [--seed S]\n"
+    "usage: flipflop bench predicates [--n N] [--reps R] [--seed S] [--csv]\n"
     "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
     "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n";
 
@@ -44,6 +45,10 @@ Args parse(int argc, char** argv) {
   bool have_n = false;
   for (int i = 2; i < argc; ++i) {
     const std::string opt = argv[i];
+    if (opt == "--csv") {  // the only flag without a value
+      a.csv = true;
+      continue;
+    }
     if (i + 1 >= argc) throw Usage("option " + opt + " needs a value");
     const std::string val = argv[++i];
     if (opt == "--n") {
@@ -108,6 +113,9 @@ int run(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {  // e.g. an unknown distribution
     std::fprintf(stderr, "flipflop bench: error: %s\n", e.what());
     return 2;
+  } catch (const std::runtime_error& e) {  // a peer or stage disagreed: no result is printed
+    std::fprintf(stderr, "%s\n", e.what());
+    return 3;
   }
 }
 

@@ -1,32 +1,57 @@
-// bench_predicates.cpp — `flipflop bench predicates`: the cost of exactness.
+// bench_predicates.cpp — `flipflop bench predicates [--csv]`: the cost of
+// exactness, stage by stage (predicates/staged.hpp).
 //
-// For each predicate of predicates.hpp (unperturbed *_exact forms) and two
-// input families, the median time per call of Mode::filtered (ErrDouble filter,
-// GMP only where the filter is uncertain) and of Mode::gmp (GMP always), their
-// ratio, and the share of calls the filter alone decides (lambda_filter.hpp on
-// the same inputs: the filter predicates.cpp runs first).
+// For each predicate (orient2d..orient6d: k = d+1 points in R^d; power2d..
+// power5d: k = d+2 weighted points, the lifted test) and four input families,
+// the median over R runs of the time per call of
+//   flipflop_ns    the default path, pred::lambda_sign with the input's
+//                  StaticFilter and point ids (Simulation of Simplicity): static
+//                  filter, semi-static filter, dynamic filter, exact stage, SoS;
+//   static_ns      the static filter alone (StaticFilter::for_points over the
+//                  family's points, built before timing);
+//   dynamic_ns     the dynamic (ErrDouble running-error) filter alone;
+//   expansion_ns   the exact stage alone, with SoS (expansion arithmetic);
+//   cgal_epick_ns  CGAL Epick's predicate (orientation, Epick_d in 4..6 D,
+//                  power_side_of_oriented_power_circle_2 / _sphere_3 with the
+//                  weights): empty where CGAL has none;
+//   gmp_ns         the GMP oracle (Mode::gmp, with SoS);
+// and the fractions of calls the static and the dynamic filter decide alone.
+// Before anything is timed every stage that decides, the default path and
+// CGAL (up to its fixed sign convention) are checked against GMP on every
+// call; a disagreement is an error, never a row.
 //
 // Families:
 //   random           coordinates uniform in [0, 1] (weights in [0, 0.01]).
-//   near-degenerate  the last point is computed on the line through the first
-//                    two (orient*), or all points on one circle / sphere
-//                    (power*, zero weights), then every coordinate moved by
-//                    -1, 0 or +1 ulp: the filter fails on most calls.
+//   near-degenerate  orient: the last point on the line through the first two;
+//                    power: all points on one sphere (rounded rational
+//                    parametrisation in 2D and 3D, a normalised direction in
+//                    higher d), zero weights; then every value moved by 0..3
+//                    ulps: the filters fail on many calls.
+//   degenerate       exactly degenerate small integers: orient, the last point
+//                    p0 + t (p1 - p0) with integer t; power, weights
+//                    w = |x|^2 - a.x - b (the lifted points on one hyperplane):
+//                    every call has determinant 0 and SoS decides.
+//   extreme          every value of a random magnitude class (subnormal, ~1e-300,
+//                    ~1, ~1e300) and sign: outside the double window of the exact
+//                    stage (its unbounded-exponent arithmetic).
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bench/timing.hpp"
-#include "predicates/lambda_filter.hpp"
+#include "peers/cgal_predicates.hpp"
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 
 namespace flipflop::bench::detail {
 
 namespace {
 
 using pred::Mode;
+using pred::PointId;
 
 struct Kind {
   const char* name;
@@ -36,10 +61,21 @@ struct Kind {
 };
 
 const Kind kKinds[] = {
-    {"orient2d", 3, 2, false}, {"orient3d", 4, 3, false}, {"power2d", 4, 2, true},
-    {"power3d", 5, 3, true},   {"orient4d", 5, 4, false}, {"orient5d", 6, 5, false},
-    {"orient6d", 7, 6, false},
+    {"orient2d", 3, 2, false}, {"orient3d", 4, 3, false}, {"orient4d", 5, 4, false},
+    {"orient5d", 6, 5, false}, {"orient6d", 7, 6, false}, {"power2d", 4, 2, true},
+    {"power3d", 5, 3, true},   {"power4d", 6, 4, true},   {"power5d", 7, 5, true},
 };
+
+enum class Family { random, near, degenerate, extreme };
+const Family kFamilies[] = {Family::random, Family::near, Family::degenerate, Family::extreme};
+const char* family_name(Family f) {
+  switch (f) {
+    case Family::random: return "random";
+    case Family::near: return "near-degenerate";
+    case Family::degenerate: return "degenerate";
+    default: return "extreme";
+  }
+}
 
 // n calls' worth of points: call i uses points i*k .. i*k+k-1.
 struct Calls {
@@ -47,141 +83,249 @@ struct Calls {
   std::size_t n = 0;
   std::vector<double> coords;   // n * k * dim
   std::vector<double> weights;  // n * k (lifted kinds)
-  const double* point(std::size_t call, int j) const {
-    return coords.data() + (call * kind.k + static_cast<std::size_t>(j)) * kind.dim;
-  }
-  const double* weight(std::size_t call) const {
+  std::vector<const double*> rows;  // n * k row pointers
+  const double* const* p(std::size_t call) const { return rows.data() + call * kind.k; }
+  const double* w(std::size_t call) const {
     return kind.lifted ? weights.data() + call * kind.k : nullptr;
   }
 };
 
 double jitter(double x, std::mt19937_64& rng) {
-  switch (rng() % 3) {
-    case 0: return std::nextafter(x, -HUGE_VAL);
-    case 1: return std::nextafter(x, HUGE_VAL);
-    default: return x;
-  }
+  const int ulps = static_cast<int>(rng() % 7) - 3;  // -3..3
+  for (int i = 0; i < std::abs(ulps); ++i) x = std::nextafter(x, ulps > 0 ? HUGE_VAL : -HUGE_VAL);
+  return x;
 }
 
-Calls make_calls(const Kind& kind, bool near_degenerate, std::size_t n, std::uint64_t seed) {
+double extreme_value(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(1.0, 2.0);
+  double v = 0.0;
+  switch (rng() % 4) {
+    case 0: v = std::ldexp(static_cast<double>(rng() >> 12), -1074); break;  // subnormal
+    case 1: v = 1e-300 * unit(rng); break;
+    case 2: v = unit(rng); break;
+    default: v = 1e300 * unit(rng); break;
+  }
+  return (rng() & 1) ? -v : v;
+}
+
+Calls make_calls(const Kind& kind, Family fam, std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0), t(-0.5, 1.5), w(0.0, 0.01),
+  std::uniform_real_distribution<double> unit(0.0, 1.0), t(-0.5, 1.5), wdist(0.0, 0.01),
       s(-2.0, 2.0), center(0.25, 0.75), radius(0.1, 0.25);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_int_distribution<int> small(-8, 8), tint(-2, 2), coef(-3, 3);
   Calls c;
   c.kind = kind;
   c.n = n;
-  c.coords.resize(n * kind.k * kind.dim);
-  c.weights.assign(kind.lifted ? n * kind.k : 0, 0.0);
+  const int k = kind.k, dim = kind.dim;
+  c.coords.resize(n * k * dim);
+  c.weights.assign(kind.lifted ? n * k : 0, 0.0);
   for (std::size_t call = 0; call < n; ++call) {
-    auto P = [&](int j) { return c.coords.data() + (call * kind.k + j) * kind.dim; };
-    if (!near_degenerate) {
-      for (int j = 0; j < kind.k; ++j)
-        for (int d = 0; d < kind.dim; ++d) P(j)[d] = unit(rng);
-      if (kind.lifted)
-        for (int j = 0; j < kind.k; ++j) c.weights[call * kind.k + j] = w(rng);
-    } else if (!kind.lifted) {
-      for (int j = 0; j + 1 < kind.k; ++j)
-        for (int d = 0; d < kind.dim; ++d) P(j)[d] = unit(rng);
-      const double tt = t(rng);
-      for (int d = 0; d < kind.dim; ++d)
-        P(kind.k - 1)[d] = jitter(P(0)[d] + tt * (P(1)[d] - P(0)[d]), rng);
-    } else {
-      // Rational parametrisation of the unit circle / sphere (inverse
-      // stereographic projection), scaled and shifted, rounded, jittered.
-      double cx[3], r = radius(rng);
-      for (double& x : cx) x = center(rng);
-      for (int j = 0; j < kind.k; ++j) {
-        const double u = s(rng), v = s(rng);
-        double q[3];
-        if (kind.dim == 2) {
-          q[0] = (1 - u * u) / (1 + u * u);
-          q[1] = 2 * u / (1 + u * u);
-        } else {
-          const double den = 1 + u * u + v * v;
-          q[0] = 2 * u / den;
-          q[1] = 2 * v / den;
-          q[2] = (u * u + v * v - 1) / den;
+    auto P = [&](int j) { return c.coords.data() + (call * k + j) * dim; };
+    double* W = kind.lifted ? c.weights.data() + call * k : nullptr;
+    switch (fam) {
+      case Family::random:
+        for (int j = 0; j < k; ++j) {
+          for (int d = 0; d < dim; ++d) P(j)[d] = unit(rng);
+          if (W) W[j] = wdist(rng);
         }
-        for (int d = 0; d < kind.dim; ++d) P(j)[d] = jitter(cx[d] + r * q[d], rng);
-      }
+        break;
+      case Family::near:
+        if (!kind.lifted) {
+          for (int j = 0; j + 1 < k; ++j)
+            for (int d = 0; d < dim; ++d) P(j)[d] = unit(rng);
+          const double tt = t(rng);
+          for (int d = 0; d < dim; ++d) P(k - 1)[d] = jitter(P(0)[d] + tt * (P(1)[d] - P(0)[d]), rng);
+        } else {
+          double cx[8], r = radius(rng);
+          for (int d = 0; d < dim; ++d) cx[d] = center(rng);
+          for (int j = 0; j < k; ++j) {
+            double q[8];
+            if (dim == 2) {
+              const double u = s(rng);
+              q[0] = (1 - u * u) / (1 + u * u);
+              q[1] = 2 * u / (1 + u * u);
+            } else if (dim == 3) {
+              const double u = s(rng), v = s(rng), den = 1 + u * u + v * v;
+              q[0] = 2 * u / den;
+              q[1] = 2 * v / den;
+              q[2] = (u * u + v * v - 1) / den;
+            } else {
+              double norm = 0.0;
+              for (int d = 0; d < dim; ++d) {
+                q[d] = gauss(rng);
+                norm += q[d] * q[d];
+              }
+              norm = std::sqrt(norm);
+              for (int d = 0; d < dim; ++d) q[d] /= norm;
+            }
+            for (int d = 0; d < dim; ++d) P(j)[d] = jitter(cx[d] + r * q[d], rng);
+          }
+        }
+        break;
+      case Family::degenerate:
+        if (!kind.lifted) {
+          for (int j = 0; j + 1 < k; ++j)
+            for (int d = 0; d < dim; ++d) P(j)[d] = small(rng);
+          const int tt = tint(rng);
+          for (int d = 0; d < dim; ++d) P(k - 1)[d] = P(0)[d] + tt * (P(1)[d] - P(0)[d]);
+        } else {
+          int a[8];
+          for (int d = 0; d < dim; ++d) a[d] = coef(rng);
+          const int b = coef(rng);
+          for (int j = 0; j < k; ++j) {
+            double sq = 0.0, lin = b;
+            for (int d = 0; d < dim; ++d) {
+              P(j)[d] = small(rng);
+              sq += P(j)[d] * P(j)[d];
+              lin += a[d] * P(j)[d];
+            }
+            W[j] = sq - lin;  // |x|^2 - w = a.x + b: one hyperplane
+          }
+        }
+        break;
+      case Family::extreme:
+        for (int j = 0; j < k; ++j) {
+          for (int d = 0; d < dim; ++d) P(j)[d] = extreme_value(rng);
+          if (W) W[j] = extreme_value(rng);
+        }
+        break;
     }
   }
+  c.rows.resize(n * k);
+  for (std::size_t i = 0; i < n * k; ++i) c.rows[i] = c.coords.data() + i * dim;
   return c;
-}
-
-int call_exact(const Calls& c, std::size_t i, Mode m) {
-  const double* p[8] = {};
-  for (int j = 0; j < c.kind.k; ++j) p[j] = c.point(i, j);
-  if (c.kind.lifted) {
-    const double* w = c.weight(i);
-    if (c.kind.dim == 2)
-      return pred::power2d_exact({0, p[0], w[0]}, {1, p[1], w[1]}, {2, p[2], w[2]},
-                                 {3, p[3], w[3]}, m);
-    return pred::power3d_exact({0, p[0], w[0]}, {1, p[1], w[1]}, {2, p[2], w[2]},
-                               {3, p[3], w[3]}, {4, p[4], w[4]}, m);
-  }
-  switch (c.kind.dim) {
-    case 2: return pred::orient2d_exact(p[0], p[1], p[2], m);
-    case 3: return pred::orient3d_exact(p[0], p[1], p[2], p[3], m);
-    default: return pred::orient_d_exact(c.kind.dim, p, m);
-  }
-}
-
-// Does the filter alone decide call i?
-bool filter_decides(const Calls& c, std::size_t i) {
-  const double* p[8] = {};
-  for (int j = 0; j < c.kind.k; ++j) p[j] = c.point(i, j);
-  const double* w = c.weight(i);
-  switch (c.kind.k) {
-    case 3: return pred::lambda_sign_filter<3>(p, w) != 0;
-    case 4: return pred::lambda_sign_filter<4>(p, w) != 0;
-    case 5: return pred::lambda_sign_filter<5>(p, w) != 0;
-    case 6: return pred::lambda_sign_filter<6>(p, w) != 0;
-    default: return pred::lambda_sign_filter<7>(p, w) != 0;
-  }
 }
 
 volatile long g_sink = 0;  // keeps the timed loops from being optimised away
 
-double median_ns_per_call(const Calls& c, Mode m, int reps) {
+// Median over reps of the ns per call of body(i), i < n.
+template <class Body>
+double ns_per_call(std::size_t n, int reps, Body&& body) {
   std::vector<double> runs;
   for (int r = 0; r < reps; ++r) {
     long sum = 0;
     runs.push_back(seconds([&] {
-      for (std::size_t i = 0; i < c.n; ++i) sum += call_exact(c, i, m);
+      for (std::size_t i = 0; i < n; ++i) sum += body(i);
     }));
     g_sink = g_sink + sum;
   }
-  return median(runs) / static_cast<double>(c.n) * 1e9;
+  return median(runs) / static_cast<double>(n) * 1e9;
+}
+
+struct Row {
+  double flipflop = 0, stat = 0, dyn = 0, expansion = 0, cgal = -1, gmp = 0;
+  double static_decides = 0, dynamic_decides = 0;
+};
+
+[[noreturn]] void disagree(const Kind& kind, Family f, const char* what, std::size_t i) {
+  throw std::runtime_error(std::string("flipflop bench predicates: ") + kind.name + ", " +
+                           family_name(f) + ": " + what + " differs from GMP on call " +
+                           std::to_string(i));
+}
+
+Row measure(const Kind& kind, Family fam, const Args& a) {
+  const Calls c = make_calls(kind, fam, a.n, a.seed);
+  const int k = kind.k;
+  const pred::StaticFilter filter = pred::StaticFilter::for_points(
+      c.coords.data(), c.n * k, kind.dim, kind.lifted ? c.weights.data() : nullptr);
+  PointId ids[8];
+  for (int j = 0; j < k; ++j) ids[j] = static_cast<PointId>(j);
+  // ---- agreement with GMP, every call ----
+  std::vector<int> exact(c.n), sos(c.n);
+  std::size_t st_dec = 0, dyn_dec = 0;
+  for (std::size_t i = 0; i < c.n; ++i) {
+    exact[i] = pred::stage::gmp(k, c.p(i), c.w(i));
+    sos[i] = pred::stage::gmp_sos(k, ids, c.p(i), c.w(i));
+    const int st = pred::stage::static_filter(filter, k, c.p(i), c.w(i));
+    const int dy = pred::stage::dynamic(k, c.p(i), c.w(i));
+    if (st != 0 && st != exact[i]) disagree(kind, fam, "the static filter", i);
+    if (dy != 0 && dy != exact[i]) disagree(kind, fam, "the dynamic filter", i);
+    st_dec += st != 0;
+    dyn_dec += dy != 0;
+    if (pred::lambda_sign(&filter, k, ids, c.p(i), c.w(i)) != sos[i])
+      disagree(kind, fam, "the default path", i);
+    if (pred::stage::expansion_sos(k, ids, c.p(i), c.w(i)) != sos[i])
+      disagree(kind, fam, "the expansion stage", i);
+  }
+  Row r;
+  r.static_decides = static_cast<double>(st_dec) / static_cast<double>(c.n);
+  r.dynamic_decides = static_cast<double>(dyn_dec) / static_cast<double>(c.n);
+  // ---- times ----
+  r.flipflop = ns_per_call(c.n, a.reps, [&](std::size_t i) {
+    return pred::lambda_sign(&filter, k, ids, c.p(i), c.w(i));
+  });
+  r.stat = ns_per_call(c.n, a.reps, [&](std::size_t i) {
+    return pred::stage::static_filter(filter, k, c.p(i), c.w(i));
+  });
+  r.dyn = ns_per_call(c.n, a.reps, [&](std::size_t i) { return pred::stage::dynamic(k, c.p(i), c.w(i)); });
+  r.expansion = ns_per_call(c.n, a.reps, [&](std::size_t i) {
+    return pred::stage::expansion_sos(k, ids, c.p(i), c.w(i));
+  });
+  r.gmp = ns_per_call(c.n, a.reps, [&](std::size_t i) {
+    return pred::lambda_sign(k, ids, c.p(i), c.w(i), Mode::gmp);
+  });
+  if (peers::cgal_epick_has(k, kind.dim, kind.lifted)) {
+    peers::PredicateCalls pc;
+    pc.k = k;
+    pc.dim = kind.dim;
+    pc.lifted = kind.lifted;
+    pc.n = c.n;
+    pc.coords = c.coords.data();
+    pc.weights = kind.lifted ? c.weights.data() : nullptr;
+    std::vector<int> cg;
+    const double s = peers::cgal_epick_run(pc, a.reps, cg);
+    // CGAL's sign is flipflop's exact sign times a constant of the predicate
+    // (conventions); it must be the same constant on every call, and 0 exactly
+    // where the exact sign is 0.
+    int ratio = 0;
+    for (std::size_t i = 0; i < c.n; ++i) {
+      if ((cg[i] == 0) != (exact[i] == 0)) disagree(kind, fam, "CGAL Epick", i);
+      if (exact[i] == 0) continue;
+      if (ratio == 0) ratio = cg[i] * exact[i];
+      if (cg[i] * exact[i] != ratio) disagree(kind, fam, "CGAL Epick (sign convention)", i);
+    }
+    r.cgal = s / static_cast<double>(c.n) * 1e9;
+  }
+  return r;
+}
+
+std::string field(double v) {
+  if (v < 0) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  return buf;
 }
 
 }  // namespace
 
 int bench_predicates(const Args& a) {
-  std::printf("flipflop bench predicates: %zu calls per run, median of %d runs, seed %llu\n",
-              a.n, a.reps, a.seed);
-  std::printf("%-9s %-16s %14s %14s %10s %15s\n", "predicate", "input", "filtered ns", "gmp ns",
-              "gmp/filt", "filter decides");
-  for (const Kind& kind : kKinds) {
-    for (bool near : {false, true}) {
-      Calls c = make_calls(kind, near, a.n, a.seed);
-      std::size_t decided = 0;
-      for (std::size_t i = 0; i < c.n; ++i) decided += filter_decides(c, i);
-      // Both modes must agree on every call before their times mean anything.
-      for (std::size_t i = 0; i < c.n; ++i)
-        if (call_exact(c, i, Mode::filtered) != call_exact(c, i, Mode::gmp)) {
-          std::fprintf(stderr, "flipflop bench: %s: filtered and gmp signs differ on call %zu\n",
-                       kind.name, i);
-          return 3;
-        }
-      const double f = median_ns_per_call(c, Mode::filtered, a.reps);
-      const double g = median_ns_per_call(c, Mode::gmp, a.reps);
-      std::printf("%-9s %-16s %14.1f %14.1f %10.1f %14.2f%%\n", kind.name,
-                  near ? "near-degenerate" : "random", f, g, g / f,
-                  100.0 * static_cast<double>(decided) / static_cast<double>(c.n));
+  if (a.csv) {
+    std::printf(
+        "predicate,input,flipflop_ns,static_ns,dynamic_ns,expansion_ns,cgal_epick_ns,gmp_ns,"
+        "static_decides,dynamic_decides\n");
+  } else {
+    std::printf("flipflop bench predicates: %zu calls per run, median of %d runs, seed %llu (ns per call)\n",
+                a.n, a.reps, a.seed);
+    std::printf("%-9s %-16s %10s %9s %9s %10s %10s %10s %8s %8s\n", "predicate", "input", "flipflop",
+                "static", "dynamic", "expansion", "cgal", "gmp", "static%", "dyn%");
+  }
+  for (const Kind& kind : kKinds)
+    for (Family fam : kFamilies) {
+      const Row r = measure(kind, fam, a);
+      if (a.csv) {
+        std::printf("%s,%s,%s,%s,%s,%s,%s,%s,%.4f,%.4f\n", kind.name, family_name(fam),
+                    field(r.flipflop).c_str(), field(r.stat).c_str(), field(r.dyn).c_str(),
+                    field(r.expansion).c_str(), field(r.cgal).c_str(), field(r.gmp).c_str(),
+                    r.static_decides, r.dynamic_decides);
+      } else {
+        std::printf("%-9s %-16s %10.1f %9.1f %9.1f %10.1f %10s %10.1f %7.1f%% %7.1f%%\n", kind.name,
+                    family_name(fam), r.flipflop, r.stat, r.dyn, r.expansion,
+                    r.cgal < 0 ? "-" : field(r.cgal).c_str(), r.gmp, 100 * r.static_decides,
+                    100 * r.dynamic_decides);
+      }
       std::fflush(stdout);
     }
-  }
   return 0;
 }
 

@@ -43,6 +43,7 @@ struct Args {
   bool weighted = false;
   double wlo = 0, whi = 0;
   std::size_t hull_points = 0;
+  bool csv = false;  // predicates: CSV rows instead of the table
 };
 
 int bench_predicates(const Args& a);

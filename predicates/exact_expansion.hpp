@@ -43,11 +43,18 @@
 // are at most (2098 D + 23)/52 + 2: cap_x(D), D <= K + 1 for a K x K minor.
 //
 // Stack per call (bytes, the buffers below; K = number of rows):
-//   Λ entries: K^2 x 16 components;  Dbl minors: 2 levels of C(K, K/2)
-//   expansions of kCapD doubles (K = 4: 2 x 6 x 360 ~ 4.4 KB, K = 5: 7.3 KB,
-//   K = 8: 51 KB); XDbl: about 9 kCapX(K) x 16 bytes (K = 4: 23 KB, K = 5:
-//   29 KB, K = 8: 47 KB); the SoS memo 2^(2K-1) bytes (K = 5: 512 B,
-//   K = 8: 32 KB). The Dbl and XDbl paths are never live together.
+//   Λ entries: K^2 entries of entry_cap (Dbl 28 x 8 B, XDbl 50 x 16 B; K = 5:
+//   5.6 KB / 20 KB). Laplace minors: 2 levels of C(K, K/2) expansions of
+//   minor_cap components — Dbl (44 x 8 B): K = 4 4.3 KB, K = 5 7.1 KB, K = 8
+//   50 KB; XDbl on the host (cap_x(K+1) x 16 B): K = 4 39 KB, K = 5 78 KB,
+//   K = 8 820 KB (inside the 4 MB of a TBB or OpenMP worker; only inputs
+//   outside the double window get there). XDbl on the device, permutations:
+//   about 11 cap_x(K+1) x 16 B (K = 5: 43 KB). The SoS memo: 2^(2K-1) bytes
+//   (K = 5: 512 B, K = 8: 32 KB). Measured kernel frames (ptxas, sm_90, one
+//   thread running lambda_sign_staged<K>, kernels_cuda/predicates_device.cuh):
+//   K = 3 42 KB, K = 4 82 KB, K = 5 107 KB — the driver raises the per-thread
+//   stack limit at launch; a kernel should run the exact stage as a separate
+//   pass over the few undecided calls (thesis §6.4.2), as classify.cuh does.
 #pragma once
 
 #include <cstdint>
