@@ -1,7 +1,9 @@
 // bench.hpp — `flipflop bench ...`: timings of flipflop's building blocks and
 // of the peers a user would pick instead (DESIGN.md, "Benchmarks").
 //
-//   flipflop bench predicates [--n N] [--reps R] [--seed S]
+//   flipflop bench predicates [--n N] [--reps R] [--seed S] [--csv]
+//                  (each stage of the staged predicates alone, CGAL Epick and
+//                  GMP; columns and input families in bench_predicates.cpp)
 //   flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]
 //                  [--thickness T] [--weights LO,HI] [--hull-points H]
 //

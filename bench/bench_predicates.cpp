@@ -1,24 +1,58 @@
-// bench_predicates.cpp — `flipflop bench predicates [--csv]`: the cost of
-// exactness, stage by stage (predicates/staged.hpp).
+// bench_predicates.cpp — `flipflop bench predicates [--n N] [--reps R] [--seed S]
+// [--csv]`: the cost of exactness, stage by stage (predicates/staged.hpp).
 //
 // For each predicate (orient2d..orient6d: k = d+1 points in R^d; power2d..
 // power5d: k = d+2 weighted points, the lifted test) and four input families,
-// the median over R runs of the time per call of
-//   flipflop_ns    the default path, pred::lambda_sign with the input's
-//                  StaticFilter and point ids (Simulation of Simplicity): static
-//                  filter, semi-static filter, dynamic filter, exact stage, SoS;
-//   static_ns      the static filter alone (StaticFilter::for_points over the
-//                  family's points, built before timing);
-//   dynamic_ns     the dynamic (ErrDouble running-error) filter alone;
-//   expansion_ns   the exact stage alone, with SoS (expansion arithmetic);
-//   cgal_epick_ns  CGAL Epick's predicate (orientation, Epick_d in 4..6 D,
-//                  power_side_of_oriented_power_circle_2 / _sphere_3 with the
-//                  weights): empty where CGAL has none;
-//   gmp_ns         the GMP oracle (Mode::gmp, with SoS);
-// and the fractions of calls the static and the dynamic filter decide alone.
-// Before anything is timed every stage that decides, the default path and
-// CGAL (up to its fixed sign convention) are checked against GMP on every
-// call; a disagreement is an error, never a row.
+// n calls on fresh points each, the median over R runs of (time of the n
+// calls) / n, in ns, of
+//   flipflop_ns    the default path as the algorithms call it,
+//                  pred::lambda_sign(&filter, k, ids, p, w) with point ids
+//                  0..k-1: static filter, semi-static filter, dynamic filter,
+//                  exact stage and, where the determinant is 0 (the degenerate
+//                  family), Simulation of Simplicity — a question CGAL does not
+//                  answer (it returns 0 there);
+//   static_ns      stage::static_filter alone, with the StaticFilter::for_points
+//                  of all the family's points, built before timing (the
+//                  per-input bound: CGAL's static filters, thesis §6.4.2);
+//   dynamic_ns     stage::dynamic alone, the ErrDouble running-error filter;
+//   expansion_ns   stage::expansion_sos alone: the exact sign, and the SoS sign
+//                  where it is 0, in Shewchuk's expansion arithmetic ([She97]
+//                  "Adaptive Precision Floating-Point Arithmetic and Fast
+//                  Robust Geometric Predicates", predicates.c), unbounded
+//                  exponents outside the double window;
+//   cgal_epick_ns  CGAL's Exact_predicates_inexact_constructions_kernel
+//                  (peers/cgal_predicates): Orientation_2/_3, Epick_d<Dimension_
+//                  tag<d>> orientation in 4..6 D, power_side_of_oriented_power_
+//                  circle_2 / _sphere_3 with the weights; an empty field where
+//                  Epick has no such predicate (power4d, power5d), never a guess;
+//   gmp_ns         stage::gmp_sos alone: the same question in GMP (the oracle,
+//                  and the exact stage of the path before the staged one);
+// then static_decides / dynamic_decides, the fractions of the n calls that the
+// static / the dynamic filter decides alone (each run on its own, not after
+// the other). The semi-static filter is not a column; it is checked below.
+//
+// Checks, on every call, before flipflop's stages are timed (CGAL: the signs of
+// its timed runs, checked before the row is printed). A disagreement throws:
+// exit code 3 and a message naming the stage, call and signs, never a row.
+//   - static, semi-static and dynamic filters, when they decide, and the default
+//     path and the expansion stage always, against stage::gmp;
+//   - with point ids 0..k-1, the default path with SoS and stage::expansion_sos
+//     against stage::gmp_sos;
+//   - CGAL against stage::gmp times (-1)^d, d the dimension of the points.
+//     flipflop's sign is that of det Λ, rows (p_i, 1) with the 1-column last
+//     (the lifted column h_i = |p_i|^2 - w_i before it in a power test):
+//     Shewchuk's convention, orient2d > 0 iff counter-clockwise, incircle > 0
+//     iff inside. Orientation, k = d + 1: subtract row 0 from the others and
+//     expand along the 1-column, whose only 1 left is at (0, d):
+//     det Λ = (-1)^d det[p_i - p_0]_{i=1..d}, and det[p_i - p_0] is what CGAL's
+//     Orientation_2/_3 and Epick_d's Orientation_of_points take the sign of.
+//     Power test, k = d + 2, t the last point: subtracting row t leaves its 1
+//     at (d+1, d+1), so det Λ = det[p_i - t, h_i - h_t]; h_i - h_t = |p_i -
+//     t|^2 + 2 t.(p_i - t) - w_i + w_t, and the middle term is a combination
+//     of the first d columns: det Λ = det[p_i - t, |p_i - t|^2 - w_i + w_t],
+//     which CGAL returns in 2D and negates in 3D (kernel_ftC2.h / kernel_ftC3.h,
+//     power_side_of_oriented_power_circleC2 / _sphereC3): (-1)^d again.
+//     So CGAL = (-1)^d flipflop on every call, 0 exactly where it is 0.
 //
 // Families:
 //   random           coordinates uniform in [0, 1] (weights in [0, 0.01]).
@@ -30,10 +64,12 @@
 //   degenerate       exactly degenerate small integers: orient, the last point
 //                    p0 + t (p1 - p0) with integer t; power, weights
 //                    w = |x|^2 - a.x - b (the lifted points on one hyperplane):
-//                    every call has determinant 0 and SoS decides.
+//                    every call has determinant 0, no filter decides and every
+//                    call reaches the exact stage.
 //   extreme          every value of a random magnitude class (subnormal, ~1e-300,
-//                    ~1, ~1e300) and sign: outside the double window of the exact
-//                    stage (its unbounded-exponent arithmetic).
+//                    ~1, ~1e300) and sign, mixed within each call: outside the
+//                    double window of the exact stage (its unbounded-exponent
+//                    arithmetic); the static filter is off (subnormals).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -218,10 +254,12 @@ struct Row {
   double static_decides = 0, dynamic_decides = 0;
 };
 
-[[noreturn]] void disagree(const Kind& kind, Family f, const char* what, std::size_t i) {
+[[noreturn]] void disagree(const Kind& kind, Family f, const char* what, std::size_t i, int got,
+                          int want) {
   throw std::runtime_error(std::string("flipflop bench predicates: ") + kind.name + ", " +
                            family_name(f) + ": " + what + " differs from GMP on call " +
-                           std::to_string(i));
+                           std::to_string(i) + " (sign " + std::to_string(got) + ", expected " +
+                           std::to_string(want) + ")");
 }
 
 Row measure(const Kind& kind, Family fam, const Args& a) {
@@ -231,22 +269,30 @@ Row measure(const Kind& kind, Family fam, const Args& a) {
       c.coords.data(), c.n * k, kind.dim, kind.lifted ? c.weights.data() : nullptr);
   PointId ids[8];
   for (int j = 0; j < k; ++j) ids[j] = static_cast<PointId>(j);
-  // ---- agreement with GMP, every call ----
-  std::vector<int> exact(c.n), sos(c.n);
+  // ---- agreement with GMP, every call (nothing timed yet) ----
+  std::vector<int> exact(c.n);
   std::size_t st_dec = 0, dyn_dec = 0;
   for (std::size_t i = 0; i < c.n; ++i) {
-    exact[i] = pred::stage::gmp(k, c.p(i), c.w(i));
-    sos[i] = pred::stage::gmp_sos(k, ids, c.p(i), c.w(i));
-    const int st = pred::stage::static_filter(filter, k, c.p(i), c.w(i));
-    const int dy = pred::stage::dynamic(k, c.p(i), c.w(i));
-    if (st != 0 && st != exact[i]) disagree(kind, fam, "the static filter", i);
-    if (dy != 0 && dy != exact[i]) disagree(kind, fam, "the dynamic filter", i);
+    const double* const* p = c.p(i);
+    const double* w = c.w(i);
+    exact[i] = pred::stage::gmp(k, p, w);
+    const int st = pred::stage::static_filter(filter, k, p, w);
+    const int ss = pred::stage::semi_static(k, p, w);
+    const int dy = pred::stage::dynamic(k, p, w);
+    if (st != 0 && st != exact[i]) disagree(kind, fam, "the static filter", i, st, exact[i]);
+    if (ss != 0 && ss != exact[i]) disagree(kind, fam, "the semi-static filter", i, ss, exact[i]);
+    if (dy != 0 && dy != exact[i]) disagree(kind, fam, "the dynamic filter", i, dy, exact[i]);
     st_dec += st != 0;
     dyn_dec += dy != 0;
-    if (pred::lambda_sign(&filter, k, ids, c.p(i), c.w(i)) != sos[i])
-      disagree(kind, fam, "the default path", i);
-    if (pred::stage::expansion_sos(k, ids, c.p(i), c.w(i)) != sos[i])
-      disagree(kind, fam, "the expansion stage", i);
+    const int ex = pred::stage::expansion(k, p, w);
+    if (ex != exact[i]) disagree(kind, fam, "the expansion stage", i, ex, exact[i]);
+    const int ff = pred::lambda_sign(&filter, k, nullptr, p, w);
+    if (ff != exact[i]) disagree(kind, fam, "the default path", i, ff, exact[i]);
+    const int sos = pred::stage::gmp_sos(k, ids, p, w);
+    const int ex_sos = pred::stage::expansion_sos(k, ids, p, w);
+    if (ex_sos != sos) disagree(kind, fam, "the expansion stage with SoS", i, ex_sos, sos);
+    const int ff_sos = pred::lambda_sign(&filter, k, ids, p, w);
+    if (ff_sos != sos) disagree(kind, fam, "the default path with SoS", i, ff_sos, sos);
   }
   Row r;
   r.static_decides = static_cast<double>(st_dec) / static_cast<double>(c.n);
@@ -258,12 +304,14 @@ Row measure(const Kind& kind, Family fam, const Args& a) {
   r.stat = ns_per_call(c.n, a.reps, [&](std::size_t i) {
     return pred::stage::static_filter(filter, k, c.p(i), c.w(i));
   });
-  r.dyn = ns_per_call(c.n, a.reps, [&](std::size_t i) { return pred::stage::dynamic(k, c.p(i), c.w(i)); });
+  r.dyn = ns_per_call(c.n, a.reps, [&](std::size_t i) {
+    return pred::stage::dynamic(k, c.p(i), c.w(i));
+  });
   r.expansion = ns_per_call(c.n, a.reps, [&](std::size_t i) {
     return pred::stage::expansion_sos(k, ids, c.p(i), c.w(i));
   });
   r.gmp = ns_per_call(c.n, a.reps, [&](std::size_t i) {
-    return pred::lambda_sign(k, ids, c.p(i), c.w(i), Mode::gmp);
+    return pred::stage::gmp_sos(k, ids, c.p(i), c.w(i));
   });
   if (peers::cgal_epick_has(k, kind.dim, kind.lifted)) {
     peers::PredicateCalls pc;
@@ -274,17 +322,12 @@ Row measure(const Kind& kind, Family fam, const Args& a) {
     pc.coords = c.coords.data();
     pc.weights = kind.lifted ? c.weights.data() : nullptr;
     std::vector<int> cg;
-    const double s = peers::cgal_epick_run(pc, a.reps, cg);
-    // CGAL's sign is flipflop's exact sign times a constant of the predicate
-    // (conventions); it must be the same constant on every call, and 0 exactly
-    // where the exact sign is 0.
-    int ratio = 0;
-    for (std::size_t i = 0; i < c.n; ++i) {
-      if ((cg[i] == 0) != (exact[i] == 0)) disagree(kind, fam, "CGAL Epick", i);
-      if (exact[i] == 0) continue;
-      if (ratio == 0) ratio = cg[i] * exact[i];
-      if (cg[i] * exact[i] != ratio) disagree(kind, fam, "CGAL Epick (sign convention)", i);
-    }
+    const double s = peers::cgal_epick_run(pc, a.reps, cg);  // points converted before timing
+    // CGAL's sign is (-1)^d times flipflop's (header comment), on every call.
+    const int convention = kind.dim % 2 == 0 ? 1 : -1;
+    for (std::size_t i = 0; i < c.n; ++i)
+      if (cg[i] != convention * exact[i])
+        disagree(kind, fam, "CGAL Epick", i, cg[i], convention * exact[i]);
     r.cgal = s / static_cast<double>(c.n) * 1e9;
   }
   return r;

@@ -639,6 +639,107 @@ FF_HD inline int det_translated(const double* const* p, const double* w) {
   return MinorOf<A, K - 1>::sign(T, kAll, kAll);
 }
 
+// Shewchuk's adaptive stages B and C for orient2d / orient3d (K = 3, 4, no
+// lift) [She97 §4.3, orient2dadapt / orient3dadapt], on T (rows p_i - p_{K-1},
+// det T = det Λ). Stage B: the determinant of the rounded differences (heads)
+// exactly, as an expansion (<= 4 / 24 components); its estimate decides when
+// it exceeds errboundB x the permanent of |heads|, the bound on what the
+// neglected tails (|tail| <= u |head|) can change. When every tail is 0 the
+// stage-B expansion is the exact determinant. Stage C adds the first-order
+// tail terms in floating point and decides beyond errboundC x permanent +
+// resulterrbound x |det|. Shewchuk's bounds assume relative rounding errors
+// only: inside the double window (Range::fits, checked by the caller) every
+// value is a multiple of 2^-1074, so no operation underflows inexactly and
+// none overflows. Returns 2 when undecided (the caller's full exact stage).
+template <int K>
+FF_HD inline int orient_adaptive(const double* const* p) {
+  static_assert(K == 3 || K == 4, "orient2d / orient3d only");
+  constexpr int N = K - 1;
+  constexpr double eps = 0x1p-53;
+  constexpr double resulterrbound = (3.0 + 8.0 * eps) * eps;
+  double t[N * N], tail[N * N];
+  bool exact = true;
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      Dbl::two_sum(p[i][j], -p[K - 1][j], t[i * N + j], tail[i * N + j]);
+      exact = exact && tail[i * N + j] == 0.0;
+    }
+  // 2 x 2 minor of rows r, r+1 on columns a, b: t_ra t_(r+1)b - t_rb t_(r+1)a
+  auto minor2 = [&](int r, int a, int b, double* out) {
+    double x[2], y[2];
+    Dbl::two_product(t[r * N + a], t[(r + 1) * N + b], x[1], x[0]);
+    Dbl::two_product(t[r * N + b], t[(r + 1) * N + a], y[1], y[0]);
+    y[0] = -y[0];
+    y[1] = -y[1];
+    return sum_zeroelim<Dbl>(2, x, 2, y, out);
+  };
+  auto estimate = [](int len, const double* e) {
+    double v = e[0];
+    for (int i = 1; i < len; ++i) v += e[i];
+    return v;
+  };
+  if constexpr (K == 3) {
+    constexpr double errB = (2.0 + 12.0 * eps) * eps;
+    constexpr double errC = (9.0 + 64.0 * eps) * eps * eps;
+    const double acx = t[0], acy = t[1], bcx = t[2], bcy = t[3];
+    const double detsum = std::fabs(acx * bcy) + std::fabs(acy * bcx);
+    double B[4];
+    const int len = minor2(0, 0, 1, B);
+    if (exact) return sign_of<Dbl>(len, B);
+    double det = estimate(len, B);
+    double bound = errB * detsum;
+    if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+    const double acxt = tail[0], acyt = tail[1], bcxt = tail[2], bcyt = tail[3];
+    bound = errC * detsum + resulterrbound * std::fabs(det);
+    det += (acx * bcyt + bcy * acxt) - (acy * bcxt + bcx * acyt);
+    if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+    return 2;
+  } else {
+    constexpr double errB = (3.0 + 28.0 * eps) * eps;
+    constexpr double errC = (26.0 + 288.0 * eps) * eps * eps;
+    // rows a, b, c minus d; Shewchuk's names
+    const double adx = t[0], ady = t[1], adz = t[2], bdx = t[3], bdy = t[4], bdz = t[5];
+    const double cdx = t[6], cdy = t[7], cdz = t[8];
+    const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * std::fabs(adz) +
+                             (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * std::fabs(bdz) +
+                             (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * std::fabs(cdz);
+    // det T along the z column: adz (bdx cdy - bdy cdx) - bdz (adx cdy - ady cdx)
+    //                           + cdz (adx bdy - ady bdx)
+    double m_bc[4], m_ac[4], m_ab[4], s0[8], s1[8], s2[8], u[16], B[24];
+    const int l_bc = minor2(1, 0, 1, m_bc);  // rows b, c: bdx cdy - bdy cdx
+    int l_ac = 0;
+    {
+      double x[2], y[2];  // rows a, c: adx cdy - ady cdx
+      Dbl::two_product(adx, cdy, x[1], x[0]);
+      Dbl::two_product(ady, cdx, y[1], y[0]);
+      y[0] = -y[0];
+      y[1] = -y[1];
+      l_ac = sum_zeroelim<Dbl>(2, x, 2, y, m_ac);
+    }
+    const int l_ab = minor2(0, 0, 1, m_ab);  // rows a, b: adx bdy - ady bdx
+    const int a = scale_zeroelim<Dbl>(l_bc, m_bc, adz, s0);
+    const int b = scale_zeroelim<Dbl>(l_ac, m_ac, -bdz, s1);
+    const int c = scale_zeroelim<Dbl>(l_ab, m_ab, cdz, s2);
+    const int ab = sum_zeroelim<Dbl>(a, s0, b, s1, u);
+    const int len = sum_zeroelim<Dbl>(ab, u, c, s2, B);
+    if (exact) return sign_of<Dbl>(len, B);
+    double det = estimate(len, B);
+    double bound = errB * permanent;
+    if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+    const double adxt = tail[0], adyt = tail[1], adzt = tail[2], bdxt = tail[3], bdyt = tail[4];
+    const double bdzt = tail[5], cdxt = tail[6], cdyt = tail[7], cdzt = tail[8];
+    bound = errC * permanent + resulterrbound * std::fabs(det);
+    det += (adz * ((bdx * cdyt + cdy * bdxt) - (bdy * cdxt + cdx * bdyt)) +
+            adzt * (bdx * cdy - bdy * cdx)) +
+           (bdz * ((cdx * adyt + ady * cdxt) - (cdy * adxt + adx * cdyt)) +
+            bdzt * (cdx * ady - cdy * adx)) +
+           (cdz * ((adx * bdyt + bdy * adxt) - (ady * bdxt + bdx * adyt)) +
+            cdzt * (adx * bdy - ady * bdx));
+    if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+    return 2;
+  }
+}
+
 // Exact sign of det Λ of K points in the given row order; with `sos`, the
 // Simulation-of-Simplicity sign (rows must then be sorted by increasing,
 // distinct point index).
@@ -653,7 +754,10 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
   if (!range.finite) return non_finite_input();
   const int degree = w ? K : K - 1;
   if (range.fits(degree)) {
-    const int s = det_translated<Dbl, K>(p, w);
+    int s = 2;
+    if constexpr (K == 3 || K == 4)
+      if (!w) s = orient_adaptive<K>(p);
+    if (s == 2) s = det_translated<Dbl, K>(p, w);
     if (s != 0 || !sos) return s;
     LambdaX<Dbl, K> L;
     build_lambda<Dbl, K>(p, w, L);
