@@ -154,6 +154,18 @@ FF_HD inline double det_plain(const double* t) {
     const double m02 = t[0] * t[5] - t[2] * t[3];
     const double m12 = t[1] * t[5] - t[2] * t[4];
     return t[6] * m12 - t[7] * m02 + t[8] * m01;
+  } else if constexpr (N == 4) {
+    // the loop below unrolled: the same products and sums in the same order
+    // (level 2 on rows 0-1, level 3 on rows 0-2, then row 3), so the rounding
+    // depth of (1) is unchanged
+    const double m01 = t[0] * t[5] - t[1] * t[4], m02 = t[0] * t[6] - t[2] * t[4];
+    const double m03 = t[0] * t[7] - t[3] * t[4], m12 = t[1] * t[6] - t[2] * t[5];
+    const double m13 = t[1] * t[7] - t[3] * t[5], m23 = t[2] * t[7] - t[3] * t[6];
+    const double d012 = t[8] * m12 - t[9] * m02 + t[10] * m01;
+    const double d013 = t[8] * m13 - t[9] * m03 + t[11] * m01;
+    const double d023 = t[8] * m23 - t[10] * m03 + t[11] * m02;
+    const double d123 = t[9] * m23 - t[10] * m13 + t[11] * m12;
+    return -(t[12] * d123) + t[13] * d023 - t[14] * d013 + t[15] * d012;
   } else {
     constexpr int kSubsets = 1 << N;
     double d[kSubsets];
