@@ -4,6 +4,7 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -554,8 +555,15 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, 
   ref::Hull3Stats st;
   std::vector<Triangle> out;
   if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
-  tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-  arena.execute([&] { out = compute(ps, st); });
+  if (opt.threads == 0) {
+    out = compute(ps, st);
+  } else {
+    // exactly `threads` threads, also more than the machine's cores (TBB caps
+    // its worker pool at the core count unless told otherwise)
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
+    tbb::task_arena arena(opt.threads);
+    arena.execute([&] { out = compute(ps, st); });
+  }
   if (stats) *stats = st;
   return out;
 }
