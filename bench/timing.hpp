@@ -43,6 +43,7 @@ struct Args {
   bool weighted = false;
   double wlo = 0, whi = 0;
   std::size_t hull_points = 0;
+  std::vector<std::string> run;  // --run: row name prefixes (case-insensitive); empty: every row
 };
 
 int bench_predicates(const Args& a);
