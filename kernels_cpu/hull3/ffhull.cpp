@@ -21,6 +21,7 @@
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/canonical.hpp"
+#include "reference/checked.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/hull3/flip_flop_3d.hpp"
 #include "reference/hull3/polyhedron3.hpp"
@@ -269,27 +270,42 @@ Units make_units(const Segments& S) {
   return U;
 }
 
+// The buffers of the rounds, allocated once (fresh allocations every round
+// cost more in page faults than the round's work): the next round's segments
+// and the per-point child codes.
+struct Buffers {
+  Segments next;
+  std::vector<std::uint32_t> code;
+};
+
 // Regrouping after a round: every point of segment k goes to child c in
-// [0, m) of k (classify(k, p, key) -> c, or kNone: dropped; key: its distance
-// key for the child); child c of segment k is triangle child_tri(k, c).
-// Stable: per-unit counts, a sequential scan in the order (segment, child,
-// unit), a parallel scatter. Returns the number of dropped points.
+// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
+// coordinates; key: its distance key for the child); child c of segment k is
+// triangle child_tri(k, c). Stable: per-unit counts, a sequential scan in the
+// order (segment, child, unit), a parallel scatter. With `input`, the
+// coordinates are read from the input (round 0: S.xyz is empty). Returns the
+// number of dropped points.
 template <class Classify, class ChildTri>
-std::size_t regroup(Segments& S, const Units& U, int m, const Classify& classify, const ChildTri& child_tri) {
+std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet* input, const Classify& classify,
+                    const ChildTri& child_tri) {
   const std::size_t nu = U.seg.size();
-  std::vector<std::uint32_t> code(S.pts.size());
+  const auto coords = [&](std::size_t i) { return input ? input->point(S.pts[i]) : &S.xyz[3 * i]; };
+  if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
+  std::uint32_t* code = B.code.data();
   std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* c = &cnt[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
-        code[i] = classify(U.seg[u], S.pts[i], &S.xyz[3 * i], S.key[i]);  // key[i]: now the child's key
+        code[i] = classify(U.seg[u], S.pts[i], coords(i), S.key[i]);  // key[i]: now the child's key
         if (code[i] != kNone) ++c[code[i]];
       }
     }
   });
   std::vector<std::size_t> off(nu * static_cast<std::size_t>(m));
-  Segments N;
+  Segments N = std::move(B.next);
+  N.lo.clear();
+  N.tri.clear();
   std::size_t pos = 0;
   for (std::size_t k = 0; k < S.count(); ++k)
     for (int c = 0; c < m; ++c) {
@@ -312,11 +328,12 @@ std::size_t regroup(Segments& S, const Units& U, int m, const Classify& classify
           const std::size_t j = o[code[i]]++;
           N.pts[j] = S.pts[i];
           N.key[j] = S.key[i];
-          std::memcpy(&N.xyz[3 * j], &S.xyz[3 * i], 3 * sizeof(double));
+          std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
         }
     }
   });
   const std::size_t dropped = S.pts.size() - pos;
+  B.next = std::move(S);
   S = std::move(N);
   return dropped;
 }
@@ -380,11 +397,8 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
   S.pts.reserve(n - 4);
   for (Index p = 0; p < n; ++p)
     if (p != a && p != b && p != c && p != d) S.pts.push_back(p);
-  S.key.assign(S.pts.size(), 0.0);
-  S.xyz.resize(3 * S.pts.size());
-  par_for(S.pts.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i) std::memcpy(&S.xyz[3 * i], ps.point(S.pts[i]), 3 * sizeof(double));
-  });
+  S.key.resize(S.pts.size());  // written by round 0's classification
+  Buffers B;
   S.lo = {0, S.pts.size()};
   S.tri = {0};
   {
@@ -404,7 +418,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       }
       return X.inner(face[t], &M.v[3 * t], p, x, key) ? kNone : t;  // line 14: inside the tetrahedron (s, t)
     };
-    st.discarded_early += regroup(S, U, 4, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
+    st.discarded_early += regroup(S, B, U, 4, &ps, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
   }
 
   // lines 6-14 in rounds: every triangle with points is split at once
@@ -505,7 +519,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
       return X.inner(pl[3 + ch], &M.v[3 * t], p, x, key) ? kNone : ch;
     };
-    const std::size_t dropped = regroup(S, U, 3, classify, [&](std::size_t k, int ch) {
+    const std::size_t dropped = regroup(S, B, U, 3, nullptr, classify, [&](std::size_t k, int ch) {
       return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
     });
     st.discarded_early += dropped - K;  // the K inserted points are not discarded
@@ -517,11 +531,27 @@ template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
   const Mesh M = construct(ps, f, s, sd, tet, st);
-  std::vector<Triangle> tris(M.size());
-  for (std::uint32_t t = 0; t < M.size(); ++t) tris[t] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
   st.flips_1_3 = st.insertions;
+  // the reference's polyhedron structure, filled from the flat arrays (same
+  // conventions: adj[t][k] is the triangle across edge k of t)
+  ref::poly::Polyhedron3 P;
+  P.n = ps.size();
+  P.tri.resize(M.size());
+  P.adj.resize(M.size());
+  P.alive.assign(M.size(), 1);
+  P.corner.assign(P.n, kNone);
+  P.deg.assign(P.n, 0);
+  for (std::uint32_t t = 0; t < M.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      P.tri[t][k] = M.v[3 * t + k];
+      P.adj[t][k] = M.nb[3 * t + k];
+      P.corner[M.v[3 * t + k]] = t;
+      ++P.deg[M.v[3 * t + k]];
+    }
+  if constexpr (FF_CHECKED)
+    FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
   // line 15: flip-flop (Algorithm 6), sequential (the reference's)
-  ref::ff3::State state = ref::ff3::make_state(ps, s, ref::poly::build(ps.size(), tris));
+  ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
   ref::ff3::run(state, &st);
   return canonical_triangles(ref::poly::triangles(state.P));
 }
