@@ -125,7 +125,9 @@ std::string hull3_counts(const ref::Hull3Stats& st) {
 
 int run_compute(const ComputeArgs& a) {
   if (a.strict && a.kind != "hull3") throw UsageError("--strict applies to hull3 only");
+  const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
+  const double t_read = seconds_since(t_read0);
   const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
   if (backend == "cpu" && algo != "ffhull")
@@ -185,16 +187,18 @@ int run_compute(const ComputeArgs& a) {
   // The strict view is derived from the certified canonical hull.
   std::string strict_text;
   if (a.strict) strict_text = ref::format_strict_hull3(ref::strict_hull3(ps, tris));
+  const auto t2 = Clock::now();
   write_output(a.out, [&](std::ostream& os) {
     if (a.strict) os << strict_text;
     else if (a.kind == "hull2") io::write_hull2(os, cycle);
     else io::write_triangles(os, tris);
   });
+  const double t_write = seconds_since(t2);
   if (a.stats) {
     std::cerr << a.kind << ": backend " << backend << (backend == "cpu" && a.threads ? " (" + std::to_string(a.threads) + " threads)" : std::string()) << ", algo " << algo << ", " << ps.size() << " points, "
               << (a.kind == "hull2" ? cycle.size() : tris.size())
               << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
-              << t_certify << " s (canonical)\n";
+              << t_certify << " s (canonical); read " << t_read << " s, write " << t_write << " s\n";
     if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
   }
   return 0;
