@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -527,6 +528,158 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
   return M;
 }
 
+// ---- line 15: flip-flop (Algorithm 6), sequential --------------------------------
+// The reference's FIFO run (ff3::run, ff3::decide, ff3::apply of
+// reference/hull3/flip_flop_3d.cpp) with the same decisions in the same
+// order — every predicate exact, so the run is the same operation for
+// operation — but cheaper: the edge is located once per step (the reference
+// locates it in run, decide, apply and flip22), from a hint (the slot of a
+// triangle that had it when it was queued, or a neighbour of that slot)
+// before walking around its tail, and orient3d of input points goes through
+// the per-input static filter first.
+class FlipFlop {
+ public:
+  FlipFlop(ref::ff3::State& st, const StaticFilter& f, ref::Hull3Stats& stats) : st_(st), P_(st.P), f_(f), stats_(stats) {}
+
+  void run() {
+    using Action = ref::ff3::Action;
+    std::deque<Queued> Q;  // line 2: every edge, in the order of ref::poly::edges
+    for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
+      if (P_.alive[t])
+        for (int k = 0; k < 3; ++k)
+          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) Q.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
+    while (!Q.empty()) {  // line 3
+      const auto [u, w, hint] = Q.front();  // line 4
+      Q.pop_front();
+      const ref::poly::DEdge e = locate(u, w, hint);
+      if (!e.valid()) continue;  // flipped away since it was pushed
+      const Quad q{u, w, P_.apex(e), P_.apex(P_.twin(e))};
+      const ref::ff3::Decision d = decide(q);
+      switch (d.action) {
+        case Action::none: break;
+        case Action::label: {  // lines 16-19: the edges around the labelled vertex
+          st_.labelled[d.inner] = 1;
+          ++stats_.labelled_non_extreme;
+          const Index a = d.inner;
+          const std::uint32_t t0 = P_.corner[a];
+          std::uint32_t t = t0;
+          std::uint32_t steps = 0;
+          do {  // ref::poly::link, with the slots
+            int k = 0;
+            while (P_.tri[t][k] != a) ++k;
+            Q.push_back({a, P_.tri[t][(k + 1) % 3], t});
+            t = P_.adj[t][(k + 2) % 3];
+          } while (t != t0 && ++steps <= P_.deg[a]);
+          break;
+        }
+        case Action::flip31_v:
+        case Action::flip31_d: {  // lines 8-9
+          const std::vector<Index> L = ref::poly::link(P_, d.inner);
+          const std::uint32_t t = ref::poly::flip31(P_, d.inner);
+          st_.removed[d.inner] = 1;
+          ++stats_.flips_3_1;
+          Q.push_back({L[0], L[1], t});
+          Q.push_back({L[1], L[2], t});
+          Q.push_back({L[2], L[0], t});
+          break;
+        }
+        case Action::flip22_v:
+        case Action::flip22_d:  // lines 12-15
+          ref::poly::flip22(P_, e);  // (a, d, c) and (d, b, c) in the two slots of e and its twin
+          ++stats_.flips_2_2;
+          Q.push_back({q.a, q.c, e.t});
+          Q.push_back({q.b, q.c, e.t});
+          Q.push_back({q.a, q.d, e.t});
+          Q.push_back({q.b, q.d, e.t});
+          break;
+      }
+    }
+    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left.
+    if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
+  }
+
+ private:
+  struct Quad {
+    Index a, b, c, d;  // edge a -> b, link c (apex of a b c) and d (apex of b a d)
+  };
+  struct Queued {
+    Index u, w;
+    std::uint32_t hint;  // a slot near the edge when it was queued
+  };
+  // the directed edge u -> w in slot t, or invalid
+  ref::poly::DEdge in_slot(std::uint32_t t, Index u, Index w) const {
+    if (t >= P_.tri.size() || !P_.alive[t]) return {};
+    const Triangle& T = P_.tri[t];
+    for (int k = 0; k < 3; ++k) {
+      if (T[k] == u && T[(k + 1) % 3] == w) return {t, k};
+      if (T[k] == w && T[(k + 1) % 3] == u) return P_.twin({t, k});
+    }
+    return {};
+  }
+  // find_edge(u, w), trying the hint and its neighbours first
+  ref::poly::DEdge locate(Index u, Index w, std::uint32_t hint) const {
+    if (ref::poly::DEdge e = in_slot(hint, u, w); e.valid()) return e;
+    if (hint < P_.tri.size() && P_.alive[hint])
+      for (int j = 0; j < 3; ++j)
+        if (ref::poly::DEdge e = in_slot(P_.adj[hint][j], u, w); e.valid()) return e;
+    return ref::poly::find_edge(P_, u, w);
+  }
+  int orient3(Index a, Index b, Index c, Index p) const {
+    const PointSet& ps = *st_.ps;
+    return orient(f_, a, ps.point(a), b, ps.point(b), c, ps.point(c), p, ps.point(p));
+  }
+  bool in_cone(Index a, Index b, Index c, Index p) const { return ref::poly::in_cone(*st_.s, a, b, c, p); }
+
+  // ff3::decide, line by line (flip_flop_3d.cpp)
+  ref::ff3::Decision decide(const Quad& q) const {
+    using Action = ref::ff3::Action;
+    constexpr Index kNo = ~Index{0};
+    Index x = kNo;  // line 5: the labelled vertex of smallest index
+    for (Index v : {q.a, q.b, q.c, q.d})
+      if (st_.labelled[v] && v < x) x = v;
+    const int o = orient3(q.a, q.b, q.c, q.d);
+    const bool is_reflex = o < 0;
+    if (!is_reflex && x == kNo) return {};
+    // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
+    int a_in = -1;  // in_cone(b, c, d, a), when computed
+    Index inner = kNo;
+    if (P_.deg[q.a] == 3) {
+      a_in = in_cone(q.b, q.c, q.d, q.a);
+      if (a_in) inner = q.a;
+    }
+    if (inner == kNo && P_.deg[q.b] == 3 && in_cone(q.a, q.c, q.d, q.b)) inner = q.b;
+    if (inner != kNo) {  // line 8
+      if (st_.labelled[inner]) return {Action::flip31_d, inner};
+      if (is_reflex) return {Action::flip31_v, inner};
+      return {};
+    }
+    // line 11: C_s(T_e) convex
+    if (a_in < 0) a_in = in_cone(q.b, q.c, q.d, q.a);
+    const bool b_in = !a_in && in_cone(q.a, q.c, q.d, q.b);
+    if (!a_in && !b_in) {
+      if (x == kNo) return is_reflex ? ref::ff3::Decision{Action::flip22_v, 0} : ref::ff3::Decision{};
+      // lines 14-15: D-criterion, flippable when s is not inside abcd
+      if ((x == q.a || x == q.b) && !s_in_tetrahedron(q, o)) return {Action::flip22_d, 0};
+      return {};
+    }
+    // lines 16-18: label the inner endpoint (Lemma 6.5)
+    const Index in = a_in ? q.a : q.b;
+    if (!st_.labelled[in] && is_reflex) return {Action::label, in};
+    return {};
+  }
+  // s inside the tetrahedron abcd, o = orient3d(a, b, c, d) (ff3's s_in_tetrahedron)
+  bool s_in_tetrahedron(const Quad& q, int o) const {
+    const ref::KernelPoint& s = *st_.s;
+    return s.side(q.a, q.b, q.c) == o && -s.side(q.a, q.b, q.d) == o && s.side(q.a, q.c, q.d) == o &&
+           -s.side(q.b, q.c, q.d) == o;
+  }
+
+  ref::ff3::State& st_;
+  ref::poly::Polyhedron3& P_;
+  const StaticFilter& f_;
+  ref::Hull3Stats& stats_;
+};
+
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
@@ -550,9 +703,9 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
     }
   if constexpr (FF_CHECKED)
     FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
-  // line 15: flip-flop (Algorithm 6), sequential (the reference's)
+  // line 15: flip-flop (Algorithm 6), sequential
   ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
-  ref::ff3::run(state, &st);
+  FlipFlop(state, f, st).run();
   return canonical_triangles(ref::poly::triangles(state.P));
 }
 
