@@ -375,7 +375,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
                const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
   const std::size_t n = ps.size();
   const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
-  const auto [a, b, c, d] = tet;
+  const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
   // line 3: the tetrahedron, faces counter-clockwise from outside:
   // 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c)
   Mesh M;
