@@ -1,6 +1,7 @@
 // bench.cpp — command-line parsing and dispatch of `flipflop bench`.
 #include "bench/bench.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -20,7 +21,8 @@ using detail::Usage;
 const char* kUsage =
     "usage: flipflop bench predicates [--n N] [--reps R] [--seed S] [--csv]\n"
     "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
-    "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n";
+    "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n"
+    "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case)\n";
 
 unsigned long long to_count(const std::string& opt, const std::string& s) {
   char* end = nullptr;
@@ -63,6 +65,14 @@ Args parse(int argc, char** argv) {
       a.dist = val;
     } else if (opt == "--thickness") {
       a.thickness = to_double(opt, val);
+    } else if (opt == "--run") {
+      std::size_t start = 0;
+      while (start <= val.size()) {
+        const std::size_t comma = std::min(val.find(',', start), val.size());
+        if (comma > start) a.run.push_back(val.substr(start, comma - start));
+        start = comma + 1;
+      }
+      if (a.run.empty()) throw Usage("--run expects comma-separated row name prefixes");
     } else if (opt == "--hull-points") {
       a.hull_points = static_cast<std::size_t>(to_count(opt, val));
     } else if (opt == "--weights") {

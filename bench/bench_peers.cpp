@@ -5,7 +5,8 @@
 //
 //   hull2  flipflop graham-sort, graham-insert; Qhull (libqhull_r), CGAL
 //          ch_akl_toussaint, CGAL ch_graham_andrew
-//   hull3  flipflop ffhull, splay (twist-flip, quadratic, for n <= 20000);
+//   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
+//          flipflop ffhull, splay (twist-flip, quadratic, for n <= 20000);
 //          Qhull (libqhull_r, Qt), CGAL convex_hull_3
 //   dt2    flipflop ffrt, lawson; CGAL Delaunay_triangulation_2
 //   rt2    flipflop ffrt; CGAL Regular_triangulation_2
@@ -13,10 +14,13 @@
 // A timed run is one call: for a peer, the peers/ wrapper (copying the points
 // into the peer's types, the peer's computation, and sorting its output into
 // canonical order); for flipflop, the exact reference algorithm returning its
-// canonical output (not certified inside the timing). The peers' canonical outputs are compared with each other and the
+// canonical output (not certified inside the timing); flipflop:cpu likewise,
+// with TBB's default number of threads (the machine's cores). The peers' canonical outputs are compared with each other and the
 // result of that comparison is printed (in general position they must agree;
 // on degenerate input each peer breaks ties its own way, and flipflop's
 // algorithms agree with each other byte for byte).
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -24,6 +28,7 @@
 
 #include "bench/timing.hpp"
 #include "gen/generate.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
 #include "peers/peers.hpp"
 #include "reference/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
@@ -46,9 +51,23 @@ struct Row {
   std::size_t size = 0;
 };
 
+// --run: the row's name starts with one of the prefixes (case-insensitive).
+bool chosen(const Args& a, const std::string& name) {
+  if (a.run.empty()) return true;
+  for (const std::string& p : a.run)
+    if (p.size() <= name.size() &&
+        std::equal(p.begin(), p.end(), name.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); }))
+      return true;
+  return false;
+}
+
 template <class Output>
-int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Output>>& peers,
+int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Output>>& all_peers,
                   const char* size_label) {
+  std::vector<Peer<Output>> peers;
+  for (const Peer<Output>& p : all_peers)
+    if (chosen(a, p.name)) peers.push_back(p);
+  if (peers.empty()) throw Usage("--run matches no row");
   std::vector<Row> rows;
   std::vector<Output> outputs;
   std::vector<std::string> output_names;
@@ -131,6 +150,7 @@ int bench_peers(const Args& a) {
   }
   if (a.experiment == "hull3") {
     std::vector<Peer<Tris>> rows = {
+        {"flipflop:cpu (exact, TBB ffhull)", [](const PointSet& p) { return cpu::hull3_ffhull(p); }},
         {"flipflop ffhull (exact)", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
         {"flipflop splay (exact)", [](const PointSet& p) { return ref::hull3(p, "splay"); }}};
     // twist-flip's twisting stage is a bubble sort (thesis Thm 8.1): O(n^2)

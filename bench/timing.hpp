@@ -44,6 +44,7 @@ struct Args {
   double wlo = 0, whi = 0;
   std::size_t hull_points = 0;
   bool csv = false;  // predicates: CSV rows instead of the table
+  std::vector<std::string> run;  // --run: row name prefixes (case-insensitive); empty: every row
 };
 
 int bench_predicates(const Args& a);

@@ -10,6 +10,7 @@
 #include "io/index_io.hpp"
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
 #include "reference/dimension.hpp"
@@ -53,7 +54,14 @@ void write_output(const std::string& path, const std::function<void(std::ostream
 
 }  // namespace
 
-std::vector<std::string> available_backends() { return {"reference"}; }
+std::vector<std::string> available_backends(const std::string& kind) {
+  if (kind == "hull3") return {"cpu", "reference"};
+  return {"reference"};
+}
+
+std::string default_backend(const std::string& kind, const std::string& algo) {
+  return kind == "hull3" && algo == "ffhull" ? "cpu" : "reference";
+}
 
 std::vector<std::string> available_algorithms(const std::string& kind) {
   std::vector<std::string> algos;
@@ -117,8 +125,15 @@ std::string hull3_counts(const ref::Hull3Stats& st) {
 
 int run_compute(const ComputeArgs& a) {
   if (a.strict && a.kind != "hull3") throw UsageError("--strict applies to hull3 only");
+  const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
+  const double t_read = seconds_since(t_read0);
   const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
+  const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
+  if (backend == "cpu" && algo != "ffhull")
+    throw UsageError("the cpu backend computes --algo ffhull only, got '" + algo + "' (use --backend reference)");
+  if (a.threads != 0 && backend != "cpu")
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
     throw UsageError(a.in + ": " + std::to_string(ps.size()) + " points exceed the limit of " +
                      std::to_string(brute_limit(a.kind)) + " of the brute-force reference ('--algo brute')");
@@ -145,6 +160,13 @@ int run_compute(const ComputeArgs& a) {
              " (D-criterion flips among them " + std::to_string(st.flops) + "), 1-3 flips " +
              std::to_string(st.flips_1_3) + ", labelled redundant " + std::to_string(st.labelled_redundant) + ", discarded early " +
              std::to_string(st.discarded_early) + ", rounds " + std::to_string(st.rounds);
+  } else if (a.kind == "hull3" && backend == "cpu") {
+    // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference
+    ref::Hull3Stats st;
+    cpu::Hull3Options o;
+    o.threads = a.threads;
+    tris = cpu::hull3_ffhull(ps, o, &st);
+    counts = hull3_counts(st);
   } else if (a.kind == "hull3" && algo != "brute") {
     ref::Hull3Stats st;
     tris = ref::hull3(ps, algo, &st);
@@ -165,16 +187,18 @@ int run_compute(const ComputeArgs& a) {
   // The strict view is derived from the certified canonical hull.
   std::string strict_text;
   if (a.strict) strict_text = ref::format_strict_hull3(ref::strict_hull3(ps, tris));
+  const auto t2 = Clock::now();
   write_output(a.out, [&](std::ostream& os) {
     if (a.strict) os << strict_text;
     else if (a.kind == "hull2") io::write_hull2(os, cycle);
     else io::write_triangles(os, tris);
   });
+  const double t_write = seconds_since(t2);
   if (a.stats) {
-    std::cerr << a.kind << ": backend " << a.backend << ", algo " << algo << ", " << ps.size() << " points, "
+    std::cerr << a.kind << ": backend " << backend << (backend == "cpu" && a.threads ? " (" + std::to_string(a.threads) + " threads)" : std::string()) << ", algo " << algo << ", " << ps.size() << " points, "
               << (a.kind == "hull2" ? cycle.size() : tris.size())
               << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
-              << t_certify << " s (canonical)\n";
+              << t_certify << " s (canonical); read " << t_read << " s, write " << t_write << " s\n";
     if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
   }
   return 0;

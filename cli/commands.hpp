@@ -28,7 +28,8 @@ struct GenArgs {
 struct ComputeArgs {
   std::string kind;  // hull2, hull3, rt2, dt2
   std::string in, out;
-  std::string backend = "reference";
+  std::string backend;  // empty: the kind's default (default_backend)
+  int threads = 0;      // --threads (cpu backend); 0: the runtime's default
   std::string algo;  // empty: the kind's default (default_algorithm)
   bool stats = false;
   bool strict = false;  // hull3: strictly extreme points and merged coplanar facets
@@ -39,9 +40,14 @@ struct CertifyArgs {
   bool canonical = false;
 };
 
-// The backends and, per kind, the algorithms that exist in this build (the
-// command line accepts exactly these; the first is the default).
-std::vector<std::string> available_backends();
+// Per kind, the backends and the algorithms that exist in this build (the
+// command line accepts exactly these; the first algorithm is the default).
+// hull3: "cpu" (kernels_cpu/hull3, multithreaded ffHull, byte-identical to the
+// reference) and "reference"; the other kinds: "reference".
+std::vector<std::string> available_backends(const std::string& kind);
+// The default backend of a kind for an algorithm: the fastest one that is
+// byte-identical to the reference and implements it (hull3 ffhull: cpu).
+std::string default_backend(const std::string& kind, const std::string& algo);
 std::vector<std::string> available_algorithms(const std::string& kind);
 std::string default_algorithm(const std::string& kind);
 

@@ -26,6 +26,9 @@
 //     location, and at each location some copy is a vertex of the SoS hull
 //     (the perturbation picks among copies). (Equality with CGAL's extreme
 //     points and merged facets is a property test: proptests/strict_*.)
+// The multithreaded ffHull of kernels_cpu/hull3 (the cpu backend) is run at
+// 1 and 2 threads and must equal the reference byte for byte (triangle for
+// triangle), with ffHull's counters' lemmas, and reject the same inputs.
 // When the build has the by-name entry point (reference/hull3/hull3.hpp,
 // part flipflop_hull3; FLIPFLOP_FUZZ_HULL3_BY_NAME) the algorithms are run
 // through ref::hull3(ps, name), whose list must be exactly these three.
@@ -39,6 +42,7 @@
 
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify.hpp"
@@ -157,6 +161,13 @@ std::vector<std::pair<std::string, std::function<Tris(const PointSet&, ref::Hull
   return out;
 }
 
+// The cpu backend at `threads` threads.
+Tris cpu_hull(const PointSet& ps, int threads, ref::Hull3Stats* st) {
+  cpu::Hull3Options o;
+  o.threads = threads;
+  return cpu::hull3_ffhull(ps, o, st);
+}
+
 }  // namespace
 
 bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
@@ -173,6 +184,15 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
       } catch (const std::invalid_argument&) {
       } catch (const std::exception& e) {
         fail(kTarget, name + " threw the wrong exception on lower-dimensional input: " + e.what(), describe(ps));
+      }
+    }
+    for (int threads : {1, 2}) {
+      try {
+        const Tris t = cpu_hull(ps, threads, nullptr);
+        fail(kTarget, "cpu returned a hull of lower-dimensional input", describe(ps) + describe(t));
+      } catch (const std::invalid_argument&) {
+      } catch (const std::exception& e) {
+        fail(kTarget, std::string("cpu threw the wrong exception on lower-dimensional input: ") + e.what(), describe(ps));
       }
     }
     return true;
@@ -193,6 +213,19 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
       fail(kTarget, name + " differs from ffhull", describe(ps) + name + " " + describe(got) + "\nffhull " + describe(answer));
     first = false;
     check_counts(ps, name, st, vertex_count(answer));
+  }
+  for (int threads : {1, 2}) {
+    Tris got;
+    ref::Hull3Stats st;
+    try {
+      got = cpu_hull(ps, threads, &st);
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("cpu threw: ") + e.what(), describe(ps));
+    }
+    if (got != answer)
+      fail(kTarget, "cpu (" + std::to_string(threads) + " threads) differs from ffhull",
+           describe(ps) + "cpu " + describe(got) + "\nffhull " + describe(answer));
+    check_counts(ps, "ffhull", st, vertex_count(answer));
   }
   if (ps.size() <= kMaxBrute && brute::hull3(ps) != answer)
     fail(kTarget, "ffhull differs from brute::hull3", describe(ps) + describe(answer));

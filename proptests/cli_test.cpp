@@ -228,3 +228,38 @@ TEST_CASE("cli: computed answers round-trip through certify --canonical", "[cli]
     }
   }
 }
+
+TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; bad options get one line",
+          "[cli]") {
+  TempDir t;
+  std::string grid;  // a 6x6x6 lattice: heavily degenerate (coplanar faces with many points)
+  for (int x = 0; x < 6; ++x)
+    for (int y = 0; y < 6; ++y)
+      for (int z = 0; z < 6; ++z) grid += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+  const fs::path in = t.file("grid.xyz", grid);
+  const fs::path ref_out = t.dir / "ref.txt";
+  REQUIRE(run(t, "hull3 " + in.string() + " --backend reference -o " + ref_out.string()).code == 0);
+  const std::string expect = slurp(ref_out);
+  REQUIRE(!expect.empty());
+  for (const char* opts : {"", "--backend cpu", "--backend cpu --threads 1", "--threads 2", "--threads 8"}) {
+    const fs::path out = t.dir / "cpu.txt";
+    const Run r = run(t, "hull3 " + in.string() + " " + opts + " -o " + out.string());
+    INFO(opts << ": " << r.err);
+    REQUIRE(r.code == 0);
+    CHECK(slurp(out) == expect);
+  }
+  const Run s = run(t, "hull3 " + in.string() + " --threads 2 --stats -o " + (t.dir / "x.txt").string());
+  CHECK(s.err.find("backend cpu (2 threads)") != std::string::npos);
+  for (const char* bad : {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo splay",
+                          "--backend reference --threads 2", "--algo twist-flip --threads 2"}) {
+    const Run r = run(t, "hull3 " + in.string() + " " + bad);
+    INFO(bad << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+  }
+  // the cpu backend exists for hull3 only
+  const fs::path p2 = t.file("ok2.xyz", "0 0\n1 0\n0 1\n");
+  const Run r = run(t, "hull2 " + p2.string() + " --backend cpu");
+  CHECK(r.code == 2);
+  CHECK(lines(r.err) == 1);
+}

@@ -139,6 +139,8 @@
 #include "reference/hull3/initial_stars.hpp"
 #include "reference/hull3/rational_kernel.hpp"
 #include "reference/hull3/twist_flip.hpp"
+// the multithreaded ffHull (kernels_cpu/hull3, linked through flipflop_all)
+#include "kernels_cpu/hull3/ffhull.hpp"
 #endif
 #ifdef FLIPFLOP_TEST_HAVE_RTD
 #include "reference/rtd/certify_rtd.hpp"
@@ -756,12 +758,19 @@ struct Hull3Algorithm {
 
 // The canonical 3D hull algorithms present: the reference's
 // (ref::hull3_algorithms(): ffHull, star splaying, twist-flip + flip-flop;
-// when the test links them) and brute force for n <= kBruteHull3Max.
+// when the test links them), the cpu backend's multithreaded ffHull and brute
+// force for n <= kBruteHull3Max.
 inline std::vector<Hull3Algorithm> hull3_algorithms(std::size_t n) {
   std::vector<Hull3Algorithm> out;
 #ifdef FLIPFLOP_TEST_HAVE_HULL3
   for (const std::string& name : ref::hull3_algorithms())  // new algorithms join automatically
     out.push_back({name, [name](const PointSet& q, ref::Hull3Stats* st) { return ref::hull3(q, name, st); }});
+  // the cpu backend (kernels_cpu/hull3), with 2 threads
+  out.push_back({"cpu", [](const PointSet& q, ref::Hull3Stats* st) {
+                   cpu::Hull3Options o;
+                   o.threads = 2;
+                   return cpu::hull3_ffhull(q, o, st);
+                 }});
 #endif
   if (n <= kBruteHull3Max)
     out.push_back({"brute", [](const PointSet& q, ref::Hull3Stats*) { return brute::hull3(q); }});

@@ -1,0 +1,754 @@
+// ffhull.cpp — multithreaded ffHull (thesis §6.4 Algorithm 7, rounds of
+// §6.4.1) on oneTBB; what is parallel and why the answer is the reference's
+// is documented in ffhull.hpp.
+#include "kernels_cpu/hull3/ffhull.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "kernels_cpu/tsan.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
+#include "reference/canonical.hpp"
+#include "reference/checked.hpp"
+#include "reference/hull3/ffhull.hpp"
+#include "reference/hull3/flip_flop_3d.hpp"
+#include "reference/hull3/polyhedron3.hpp"
+#include "reference/hull3/rational_kernel.hpp"
+
+namespace flipflop::cpu {
+
+namespace {
+
+using pred::PointId;
+using pred::Pt;
+using pred::StaticFilter;
+
+constexpr std::uint32_t kNone = ~std::uint32_t{0};
+constexpr std::size_t kChunk = std::size_t{1} << 13;  // points per work unit
+
+// tbb::parallel_for over [0, n) in blocks, body(lo, hi); the fork/join edges
+// are declared to ThreadSanitizer (kernels_cpu/tsan.hpp).
+template <class Body>
+void par_for(std::size_t n, std::size_t grain, const Body& body) {
+  if (n == 0) return;
+  tsan::ForkJoin fj;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+    fj.task_begin();
+    body(r.begin(), r.end());
+    fj.task_end();
+  });
+  fj.joined();
+}
+
+// ---- deterministic parallel arg-max ------------------------------------------
+// A candidate (key, index); the larger key wins, equal keys the smaller index,
+// NaN keys count as -inf. A strict total order, so the result does not depend
+// on how the range is split: fixed chunks, each reduced by one task, then the
+// chunk results combined in order.
+struct Best {
+  double key = -HUGE_VAL;
+  Index i = kNone;
+};
+inline bool better(double key, Index i, const Best& b) {
+  if (std::isnan(key)) key = -HUGE_VAL;
+  if (b.i == kNone) return true;
+  return key > b.key || (key == b.key && i < b.i);
+}
+template <class Key>
+Index par_argmax(std::size_t n, const Key& key) {
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<Best> part(chunks);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c) {
+      Best b;
+      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
+        const double k = key(static_cast<Index>(p));
+        if (better(k, static_cast<Index>(p), b)) b = {std::isnan(k) ? -HUGE_VAL : k, static_cast<Index>(p)};
+      }
+      part[c] = b;
+    }
+  });
+  Best b;
+  for (const Best& c : part)
+    if (c.i != kNone && better(c.key, c.i, b)) b = c;
+  return b.i;
+}
+
+// ---- the per-input static filter, scanned in parallel -------------------------
+// StaticFilter::for_points depends only on the largest magnitude, the lowest
+// set bit over all values and whether all are finite; so it is computed on a
+// few representatives (per chunk: the value of largest magnitude, the value of
+// lowest bit, a non-finite value if any) plus the extra points given.
+int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple of 2^result
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  const int e = static_cast<int>((b >> 52) & 0x7ff);
+  std::uint64_t m = b & ((std::uint64_t{1} << 52) - 1);
+  if (e == 0) return -1074 + __builtin_ctzll(m);  // subnormal
+  m |= std::uint64_t{1} << 52;
+  return e - 1075 + __builtin_ctzll(m);
+}
+
+StaticFilter parallel_static_filter(const PointSet& ps, const std::vector<double>& extra) {
+  const std::size_t m = ps.coords.size();
+  const std::size_t chunks = (m + kChunk - 1) / kChunk;
+  std::vector<double> reps(chunks * 3, 0.0);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c) {
+      double big = 0.0, low = 0.0, bad = 0.0;
+      int low_e = std::numeric_limits<int>::max();
+      for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
+        const double x = ps.coords[i];
+        if (!std::isfinite(x)) {
+          bad = x;
+          continue;
+        }
+        if (std::fabs(x) > std::fabs(big)) big = x;
+        if (x != 0.0) {
+          const int e = low_bit_exponent(x);
+          if (e < low_e) low_e = e, low = x;
+        }
+      }
+      reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
+    }
+  });
+  reps.insert(reps.end(), extra.begin(), extra.end());
+  while (reps.size() % 3) reps.push_back(0.0);
+  return StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
+}
+
+// orient3d under SoS, static filter first (inline), then the staged predicate.
+inline int orient(const StaticFilter& f, PointId ia, const double* a, PointId ib, const double* b, PointId ic,
+                  const double* c, PointId id, const double* d) {
+  const double* p[4] = {a, b, c, d};
+  if (int s = pred::static_sign<4>(f, p, nullptr)) return s;
+  return pred::orient3d(f, Pt{ia, a}, Pt{ib, b}, Pt{ic, c}, Pt{id, d});
+}
+
+// The fast kernel point: a double point strictly inside the initial
+// tetrahedron exactly, SoS index n (after all inputs, as the reference's).
+class DoubleKernel final : public ref::KernelPoint {
+ public:
+  DoubleKernel(const PointSet& ps, const std::array<double, 3>& s, const StaticFilter& f)
+      : ps_(&ps), s_(s), f_(&f), id_(ps.size()) {}
+  int side(Index a, Index b, Index c) const override {
+    return orient(*f_, a, ps_->point(a), b, ps_->point(b), c, ps_->point(c), id_, s_.data());
+  }
+
+ private:
+  const PointSet* ps_;
+  std::array<double, 3> s_;
+  const StaticFilter* f_;
+  PointId id_;
+};
+
+// ---- a plane through three points, for many queries --------------------------
+// The sign of det[b - o; c - o; p - o] = (p - o) · ((b - o) × (c - o)) for many
+// points p with o, b, c fixed: the cross product m and the magnitudes of its
+// products are computed once, a query costs three differences, a dot product
+// and its bound. This is Shewchuk's orient3d filter (errbound A,
+// (7 + 56u)u times the permanent, u = 2^-53) with the cofactor expansion
+// taken along the row of p instead of the z column: every term is still a
+// rounded difference times a difference of two products of rounded
+// differences, and the three terms are summed left to right, which is what
+// the bound rests on. kPlaneErr = 2^-49 > 2.2 (7 + 56u)u leaves a margin.
+// Valid only without underflow and overflow: used only when the per-input
+// static filter is enabled (every value a multiple of 2^L with 3L >= -1074,
+// 6 (2M)^3 far below 2^1000, static_filter.hpp), the kernel point included.
+// When the filter cannot decide, the caller evaluates the exact SoS predicate.
+constexpr double kPlaneErr = 0x1p-49;
+struct Plane {
+  const double* o = nullptr;
+  double m[3] = {0, 0, 0}, perm[3] = {0, 0, 0};
+  void set(const double* O, const double* b, const double* c) {
+    o = O;
+    const double bx = b[0] - O[0], by = b[1] - O[1], bz = b[2] - O[2];
+    const double cx = c[0] - O[0], cy = c[1] - O[1], cz = c[2] - O[2];
+    const double p0 = by * cz, q0 = bz * cy, p1 = bz * cx, q1 = bx * cz, p2 = bx * cy, q2 = by * cx;
+    m[0] = p0 - q0, m[1] = p1 - q1, m[2] = p2 - q2;
+    perm[0] = std::fabs(p0) + std::fabs(q0), perm[1] = std::fabs(p1) + std::fabs(q1);
+    perm[2] = std::fabs(p2) + std::fabs(q2);
+  }
+  // det (rounded) into `det`; its sign when certain, else 0
+  int eval(const double* p, double& det) const {
+    const double ax = p[0] - o[0], ay = p[1] - o[1], az = p[2] - o[2];
+    det = ax * m[0] + ay * m[1] + az * m[2];
+    const double bound = kPlaneErr * (std::fabs(ax) * perm[0] + std::fabs(ay) * perm[1] + std::fabs(az) * perm[2]);
+    return det > bound ? 1 : det < -bound ? -1 : 0;
+  }
+  int sign(const double* p) const {
+    double det;
+    return eval(p, det);
+  }
+};
+
+// ---- line 1: the initial tetrahedron --------------------------------------------
+// Approximately extreme points (parallel arg-max of double keys), accepted when
+// exactly affinely independent; otherwise the reference's rule (which also
+// rejects lower-dimensional input with its message).
+std::array<Index, 4> initial_tetrahedron(const PointSet& ps) {
+  const std::size_t n = ps.size();
+  const auto P = [&](Index i) { return ps.point(i); };
+  const Index a = par_argmax(n, [&](Index p) { return -P(p)[0]; });
+  const Index b = par_argmax(n, [&](Index p) { return P(p)[0]; });
+  const double* A = P(a);
+  const double u[3] = {P(b)[0] - A[0], P(b)[1] - A[1], P(b)[2] - A[2]};
+  const Index c = par_argmax(n, [&](Index p) {
+    const double w[3] = {P(p)[0] - A[0], P(p)[1] - A[1], P(p)[2] - A[2]};
+    const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+    return x * x + y * y + z * z;
+  });
+  const double v[3] = {P(c)[0] - A[0], P(c)[1] - A[1], P(c)[2] - A[2]};
+  const double N[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const Index d = par_argmax(n, [&](Index p) {
+    return std::fabs(N[0] * (P(p)[0] - A[0]) + N[1] * (P(p)[1] - A[1]) + N[2] * (P(p)[2] - A[2]));
+  });
+  const int o = pred::orient3d_exact(P(a), P(b), P(c), P(d));
+  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // distinct, independent points not found
+  // (a, b, c) counter-clockwise seen from outside: d on its inner side (orient3d > 0)
+  if (o < 0) return {a, c, b, d};
+  return {a, b, c, d};
+}
+
+// ---- lines 2-14: the star-shaped polyhedron, in rounds --------------------------
+
+// The surface under construction: flat arrays, 3 entries per triangle slot.
+// v[3t + k] is vertex k of triangle t (counter-clockwise seen from outside);
+// nb[3t + k] the triangle across its edge v[3t + k] -> v[3t + (k + 1) % 3].
+struct Mesh {
+  std::vector<Index> v;
+  std::vector<std::uint32_t> nb;
+  std::uint32_t size() const { return static_cast<std::uint32_t>(v.size() / 3); }
+};
+
+// Associated points grouped by triangle: segment k holds pts[lo[k] .. lo[k+1])
+// associated with (in the cone of, and beyond) triangle tri[k]; key[i] is the
+// rounded (p - t0) · ((t1 - t0) × (t2 - t0)) of pts[i] for its triangle, a
+// distance to the triangle's plane (times twice its area) for line 8;
+// xyz[3i..3i+2] its coordinates, carried along so that every pass reads
+// memory in order (the points of a segment are scattered over the input).
+struct Segments {
+  std::vector<Index> pts;
+  std::vector<double> key;
+  std::vector<double> xyz;
+  std::vector<std::size_t> lo;  // size K + 1
+  std::vector<std::uint32_t> tri;
+  std::size_t count() const { return tri.size(); }
+};
+
+// Work units: pieces of at most kChunk points of one segment (load balance
+// for the few huge segments of the first rounds and the many small ones later).
+struct Units {
+  std::vector<std::uint32_t> seg;
+  std::vector<std::size_t> lo, hi;
+  std::vector<std::size_t> first;  // per segment: its first unit; size K + 1
+};
+Units make_units(const Segments& S) {
+  Units U;
+  U.first.reserve(S.count() + 1);
+  for (std::size_t k = 0; k < S.count(); ++k) {
+    U.first.push_back(U.seg.size());
+    for (std::size_t i = S.lo[k]; i < S.lo[k + 1]; i += kChunk) {
+      U.seg.push_back(static_cast<std::uint32_t>(k));
+      U.lo.push_back(i);
+      U.hi.push_back(std::min(S.lo[k + 1], i + kChunk));
+    }
+  }
+  U.first.push_back(U.seg.size());
+  return U;
+}
+
+// The buffers of the rounds, allocated once (fresh allocations every round
+// cost more in page faults than the round's work): the next round's segments
+// and the per-point child codes.
+struct Buffers {
+  Segments next;
+  std::vector<std::uint32_t> code;
+};
+
+// Regrouping after a round: every point of segment k goes to child c in
+// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
+// coordinates; key: its distance key for the child); child c of segment k is
+// triangle child_tri(k, c). Stable: per-unit counts, a sequential scan in the
+// order (segment, child, unit), a parallel scatter. With `input`, the
+// coordinates are read from the input (round 0: S.xyz is empty). Returns the
+// number of dropped points.
+template <class Classify, class ChildTri>
+std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet* input, const Classify& classify,
+                    const ChildTri& child_tri) {
+  const std::size_t nu = U.seg.size();
+  const auto coords = [&](std::size_t i) { return input ? input->point(S.pts[i]) : &S.xyz[3 * i]; };
+  if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
+  std::uint32_t* code = B.code.data();
+  std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
+  par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
+    for (std::size_t u = ulo; u < uhi; ++u) {
+      std::size_t* c = &cnt[u * m];
+      for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
+        code[i] = classify(U.seg[u], S.pts[i], coords(i), S.key[i]);  // key[i]: now the child's key
+        if (code[i] != kNone) ++c[code[i]];
+      }
+    }
+  });
+  std::vector<std::size_t> off(nu * static_cast<std::size_t>(m));
+  Segments N = std::move(B.next);
+  N.lo.clear();
+  N.tri.clear();
+  std::size_t pos = 0;
+  for (std::size_t k = 0; k < S.count(); ++k)
+    for (int c = 0; c < m; ++c) {
+      const std::size_t start = pos;
+      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) off[u * m + c] = pos, pos += cnt[u * m + c];
+      if (pos > start) {
+        N.lo.push_back(start);
+        N.tri.push_back(child_tri(k, c));
+      }
+    }
+  N.lo.push_back(pos);
+  N.pts.resize(pos);
+  N.key.resize(pos);
+  N.xyz.resize(3 * pos);
+  par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
+    for (std::size_t u = ulo; u < uhi; ++u) {
+      std::size_t* o = &off[u * m];
+      for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
+        if (code[i] != kNone) {
+          const std::size_t j = o[code[i]]++;
+          N.pts[j] = S.pts[i];
+          N.key[j] = S.key[i];
+          std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
+        }
+    }
+  });
+  const std::size_t dropped = S.pts.size() - pos;
+  B.next = std::move(S);
+  S = std::move(N);
+  return dropped;
+}
+
+// The predicates of the construction, through the plane filters when `fast`
+// (a double kernel point and an enabled static filter), else exactly.
+template <class Kernel>
+struct Tests {
+  const PointSet& ps;
+  const StaticFilter& f;
+  const Kernel& s;
+  const double* sd;  // the kernel point's coordinates (DoubleKernel), or null
+  bool fast;
+  // side(x, y, p) = orient3d(x, y, p, s), by the plane (s; x, y) when it decides
+  // (px: p's coordinates, a copy)
+  int side(const Plane& pl, Index x, Index y, Index p, const double* px) const {
+    if (fast)
+      if (int r = pl.sign(px)) return r;
+    return s.side(x, y, p);
+  }
+  void side_plane(Plane& pl, Index x, Index y) const {
+    if (sd) pl.set(sd, ps.point(x), ps.point(y));
+  }
+  // p on the inner side of (t0, t1, t2) — orient3d(t0, t1, t2, p) > 0, i.e.
+  // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0; key = that rounded product
+  bool inner(const Plane& face, const Index* t, Index p, const double* px, double& key) const {
+    const int r = face.eval(px, key);
+    if (fast && r) return r < 0;
+    return orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
+  }
+  void face_plane(Plane& pl, const Index* t) const {
+    pl.set(ps.point(t[0]), ps.point(t[1]), ps.point(t[2]));
+  }
+};
+
+template <class Kernel>
+Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+               const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
+  const std::size_t n = ps.size();
+  const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
+  const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
+  // line 3: the tetrahedron, faces counter-clockwise from outside:
+  // 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c)
+  Mesh M;
+  M.v = {a, b, c, a, c, d, a, d, b, b, d, c};
+  M.nb.assign(12, kNone);
+  for (std::uint32_t t = 0; t < 4; ++t)
+    for (int k = 0; k < 3; ++k)
+      for (std::uint32_t r = 0; r < 4; ++r)
+        for (int j = 0; j < 3; ++j)
+          if (M.v[3 * r + j] == M.v[3 * t + (k + 1) % 3] && M.v[3 * r + (j + 1) % 3] == M.v[3 * t + k])
+            M.nb[3 * t + k] = r;
+
+  // line 5 (round 0): each point to the cone of a face from s. The faces
+  // around d are the 1-3 split of the triangle (a, c, b) by d, seen from s, so
+  // line 13's rule picks the wedge around the line sd: (a,c,d), (c,b,d) or
+  // (b,a,d); within the wedge of the face (x, y, d) the point is in that
+  // face's cone when it is on d's side of the plane (s, x, y) — side(x, y, p)
+  // > 0 like side(x, y, d) — else in the cone of (a, b, c).
+  Segments S;
+  S.pts.reserve(n - 4);
+  for (Index p = 0; p < n; ++p)
+    if (p != a && p != b && p != c && p != d) S.pts.push_back(p);
+  S.key.resize(S.pts.size());  // written by round 0's classification
+  Buffers B;
+  S.lo = {0, S.pts.size()};
+  S.tri = {0};
+  {
+    Plane da, dc, dbp, ac, cb, ba, face[4];
+    X.side_plane(da, d, a), X.side_plane(dc, d, c), X.side_plane(dbp, d, b);
+    X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
+    for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
+    const Units U = make_units(S);
+    const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
+      std::uint32_t t;
+      if (X.side(da, d, a, p, x) > 0) {
+        if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
+        else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                             // wedge (c, b, d)
+      } else {
+        if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
+        else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
+      }
+      return X.inner(face[t], &M.v[3 * t], p, x, key) ? kNone : t;  // line 14: inside the tetrahedron (s, t)
+    };
+    st.discarded_early += regroup(S, B, U, 4, &ps, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
+  }
+
+  // lines 6-14 in rounds: every triangle with points is split at once
+  std::vector<std::uint32_t> rank;  // per slot: its segment in this round, or kNone
+  while (S.count() > 0) {
+    ++st.rounds;
+    const std::size_t K = S.count();
+    const std::uint32_t T = M.size();
+    const Units U = make_units(S);
+    // line 8: the furthest point of each triangle by the rounded distance keys
+    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp)
+    std::vector<Best> ubest(U.seg.size());
+    par_for(U.seg.size(), 1, [&](std::size_t ulo, std::size_t uhi) {
+      for (std::size_t u = ulo; u < uhi; ++u) {
+        Best bb;
+        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
+          if (better(S.key[i], S.pts[i], bb)) bb = {std::isnan(S.key[i]) ? -HUGE_VAL : S.key[i], S.pts[i]};
+        ubest[u] = bb;
+      }
+    });
+    std::vector<Index> far(K);
+    for (std::size_t k = 0; k < K; ++k) {
+      Best bb;
+      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u)
+        if (better(ubest[u].key, ubest[u].i, bb)) bb = ubest[u];
+      far[k] = bb.i;
+    }
+    // line 9: 1-3 splits. Segment k's triangle t = (ta, tb, tc) becomes
+    // t = (ta, tb, v), T+2k = (tb, tc, v), T+2k+1 = (tc, ta, v): old edge e
+    // lives on in child e (t, T+2k, T+2k+1) at position 0.
+    M.v.resize(3 * (T + 2 * K));
+    M.nb.resize(3 * (T + 2 * K));
+    rank.resize(T + 2 * K, kNone);
+    std::vector<Index> old_v(3 * K);
+    std::vector<std::uint32_t> old_nb(3 * K);
+    std::vector<std::uint8_t> old_pos(3 * K);
+    par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // read the old state
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::uint32_t t = S.tri[k];
+        rank[t] = static_cast<std::uint32_t>(k);
+        for (int e = 0; e < 3; ++e) {
+          const std::uint32_t m = M.nb[3 * t + e];
+          old_v[3 * k + e] = M.v[3 * t + e];
+          old_nb[3 * k + e] = m;
+          int j = 0;
+          while (M.nb[3 * m + j] != t) ++j;
+          old_pos[3 * k + e] = static_cast<std::uint8_t>(j);
+        }
+      }
+    });
+    // per segment: planes (s; v, ta), (s; v, tb), (s; v, tc), then the three
+    // new triangles' planes
+    std::vector<Plane> planes(6 * K);
+    par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // new triangles, inner adjacency
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::uint32_t t = S.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k), n2 = n1 + 1;
+        const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2], v = far[k];
+        M.v[3 * t + 2] = v;
+        M.v[3 * n1] = tb, M.v[3 * n1 + 1] = tc, M.v[3 * n1 + 2] = v;
+        M.v[3 * n2] = tc, M.v[3 * n2 + 1] = ta, M.v[3 * n2 + 2] = v;
+        M.nb[3 * t + 1] = n1, M.nb[3 * t + 2] = n2;    // b->v | v->b, v->a | a->v
+        M.nb[3 * n1 + 1] = n2, M.nb[3 * n1 + 2] = t;   // c->v | v->c, v->b | b->v
+        M.nb[3 * n2 + 1] = t, M.nb[3 * n2 + 2] = n1;   // a->v | v->a, v->c | c->v
+        Plane* pl = &planes[6 * k];
+        X.side_plane(pl[0], v, ta), X.side_plane(pl[1], v, tb), X.side_plane(pl[2], v, tc);
+        X.face_plane(pl[3], &M.v[3 * t]), X.face_plane(pl[4], &M.v[3 * n1]), X.face_plane(pl[5], &M.v[3 * n2]);
+      }
+    });
+    par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // outer adjacency
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::uint32_t t = S.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k);
+        const std::uint32_t child[3] = {t, n1, n1 + 1};
+        for (int e = 0; e < 3; ++e) {
+          const std::uint32_t m = old_nb[3 * k + e];
+          const int j = old_pos[3 * k + e];
+          if (rank[m] != kNone) {  // m split too: the edge is in m's child j, position 0
+            M.nb[3 * child[e]] = j == 0 ? m : T + 2 * rank[m] + static_cast<std::uint32_t>(j - 1);
+          } else {  // this edge of m is written by this task only
+            M.nb[3 * child[e]] = m;
+            M.nb[3 * m + j] = child[e];
+          }
+        }
+      }
+    });
+    for (std::size_t k = 0; k < K; ++k) rank[S.tri[k]] = kNone;
+    st.insertions += K;
+    // lines 10-14: every point to one of the three new cones (line 13's rule,
+    // as in the reference's ffhull.cpp), dropped when inside the tetrahedron
+    // (s, new triangle)
+    const auto classify = [&](std::uint32_t k, Index p, const double* x, double& key) -> std::uint32_t {
+      const Index v = far[k];
+      if (p == v) return kNone;  // line 10
+      const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
+      const Plane* pl = &planes[6 * k];
+      std::uint32_t ch;
+      if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
+      else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
+      const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
+      return X.inner(pl[3 + ch], &M.v[3 * t], p, x, key) ? kNone : ch;
+    };
+    const std::size_t dropped = regroup(S, B, U, 3, nullptr, classify, [&](std::size_t k, int ch) {
+      return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
+    });
+    st.discarded_early += dropped - K;  // the K inserted points are not discarded
+  }
+  return M;
+}
+
+// ---- line 15: flip-flop (Algorithm 6), sequential --------------------------------
+// The reference's FIFO run (ff3::run, ff3::decide, ff3::apply of
+// reference/hull3/flip_flop_3d.cpp) with the same decisions in the same
+// order — every predicate exact, so the run is the same operation for
+// operation — but cheaper: the edge is located once per step (the reference
+// locates it in run, decide, apply and flip22), from a hint (the slot of a
+// triangle that had it when it was queued, or a neighbour of that slot)
+// before walking around its tail, and orient3d of input points goes through
+// the per-input static filter first.
+class FlipFlop {
+ public:
+  FlipFlop(ref::ff3::State& st, const StaticFilter& f, ref::Hull3Stats& stats) : st_(st), P_(st.P), f_(f), stats_(stats) {}
+
+  void run() {
+    using Action = ref::ff3::Action;
+    std::deque<Queued> Q;  // line 2: every edge, in the order of ref::poly::edges
+    for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
+      if (P_.alive[t])
+        for (int k = 0; k < 3; ++k)
+          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) Q.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
+    while (!Q.empty()) {  // line 3
+      const auto [u, w, hint] = Q.front();  // line 4
+      Q.pop_front();
+      const ref::poly::DEdge e = locate(u, w, hint);
+      if (!e.valid()) continue;  // flipped away since it was pushed
+      const Quad q{u, w, P_.apex(e), P_.apex(P_.twin(e))};
+      const ref::ff3::Decision d = decide(q);
+      switch (d.action) {
+        case Action::none: break;
+        case Action::label: {  // lines 16-19: the edges around the labelled vertex
+          st_.labelled[d.inner] = 1;
+          ++stats_.labelled_non_extreme;
+          const Index a = d.inner;
+          const std::uint32_t t0 = P_.corner[a];
+          std::uint32_t t = t0;
+          std::uint32_t steps = 0;
+          do {  // ref::poly::link, with the slots
+            int k = 0;
+            while (P_.tri[t][k] != a) ++k;
+            Q.push_back({a, P_.tri[t][(k + 1) % 3], t});
+            t = P_.adj[t][(k + 2) % 3];
+          } while (t != t0 && ++steps <= P_.deg[a]);
+          break;
+        }
+        case Action::flip31_v:
+        case Action::flip31_d: {  // lines 8-9
+          const std::vector<Index> L = ref::poly::link(P_, d.inner);
+          const std::uint32_t t = ref::poly::flip31(P_, d.inner);
+          st_.removed[d.inner] = 1;
+          ++stats_.flips_3_1;
+          Q.push_back({L[0], L[1], t});
+          Q.push_back({L[1], L[2], t});
+          Q.push_back({L[2], L[0], t});
+          break;
+        }
+        case Action::flip22_v:
+        case Action::flip22_d:  // lines 12-15
+          ref::poly::flip22(P_, e);  // (a, d, c) and (d, b, c) in the two slots of e and its twin
+          ++stats_.flips_2_2;
+          Q.push_back({q.a, q.c, e.t});
+          Q.push_back({q.b, q.c, e.t});
+          Q.push_back({q.a, q.d, e.t});
+          Q.push_back({q.b, q.d, e.t});
+          break;
+      }
+    }
+    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left.
+    if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
+  }
+
+ private:
+  struct Quad {
+    Index a, b, c, d;  // edge a -> b, link c (apex of a b c) and d (apex of b a d)
+  };
+  struct Queued {
+    Index u, w;
+    std::uint32_t hint;  // a slot near the edge when it was queued
+  };
+  // the directed edge u -> w in slot t, or invalid
+  ref::poly::DEdge in_slot(std::uint32_t t, Index u, Index w) const {
+    if (t >= P_.tri.size() || !P_.alive[t]) return {};
+    const Triangle& T = P_.tri[t];
+    for (int k = 0; k < 3; ++k) {
+      if (T[k] == u && T[(k + 1) % 3] == w) return {t, k};
+      if (T[k] == w && T[(k + 1) % 3] == u) return P_.twin({t, k});
+    }
+    return {};
+  }
+  // find_edge(u, w), trying the hint and its neighbours first
+  ref::poly::DEdge locate(Index u, Index w, std::uint32_t hint) const {
+    if (ref::poly::DEdge e = in_slot(hint, u, w); e.valid()) return e;
+    if (hint < P_.tri.size() && P_.alive[hint])
+      for (int j = 0; j < 3; ++j)
+        if (ref::poly::DEdge e = in_slot(P_.adj[hint][j], u, w); e.valid()) return e;
+    return ref::poly::find_edge(P_, u, w);
+  }
+  int orient3(Index a, Index b, Index c, Index p) const {
+    const PointSet& ps = *st_.ps;
+    return orient(f_, a, ps.point(a), b, ps.point(b), c, ps.point(c), p, ps.point(p));
+  }
+  bool in_cone(Index a, Index b, Index c, Index p) const { return ref::poly::in_cone(*st_.s, a, b, c, p); }
+
+  // ff3::decide, line by line (flip_flop_3d.cpp)
+  ref::ff3::Decision decide(const Quad& q) const {
+    using Action = ref::ff3::Action;
+    constexpr Index kNo = ~Index{0};
+    Index x = kNo;  // line 5: the labelled vertex of smallest index
+    for (Index v : {q.a, q.b, q.c, q.d})
+      if (st_.labelled[v] && v < x) x = v;
+    const int o = orient3(q.a, q.b, q.c, q.d);
+    const bool is_reflex = o < 0;
+    if (!is_reflex && x == kNo) return {};
+    // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
+    int a_in = -1;  // in_cone(b, c, d, a), when computed
+    Index inner = kNo;
+    if (P_.deg[q.a] == 3) {
+      a_in = in_cone(q.b, q.c, q.d, q.a);
+      if (a_in) inner = q.a;
+    }
+    if (inner == kNo && P_.deg[q.b] == 3 && in_cone(q.a, q.c, q.d, q.b)) inner = q.b;
+    if (inner != kNo) {  // line 8
+      if (st_.labelled[inner]) return {Action::flip31_d, inner};
+      if (is_reflex) return {Action::flip31_v, inner};
+      return {};
+    }
+    // line 11: C_s(T_e) convex
+    if (a_in < 0) a_in = in_cone(q.b, q.c, q.d, q.a);
+    const bool b_in = !a_in && in_cone(q.a, q.c, q.d, q.b);
+    if (!a_in && !b_in) {
+      if (x == kNo) return is_reflex ? ref::ff3::Decision{Action::flip22_v, 0} : ref::ff3::Decision{};
+      // lines 14-15: D-criterion, flippable when s is not inside abcd
+      if ((x == q.a || x == q.b) && !s_in_tetrahedron(q, o)) return {Action::flip22_d, 0};
+      return {};
+    }
+    // lines 16-18: label the inner endpoint (Lemma 6.5)
+    const Index in = a_in ? q.a : q.b;
+    if (!st_.labelled[in] && is_reflex) return {Action::label, in};
+    return {};
+  }
+  // s inside the tetrahedron abcd, o = orient3d(a, b, c, d) (ff3's s_in_tetrahedron)
+  bool s_in_tetrahedron(const Quad& q, int o) const {
+    const ref::KernelPoint& s = *st_.s;
+    return s.side(q.a, q.b, q.c) == o && -s.side(q.a, q.b, q.d) == o && s.side(q.a, q.c, q.d) == o &&
+           -s.side(q.b, q.c, q.d) == o;
+  }
+
+  ref::ff3::State& st_;
+  ref::poly::Polyhedron3& P_;
+  const StaticFilter& f_;
+  ref::Hull3Stats& stats_;
+};
+
+template <class Kernel>
+std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
+  const Mesh M = construct(ps, f, s, sd, tet, st);
+  st.flips_1_3 = st.insertions;
+  // the reference's polyhedron structure, filled from the flat arrays (same
+  // conventions: adj[t][k] is the triangle across edge k of t)
+  ref::poly::Polyhedron3 P;
+  P.n = ps.size();
+  P.tri.resize(M.size());
+  P.adj.resize(M.size());
+  P.alive.assign(M.size(), 1);
+  P.corner.assign(P.n, kNone);
+  P.deg.assign(P.n, 0);
+  for (std::uint32_t t = 0; t < M.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      P.tri[t][k] = M.v[3 * t + k];
+      P.adj[t][k] = M.nb[3 * t + k];
+      P.corner[M.v[3 * t + k]] = t;
+      ++P.deg[M.v[3 * t + k]];
+    }
+  if constexpr (FF_CHECKED)
+    FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
+  // line 15: flip-flop (Algorithm 6), sequential
+  ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
+  FlipFlop(state, f, st).run();
+  return canonical_triangles(ref::poly::triangles(state.P));
+}
+
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st) {
+  if (ps.dim != 3 || ps.size() < 4 || ps.size() >= kNone / 2) {
+    ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
+    throw std::invalid_argument("hull3 (cpu): too many points for 32-bit indices");
+  }
+  const std::array<Index, 4> tet = initial_tetrahedron(ps);  // line 1
+  // line 4: the kernel point
+  std::array<double, 3> s{};
+  for (int j = 0; j < 3; ++j)
+    s[j] = ((ps.point(tet[0])[j] + ps.point(tet[1])[j]) + (ps.point(tet[2])[j] + ps.point(tet[3])[j])) * 0.25;
+  const Triangle faces[4] = {{tet[0], tet[1], tet[2]}, {tet[0], tet[2], tet[3]}, {tet[0], tet[3], tet[1]},
+                             {tet[1], tet[3], tet[2]}};
+  bool inside = std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]);
+  for (const Triangle& F : faces)
+    inside = inside && pred::orient3d_exact(ps.point(F[0]), ps.point(F[1]), ps.point(F[2]), s.data()) > 0;
+  const StaticFilter f = parallel_static_filter(ps, inside ? std::vector<double>(s.begin(), s.end())
+                                                           : std::vector<double>{});
+  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st);
+  // §6.4.2: the rounded centroid is not strictly inside; the exact one is
+  const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
+  return hull_with_kernel(ps, f, exact, nullptr, tet, st);
+}
+
+}  // namespace
+
+std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, ref::Hull3Stats* stats) {
+  ref::Hull3Stats st;
+  std::vector<Triangle> out;
+  if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
+  if (opt.threads == 0) {
+    out = compute(ps, st);
+  } else {
+    // exactly `threads` threads, also more than the machine's cores (TBB caps
+    // its worker pool at the core count unless told otherwise)
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
+    tbb::task_arena arena(opt.threads);
+    arena.execute([&] { out = compute(ps, st); });
+  }
+  if (stats) *stats = st;
+  return out;
+}
+
+}  // namespace flipflop::cpu

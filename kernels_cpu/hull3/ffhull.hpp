@@ -1,0 +1,76 @@
+// ffhull.hpp — multithreaded ffHull for the 3D convex hull: thesis §6.4
+// Algorithm 7 in the round structure of §6.4.1 ("GPU/parallel version"), on
+// oneTBB.
+//
+// What runs in parallel (tbb::parallel_for / parallel_reduce inside one
+// tbb::task_arena of `threads` threads):
+//   * line 1, the initial tetrahedron: extreme points along x, then the point
+//     furthest from the line ab, then the one furthest from the plane abc,
+//     found by deterministic parallel reductions (approximate distances; the
+//     four points are then checked affinely independent *exactly*);
+//   * the per-input static filter bound (predicates/static_filter.hpp) from a
+//     parallel scan of the coordinates;
+//   * line 5, association of every point with the cone of a face of the
+//     tetrahedron (three kernel-side predicates per point) and line 14's early
+//     removal of points inside the tetrahedron (s, face);
+//   * lines 6-14 in rounds (§6.4.1): in one round every triangle with
+//     associated points is split by its (approximately, see below) furthest
+//     point at once — the furthest point is a parallel reduction over the
+//     triangle's points, the 1-3 splits write disjoint slots (the triangle's
+//     own slot and two slots numbered by its rank in the round), adjacency is
+//     repaired in a second parallel pass; then every associated point is
+//     reassigned to one of the three new cones and tested for early removal
+//     in parallel, and the points are regrouped by triangle with a stable
+//     counting scatter (per-chunk counts, a scan, a parallel scatter).
+// What is sequential: line 15, flip-flop (Algorithm 6): the reference's FIFO
+// run (ff3::run, reference/hull3/flip_flop_3d.hpp) with the same decisions in
+// the same order (ffhull.cpp: FlipFlop), on the reference's Polyhedron3 filled
+// from the flat arrays, with this kernel's fast kernel point, the static
+// filter and one edge lookup per step. The parallel flip-flop rounds of
+// §6.4.1 (check all edges, claim the induced subcomplexes by atomic minimum,
+// flip) are not done: measured on this 2-core machine (10^6 sphere points,
+// 142k 2-2 flips) vertex-disjoint rounds took 690 rounds and 3.4x the checks
+// of the FIFO run, and parallel pre-checks of a FIFO round went stale (an
+// endpoint touched) for most edges, so neither beat the sequential run here.
+//
+// Why the answer equals the reference byte for byte: under the Simulation of
+// Simplicity the hull is unique (DESIGN.md), and flip-flop returns the SoS
+// hull of the vertices of any polyhedron star-shaped w.r.t. a point strictly
+// inside its kernel whose vertices include every extreme point (Theorem 6.12).
+// Which point is inserted into a triangle (line 8) does not change that: any
+// point of the triangle's cone beyond it keeps the surface star-shaped, and a
+// point is only dropped when it lies inside a tetrahedron spanned by the
+// kernel point and a triangle of the surface, i.e. inside the hull of inputs
+// (with the kernel point strictly inside the perturbed hull). So "furthest" is
+// taken from double-precision distances (ties: the smaller index) and the
+// tetrahedron need not be the reference's; every *decision* (cone, side,
+// removal, flips) is an exact SoS predicate.
+//
+// The kernel point: the centroid of the tetrahedron rounded to doubles when
+// that point is strictly inside the tetrahedron exactly (checked with exact
+// orient3d), with SoS index n = ps.size() like the reference's exact centroid;
+// otherwise (almost flat tetrahedra, §6.4.2's trap) the reference's exact
+// RationalKernel. Either is strictly inside the perturbed tetrahedron.
+//
+// Input that does not span R^3 is rejected with the reference's
+// std::invalid_argument (dimension_problem(ps)).
+#pragma once
+
+#include <vector>
+
+#include "reference/hull3/hull3_stats.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::cpu {
+
+struct Hull3Options {
+  int threads = 0;  // worker threads; 0: the runtime's default
+};
+
+// The canonical SoS convex hull (identical to ref::hull3_ffhull(ps)). stats,
+// if given, is reset and filled: insertions (= 1-3 flips), discarded early,
+// rounds (construction rounds), and flip-flop's 2-2/3-1 flips and labels.
+std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt = {},
+                                   ref::Hull3Stats* stats = nullptr);
+
+}  // namespace flipflop::cpu
