@@ -24,7 +24,12 @@
 //                        facet whose cone from s contains it; canonical:
 //                        strictly, for every point that is not a vertex
 // s is an auxiliary point: in the perturbation it has index n (after all
-// inputs, predicates.hpp). Structural predicates (those involving s) are
+// inputs, predicates.hpp). It is the centroid of the four vertices rounded to
+// doubles when that point is strictly inside their tetrahedron exactly (four
+// exact orient3d signs; then every predicate on s is an ordinary orient3d
+// with the per-input static filter, several times faster than on a rational
+// point), else the exact dyadic centroid. Either is strictly inside conv(S),
+// which is all the conditions below need. Structural predicates (those involving s) are
 // perturbed at both levels; geometric conditions are exact (>= 0) at the exact
 // level and perturbed and strict at the canonical level.
 #include <algorithm>
@@ -32,6 +37,7 @@
 
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/certify.hpp"
 #include "reference/certify_detail.hpp"
 #include "reference/dimension.hpp"
@@ -48,28 +54,50 @@ struct Hull3Checker {
   bool canonical;
   pred::RationalPoint s;
   pred::PointId s_id = 0;
+  bool s_is_double = false;  // s = sd (a double point), else the rational s
+  double sd[3] = {0, 0, 0};
+  pred::StaticFilter f;  // over the input (and sd)
 
   const double* P(Index i) const { return ps.point(i); }
   pred::MixedRow row(Index i) const { return {i, P(i), nullptr}; }
   pred::MixedRow srow() const { return {s_id, nullptr, &s}; }
+  pred::Pt pt(Index i) const { return {i, P(i)}; }
 
   // orient3d(a, b, c, s) under the perturbation
   int facet_vs_s(const Triangle& t) const {
+    if (s_is_double) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), {s_id, sd});
     pred::MixedRow r[4] = {row(t[0]), row(t[1]), row(t[2]), srow()};
     return pred::mixed_sign(4, r, true);
   }
   // orient3d(s, a, b, p) under the perturbation: > 0 when p is across the
   // plane (s, a, b) from the third vertex of a facet (a, b, c) facing away from s
   int side(Index a, Index b, Index p) const {
+    if (s_is_double) return pred::orient3d(f, {s_id, sd}, pt(a), pt(b), pt(p));
     pred::MixedRow r[4] = {srow(), row(a), row(b), row(p)};
     return pred::mixed_sign(4, r, true);
   }
   // geometric orientation of p against facet (a, b, c): > 0 inner side
   int facet_vs_point(const Triangle& t, Index p) const {
-    if (canonical) return pred::orient3d({t[0], P(t[0])}, {t[1], P(t[1])}, {t[2], P(t[2])}, {p, P(p)});
+    if (canonical) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), pt(p));
     return pred::orient3d_exact(P(t[0]), P(t[1]), P(t[2]), P(p));
   }
 };
+
+// The rounded centroid of the tetrahedron (tp), when it is strictly inside it
+// exactly: each vertex replaced by it, the orientation keeps its sign.
+bool rounded_centroid_inside(const double* const* tp, double* sd) {
+  for (int j = 0; j < 3; ++j) {
+    sd[j] = ((tp[0][j] + tp[1][j]) + (tp[2][j] + tp[3][j])) * 0.25;
+    if (!std::isfinite(sd[j])) return false;
+  }
+  const int o = pred::orient3d_exact(tp[0], tp[1], tp[2], tp[3]);
+  for (int i = 0; i < 4; ++i) {
+    const double* q[4] = {tp[0], tp[1], tp[2], tp[3]};
+    q[i] = sd;
+    if (o == 0 || pred::orient3d_exact(q[0], q[1], q[2], q[3]) != o) return false;
+  }
+  return true;
+}
 
 double dist2(const double* a, const double* b) {
   double s = 0;
@@ -208,7 +236,14 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
   if (!pick_tetrahedron(ps, verts, tet))
     return Report::fail("interior-point", "all vertices of the surface are coplanar, the hull of the input is not");
   const double* tp[4] = {ps.point(tet[0]), ps.point(tet[1]), ps.point(tet[2]), ps.point(tet[3])};
-  Hull3Checker ck{ps, canonical, pred::RationalPoint::centroid(tp, 4, 3), static_cast<pred::PointId>(n)};
+  Hull3Checker ck{ps, canonical, pred::RationalPoint::centroid(tp, 4, 3), static_cast<pred::PointId>(n), false,
+                  {0, 0, 0}, pred::StaticFilter{}};
+  ck.s_is_double = rounded_centroid_inside(tp, ck.sd);
+  {
+    std::vector<double> values(ps.coords);
+    if (ck.s_is_double) values.insert(values.end(), ck.sd, ck.sd + 3);
+    ck.f = pred::StaticFilter::for_points(values.data(), values.size() / 3, 3);
+  }
 
   // ---- star-shapedness w.r.t. s --------------------------------------------
   for (const Triangle& t : tris)
