@@ -30,9 +30,9 @@
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "peers/peers.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 
 namespace flipflop::bench::detail {
 

@@ -12,12 +12,12 @@
 #include "io/write_points.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
 #include "reference/hull3/strict_hull3.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 
 namespace flipflop::cli {
 

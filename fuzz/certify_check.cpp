@@ -32,7 +32,7 @@
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/canonical.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 
 namespace flipflop::fuzz {

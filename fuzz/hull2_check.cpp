@@ -27,9 +27,9 @@
 #include "fuzz/fuzz_input.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 
 namespace flipflop::fuzz {
 

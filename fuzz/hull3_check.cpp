@@ -45,7 +45,7 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/hull3/hull3_stats.hpp"

@@ -1,5 +1,5 @@
 // rt2_check.cpp — fuzz_rt2: the 2D regular / Delaunay triangulation
-// algorithms (reference/rt2.hpp) against each other, the definition and the
+// algorithms (reference/rt2/rt2.hpp) against each other, the definition and the
 // certifier.
 //
 // Byte 0: bit 0 weighted. Then a 2D point set of 1..32 points (fuzz_input.hpp:
@@ -27,9 +27,9 @@
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 
 namespace flipflop::fuzz {
 

@@ -53,7 +53,7 @@
 #include "proptests/support/rtd_oracles.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/rtd_brute.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/instant_flip.hpp"

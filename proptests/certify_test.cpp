@@ -13,7 +13,7 @@
 #include "proptests/support/planar_inputs.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/canonical.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 
 using namespace flipflop;

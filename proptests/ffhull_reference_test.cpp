@@ -26,7 +26,7 @@
 #include "proptests/support/ffhull_inputs.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/hull3/flip_flop_3d.hpp"

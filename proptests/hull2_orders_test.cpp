@@ -27,7 +27,7 @@
 #include "gen/generate.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/dimension.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 
 using namespace flipflop;
 

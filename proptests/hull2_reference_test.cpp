@@ -23,9 +23,9 @@
 #include "peers/peers.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 
 using namespace flipflop;
 using certify::Level;

@@ -24,7 +24,7 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/rc_scaled.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/ffhull.hpp"
 

@@ -32,7 +32,7 @@
 #include <unistd.h>
 
 #include "gen/generate.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "io/io.hpp"
 
 namespace fs = std::filesystem;

@@ -27,10 +27,10 @@
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/dimension.hpp"
-#include "reference/ffrt.hpp"
-#include "reference/flip_flop_2d.hpp"
-#include "reference/lawson_flip.hpp"
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/ffrt.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
+#include "reference/rt2/lawson_flip.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 using namespace flipflop;
 namespace tri = flipflop::ref::tri;

@@ -20,14 +20,14 @@
 #include "predicates/predicates.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/checked.hpp"
 #include "reference/dimension.hpp"
-#include "reference/ffrt.hpp"
-#include "reference/flip_flop_2d.hpp"
-#include "reference/lawson_flip.hpp"
-#include "reference/rt2.hpp"
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/ffrt.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
+#include "reference/rt2/lawson_flip.hpp"
+#include "reference/rt2/rt2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 using namespace flipflop;
 using ref::FlipFlopVariant;

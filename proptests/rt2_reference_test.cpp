@@ -1,5 +1,5 @@
 // rt2_reference_test.cpp — the 2D regular / Delaunay triangulation reference
-// (reference/rt2.hpp: ffRT §5.3, flip-flop §5.1 Algorithm 5, Lawson §3.3.1).
+// (reference/rt2/rt2.hpp: ffRT §5.3, flip-flop §5.1 Algorithm 5, Lawson §3.3.1).
 //
 // Oracles, all independent of the code under test:
 //   brute::rt2            the canonical SoS answer by enumeration (n <= 40);
@@ -26,11 +26,11 @@
 #include "predicates/predicates.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/lawson_flip.hpp"
-#include "reference/rt2.hpp"
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/lawson_flip.hpp"
+#include "reference/rt2/rt2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 using namespace flipflop;
 using certify::Level;

@@ -19,7 +19,7 @@
 #include "proptests/support/rtd_brute.hpp"
 #include "proptests/support/rtd_inputs.hpp"
 #include "reference/dimension.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/rt_incremental.hpp"

@@ -24,7 +24,7 @@
 #include "proptests/support/rc_scaled.hpp"
 #include "proptests/support/splay_inputs.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/initial_stars.hpp"
 #include "reference/hull3/star_splaying.hpp"

@@ -17,7 +17,7 @@
 #include "proptests/support/families.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/brute_force.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/twist_flip.hpp"
 

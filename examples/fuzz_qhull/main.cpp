@@ -34,7 +34,7 @@
 #include "gen/generate.hpp"
 #include "io/io.hpp"
 #include "qhull_hull3.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 
 using flipflop::PointSet;

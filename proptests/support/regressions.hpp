@@ -21,7 +21,7 @@
 //                    permutes the output (mapped back: the same).
 //   hull2_counts     (d) the counters obey their lemmas (see the check).
 //   rt2_*            the same for the 2D regular / Delaunay triangulations
-//                    (reference/rt2.hpp: ffRT, flip-flop, Lawson; brute::rt2
+//                    (reference/rt2/rt2.hpp: ffRT, flip-flop, Lawson; brute::rt2
 //                    for n <= 12; CGAL at Level::exact), when rt2.hpp exists.
 //   hull3_canonical, hull3_scale, hull3_translate, hull3_permute: the same
 //                    for the 3D hull: ffHull, star splaying and twist-flip
@@ -116,17 +116,17 @@
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/canonical.hpp"
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3_stats.hpp"
 #include "reference/rtd/canonical_d.hpp"
-#if __has_include("reference/rt2.hpp") && __has_include("reference/ffrt.hpp") && \
-    __has_include("reference/flip_flop_2d.hpp")
+#if __has_include("reference/rt2/rt2.hpp") && __has_include("reference/rt2/ffrt.hpp") && \
+    __has_include("reference/rt2/flip_flop_2d.hpp")
 #define FLIPFLOP_TEST_HAVE_RT2 1
-#include "reference/ffrt.hpp"
-#include "reference/flip_flop_2d.hpp"
-#include "reference/rt2.hpp"
+#include "reference/rt2/ffrt.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
+#include "reference/rt2/rt2.hpp"
 #endif
 // The reference parts (reference/hull3, reference/rtd: libraries of their
 // own, always linked through flipflop_all).

@@ -10,7 +10,7 @@
 //
 // Star-shapedness (Lemma 6.1: the cones C_s(t) of the triangles from the
 // kernel point s do not overlap) is checked in O(F) predicates by the test of
-// the certifier (reference/certify_hull3.cpp): every triangle faces away from
+// the certifier (reference/certify/certify_hull3.cpp): every triangle faces away from
 // s (its cone is a proper cone, s on its inner side), and the central
 // projection from s winds exactly once around every vertex. Then the
 // projection onto the sphere of directions is a local homeomorphism of a

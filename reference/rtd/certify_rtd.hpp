@@ -60,7 +60,7 @@
 #include <string>
 #include <vector>
 
-#include "reference/certify.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::certify {

@@ -1,6 +1,6 @@
 // triangulation2.cpp — the extended triangulation, its predicates with the
 // virtual vertex, flips and validity check (see triangulation2.hpp).
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 #include <algorithm>
 #include <stdexcept>

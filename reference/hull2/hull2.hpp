@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "reference/flip_pop.hpp"
-#include "reference/graham_insertion.hpp"
-#include "reference/graham_sorting.hpp"
-#include "reference/polygon.hpp"
-#include "reference/twist.hpp"
+#include "reference/hull2/flip_pop.hpp"
+#include "reference/hull2/graham_insertion.hpp"
+#include "reference/hull2/graham_sorting.hpp"
+#include "reference/hull2/polygon.hpp"
+#include "reference/hull2/twist.hpp"
 
 namespace flipflop::ref {
 

@@ -1,6 +1,6 @@
 // rt2.cpp — public entry points of the 2D regular triangulation reference;
 // see rt2.hpp.
-#include "reference/rt2.hpp"
+#include "reference/rt2/rt2.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "reference/dimension.hpp"
-#include "reference/ffrt.hpp"
-#include "reference/flip_flop_2d.hpp"
-#include "reference/lawson_flip.hpp"
+#include "reference/rt2/ffrt.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
+#include "reference/rt2/lawson_flip.hpp"
 
 namespace flipflop::ref {
 

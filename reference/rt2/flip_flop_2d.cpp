@@ -1,6 +1,6 @@
 // flip_flop_2d.cpp — Algorithm 5 (thesis §5.1) on the extended triangulation;
 // see flip_flop_2d.hpp.
-#include "reference/flip_flop_2d.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
 
 #include <algorithm>
 #include <stdexcept>

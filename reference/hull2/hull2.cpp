@@ -1,5 +1,5 @@
 // hull2.cpp — public entry points of the reference 2D hull (see hull2.hpp).
-#include "reference/hull2.hpp"
+#include "reference/hull2/hull2.hpp"
 
 #include <numeric>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // polygon.cpp — predicates, kernel point and star-shapedness (polygon.hpp).
-#include "reference/polygon.hpp"
+#include "reference/hull2/polygon.hpp"
 
 #include <algorithm>
 #include <cmath>

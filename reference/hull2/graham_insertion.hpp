@@ -31,7 +31,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "reference/flip_pop.hpp"
+#include "reference/hull2/flip_pop.hpp"
 
 namespace flipflop::ref {
 

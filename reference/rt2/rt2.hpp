@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "reference/point_set.hpp"
-#include "reference/triangulation2.hpp"  // Rt2Stats, FlipFlopVariant
+#include "reference/rt2/triangulation2.hpp"  // Rt2Stats, FlipFlopVariant
 
 namespace flipflop::ref {
 

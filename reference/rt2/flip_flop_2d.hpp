@@ -30,7 +30,7 @@
 #include <utility>
 #include <vector>
 
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 namespace flipflop::ref::ff {
 

@@ -38,8 +38,8 @@
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
 #include "predicates/static_filter.hpp"
-#include "reference/certify.hpp"
-#include "reference/certify_detail.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/certify/certify_detail.hpp"
 #include "reference/dimension.hpp"
 
 namespace flipflop::certify {

@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 namespace flipflop::ref::lawson_flip {
 

@@ -43,7 +43,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "reference/polygon.hpp"
+#include "reference/hull2/polygon.hpp"
 
 namespace flipflop::ref {
 

@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "reference/flip_pop.hpp"
+#include "reference/hull2/flip_pop.hpp"
 
 namespace flipflop::ref {
 

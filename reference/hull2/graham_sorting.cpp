@@ -1,5 +1,5 @@
 // graham_sorting.cpp — Graham-sorting, thesis §4.2, Algorithm 3 (see graham_sorting.hpp).
-#include "reference/graham_sorting.hpp"
+#include "reference/hull2/graham_sorting.hpp"
 
 #include <algorithm>
 #include <stdexcept>

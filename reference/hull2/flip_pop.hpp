@@ -37,7 +37,7 @@
 #include <optional>
 #include <vector>
 
-#include "reference/polygon.hpp"
+#include "reference/hull2/polygon.hpp"
 
 namespace flipflop::ref {
 

@@ -1,5 +1,5 @@
 // lawson_flip.cpp — Lawson's flip algorithm (thesis §3.3.1); see lawson_flip.hpp.
-#include "reference/lawson_flip.hpp"
+#include "reference/rt2/lawson_flip.hpp"
 
 #include <deque>
 #include <string>

@@ -21,7 +21,7 @@
 #include <array>
 #include <vector>
 
-#include "reference/triangulation2.hpp"
+#include "reference/rt2/triangulation2.hpp"
 
 namespace flipflop::ref::ffrt {
 

@@ -1,5 +1,5 @@
 // flip_pop.cpp — flip-pop, thesis §4.1, Algorithm 1 (see flip_pop.hpp).
-#include "reference/flip_pop.hpp"
+#include "reference/hull2/flip_pop.hpp"
 
 #include <stdexcept>
 

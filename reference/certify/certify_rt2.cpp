@@ -31,8 +31,8 @@
 #include <algorithm>
 
 #include "predicates/predicates.hpp"
-#include "reference/certify.hpp"
-#include "reference/certify_detail.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/certify/certify_detail.hpp"
 #include "reference/dimension.hpp"
 
 namespace flipflop::certify {

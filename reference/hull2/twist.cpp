@@ -1,5 +1,5 @@
 // twist.cpp — the twist algorithm, thesis §8.3, Algorithm 11 (see twist.hpp).
-#include "reference/twist.hpp"
+#include "reference/hull2/twist.hpp"
 
 #include <deque>
 #include <utility>

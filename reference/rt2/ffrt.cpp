@@ -1,5 +1,5 @@
 // ffrt.cpp — ffRT (thesis §5.3); see ffrt.hpp.
-#include "reference/ffrt.hpp"
+#include "reference/rt2/ffrt.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -8,7 +8,7 @@
 
 #include "predicates/predicates.hpp"
 #include "reference/checked.hpp"
-#include "reference/flip_flop_2d.hpp"
+#include "reference/rt2/flip_flop_2d.hpp"
 
 namespace flipflop::ref::ffrt {
 

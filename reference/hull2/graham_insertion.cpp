@@ -1,5 +1,5 @@
 // graham_insertion.cpp — Graham-insertion, thesis §4.3, Algorithm 4 (see graham_insertion.hpp).
-#include "reference/graham_insertion.hpp"
+#include "reference/hull2/graham_insertion.hpp"
 
 #include <cmath>
 #include <limits>
