@@ -1,13 +1,13 @@
 // cgal_regular_d.cpp — CGAL's dD Regular_triangulation (Epick_d) and
 // Regular_triangulation_3 as peers. See cgal_regular_d.hpp.
 //
-// Orientation: CGAL's Orientation_d and flipflop's orient_d may differ by a
-// dimension-dependent sign. flipflop's sign of the reference simplex
-// (0, e_1, ..., e_d) is (-1)^d (det[x_i 1] with the 1-column last: moving
-// the origin's row last takes d transpositions and leaves det[[I 1];[0 1]]
-// = 1); CGAL's sign of the same simplex is asked from CGAL at run time. A
-// cell's flipflop sign is then CGAL's sign times that ratio — on points in
-// general position, where both are non-zero.
+// Orientation: the output is positive in the volume convention
+// (det[p_1 - p_0, ..., p_d - p_0] > 0, reference/rtd/canonical_d.hpp), in
+// which the reference simplex (0, e_1, ..., e_d) is positive (det I = 1).
+// CGAL's Orientation_d documents the same convention; rather than rely on
+// it, CGAL's sign of that reference simplex is asked at run time, and a
+// cell's volume sign is CGAL's sign times that one — on points in general
+// position, where both are non-zero.
 // GCC's -Warray-bounds misfires inside Eigen's fixed-capacity matrices that
 // Epick_d instantiates (a false positive in third-party code, reported at
 // the instantiation point, so it cannot be scoped to the includes).
@@ -73,8 +73,7 @@ std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>
       ref.emplace_back(D, e.begin(), e.end());
     }
   }
-  const int flipflop_ref = D % 2 == 0 ? 1 : -1;
-  const int ratio = static_cast<int>(ori(ref.begin(), ref.end())) * flipflop_ref;
+  const int ratio = static_cast<int>(ori(ref.begin(), ref.end()));  // the volume sign of ref is +1
   std::vector<std::vector<Index>> out;
   for (auto c = rt.finite_full_cells_begin(); c != rt.finite_full_cells_end(); ++c) {
     std::vector<Index> t;
@@ -88,12 +87,35 @@ std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>
     if (sign < 0) std::swap(t[0], t[1]);
     out.push_back(std::move(t));
   }
-  out = canonical_simplices(std::move(out));
+  out = canonical_simplices(std::move(out), Orientation::volume);
   if (redundant) *redundant = non_vertices(ps.size(), out);
   return out;
 }
 
+template <int D>
+int orientation_d(const PointSet& ps, const std::vector<Index>& tuple) {
+  using K = CGAL::Epick_d<CGAL::Dimension_tag<D>>;
+  using Point = typename K::Point_d;
+  std::vector<Point> pts;
+  for (Index i : tuple) pts.emplace_back(D, ps.point(i), ps.point(i) + D);
+  return static_cast<int>(K().orientation_d_object()(pts.begin(), pts.end()));
+}
+
 }  // namespace
+
+int cgal_orientation_d(const PointSet& ps, const std::vector<Index>& tuple) {
+  if (tuple.size() != static_cast<std::size_t>(ps.dim + 1))
+    throw std::invalid_argument("cgal_orientation_d: a " + std::to_string(ps.dim) + "-simplex has " +
+                                std::to_string(ps.dim + 1) + " vertices");
+  switch (ps.dim) {
+    case 2: return orientation_d<2>(ps, tuple);
+    case 3: return orientation_d<3>(ps, tuple);
+    case 4: return orientation_d<4>(ps, tuple);
+    case 5: return orientation_d<5>(ps, tuple);
+    default:
+      throw std::invalid_argument("cgal_orientation_d: expected 2..5-dimensional points, got " + std::to_string(ps.dim) + "D");
+  }
+}
 
 std::vector<std::vector<Index>> cgal_regular_d(const PointSet& ps, std::vector<Index>* redundant) {
   switch (ps.dim) {
@@ -123,9 +145,9 @@ std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<I
   RT rt(input.begin(), input.end());
   if (rt.dimension() < 3)
     throw std::runtime_error("cgal_regular_3: the regular triangulation is lower-dimensional");
-  // flipflop's sign of (0, e1, e2, e3) is -1; ask CGAL for its own
+  // the volume sign of (0, e1, e2, e3) is +1; ask CGAL for its own
   const int ratio = static_cast<int>(CGAL::orientation(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0),
-                                                      K::Point_3(0, 0, 1))) * -1;
+                                                      K::Point_3(0, 0, 1)));
   std::vector<std::vector<Index>> out;
   for (auto c : rt.finite_cell_handles()) {
     std::vector<Index> t;
@@ -137,7 +159,7 @@ std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<I
     if (sign < 0) std::swap(t[0], t[1]);
     out.push_back(std::move(t));
   }
-  out = canonical_simplices(std::move(out));
+  out = canonical_simplices(std::move(out), Orientation::volume);
   if (redundant) *redundant = non_vertices(ps.size(), out);
   return out;
 }

@@ -1,8 +1,8 @@
 // cgal_regular_d.hpp — CGAL's regular triangulations in R^d as peers of
 // flipflop's d-dimensional reference (reference/rtd/), returning flipflop's
 // canonical simplex output (reference/rtd/canonical_d.hpp): each simplex
-// positively oriented in flipflop's convention (the sign of det[x_i 1] with
-// the 1-column last, predicates.hpp), smallest index first, the rest
+// positively oriented in the volume convention (det[p_1 - p_0, ..., p_d - p_0]
+// > 0, that of CGAL's Orientation_d), smallest index first, the rest
 // ascending (last two swapped when needed), the list sorted.
 //
 // CGAL decides exactly (filtered predicates) but with its own rules for
@@ -28,5 +28,9 @@ std::vector<std::vector<Index>> cgal_regular_d(const PointSet& weighted, std::ve
 
 // CGAL::Regular_triangulation_3 (Epick), ps.dim == 3.
 std::vector<std::vector<Index>> cgal_regular_3(const PointSet& weighted, std::vector<Index>* redundant = nullptr);
+
+// CGAL's Orientation_d (Epick_d, d = 2..5) of the points `tuple` in that
+// order: +1, 0 or -1 (POSITIVE, COPLANAR, NEGATIVE), exact.
+int cgal_orientation_d(const PointSet& ps, const std::vector<Index>& tuple);
 
 }  // namespace flipflop::peers

@@ -304,11 +304,15 @@ TEST_CASE("rtd canonical form: d = 2 coincides with canonical_triangles and the 
       as_tuples.push_back({t[0], t[1], t[2]});
     }
     const auto ct = canonical_triangles(tris);
-    const auto cs = canonical_simplices(as_tuples);
+    const auto cs = canonical_simplices(as_tuples, Orientation::orient_d);  // d = 2: the conventions agree
+    RC_ASSERT(canonical_simplices(as_tuples, Orientation::volume) == cs);
     RC_ASSERT(ct.size() == cs.size());
     for (std::size_t i = 0; i < ct.size(); ++i)
       RC_ASSERT((std::vector<Index>{ct[i][0], ct[i][1], ct[i][2]}) == cs[i]);
-    // d-tuples: the canonical tuple is an even permutation of the given one,
+    // d-tuples: the canonical tuple is an even permutation of the given one
+    // when given in the volume convention; when given in the orient_d
+    // convention, an even permutation in even d and an odd one in odd d
+    // (det[[p_i 1]] = (-1)^d det[p_1 - p_0, ...], canonical_d.hpp);
     // smallest first, rest ascending up to the last two
     const int d = 2 + static_cast<int>(seed % 4);
     std::vector<std::vector<Index>> ts;
@@ -316,13 +320,16 @@ TEST_CASE("rtd canonical form: d = 2 coincides with canonical_triangles and the 
       std::vector<Index> t;
       for (int i = 0; i <= d; ++i) t.push_back(static_cast<Index>(i * 1000 + g() % 1000));
       std::shuffle(t.begin(), t.end(), g);
-      const auto c = canonical_simplex(t);
+      const auto c = canonical_simplex(t, Orientation::volume);
       RC_ASSERT(odd_sorting_parity(c) == odd_sorting_parity(t));
       RC_ASSERT(is_canonical_shape(c));
+      const auto co = canonical_simplex(t, Orientation::orient_d);
+      RC_ASSERT((odd_sorting_parity(co) != odd_sorting_parity(t)) == (d % 2 == 1));
+      RC_ASSERT(is_canonical_shape(co));
       RC_ASSERT(c[0] == *std::min_element(t.begin(), t.end()));
       ts.push_back(t);
     }
-    const auto cts = canonical_simplices(ts);
+    const auto cts = canonical_simplices(ts, Orientation::volume);
     RC_ASSERT(std::is_sorted(cts.begin(), cts.end()));
     const std::string text = simplices_text(cts);
     RC_ASSERT(parse_simplices(text, d) == cts);

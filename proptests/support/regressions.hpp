@@ -273,7 +273,7 @@ inline std::vector<Triangle> map_back(std::vector<Triangle> v, const std::vector
 inline std::vector<std::vector<Index>> map_back(std::vector<std::vector<Index>> v, const std::vector<Index>& perm) {
   for (auto& t : v)
     for (Index& i : t) i = perm[i];
-  return canonical_simplices(std::move(v));  // the same points in the same order: still positive
+  return canonical_simplices(std::move(v), Orientation::volume);  // the same points in the same order: still positive
 }
 
 // ============================================================================

@@ -47,7 +47,7 @@ inline std::vector<std::vector<Index>> brute_rtd(const PointSet& ps) {
     ++t[static_cast<std::size_t>(i)];
     for (int j = i + 1; j <= d; ++j) t[static_cast<std::size_t>(j)] = t[static_cast<std::size_t>(j - 1)] + 1;
   }
-  return canonical_simplices(std::move(out));
+  return canonical_simplices(std::move(out), Orientation::orient_d);
 }
 
 }  // namespace flipflop::test

@@ -88,7 +88,7 @@ inline Simplices fresh_on(const PointSet& ps, const std::vector<double>& u, cons
     for (Index& x : t) x = V[x];
     out.push_back(t);
   }
-  return canonical_simplices(std::move(out));  // a monotone relabelling keeps the orientation
+  return canonical_simplices(std::move(out), Orientation::volume);  // a relabelling keeps the (geometric) orientation
 }
 
 // What any regular triangulation of a subset of V for the weights U (under

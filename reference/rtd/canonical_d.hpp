@@ -3,14 +3,31 @@
 // positively oriented, sorted the same way"), the one definition used by
 // every d-dimensional algorithm, peer, writer and the certifier.
 //
-// A simplex is given as a POSITIVELY ORIENTED tuple (orient_d > 0 under SoS).
-// Its canonical tuple: the smallest index first, the others ascending; when
-// that order is an odd permutation of the given (positive) tuple, the LAST
-// TWO entries are swapped (an odd permutation restores the orientation).
-// Orientation is a property of the parity of the ordering, so this needs no
-// predicate: of the two orderings "smallest first, the rest ascending" and
-// "the same with the last two swapped" exactly one is an even permutation
-// of the given positive tuple, and that one is the canonical tuple.
+// Two orientation conventions meet here (Orientation below):
+//  * Orientation::orient_d — the predicates' (pred::orient_d, Shewchuk's):
+//    the sign of det[[p_0 1]; ...; [p_d 1]], the 1-column LAST. Every
+//    algorithm of reference/rtd keeps its simplices positive in this one.
+//  * Orientation::volume — the output's: the sign of
+//    det[p_1 - p_0, ..., p_d - p_0], the convention of CGAL's Orientation_d,
+//    VTK and every mesh format (positive volume).
+// They differ by (-1)^d: subtracting row 0 from the others leaves rows
+// [p_0 1] and [p_i - p_0 0]; expanding along the last column, the only
+// non-zero entry is the 1 of row 0 at column d, with cofactor sign
+// (-1)^(0+d), so det[[p_i 1]] = (-1)^d det[p_1 - p_0, ..., p_d - p_0]. In
+// even d (2D: counter-clockwise) the conventions agree; in odd d a tuple
+// positive in one is negative in the other, and swapping two entries (an odd
+// permutation) converts it.
+//
+// A simplex is given as a POSITIVELY ORIENTED tuple in one of the two
+// conventions; canonical_simplex first converts it to the volume convention
+// (odd d, orient_d given: swap the last two entries). Its canonical tuple:
+// the smallest index first, the others ascending; when that order is an odd
+// permutation of the (volume-positive) tuple, the LAST TWO entries are
+// swapped (an odd permutation restores the orientation). Orientation is a
+// property of the parity of the ordering, so this needs no predicate: of the
+// two orderings "smallest first, the rest ascending" and "the same with the
+// last two swapped" exactly one is an even permutation of the volume-positive
+// tuple, and that one is the canonical tuple.
 // A list is canonical when every tuple is and the list is sorted
 // lexicographically (no duplicates).
 //
@@ -48,9 +65,24 @@ inline bool odd_sorting_parity(std::vector<Index> s) {
   return odd;
 }
 
-// The canonical tuple of a positively oriented simplex tuple.
-inline std::vector<Index> canonical_simplex(const std::vector<Index>& positive) {
+// The orientation convention of a tuple (header).
+enum class Orientation {
+  orient_d,  // det[[p_i 1]] > 0, the predicates' (1-column last)
+  volume     // det[p_1 - p_0, ..., p_d - p_0] > 0, the output's
+};
+
+// The conventions differ in odd d (header): a tuple positive in one is
+// positive in the other after an odd permutation. Converts in place, either
+// way (an involution): swaps the last two entries when d = size - 1 is odd.
+inline void switch_orientation_convention(std::vector<Index>& t) {
+  if (t.size() >= 2 && (t.size() - 1) % 2 == 1) std::swap(t[t.size() - 1], t[t.size() - 2]);
+}
+
+// The canonical tuple (volume convention) of a positively oriented simplex
+// tuple given in convention `given`.
+inline std::vector<Index> canonical_simplex(const std::vector<Index>& positive, Orientation given) {
   std::vector<Index> c = positive;
+  if (given == Orientation::orient_d) switch_orientation_convention(c);
   const bool odd = odd_sorting_parity(c);
   std::sort(c.begin(), c.end());
   if (odd && c.size() >= 2) std::swap(c[c.size() - 1], c[c.size() - 2]);
@@ -81,8 +113,9 @@ inline std::vector<Index> non_vertices(std::size_t n, const std::vector<std::vec
   return out;
 }
 
-inline std::vector<std::vector<Index>> canonical_simplices(std::vector<std::vector<Index>> positive) {
-  for (auto& t : positive) t = canonical_simplex(t);
+inline std::vector<std::vector<Index>> canonical_simplices(std::vector<std::vector<Index>> positive,
+                                                          Orientation given) {
+  for (auto& t : positive) t = canonical_simplex(t, given);
   std::sort(positive.begin(), positive.end());
   return positive;
 }

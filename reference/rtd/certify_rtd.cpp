@@ -39,14 +39,23 @@ struct Facets {
   std::int64_t nb(std::size_t s, int i) const { return across[s * static_cast<std::size_t>(d + 1) + static_cast<std::size_t>(i)]; }
 };
 
+// The simplices' orientation convention (canonical_d.hpp): the certified
+// output is in the volume convention; rtd_detail::tiling_problem's callers
+// hand over the algorithms' orient_d-positive tuples. In odd d the two
+// differ by one transposition, undone here on the last two points of every
+// tuple before a predicate sees it, so that orient > 0 means "positive in
+// the given convention" and power keeps its meaning below.
 struct Checker {
   const PointSet& ps;
   int d;
+  Orientation given;
+  bool swap_last_two() const { return given == Orientation::volume && d % 2 == 1; }
   pred::Pt P(Index i) const { return {i, ps.point(i)}; }
   pred::WPt W(Index i) const { return {i, ps.point(i), ps.weight(i)}; }
   int orient(const Index* t) const {
     pred::Pt p[kMaxD + 1];
     for (int i = 0; i <= d; ++i) p[i] = P(t[i]);
+    if (swap_last_two()) std::swap(p[d - 1], p[d]);
     return pred::orient_d(d, p);
   }
   // orient of t with entry i replaced by x
@@ -60,6 +69,7 @@ struct Checker {
   int power(const std::vector<Index>& t, Index x) const {
     pred::WPt p[kMaxD + 2];
     for (int i = 0; i <= d; ++i) p[i] = W(t[static_cast<std::size_t>(i)]);
+    if (swap_last_two()) std::swap(p[d - 1], p[d]);
     p[d + 1] = W(x);
     return pred::power_d(d, p);
   }
@@ -176,7 +186,7 @@ namespace rtd_detail {
 std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices) {
   if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2..5";
   if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
-  Checker ck{ps, ps.dim};
+  Checker ck{ps, ps.dim, Orientation::orient_d};
   Facets F;
   return tiling(ck, positive_simplices, F);
 }
@@ -197,7 +207,7 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
       return Report::fail("canonical-form", "simplices " + simplex_str(S[k - 1]) + " and " + simplex_str(S[k]) +
                                                 " are not sorted or repeat");
   }
-  Checker ck{ps, d};
+  Checker ck{ps, d, Orientation::volume};
   Facets F;
   if (std::string why = tiling(ck, S, F); !why.empty()) return fail_from(why);
   // (the tiling covers a full-dimensional convex region, so the input spans R^d)

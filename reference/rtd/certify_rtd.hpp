@@ -8,7 +8,9 @@
 //   simplex-indices          d+1 distinct in-range indices per simplex, at
 //                            least one simplex
 //   canonical-form           every tuple canonical, the list sorted, no repeats
-//   simplex-orientation      every simplex positive (orient_d > 0, SoS)
+//   simplex-orientation      every simplex positive in the volume convention
+//                            (det[p_1 - p_0, ..., p_d - p_0] > 0 under SoS;
+//                            canonical_d.hpp)
 //   facet-manifold           every facet (d-1 face) lies in one or two
 //                            simplices; when in two, they induce opposite
 //                            orientations on it (they lie on its two sides)
@@ -71,7 +73,8 @@ namespace rtd_detail {
 // The structural part (conditions simplex-indices, simplex-orientation,
 // facet-manifold, boundary-is-hull on the vertices of the simplices; no
 // canonical form, no regularity): empty when the simplices — given POSITIVELY
-// ORIENTED — tile the convex hull of their vertices, otherwise the condition
+// ORIENTED in the predicates' convention (Orientation::orient_d, as the
+// algorithms hold them) — tile the convex hull of their vertices, otherwise the condition
 // and what is wrong. Used by rtd::from_simplices.
 std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices);
 }  // namespace rtd_detail

@@ -165,7 +165,7 @@ std::vector<std::vector<Index>> real_simplices(const TriangulationD& T) {
     if (!T.alive[static_cast<std::size_t>(s)] || is_virtual_simplex(T, s)) continue;
     out.emplace_back(T.tuple(s), T.tuple(s) + T.d + 1);
   }
-  return canonical_simplices(std::move(out));
+  return canonical_simplices(std::move(out), Orientation::orient_d);  // tuples kept orient_d-positive
 }
 
 std::vector<Index> vertices(const TriangulationD& T) {
