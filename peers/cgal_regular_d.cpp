@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "peers/cgal_regular_d.hpp"
 #include "reference/rtd/canonical_d.hpp"
@@ -101,31 +102,31 @@ int orientation_d(const PointSet& ps, const std::vector<Index>& tuple) {
   return static_cast<int>(K().orientation_d_object()(pts.begin(), pts.end()));
 }
 
+// f(std::integral_constant<int, D>) for D = d in 2..5 (Epick_d's fixed
+// dimension tags), else std::invalid_argument naming `who`.
+template <class F>
+auto with_dimension(int d, const char* who, F f) {
+  switch (d) {
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    default:
+      throw std::invalid_argument(std::string(who) + ": expected 2..5-dimensional points, got " + std::to_string(d) + "D");
+  }
+}
+
 }  // namespace
 
 int cgal_orientation_d(const PointSet& ps, const std::vector<Index>& tuple) {
   if (tuple.size() != static_cast<std::size_t>(ps.dim + 1))
     throw std::invalid_argument("cgal_orientation_d: a " + std::to_string(ps.dim) + "-simplex has " +
                                 std::to_string(ps.dim + 1) + " vertices");
-  switch (ps.dim) {
-    case 2: return orientation_d<2>(ps, tuple);
-    case 3: return orientation_d<3>(ps, tuple);
-    case 4: return orientation_d<4>(ps, tuple);
-    case 5: return orientation_d<5>(ps, tuple);
-    default:
-      throw std::invalid_argument("cgal_orientation_d: expected 2..5-dimensional points, got " + std::to_string(ps.dim) + "D");
-  }
+  return with_dimension(ps.dim, "cgal_orientation_d", [&](auto D) { return orientation_d<D()>(ps, tuple); });
 }
 
 std::vector<std::vector<Index>> cgal_regular_d(const PointSet& ps, std::vector<Index>* redundant) {
-  switch (ps.dim) {
-    case 2: return regular_d<2>(ps, redundant);
-    case 3: return regular_d<3>(ps, redundant);
-    case 4: return regular_d<4>(ps, redundant);
-    case 5: return regular_d<5>(ps, redundant);
-    default:
-      throw std::invalid_argument("cgal_regular_d: expected 2..5-dimensional points, got " + std::to_string(ps.dim) + "D");
-  }
+  return with_dimension(ps.dim, "cgal_regular_d", [&](auto D) { return regular_d<D()>(ps, redundant); });
 }
 
 std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<Index>* redundant) {
