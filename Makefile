@@ -4,7 +4,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 PKGS  := cmake g++ make clang libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
-         libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev
+         libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev python3-meshio python3-numpy
 
 .PHONY: all deps configure build demo test sanitize asan tsan clean
 

@@ -10,6 +10,7 @@
 #include "io/index_io.hpp"
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
+#include "io/write_result.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -18,6 +19,7 @@
 #include "reference/hull3/hull3.hpp"
 #include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2/rt2.hpp"
+#include "reference/rtd/canonical_d.hpp"
 
 namespace flipflop::cli {
 
@@ -53,6 +55,27 @@ void write_output(const std::string& path, const std::function<void(std::ostream
 }
 
 }  // namespace
+
+io::Format output_format_of(const std::string& path) {
+  try {
+    return io::output_format(path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
+                       const PointSet& ps, const std::vector<std::vector<Index>>& cells, io::CellKind kind,
+                       const std::vector<Index>& marked, bool ascii) {
+  if (f == io::Format::index) return write_output(path, index_text);
+  try {
+    io::write_cells(path, f, ps, cells, kind, marked, ascii);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+}
 
 std::vector<std::string> available_backends(const std::string& kind) {
   if (kind == "hull3") return {"cpu", "reference"};
@@ -125,6 +148,8 @@ std::string hull3_counts(const ref::Hull3Stats& st) {
 
 int run_compute(const ComputeArgs& a) {
   if (a.strict && a.kind != "hull3") throw UsageError("--strict applies to hull3 only");
+  if (a.triangulate && !a.strict) throw UsageError("--triangulate applies to the strict view (hull3 --strict)");
+  const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
   const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
   const double t_read = seconds_since(t_read0);
@@ -185,14 +210,25 @@ int run_compute(const ComputeArgs& a) {
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
 
   // The strict view is derived from the certified canonical hull.
-  std::string strict_text;
-  if (a.strict) strict_text = ref::format_strict_hull3(ref::strict_hull3(ps, tris));
+  ref::StrictHull3 strict;
+  if (a.strict) strict = ref::strict_hull3(ps, tris);
+  if (a.triangulate) strict = ref::fan_triangulated(strict);
   const auto t2 = Clock::now();
-  write_output(a.out, [&](std::ostream& os) {
-    if (a.strict) os << strict_text;
-    else if (a.kind == "hull2") io::write_hull2(os, cycle);
-    else io::write_triangles(os, tris);
-  });
+  std::vector<std::vector<Index>> cells;
+  if (a.strict) cells = strict.facets;
+  else if (a.kind == "hull2") cells = {cycle};
+  else
+    for (const Triangle& t : tris) cells.push_back({t[0], t[1], t[2]});
+  const std::vector<Index> redundant =
+      a.kind == "rt2" && fmt == io::Format::svg ? non_vertices(ps.size(), cells) : std::vector<Index>{};
+  write_result_file(
+      a.out, fmt,
+      [&](std::ostream& os) {
+        if (a.strict) os << ref::format_strict_hull3(strict);
+        else if (a.kind == "hull2") io::write_hull2(os, cycle);
+        else io::write_triangles(os, tris);
+      },
+      ps, cells, a.kind == "hull2" ? io::CellKind::cycle : io::CellKind::polygons, redundant, a.ascii);
   const double t_write = seconds_since(t2);
   if (a.stats) {
     std::cerr << a.kind << ": backend " << backend << (backend == "cpu" && a.threads ? " (" + std::to_string(a.threads) + " threads)" : std::string()) << ", algo " << algo << ", " << ps.size() << " points, "

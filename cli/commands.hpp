@@ -4,7 +4,12 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <functional>
+#include <iosfwd>
 #include <vector>
+
+#include "io/write_result.hpp"
+#include "reference/point_set.hpp"
 
 namespace flipflop::cli {
 
@@ -33,6 +38,8 @@ struct ComputeArgs {
   std::string algo;  // empty: the kind's default (default_algorithm)
   bool stats = false;
   bool strict = false;  // hull3: strictly extreme points and merged coplanar facets
+  bool triangulate = false;  // with strict: the polygons fan-triangulated
+  bool ascii = false;        // .ply/.stl output in ASCII instead of binary
 };
 
 struct CertifyArgs {
@@ -50,6 +57,16 @@ std::vector<std::string> available_backends(const std::string& kind);
 std::string default_backend(const std::string& kind, const std::string& algo);
 std::vector<std::string> available_algorithms(const std::string& kind);
 std::string default_algorithm(const std::string& kind);
+
+// The output format of -o PATH by its extension (io/write_result.hpp); an
+// unknown extension is a UsageError.
+io::Format output_format_of(const std::string& path);
+// Writes a result to PATH (empty or "-": standard output) in format f: the
+// canonical index text by `index_text`, any other format from the cells
+// (io::write_cells). Refusals and write failures are UsageErrors (one line).
+void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
+                       const PointSet& ps, const std::vector<std::vector<Index>>& cells, io::CellKind kind,
+                       const std::vector<Index>& marked, bool ascii);
 
 int run_gen(const GenArgs& a);
 int run_compute(const ComputeArgs& a);

@@ -52,7 +52,10 @@ int main(int argc, char** argv) {
   for (int k = 0; k < 4; ++k) {
     auto* cmd = app.add_subcommand(kinds[k], compute_help[k]);
     cmd->add_option("IN", c.in, "input point file (.xyz, .off, .ply)")->required();
-    cmd->add_option("-o,--output", c.out, "output file (default: standard output)");
+    cmd->add_option("-o,--output", c.out,
+                    "output file, format by extension: .txt/.idx/none index text (default: standard output), "
+                    ".off .obj .ply .stl .vtu meshes, .npy index array, .svg picture (2D)");
+    cmd->add_flag("--ascii", c.ascii, ".ply and .stl output in ASCII (default binary)");
     cmd->add_option("--backend", c.backend,
                     "backend computing the result (default " + default_backend(kinds[k], default_algorithm(kinds[k])) +
                         ")")
@@ -63,9 +66,12 @@ int main(int argc, char** argv) {
     cmd->add_option("--algo", c.algo, "algorithm (default " + default_algorithm(kinds[k]) + ")")
         ->check(CLI::IsMember(available_algorithms(kinds[k])));
     cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");
-    if (std::string(kinds[k]) == "hull3")
+    if (std::string(kinds[k]) == "hull3") {
       cmd->add_flag("--strict", c.strict,
                     "write the strict view: strictly extreme points and coplanar facets merged into polygons");
+      cmd->add_flag("--triangulate", c.triangulate,
+                    "with --strict: each polygon fan-triangulated from its smallest vertex (no zero-area triangle)");
+    }
     compute_cmds.push_back(cmd);
   }
 
@@ -74,7 +80,10 @@ int main(int argc, char** argv) {
   auto* rtd = app.add_subcommand("rtd", "d-dimensional regular triangulation (input: d coordinates and a weight per line)");
   rtd->add_option("IN", r.in, "input point file (.xyz)")->required();
   rtd->add_option("--dim", r.dim, "dimension d (2 to 5)")->required()->check(CLI::Range(2, 5));
-  rtd->add_option("-o,--output", r.out, "output simplex list (default: standard output)");
+  rtd->add_option("-o,--output", r.out,
+                  "output file, format by extension: .txt/.idx/none simplex list (default: standard output), "
+                  ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
+  rtd->add_flag("--ascii", r.ascii, ".ply and .stl output in ASCII (default binary)");
   rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
   InstantFlipArgs f;
   auto* iflip = app.add_subcommand(
@@ -83,7 +92,9 @@ int main(int argc, char** argv) {
   iflip->add_option("--dim", f.dim, "dimension d (2 to 5)")->required()->check(CLI::Range(2, 5));
   iflip->add_option("--from", f.from, "the points with their start weights W as a last column")->required();
   iflip->add_option("--to", f.to, "the points with their target weights U as a last column")->required();
-  iflip->add_option("-o,--output", f.out, "output simplex list of RT(S+U) (default: standard output)");
+  iflip->add_option("-o,--output", f.out,
+                    "output of RT(S+U), format by extension as for rtd (default: standard output, simplex list)");
+  iflip->add_flag("--ascii", f.ascii, ".ply and .stl output in ASCII (default binary)");
   iflip->add_flag("--stats", f.stats, "print flips by type and queue operations to standard error");
   iflip->add_flag("--timeline", f.timeline, "print the time lines (§9.3) of the start and the result to standard error");
 

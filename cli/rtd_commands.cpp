@@ -59,19 +59,11 @@ auto with_input_errors(const std::string& path, F&& f) -> decltype(f()) {
   }
 }
 
-void write_result(const std::string& path, const std::vector<std::vector<Index>>& simplices) {
-  const auto body = [&](std::ostream& os) { write_simplices(os, simplices); };
-  if (path.empty() || path == "-") {
-    body(std::cout);
-    std::cout.flush();
-    if (!std::cout) throw UsageError("cannot write to standard output");
-    return;
-  }
-  try {
-    io::write_file(path, body);
-  } catch (const std::runtime_error& e) {
-    throw UsageError(e.what());
-  }
+void write_result(const std::string& path, io::Format f, const PointSet& ps,
+                  const std::vector<std::vector<Index>>& simplices, const std::vector<Index>& redundant, bool ascii) {
+  write_result_file(
+      path, f, [&](std::ostream& os) { write_simplices(os, simplices); }, ps, simplices, io::CellKind::simplices,
+      redundant, ascii);
 }
 
 std::string index_list(const std::vector<Index>& v, std::size_t limit = 50) {
@@ -105,6 +97,7 @@ std::vector<Index> non_vertices(const ref::rtd::TriangulationD& T) {
 
 int run_rtd(const RtdArgs& a) {
   check_dim(a.dim);
+  const io::Format fmt = output_format_of(a.out);
   const PointSet ps = read_d(a.in, a.dim, true);
   check_spans(ps, a.in);
   const auto t0 = Clock::now();
@@ -114,7 +107,7 @@ int run_rtd(const RtdArgs& a) {
   const auto t1 = Clock::now();
   certify_or_throw(ps, rt.simplices, "the rtd result");
   const double t_certify = seconds_since(t1);
-  write_result(a.out, rt.simplices);
+  write_result(a.out, fmt, ps, rt.simplices, rt.redundant, a.ascii);
   report_redundant("rtd", rt.redundant);
   if (a.stats) {
     std::cerr << "rtd: " << ps.size() << " points in R^" << a.dim << ", " << rt.simplices.size()
@@ -129,6 +122,7 @@ int run_rtd(const RtdArgs& a) {
 
 int run_instant_flip(const InstantFlipArgs& a) {
   check_dim(a.dim);
+  const io::Format fmt = output_format_of(a.out);
   if (a.from.empty() || a.to.empty()) throw UsageError("instant-flip needs --from W.xyz and --to U.xyz");
   const PointSet pts = read_d(a.points, a.dim, false);
   const PointSet pw = read_d(a.from, a.dim, true);
@@ -186,7 +180,7 @@ int run_instant_flip(const InstantFlipArgs& a) {
   if (a.timeline)
     std::cerr << "instant-flip: final, RT(S+U)\n"
               << ref::format_timeline(ref::build_timeline(mm, result, *po.order));
-  write_result(a.out, result);
+  write_result(a.out, fmt, pu, result, non_vertices(T), a.ascii);
   report_redundant("instant-flip", non_vertices(T));
   if (a.stats) {
     std::cerr << "instant-flip: " << pts.size() << " points in R^" << a.dim << ", "

@@ -32,12 +32,14 @@ struct RtdArgs {
   std::string in, out;
   int dim = 0;  // 2..5
   bool stats = false;
+  bool ascii = false;  // .ply/.stl output in ASCII
 };
 
 struct InstantFlipArgs {
   std::string points, from, to, out;
   int dim = 0;  // 2..5
   bool stats = false, timeline = false;
+  bool ascii = false;  // .ply/.stl output in ASCII
 };
 
 int run_rtd(const RtdArgs& a);

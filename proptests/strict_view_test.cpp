@@ -17,6 +17,9 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <gmpxx.h>
+
+#include <array>
 #include <map>
 #include <numeric>
 #include <set>
@@ -46,9 +49,28 @@ bool collinear(const double* a, const double* b, const double* c) {
   return true;
 }
 
+// Twice the area vector (b - a) x (c - a) of a triangle, exactly (doubles
+// are dyadic rationals): for the triangles of one planar polygon, all
+// oriented alike, the vectors add up to twice the polygon's area vector, so
+// two tilings of one polygon have equal sums, exactly.
+using AreaVec = std::array<mpq_class, 3>;
+AreaVec area_vec(const PointSet& ps, Index i, Index j, Index k) {
+  const double *a = ps.point(i), *b = ps.point(j), *c = ps.point(k);
+  mpq_class u[3], v[3];
+  for (int m = 0; m < 3; ++m) {
+    u[m] = mpq_class(b[m]) - mpq_class(a[m]);
+    v[m] = mpq_class(c[m]) - mpq_class(a[m]);
+  }
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+void add_to(AreaVec& s, const AreaVec& t) {
+  for (int m = 0; m < 3; ++m) s[m] += t[m];
+}
+
 // CGAL's facets: its triangles merged across exactly coplanar edges, each
-// class as the sorted set of its strictly extreme vertices.
-std::set<std::vector<Index>> cgal_facets(const PointSet& ps, const std::vector<Index>& extreme) {
+// class as the sorted set of its strictly extreme vertices, with the sum of
+// the area vectors of CGAL's triangles in it.
+std::map<std::vector<Index>, AreaVec> cgal_facet_areas(const PointSet& ps, const std::vector<Index>& extreme) {
   const auto tris = peers::cgal_hull3(ps);
   const std::set<Index> ext(extreme.begin(), extreme.end());
   std::vector<std::size_t> up(tris.size());
@@ -75,12 +97,62 @@ std::set<std::vector<Index>> cgal_facets(const PointSet& ps, const std::vector<I
     }
   }
   std::map<std::size_t, std::set<Index>> classes;
-  for (std::size_t t = 0; t < tris.size(); ++t)
+  std::map<std::size_t, AreaVec> areas;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
     for (Index v : tris[t])
       if (ext.count(v)) classes[find(t)].insert(v);
-  std::set<std::vector<Index>> out;
-  for (const auto& [root, vs] : classes) out.insert(std::vector<Index>(vs.begin(), vs.end()));
+    add_to(areas[find(t)], area_vec(ps, tris[t][0], tris[t][1], tris[t][2]));
+  }
+  std::map<std::vector<Index>, AreaVec> out;
+  for (const auto& [root, vs] : classes) out[std::vector<Index>(vs.begin(), vs.end())] = areas[root];
   return out;
+}
+
+std::set<std::vector<Index>> cgal_facets(const PointSet& ps, const std::vector<Index>& extreme) {
+  std::set<std::vector<Index>> out;
+  for (const auto& [f, a] : cgal_facet_areas(ps, extreme)) out.insert(f);
+  return out;
+}
+
+// hull3 --strict --triangulate (ref::fan_triangulated): the same extreme
+// points, every triangle of non-zero area (exact) with strictly extreme
+// vertices only, a closed oriented 2-manifold (every directed edge once, its
+// reverse once: no T-junction) of Euler characteristic 2, the triangles of
+// each polygon starting at its smallest vertex, and each polygon's area
+// vector (its fan's) equal to that of CGAL's triangles in that facet,
+// exactly (so the areas and the orientations agree).
+void check_triangulated(const PointSet& ps, const ref::StrictHull3& h) {
+  const ref::StrictHull3 t = ref::fan_triangulated(h);
+  REQUIRE(t.extreme_points == h.extreme_points);
+  REQUIRE(std::is_sorted(t.facets.begin(), t.facets.end()));
+  const std::set<Index> ext(h.extreme_points.begin(), h.extreme_points.end());
+  std::set<std::pair<Index, Index>> edges;
+  std::set<Index> used;
+  for (const auto& f : t.facets) {
+    REQUIRE(f.size() == 3);
+    REQUIRE(f[0] < f[1]);
+    REQUIRE(f[0] < f[2]);
+    REQUIRE_FALSE(collinear(ps.point(f[0]), ps.point(f[1]), ps.point(f[2])));
+    for (int e = 0; e < 3; ++e) {
+      REQUIRE(ext.count(f[e]));
+      used.insert(f[e]);
+      REQUIRE(edges.insert({f[e], f[(e + 1) % 3]}).second);
+    }
+  }
+  for (const auto& [a, b] : edges) REQUIRE(edges.count({b, a}));
+  REQUIRE(used == ext);
+  REQUIRE(static_cast<long>(used.size()) - static_cast<long>(edges.size() / 2) + static_cast<long>(t.facets.size()) == 2);
+  const auto cgal = cgal_facet_areas(ps, h.extreme_points);
+  for (const auto& poly : h.facets) {
+    AreaVec fan;
+    for (std::size_t j = 1; j + 1 < poly.size(); ++j) add_to(fan, area_vec(ps, poly[0], poly[j], poly[j + 1]));
+    std::vector<Index> key = poly;
+    std::sort(key.begin(), key.end());
+    const AreaVec& theirs = cgal.at(key);
+    INFO("polygon of " << poly.size() << " vertices starting at " << poly[0]);
+    REQUIRE((theirs[0] != 0 || theirs[1] != 0 || theirs[2] != 0));
+    REQUIRE(fan == theirs);
+  }
 }
 
 void check_polygons(const PointSet& ps, const ref::StrictHull3& h) {
@@ -147,6 +219,7 @@ TEST_CASE("strict: view equals CGAL: 4..40 points, random and degenerate", "[str
     RC_PRE(spans_3d(ps));
     const auto h = ref::strict_hull3(ps, brute::hull3(ps));
     check_against_cgal(ps, h);
+    check_triangulated(ps, h);
     RC_ASSERT(parse(ref::format_strict_hull3(h)) == h);
   });
 }
@@ -159,6 +232,7 @@ TEST_CASE("strict: view equals CGAL on every generator family", "[strict]") {
       if (!spans_3d(ps)) continue;
       const auto h = ref::strict_hull3(ps, ref::hull3_splay(ps));
       check_against_cgal(ps, h);
+      check_triangulated(ps, h);
       if (n <= 50) REQUIRE(ref::strict_hull3(ps, brute::hull3(ps)) == h);
     }
 }

@@ -241,6 +241,15 @@ StrictHull3 strict_hull3(const PointSet& ps, const std::vector<Triangle>& hull) 
   return out;
 }
 
+StrictHull3 fan_triangulated(const StrictHull3& h) {
+  StrictHull3 t;
+  t.extreme_points = h.extreme_points;
+  for (const auto& f : h.facets)
+    for (std::size_t j = 1; j + 1 < f.size(); ++j) t.facets.push_back({f[0], f[j], f[j + 1]});
+  std::sort(t.facets.begin(), t.facets.end());
+  return t;
+}
+
 std::string format_strict_hull3(const StrictHull3& h) {
   std::string s = std::to_string(h.extreme_points.size()) + " " + std::to_string(h.facets.size()) + "\n";
   for (Index v : h.extreme_points) s += std::to_string(v) + "\n";

@@ -60,6 +60,16 @@ struct StrictHull3 {
 // triangle list that is not a closed oriented surface.
 StrictHull3 strict_hull3(const PointSet& ps, const std::vector<Triangle>& canonical_hull);
 
+// The strict view with every facet polygon fan-triangulated from its first
+// (smallest) vertex: triangles (f0, fj, fj+1), counter-clockwise seen from
+// outside and starting at their smallest index like the polygon, the list
+// sorted (`hull3 --strict --triangulate`, the triangle mesh of Qhull's `Qt`
+// users). No triangle has zero area: a polygon's vertices are strictly
+// extreme, so no three of them are collinear (three collinear vertices of a
+// convex polygon would put the middle one inside an edge of the exact hull).
+// Each polygon's area is kept: a fan covers its convex polygon once.
+StrictHull3 fan_triangulated(const StrictHull3& h);
+
 // Text form (deterministic), for the CLI:
 //   line 1:           "E F"  — the number of extreme points and of facets
 //   next E lines:     one extreme point index each, increasing
