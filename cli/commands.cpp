@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -20,6 +21,7 @@
 #include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2/rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/certify_rtd.hpp"
 
 namespace flipflop::cli {
 
@@ -240,7 +242,41 @@ int run_compute(const ComputeArgs& a) {
   return 0;
 }
 
+namespace {
+
+// certify rtd: the canonical level only (certify_rtd.hpp); the exact level
+// (any tie-breaking) is not implemented for d-dimensional output, so it is
+// refused rather than answered by the stricter check.
+int certify_rtd_file(const CertifyArgs& a) {
+  if (a.dim < 2 || a.dim > 5) throw UsageError("certify rtd needs --dim d (2 to 5)");
+  if (!a.canonical)
+    throw UsageError("certify rtd checks the canonical level only (flipflop's answer under the perturbation): "
+                     "pass --canonical");
+  const PointSet ps = io::read_points(a.points, a.dim, true);
+  std::ifstream in(a.output);
+  if (!in) throw UsageError(a.output + ": cannot read");
+  std::vector<std::vector<Index>> simplices;
+  try {
+    simplices = read_simplices(in, a.dim);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(a.output + ": " + e.what());
+  }
+  const certify::Report r = certify::rtd(ps, simplices);
+  if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
+  if (!r.ok) {
+    std::cout << "NOT certified (rtd, canonical): " << r.message() << "\n";
+    return 1;
+  }
+  std::cout << "certified (rtd, canonical): " << ps.size() << " points in R^" << a.dim << ", " << simplices.size()
+            << " simplices\n";
+  return 0;
+}
+
+}  // namespace
+
 int run_certify(const CertifyArgs& a) {
+  if (a.kind == "rtd") return certify_rtd_file(a);
+  if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
   const PointSet ps = io::read_points(a.points, dim_of(a.kind), weighted(a.kind));
   const certify::Level level = a.canonical ? certify::Level::canonical : certify::Level::exact;
   certify::Report r;

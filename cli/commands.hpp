@@ -45,6 +45,7 @@ struct ComputeArgs {
 struct CertifyArgs {
   std::string kind, points, output;
   bool canonical = false;
+  int dim = 0;  // rtd: the dimension d (2..5)
 };
 
 // Per kind, the backends and the algorithms that exist in this build (the

@@ -101,7 +101,11 @@ int main(int argc, char** argv) {
   // ---- certify ---------------------------------------------------------------
   CertifyArgs v;
   auto* cert = app.add_subcommand("certify", "check an output against its input exactly; exit 0 when certified");
-  cert->add_option("KIND", v.kind, "hull2, hull3, rt2 or dt2")->required()->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2"}));
+  cert->add_option("KIND", v.kind, "hull2, hull3, rt2, dt2 or rtd")
+      ->required()
+      ->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2", "rtd"}));
+  cert->add_option("--dim", v.dim, "rtd: the dimension d (2 to 5; points: d coordinates and a weight per line)")
+      ->check(CLI::Range(2, 5));
   cert->add_option("POINTS", v.points, "input point file")->required();
   cert->add_option("OUTPUT", v.output, "index output to check (flipflop's or another program's, e.g. qhull i Qt)")
       ->required();

@@ -9,10 +9,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 
 #include "io/read_points.hpp"
+#include "io/write_points.hpp"
+#include "peers/cgal_regular_d.hpp"
+#include "reference/rtd/canonical_d.hpp"
 #include "peers/peers.hpp"
 
 namespace fs = std::filesystem;
@@ -262,4 +266,48 @@ TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; ba
   const Run r = run(t, "hull2 " + p2.string() + " --backend cpu");
   CHECK(r.code == 2);
   CHECK(lines(r.err) == 1);
+}
+
+TEST_CASE("cli: certify rtd --canonical accepts rtd's output and CGAL's, rejects a reversed simplex", "[cli]") {
+  TempDir t;
+  for (int d = 2; d <= 5; ++d) {
+    INFO("d=" << d);
+    std::mt19937_64 g(40 + static_cast<unsigned>(d));
+    std::uniform_real_distribution<double> u(0, 1), w(0, 0.01);
+    const std::size_t n = d == 5 ? 30 : 80;
+    flipflop::PointSet ps;
+    ps.dim = d;
+    ps.weighted = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int j = 0; j < d; ++j) ps.coords.push_back(u(g));
+      ps.weights.push_back(w(g));
+    }
+    std::ostringstream os;
+    flipflop::io::write_points(os, ps);  // shortest round-trip decimals
+    const std::string text = os.str();
+    const fs::path in = t.file("p.xyz", text), out = t.dir / "rt.txt", cg = t.dir / "cgal.txt";
+    const std::string dim = " --dim " + std::to_string(d);
+    REQUIRE(run(t, "rtd " + in.string() + dim + " -o " + out.string()).code == 0);
+    Run ok = run(t, "certify rtd " + in.string() + " " + out.string() + dim + " --canonical");
+    INFO(ok.out << ok.err);
+    CHECK(ok.code == 0);
+    CHECK(ok.out.find("certified (rtd, canonical)") == 0);
+    // CGAL's regular triangulation (general position: the same answer),
+    // written independently in the volume convention
+    std::ofstream(cg) << flipflop::simplices_text(flipflop::peers::cgal_regular_d(ps));
+    CHECK(run(t, "certify rtd " + in.string() + " " + cg.string() + dim + " --canonical").code == 0);
+    // a reversed simplex: swap the last two indices of the first line
+    std::string body = slurp(out);
+    const std::size_t eol = body.find('\n'), sp = body.rfind(' ', eol), sp2 = body.rfind(' ', sp - 1);
+    body = body.substr(0, sp2 + 1) + body.substr(sp + 1, eol - sp - 1) + " " + body.substr(sp2 + 1, sp - sp2 - 1) +
+           body.substr(eol);
+    const fs::path bad = t.file("bad.txt", body);
+    Run no = run(t, "certify rtd " + in.string() + " " + bad.string() + dim + " --canonical");
+    CHECK(no.code == 1);
+    CHECK(no.out.find("NOT certified (rtd, canonical)") == 0);
+    // the exact level is not implemented for rtd: refused, not answered
+    Run refused = run(t, "certify rtd " + in.string() + " " + out.string() + dim);
+    CHECK(refused.code == 2);
+    CHECK(lines(refused.err) == 1);
+  }
 }
