@@ -4,9 +4,10 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 PKGS  := cmake g++ make clang libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
-         libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev python3-meshio python3-numpy
+         libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev python3-meshio python3-numpy \
+         python3-venv python3-pip python3-scipy python3-pytest python3-hypothesis
 
-.PHONY: all deps configure build demo test sanitize asan tsan clean
+.PHONY: all deps configure build demo test python sanitize asan tsan clean
 
 all: build
 
@@ -20,7 +21,7 @@ deps:
 	fi
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release > $(BUILD).configure.log 2>&1 || \
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFLIPFLOP_PYTHON_TESTS=ON > $(BUILD).configure.log 2>&1 || \
 	  { cat $(BUILD).configure.log; exit 1; }
 
 build: configure
@@ -29,8 +30,21 @@ build: configure
 demo: build
 	$(BUILD)/flipflop demo
 
-test: build
+test: build python
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# python: the Python package (python/, scikit-build-core + nanobind from PyPI)
+#         installed into a virtual environment on Debian's interpreter (with
+#         its numpy, scipy, pytest, hypothesis), where ctest's python.pytest
+#         runs its test suite. The package's CMake build folder persists
+#         (python/build/), so a second install rebuilds only what changed.
+PYVENV := $(BUILD)/python-venv
+python: build
+	@test -x $(PYVENV)/bin/python || /usr/bin/python3 -m venv --system-site-packages $(PYVENV)
+	@$(PYVENV)/bin/python -c "import nanobind, scikit_build_core" 2>/dev/null || \
+	  $(PYVENV)/bin/python -m pip install -q --disable-pip-version-check "nanobind>=2.0" "scikit-build-core>=0.8"
+	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) $(PYVENV)/bin/python -m pip install -q --disable-pip-version-check \
+	  --no-build-isolation ./python
 
 # ---- sanitizers (run by .ci/run) ---------------------------------------------
 # asan: AddressSanitizer + UndefinedBehaviorSanitizer build of the whole test
@@ -71,4 +85,4 @@ tsan: deps
 sanitize: asan tsan
 
 clean:
-	rm -rf $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log build-tsan build-tsan.configure.log
+	rm -rf python/build $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log build-tsan build-tsan.configure.log

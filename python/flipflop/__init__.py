@@ -1,0 +1,272 @@
+"""flipflop: exact, certified convex hulls and regular (weighted Delaunay)
+triangulations, with the attributes of scipy.spatial's ConvexHull and
+Delaunay.
+
+Every predicate is decided exactly, with Simulation of Simplicity for
+degenerate input, so every input — collinear, cospherical, duplicated,
+1e-300 or 1e+300 — has one answer, the same on every machine, certified
+before it is returned.
+
+    >>> import numpy as np, flipflop
+    >>> pts = np.random.default_rng(1).random((1000, 3))
+    >>> hull = flipflop.ConvexHull(pts)          # like scipy.spatial.ConvexHull
+    >>> tri = flipflop.Delaunay(pts)             # like scipy.spatial.Delaunay
+    >>> bool(flipflop.certify("hull3", pts, hull.simplices))
+    True
+"""
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
+import numpy as np
+
+from . import _flipflop
+
+__version__: str = _flipflop.__version__
+
+__all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "generate", "distributions",
+           "__version__"]
+
+_HULL_BACKENDS = {2: ("reference",), 3: ("cpu", "reference")}
+_DELAUNAY_BACKENDS = ("reference",)
+
+
+def _points(points, dims: Sequence[int], what: str) -> np.ndarray:
+    """float64, C-contiguous (no copy when it already is), shape (n, d) with d
+    in dims, finite; ValueError otherwise."""
+    try:
+        a = np.asarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{what}: points must be numeric: {e}") from None
+    if a.ndim != 2 or a.shape[1] not in dims:
+        raise ValueError(f"{what}: points must have shape (n, d) with d in {tuple(dims)}, got {a.shape}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{what}: the points hold NaN or infinite coordinates")
+    if a.shape[0] < a.shape[1] + 1:
+        raise ValueError(f"{what}: {a.shape[0]} points, at least {a.shape[1] + 1} needed in {a.shape[1]}D")
+    return np.ascontiguousarray(a)
+
+
+def _weights(weights, n: int, what: str) -> Optional[np.ndarray]:
+    if weights is None:
+        return None
+    try:
+        w = np.ascontiguousarray(np.asarray(weights, dtype=np.float64))
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{what}: weights must be numeric: {e}") from None
+    if w.shape != (n,):
+        raise ValueError(f"{what}: weights must have shape ({n},), got {w.shape}")
+    if not np.isfinite(w).all():
+        raise ValueError(f"{what}: the weights hold NaN or infinite values")
+    return w
+
+
+def _backend(backend: Optional[str], allowed: Sequence[str], what: str) -> str:
+    if backend is None:
+        return allowed[0]
+    if backend not in allowed:
+        raise ValueError(f"{what}: backend must be one of {tuple(allowed)}, got {backend!r}")
+    return backend
+
+
+class ConvexHull:
+    """The convex hull of points in 2D or 3D, exact and certified.
+
+    Attributes (as scipy.spatial.ConvexHull):
+      points     (n, d) float64, the input
+      simplices  3D: (m, 3) triangles, counter-clockwise seen from outside;
+                 2D: (k, 2) edges (i, next) of the counter-clockwise hull
+      neighbors  (m, d) the facet opposite each vertex of each simplex
+      vertices   2D: the hull vertices counter-clockwise from the smallest
+                 index; 3D: sorted
+      equations  (m, d+1) [unit outward normal, offset]: normal.x + offset
+                 <= 0 inside (floating point, from the exact facets)
+      volume, area  (2D: area and perimeter; 3D: volume and surface area)
+
+    The canonical answer (default) is flipflop's unique answer under
+    Simulation of Simplicity: on degenerate input it may keep points inside
+    hull edges or facets as vertices and split coplanar facets as the
+    perturbation decides. strict=True (3D) returns the strict view instead:
+    strictly extreme vertices only, each exact facet fan-triangulated from
+    its smallest vertex (no zero-area triangle); `polygons` then holds the
+    merged facets.
+    """
+
+    def __init__(self, points, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
+        a = _points(points, (2, 3), "ConvexHull")
+        d = a.shape[1]
+        self.points = a
+        self.ndim = d
+        self.polygons = None
+        if d == 2:
+            if strict:
+                raise ValueError("ConvexHull: strict=True applies to 3D hulls")
+            cycle = _flipflop.hull2(a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"))
+            self.vertices = cycle
+            self.simplices = np.stack([cycle, np.roll(cycle, -1)], axis=1)
+        elif strict:
+            if backend is not None:
+                _backend(backend, _HULL_BACKENDS[3], "ConvexHull")
+            ext, polys = _flipflop.hull3_strict(a, False)
+            _, tris = _flipflop.hull3_strict(a, True)
+            self.vertices = ext
+            self.polygons = [np.asarray(p, dtype=np.int64) for p in polys]
+            self.simplices = np.asarray(tris, dtype=np.int64).reshape(-1, 3)
+        else:
+            self.simplices = _flipflop.hull3(a, _backend(backend, _HULL_BACKENDS[3], "ConvexHull"), int(threads))
+            self.vertices = np.unique(self.simplices)
+        self.neighbors = _flipflop.neighbors(np.ascontiguousarray(self.simplices))
+        self._measures()
+
+    def _measures(self) -> None:
+        p = self.points
+        # normals from the points scaled by a power of two (exact), so that
+        # 1e+-300 inputs give unit normals; volume and area overflow to inf
+        # or underflow to 0 where the true value is not a double
+        big = float(np.max(np.abs(p))) if p.size else 1.0
+        shift = -int(np.frexp(big)[1]) if big > 0 else 0
+
+        def scaled(x):
+            return np.ldexp(x, shift)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
+            if self.ndim == 2:
+                q = p[self.vertices]
+                r = np.roll(q, -1, axis=0)
+                self.volume = float(0.5 * np.sum(q[:, 0] * r[:, 1] - r[:, 0] * q[:, 1]))
+                e = r - q
+                self.area = float(np.sum(np.hypot(e[:, 0], e[:, 1])))
+                es = np.roll(scaled(q), -1, axis=0) - scaled(q)
+                n = np.stack([es[:, 1], -es[:, 0]], axis=1)
+                base = q
+            else:
+                a, b, c = (p[self.simplices[:, j]] for j in range(3))
+                cr = np.cross(b - a, c - a)
+                self.area = float(0.5 * np.sum(np.linalg.norm(cr, axis=1)))
+                self.volume = float(np.sum(np.einsum("ij,ij->i", a, np.cross(b, c))) / 6.0)
+                n = np.cross(scaled(b) - scaled(a), scaled(c) - scaled(a))
+                base = a
+            unit = n / np.linalg.norm(n, axis=1)[:, None]
+            self.equations = np.hstack([unit, -np.einsum("ij,ij->i", unit, base)[:, None]])
+
+
+class Delaunay:
+    """The regular (weighted Delaunay) triangulation of points in 2D..5D,
+    exact and certified; with weights=None the Delaunay triangulation.
+
+    Attributes (as scipy.spatial.Delaunay):
+      points       (n, d) float64
+      simplices    (m, d+1) positively oriented (det[p1-p0, ..., pd-p0] > 0),
+                   canonical order
+      neighbors    (m, d+1) the simplex opposite each vertex, -1 outside
+      convex_hull  (h, d) the boundary facets
+      redundant    the points that are not vertices (weighted input: hidden
+                   by their neighbours' weights; unweighted: duplicates)
+    find_simplex(xi) locates points exactly (-1: outside the hull).
+
+    The canonical answer may hold simplices of zero volume on degenerate
+    input (collinear or cospherical points): it is the unique answer under
+    Simulation of Simplicity, the one every backend reproduces.
+    """
+
+    def __init__(self, points, weights=None, backend: Optional[str] = None):
+        a = _points(points, (2, 3, 4, 5), "Delaunay")
+        w = _weights(weights, a.shape[0], "Delaunay")
+        self.points = a
+        self.weights = w
+        self.ndim = a.shape[1]
+        self.simplices, self.redundant = _flipflop.triangulate(a, w, _backend(backend, _DELAUNAY_BACKENDS, "Delaunay"))
+        self.neighbors = _flipflop.neighbors(self.simplices)
+        hull = []
+        for i, j in zip(*np.nonzero(self.neighbors < 0)):
+            hull.append(np.delete(self.simplices[i], j))
+        self.convex_hull = np.array(hull, dtype=np.int64).reshape(-1, self.ndim)
+
+    def find_simplex(self, xi) -> np.ndarray:
+        """For each point of xi (shape (..., d)), the index of a simplex that
+        contains it (closed; decided exactly), -1 outside the hull."""
+        q = np.asarray(xi, dtype=np.float64)
+        shape = q.shape[:-1]
+        if q.shape[-1:] != (self.ndim,):
+            raise ValueError(f"find_simplex: points must have shape (..., {self.ndim}), got {q.shape}")
+        q = np.ascontiguousarray(q.reshape(-1, self.ndim))
+        return _flipflop.find_simplex(self.points, self.simplices, self.neighbors, q).reshape(shape)
+
+
+class Certificate:
+    """The result of certify(): truthy when certified; otherwise `condition`
+    names the first violated condition and `detail` says where."""
+
+    def __init__(self, ok: bool, condition: str, detail: str, kind: str, level: str):
+        self.ok, self.condition, self.detail, self.kind, self.level = ok, condition, detail, kind, level
+
+    def __bool__(self) -> bool:
+        return self.ok
+
+    def __repr__(self) -> str:
+        if self.ok:
+            return f"Certificate(certified, {self.kind}, {self.level})"
+        return f"Certificate(NOT certified, {self.kind}, {self.level}: {self.condition}: {self.detail})"
+
+
+def certify(kind: str, points, simplices, weights=None, canonical: bool = False, orient: bool = False) -> Certificate:
+    """Checks an output against its input exactly — flipflop's, scipy's or
+    any other program's.
+
+    kind: 'hull2' (simplices: the hull's vertex cycle, counter-clockwise, or
+    scipy's (k, 2) edges in cycle order), 'hull3' (triangles, counter-
+    clockwise seen from outside), 'delaunay' (d-simplices, positively
+    oriented; weights for a regular triangulation).
+    canonical=False checks that it is *a* correct answer for the exact input
+    (any tie-breaking on degenerate input); canonical=True that it is
+    flipflop's unique answer in canonical form (the only level for d >= 3
+    triangulations). orient=True first orients every triangle outward /
+    simplex positively, exactly (scipy does not orient its hull facets).
+    """
+    dims = {"hull2": (2,), "hull3": (3,), "delaunay": (2, 3, 4, 5)}
+    if kind not in dims:
+        raise ValueError(f"certify: kind must be one of {tuple(dims)}, got {kind!r}")
+    a = _points(points, dims[kind], "certify")
+    w = _weights(weights, a.shape[0], "certify")
+    try:
+        s = np.asarray(simplices, dtype=np.int64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"certify: simplices must be integer indices: {e}") from None
+    if kind == "hull2":
+        if s.ndim == 2 and s.shape[1] == 2:
+            s = s[:, 0]
+        s = s.reshape(-1, 1)
+    elif s.ndim != 2:
+        raise ValueError(f"certify: simplices must be a 2-dimensional index array, got shape {s.shape}")
+    s = np.ascontiguousarray(s)
+    if orient and kind != "hull2":
+        s = _flipflop.orient(kind, a, s)
+    ok, (condition, detail) = _flipflop.certify(kind, a, s, w, bool(canonical))
+    return Certificate(ok, condition, detail, kind, "canonical" if canonical else "exact")
+
+
+def instant_flip(points, w_from, w_to):
+    """RT(S + w_from) -> RT(S + w_to) by the monotonic instant flip (thesis
+    §9.2, Algorithm 14), exact and certified. Returns (simplices, flips).
+    A point redundant under w_from that is not redundant under w_to raises
+    ValueError (this instant flip inserts no vertices)."""
+    a = _points(points, (2, 3, 4, 5), "instant_flip")
+    w = _weights(w_from, a.shape[0], "instant_flip")
+    u = _weights(w_to, a.shape[0], "instant_flip")
+    if w is None or u is None:
+        raise ValueError("instant_flip: w_from and w_to are required")
+    return _flipflop.instant_flip(a, w, u)
+
+
+def distributions() -> list:
+    """The generator families (flipflop gen --list), degenerate ones included."""
+    return list(_flipflop.distributions())
+
+
+def generate(dist: str, n: int, seed: int = 1, thickness: float = 0.01, weights=None):
+    """n points of family `dist` (distributions()), as `flipflop gen`:
+    returns points (n, d), or (points, weights) when weights=(lo, hi)."""
+    if n <= 0:
+        raise ValueError("generate: n must be positive")
+    rng = None if weights is None else (float(weights[0]), float(weights[1]))
+    pts, w = _flipflop.generate(dist, int(n), int(seed), float(thickness), rng)
+    return pts if rng is None else (pts, w)

@@ -1,0 +1,272 @@
+"""pytest suite of the Python package (make test runs it through ctest,
+`python.pytest`, with FLIPFLOP_BINARY naming the command-line tool of the same
+build).
+
+  * equal to scipy.spatial (Qhull) on random input, as sets of simplices with
+    orientation normalised, with the same volumes and point location;
+  * certified and byte-identical to the command line on every generator
+    family, degenerate ones included, and on random degenerate integer input
+    (hypothesis);
+  * certify() rejects flipped, missing and non-regular outputs and accepts
+    scipy's correct ones;
+  * bad input raises ValueError, never crashes.
+"""
+import os
+import subprocess
+
+import numpy as np
+import pytest
+import scipy.spatial as ss
+from hypothesis import given, settings, strategies as st
+
+import flipflop
+
+FLIPFLOP = os.environ.get("FLIPFLOP_BINARY")
+needs_cli = pytest.mark.skipif(not FLIPFLOP, reason="FLIPFLOP_BINARY (the command-line tool) not given")
+
+
+def rows(a):
+    return [tuple(int(x) for x in r) for r in a]
+
+
+def as_text(simplices):
+    return "".join(" ".join(str(int(x)) for x in r) + "\n" for r in simplices)
+
+
+def cli(*args):
+    r = subprocess.run([FLIPFLOP, *map(str, args)], capture_output=True, text=True)
+    return r.returncode, r.stdout, r.stderr
+
+
+def write_xyz(path, pts, w=None):
+    with open(path, "w") as f:
+        for i, p in enumerate(pts):
+            vals = [*p] + ([] if w is None else [w[i]])
+            f.write(" ".join(repr(float(x)) for x in vals) + "\n")
+
+
+# ---- equal to scipy on random input ---------------------------------------------
+
+@pytest.mark.parametrize("seed", range(5))
+def test_hull3_equals_scipy(seed):
+    p = np.random.default_rng(seed).random((400 + 100 * seed, 3))
+    h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
+    assert {tuple(sorted(t)) for t in rows(h.simplices)} == {tuple(sorted(t)) for t in rows(s.simplices)}
+    assert list(h.vertices) == sorted(s.vertices)
+    assert h.volume == pytest.approx(s.volume, rel=1e-12)
+    assert h.area == pytest.approx(s.area, rel=1e-12)
+    # equations: unit outward normals, every point inside
+    assert np.allclose(np.linalg.norm(h.equations[:, :3], axis=1), 1)
+    assert (p @ h.equations[:, :3].T + h.equations[:, 3] <= 1e-12).all()
+    assert flipflop.certify("hull3", p, h.simplices, canonical=True)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_hull2_equals_scipy(seed):
+    p = np.random.default_rng(10 + seed).random((1000, 2))
+    h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
+    v, sv = list(h.vertices), list(s.vertices)  # both counter-clockwise
+    k = sv.index(v[0])
+    assert v == sv[k:] + sv[:k]
+    assert h.volume == pytest.approx(s.volume, rel=1e-12)
+    assert h.area == pytest.approx(s.area, rel=1e-12)
+    assert flipflop.certify("hull2", p, h.simplices, canonical=True)
+    assert flipflop.certify("hull2", p, h.vertices, canonical=True)
+
+
+@pytest.mark.parametrize("d,n", [(2, 2000), (3, 600), (4, 150)])
+def test_delaunay_equals_scipy(d, n):
+    rng = np.random.default_rng(d)
+    p = rng.random((n, d))
+    t, s = flipflop.Delaunay(p), ss.Delaunay(p)
+    assert {tuple(sorted(x)) for x in rows(t.simplices)} == {tuple(sorted(x)) for x in rows(s.simplices)}
+    assert len(t.redundant) == 0
+    # positive volume in the volume convention, every simplex
+    v = np.array([np.linalg.det(p[x[1:]] - p[x[0]]) for x in t.simplices])
+    assert (v > 0).all()
+    # point location: the same simplex (as a vertex set) as scipy's
+    q = rng.random((500, d)) * 1.2 - 0.1
+    mine, theirs = t.find_simplex(q), s.find_simplex(q)
+    assert ((mine >= 0) == (theirs >= 0)).all()
+    for a, b in zip(mine, theirs):
+        if a >= 0:
+            assert sorted(t.simplices[a]) == sorted(s.simplices[b])
+    # neighbours: across the facet opposite vertex j
+    for i, x in enumerate(t.simplices[:50]):
+        for j in range(d + 1):
+            k = t.neighbors[i, j]
+            if k >= 0:
+                assert set(x) - {x[j]} <= set(t.simplices[k])
+    assert len(t.convex_hull) == len(s.convex_hull)
+    if d <= 3:
+        assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+
+
+def test_weighted_delaunay_reports_redundant_points():
+    rng = np.random.default_rng(3)
+    p = rng.random((400, 2))
+    w = rng.random(400) * 0.01
+    t = flipflop.Delaunay(p, weights=w)
+    assert len(t.redundant) > 0
+    assert set(t.redundant) == set(range(400)) - set(np.unique(t.simplices))
+    assert flipflop.certify("delaunay", p, t.simplices, weights=w, canonical=True)
+    assert not flipflop.certify("delaunay", p, t.simplices, canonical=True)  # the weights matter
+
+
+# ---- certify ---------------------------------------------------------------------
+
+def test_certify_accepts_scipy_and_rejects_broken_outputs():
+    rng = np.random.default_rng(7)
+    p = rng.random((300, 3))
+    s = ss.ConvexHull(p)
+    assert flipflop.certify("hull3", p, s.simplices, orient=True)  # scipy does not orient its facets
+    h = flipflop.ConvexHull(p)
+    flipped = h.simplices.copy()
+    flipped[0] = flipped[0][::-1]
+    r = flipflop.certify("hull3", p, flipped)
+    assert not r and r.condition
+    assert not flipflop.certify("hull3", p, h.simplices[1:])  # a missing facet
+
+    p2 = rng.random((300, 2))
+    sd = ss.Delaunay(p2)
+    assert flipflop.certify("delaunay", p2, sd.simplices, orient=True)
+    t = flipflop.Delaunay(p2)
+    # a non-regular triangulation: flip one interior edge
+    tri = [list(x) for x in t.simplices]
+    i = next(i for i in range(len(tri)) if (t.neighbors[i] >= 0).all())
+    j = 0
+    k = int(t.neighbors[i, j])
+    a = tri[i][j]
+    b = next(x for x in tri[k] if x not in tri[i])
+    e1, e2 = [x for x in tri[i] if x != a]
+    new = [[a, e1, b], [a, b, e2]]
+    rest = [x for n, x in enumerate(tri) if n not in (i, k)]
+    bad = np.array(rest + new)
+    r = flipflop.certify("delaunay", p2, bad, orient=True)
+    assert not r
+    assert "regular" in r.condition or "orientation" in r.condition or "manifold" in r.condition, r
+
+
+# ---- the command line, byte for byte, on every generator family ---------------------
+
+@needs_cli
+@pytest.mark.parametrize("dist", flipflop.distributions())
+def test_identical_to_command_line_on_every_family(dist, tmp_path):
+    n = 300
+    f = tmp_path / "p.xyz"
+    code, _, err = cli("gen", dist, n, "--seed", 4, "-o", f)
+    assert code == 0, err
+    p = flipflop.generate(dist, n, seed=4)
+    assert np.array_equal(p, np.loadtxt(f, ndmin=2)[:, : p.shape[1]])  # the same generator
+    kinds = ["hull2", "dt2"] if p.shape[1] == 2 else ["hull3"]
+    for kind in kinds:
+        code, out, err = cli(kind, f)
+        try:
+            if kind == "dt2":
+                mine = as_text(flipflop.Delaunay(p).simplices)
+            elif kind == "hull2":
+                mine = "".join(f"{int(v)}\n" for v in flipflop.ConvexHull(p).vertices)
+            else:
+                mine = as_text(flipflop.ConvexHull(p).simplices)
+        except ValueError as e:
+            assert code == 2, f"{kind}: Python refused ({e}) but the command line answered"
+            continue
+        assert code == 0, err
+        assert mine == out, kind
+
+
+@needs_cli
+def test_strict_hull_identical_to_command_line(tmp_path):
+    # the 5x5x5 grid: its hull is the cube, with 98 boundary points of which
+    # 8 are strictly extreme, 6 square facets, 12 triangles
+    p = np.array([(x, y, z) for x in range(5) for y in range(5) for z in range(5)], dtype=np.float64)
+    f = tmp_path / "c.xyz"
+    write_xyz(f, p)
+    h = flipflop.ConvexHull(p, strict=True)
+    code, out, _ = cli("hull3", f, "--strict", "--triangulate")
+    assert code == 0
+    lines = out.splitlines()
+    e, t = map(int, lines[0].split())
+    assert [int(x) for x in lines[1:1 + e]] == list(h.vertices)
+    assert as_text(h.simplices) == "".join(l + "\n" for l in lines[1 + e:])
+    assert len(h.vertices) == 8 and len(h.polygons) == 6 and len(h.simplices) == 12
+
+
+@needs_cli
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=3, max_size=40))
+def test_degenerate_integer_input_certified_and_identical(tmp_path_factory, pts):
+    p = np.array(pts, dtype=np.float64)
+    f = tmp_path_factory.mktemp("h") / "g.xyz"
+    write_xyz(f, p)
+    code, out, _ = cli("dt2", f)
+    try:
+        t = flipflop.Delaunay(p)
+    except ValueError:
+        assert code == 2  # lower-dimensional: refused by both
+        return
+    assert code == 0 and as_text(t.simplices) == out
+    assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+    h = flipflop.ConvexHull(p)
+    assert flipflop.certify("hull2", p, h.vertices, canonical=True)
+
+
+def test_instant_flip_matches_a_fresh_triangulation():
+    rng = np.random.default_rng(5)
+    p = rng.random((200, 2))
+    w = np.zeros(200)
+    u = rng.random(200) * 1e-4
+    # vertices must stay vertices: start from u's vertices only
+    keep = np.unique(flipflop.Delaunay(p, weights=u).simplices)
+    p, w, u = p[keep], w[keep], u[keep]
+    simplices, flips = flipflop.instant_flip(p, w, u)
+    assert flips > 0
+    assert rows(simplices) == rows(flipflop.Delaunay(p, weights=u).simplices)
+
+
+# ---- bad input -----------------------------------------------------------------------
+
+@pytest.mark.parametrize("bad", [
+    np.array([[0.0, 0.0], [1.0, np.nan], [0.0, 1.0]]),
+    np.array([[0.0, 0.0], [1.0, np.inf], [0.0, 1.0]]),
+    np.zeros((5, 7)),
+    np.zeros(6),
+    [["a", "b"], ["c", "d"], ["e", "f"]],
+    np.array([[0.0, 0.0], [1.0, 1.0]]),
+    np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0], [3.0, 3.0]]),
+    np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]),
+])
+def test_bad_input_raises_value_error(bad):
+    with pytest.raises(ValueError):
+        flipflop.ConvexHull(bad)
+    with pytest.raises(ValueError):
+        flipflop.Delaunay(bad)
+
+
+def test_bad_arguments_raise_value_error():
+    p = np.random.default_rng(0).random((20, 2))
+    with pytest.raises(ValueError):
+        flipflop.Delaunay(p, weights=np.ones(3))
+    with pytest.raises(ValueError):
+        flipflop.ConvexHull(p, backend="gpu")
+    with pytest.raises(ValueError):
+        flipflop.certify("hull9", p, [[0, 1, 2]])
+    with pytest.raises(ValueError):
+        flipflop.certify("delaunay", p, [[0, 1, 99]])
+    with pytest.raises(ValueError):
+        flipflop.generate("no-such-family", 10)
+    with pytest.raises(ValueError):
+        flipflop.Delaunay(p).find_simplex(np.zeros((3, 3)))
+
+
+def test_extreme_magnitudes():
+    rng = np.random.default_rng(9)
+    for scale in (1e-300, 1e300, 5e-324 * 2**20):
+        p = rng.integers(-1000, 1000, (200, 3)).astype(np.float64) * scale
+        h = flipflop.ConvexHull(p)
+        assert flipflop.certify("hull3", p, h.simplices, canonical=True)
+        assert np.allclose(np.linalg.norm(h.equations[:, :3], axis=1), 1)  # unit normals at any magnitude
+
+
+def test_version():
+    assert flipflop.__version__ == "0.1.0"
