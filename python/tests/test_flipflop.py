@@ -193,7 +193,7 @@ def test_strict_hull_identical_to_command_line(tmp_path):
 
 
 @needs_cli
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60, deadline=None, database=None)
 @given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), min_size=3, max_size=40))
 def test_degenerate_integer_input_certified_and_identical(tmp_path_factory, pts):
     p = np.array(pts, dtype=np.float64)
