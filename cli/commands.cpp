@@ -20,6 +20,7 @@
 #include "reference/hull3/hull3.hpp"
 #include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2/rt2.hpp"
+#include "reference/rt2/strict_rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 
@@ -149,8 +150,9 @@ std::string hull3_counts(const ref::Hull3Stats& st) {
 }  // namespace
 
 int run_compute(const ComputeArgs& a) {
-  if (a.strict && a.kind != "hull3") throw UsageError("--strict applies to hull3 only");
-  if (a.triangulate && !a.strict) throw UsageError("--triangulate applies to the strict view (hull3 --strict)");
+  if (a.strict && a.kind == "hull2") throw UsageError("--strict applies to hull3, rt2 and dt2");
+  if (a.triangulate && (!a.strict || a.kind != "hull3"))
+    throw UsageError("--triangulate applies to the strict view of a 3D hull (hull3 --strict)");
   const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
   const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
@@ -211,13 +213,21 @@ int run_compute(const ComputeArgs& a) {
   const double t_certify = seconds_since(t1);
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
 
-  // The strict view is derived from the certified canonical hull.
+  // The strict views are derived from the certified canonical answer; the
+  // triangulations' view is certified in turn (no zero-area triangle, a
+  // regular triangulation of the exact input at Level::exact).
   ref::StrictHull3 strict;
-  if (a.strict) strict = ref::strict_hull3(ps, tris);
+  const bool strict_hull = a.strict && a.kind == "hull3";
+  if (strict_hull) strict = ref::strict_hull3(ps, tris);
   if (a.triangulate) strict = ref::fan_triangulated(strict);
+  if (a.strict && a.kind != "hull3") {
+    tris = ref::strict_rt2(ps, tris);
+    const certify::Report rs = certify::rt2_strict(ps, tris);
+    if (!rs.ok) throw InternalError("the strict view of the " + a.kind + " result failed certification: " + rs.message());
+  }
   const auto t2 = Clock::now();
   std::vector<std::vector<Index>> cells;
-  if (a.strict) cells = strict.facets;
+  if (strict_hull) cells = strict.facets;
   else if (a.kind == "hull2") cells = {cycle};
   else
     for (const Triangle& t : tris) cells.push_back({t[0], t[1], t[2]});
@@ -226,7 +236,7 @@ int run_compute(const ComputeArgs& a) {
   write_result_file(
       a.out, fmt,
       [&](std::ostream& os) {
-        if (a.strict) os << ref::format_strict_hull3(strict);
+        if (strict_hull) os << ref::format_strict_hull3(strict);
         else if (a.kind == "hull2") io::write_hull2(os, cycle);
         else io::write_triangles(os, tris);
       },

@@ -1,7 +1,7 @@
 // main.cpp — the `flipflop` command-line tool (DESIGN.md, "The command-line tool").
 //
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
-//   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3)]
+//   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (hull3, cpu backend)]
 //   flipflop rtd IN --dim d [-o OUT] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
@@ -66,6 +66,9 @@ int main(int argc, char** argv) {
     cmd->add_option("--algo", c.algo, "algorithm (default " + default_algorithm(kinds[k]) + ")")
         ->check(CLI::IsMember(available_algorithms(kinds[k])));
     cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");
+    if (std::string(kinds[k]) == "rt2" || std::string(kinds[k]) == "dt2")
+      cmd->add_flag("--strict", c.strict,
+                    "write the strict view: a regular triangulation of the exact input without zero-area triangles");
     if (std::string(kinds[k]) == "hull3") {
       cmd->add_flag("--strict", c.strict,
                     "write the strict view: strictly extreme points and coplanar facets merged into polygons");

@@ -311,3 +311,29 @@ TEST_CASE("cli: certify rtd --canonical accepts rtd's output and CGAL's, rejects
     CHECK(lines(refused.err) == 1);
   }
 }
+
+TEST_CASE("cli: dt2/rt2 --strict on a 12x12 grid: CGAL's 242 triangles, no zero-area one, certified", "[cli]") {
+  TempDir t;
+  std::string grid;
+  for (int x = 0; x < 12; ++x)
+    for (int y = 0; y < 12; ++y) grid += std::to_string(x) + " " + std::to_string(y) + "\n";
+  const fs::path in = t.file("g.xyz", grid), out = t.dir / "s.txt", canon = t.dir / "c.txt";
+  REQUIRE(run(t, "dt2 " + in.string() + " -o " + canon.string()).code == 0);
+  REQUIRE(run(t, "dt2 " + in.string() + " --strict -o " + out.string()).code == 0);
+  CHECK(lines(slurp(canon)) > 242);  // the canonical answer holds zero-area triangles along the boundary
+  CHECK(lines(slurp(out)) == 242);   // CGAL's count: 2 n - h - 2 = 288 - 44 - 2
+  Run ok = run(t, "certify dt2 " + in.string() + " " + out.string());
+  INFO(ok.out << ok.err);
+  CHECK(ok.code == 0);
+  // every triangle has non-zero area (the grid's coordinates are small integers: exact in doubles)
+  flipflop::PointSet ps = flipflop::io::read_points(in.string(), 2, false);
+  std::istringstream tri(slurp(out));
+  for (unsigned a, b, c; tri >> a >> b >> c;) {
+    const double* p = ps.point(a);
+    const double *q = ps.point(b), *r = ps.point(c);
+    CHECK((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]) > 0);
+  }
+  Run refused = run(t, "hull2 " + in.string() + " --strict");
+  CHECK(refused.code == 2);
+  CHECK(lines(refused.err) == 1);
+}

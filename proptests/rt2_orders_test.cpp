@@ -21,6 +21,7 @@
 #include <random>
 #include <set>
 
+#include "proptests/support/generated.hpp"
 #include "proptests/support/planar_inputs.hpp"
 #include "gen/generate.hpp"
 #include "predicates/predicates.hpp"
@@ -172,11 +173,7 @@ rc::Gen<PointSet> gen_small(bool weighted, bool integer) {
 }
 
 PointSet family(const std::string& name, std::size_t n, std::uint64_t seed, bool weighted, double whi) {
-  gen::Options o;
-  o.seed = seed;
-  o.weighted = weighted;
-  o.whi = whi;
-  return gen::generate(name, n, o);
+  return test::generated(name, n, seed, weighted, whi);
 }
 
 struct Totals {

@@ -19,6 +19,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "proptests/support/generated.hpp"
 #include "proptests/support/planar_inputs.hpp"
 #include "gen/generate.hpp"
 #include "io/index_io.hpp"
@@ -48,13 +49,8 @@ rc::Gen<PointSet> gen_planar(int nmin, int nmax, bool weighted) {
 
 // A generator family, or "collinear-one-off": collinear2 plus one point off the line.
 PointSet family(const std::string& name, std::size_t n, std::uint64_t seed, bool weighted, double whi) {
-  gen::Options o;
-  o.seed = seed;
-  o.weighted = weighted;
-  o.wlo = 0;
-  o.whi = whi;
-  if (name != "collinear-one-off") return gen::generate(name, n, o);
-  PointSet ps = gen::generate("collinear2", n - 1, o);
+  if (name != "collinear-one-off") return test::generated(name, n, seed, weighted, whi);
+  PointSet ps = test::generated("collinear2", n - 1, seed, weighted, whi);
   // copies: push_back below may reallocate the coordinates
   const double p[2] = {ps.point(0)[0], ps.point(0)[1]};
   const double q[2] = {ps.point(n > 2 ? 1 : 0)[0], ps.point(n > 2 ? 1 : 0)[1]};

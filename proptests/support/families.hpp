@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "gen/generate.hpp"
+#include "proptests/support/generated.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/point_set.hpp"
 

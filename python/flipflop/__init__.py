@@ -165,16 +165,20 @@ class Delaunay:
 
     The canonical answer may hold simplices of zero volume on degenerate
     input (collinear or cospherical points): it is the unique answer under
-    Simulation of Simplicity, the one every backend reproduces.
+    Simulation of Simplicity, the one every backend reproduces. strict=True
+    (2D) returns the strict view instead: a regular triangulation of the
+    exact input without zero-area triangles (the grid's 2(k-1)^2 triangles),
+    certified (`dt2 --strict` on the command line).
     """
 
-    def __init__(self, points, weights=None, backend: Optional[str] = None):
+    def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None):
         a = _points(points, (2, 3, 4, 5), "Delaunay")
         w = _weights(weights, a.shape[0], "Delaunay")
         self.points = a
         self.weights = w
         self.ndim = a.shape[1]
-        self.simplices, self.redundant = _flipflop.triangulate(a, w, _backend(backend, _DELAUNAY_BACKENDS, "Delaunay"))
+        self.simplices, self.redundant = _flipflop.triangulate(
+            a, w, _backend(backend, _DELAUNAY_BACKENDS, "Delaunay"), bool(strict))
         self.neighbors = _flipflop.neighbors(self.simplices)
         hull = []
         for i, j in zip(*np.nonzero(self.neighbors < 0)):

@@ -38,6 +38,7 @@
 #include "reference/hull3/hull3.hpp"
 #include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2/rt2.hpp"
+#include "reference/rt2/strict_rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/instant_flip.hpp"
@@ -188,19 +189,25 @@ std::pair<IndexArray, std::vector<std::vector<Index>>> hull3_strict(const Points
 // (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by
 // ffRT (the 2D reference), d = 3..5 by RT+1; both canonical.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
-                                              const std::string& backend) {
+                                              const std::string& backend, bool strict) {
   PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
   if (backend != "reference") throw std::invalid_argument("Delaunay backends: 'reference'; got '" + backend + "'");
+  if (strict && d != 2)
+    throw std::invalid_argument("Delaunay: the strict view (no zero-volume simplex) exists for 2D input only");
   std::vector<std::vector<Index>> simplices;
   std::vector<Index> redundant;
   {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     if (d == 2) {
-      const std::vector<Triangle> tris = ref::rt2_ffrt(ps);
+      std::vector<Triangle> tris = ref::rt2_ffrt(ps);
       check_certified(certify::rt2(ps, tris, certify::Level::canonical), "Delaunay");
+      if (strict) {
+        tris = ref::strict_rt2(ps, tris);
+        check_certified(certify::rt2_strict(ps, tris), "strict Delaunay");
+      }
       for (const Triangle& t : tris) simplices.push_back({t[0], t[1], t[2]});
       redundant = non_vertices(ps.size(), simplices);
     } else {
@@ -419,7 +426,8 @@ NB_MODULE(_flipflop, m) {
   m.def("hull2", &hull2, nb::arg("points"), nb::arg("backend"));
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("triangulate"));
-  m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"));
+  m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
+        nb::arg("strict"));
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
         nb::arg("queries"));

@@ -270,3 +270,19 @@ def test_extreme_magnitudes():
 
 def test_version():
     assert flipflop.__version__ == "0.1.0"
+
+
+@needs_cli
+def test_strict_delaunay_identical_to_command_line(tmp_path):
+    p = np.array([(x, y) for x in range(12) for y in range(12)], dtype=np.float64)
+    f = tmp_path / "g.xyz"
+    write_xyz(f, p)
+    t = flipflop.Delaunay(p, strict=True)
+    code, out, _ = cli("dt2", f, "--strict")
+    assert code == 0 and as_text(t.simplices) == out
+    assert len(t.simplices) == len(ss.Delaunay(p).simplices) == 242
+    area = [np.cross(p[b] - p[a], p[c] - p[a]) for a, b, c in t.simplices]
+    assert min(area) > 0
+    assert flipflop.certify("delaunay", p, t.simplices)
+    with pytest.raises(ValueError):
+        flipflop.Delaunay(np.random.default_rng(0).random((20, 3)), strict=True)

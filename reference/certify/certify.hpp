@@ -69,4 +69,14 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level 
 // ps is unweighted): counter-clockwise triangles.
 Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);
 
+// The strict view of a 2D regular triangulation (reference/rt2/strict_rt2.hpp):
+// condition `zero-area` — every triangle counter-clockwise with non-zero area
+// (exact orient2d > 0) — then rt2 at Level::exact. With no flat triangle the
+// perturbed structural checks of rt2 coincide with the exact ones, so this
+// certifies a regular triangulation of the exact input without zero-area
+// triangles: weakly regular edges (Thm 2.2), every missing point weakly
+// redundant (so every point that is not redundant in the exact sense is a
+// vertex).
+Report rt2_strict(const PointSet& ps, const std::vector<Triangle>& tris);
+
 }  // namespace flipflop::certify

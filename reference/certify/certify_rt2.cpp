@@ -238,4 +238,18 @@ Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
   return Report::pass();
 }
 
+Report rt2_strict(const PointSet& ps, const std::vector<Triangle>& tris) {
+  if (ps.dim != 2) return Report::fail("input-dimension", "rt2 needs 2D points");
+  for (const Triangle& t : tris) {
+    for (Index x : t)
+      if (x >= ps.size())
+        return Report::fail("triangle-indices", "index " + std::to_string(x) + " but the input has " +
+                                                    std::to_string(ps.size()) + " points");
+    if (pred::orient2d_exact(ps.point(t[0]), ps.point(t[1]), ps.point(t[2])) <= 0)
+      return Report::fail("zero-area", "triangle (" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," +
+                                           std::to_string(t[2]) + ") has zero area or is clockwise");
+  }
+  return rt2(ps, tris, Level::exact);
+}
+
 }  // namespace flipflop::certify
