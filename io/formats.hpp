@@ -15,6 +15,7 @@ inline constexpr int kMaxXyzColumns = 6;
 PointSet read_xyz(const std::string& path, int dim, bool weighted);
 PointSet read_off(const std::string& path, int dim, bool weighted);
 PointSet read_ply(const std::string& path, int dim, bool weighted);
+PointSet read_npy(const std::string& path, int dim, bool weighted);
 
 // Name of coordinate column c of a dim-dimensional point ("x", "y", "z"; for
 // dim > 3 "x1".."x5"), or "w" for the weight column (c == dim).

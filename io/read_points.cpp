@@ -48,18 +48,20 @@ PointSet read_points(const std::string& path, int dim, bool weighted) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   PointSet ps;
-  if (dim > 3 && ext != ".xyz")
-    throw InputError(path, "unknown file extension " + detail::show(ext) + " (expected .xyz for dimension " +
+  if (dim > 3 && ext != ".xyz" && ext != ".npy")
+    throw InputError(path, "unknown file extension " + detail::show(ext) + " (expected .xyz or .npy for dimension " +
                                std::to_string(dim) + ")");
   if (ext == ".xyz")
     ps = detail::read_xyz(path, dim, weighted);
+  else if (ext == ".npy")
+    ps = detail::read_npy(path, dim, weighted);
   else if (ext == ".off")
     ps = detail::read_off(path, dim, weighted);
   else if (ext == ".ply")
     ps = detail::read_ply(path, dim, weighted);
   else
     throw InputError(path, "unknown file extension " + detail::show(ext) +
-                               " (expected .xyz, .off or .ply)");
+                               " (expected .xyz, .npy, .off or .ply)");
   return ps;
 }
 

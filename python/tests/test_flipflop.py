@@ -286,3 +286,22 @@ def test_strict_delaunay_identical_to_command_line(tmp_path):
     assert flipflop.certify("delaunay", p, t.simplices)
     with pytest.raises(ValueError):
         flipflop.Delaunay(np.random.default_rng(0).random((20, 3)), strict=True)
+
+
+@needs_cli
+def test_npy_input_written_by_numpy(tmp_path):
+    """The command line reads numpy's .npy (np.save) exactly like the .xyz of the same points."""
+    rng = np.random.default_rng(11)
+    p = rng.random((5000, 3))
+    np.save(tmp_path / "p.npy", p)
+    write_xyz(tmp_path / "p.xyz", p)
+    a, b = cli("hull3", tmp_path / "p.npy"), cli("hull3", tmp_path / "p.xyz")
+    assert a[0] == 0 and a == b
+    assert a[1] == as_text(flipflop.ConvexHull(p).simplices)
+    w = rng.random(5000) * 1e-3
+    np.save(tmp_path / "w.npy", np.c_[p[:, :2], w])
+    code, out, _ = cli("rt2", tmp_path / "w.npy")
+    assert code == 0 and out == as_text(flipflop.Delaunay(p[:, :2], weights=w).simplices)
+    np.save(tmp_path / "f.npy", p.astype(np.float32))
+    code, _, err = cli("hull3", tmp_path / "f.npy")
+    assert code == 2 and "float64" in err and len(err.strip().splitlines()) == 1
