@@ -268,7 +268,7 @@ TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; ba
   CHECK(lines(r.err) == 1);
 }
 
-TEST_CASE("cli: certify rtd --canonical accepts rtd's output and CGAL's, rejects a reversed simplex", "[cli]") {
+TEST_CASE("cli: certify rtd (exact and --canonical) accepts rtd's output and CGAL's, rejects a reversed simplex", "[cli]") {
   TempDir t;
   for (int d = 2; d <= 5; ++d) {
     INFO("d=" << d);
@@ -305,10 +305,12 @@ TEST_CASE("cli: certify rtd --canonical accepts rtd's output and CGAL's, rejects
     Run no = run(t, "certify rtd " + in.string() + " " + bad.string() + dim + " --canonical");
     CHECK(no.code == 1);
     CHECK(no.out.find("NOT certified (rtd, canonical)") == 0);
-    // the exact level is not implemented for rtd: refused, not answered
-    Run refused = run(t, "certify rtd " + in.string() + " " + out.string() + dim);
-    CHECK(refused.code == 2);
-    CHECK(lines(refused.err) == 1);
+    // the exact level (any tie-breaking): rtd's and CGAL's pass, the reversed simplex fails
+    Run exact = run(t, "certify rtd " + in.string() + " " + out.string() + dim);
+    CHECK(exact.code == 0);
+    CHECK(exact.out.find("certified (rtd, exact)") == 0);
+    CHECK(run(t, "certify rtd " + in.string() + " " + cg.string() + dim).code == 0);
+    CHECK(run(t, "certify rtd " + in.string() + " " + bad.string() + dim).code == 1);
   }
 }
 

@@ -221,9 +221,9 @@ def certify(kind: str, points, simplices, weights=None, canonical: bool = False,
     clockwise seen from outside), 'delaunay' (d-simplices, positively
     oriented; weights for a regular triangulation).
     canonical=False checks that it is *a* correct answer for the exact input
-    (any tie-breaking on degenerate input); canonical=True that it is
-    flipflop's unique answer in canonical form (the only level for d >= 3
-    triangulations). orient=True first orients every triangle outward /
+    (any tie-breaking on degenerate input; for d >= 3 triangulations without
+    zero-volume simplices); canonical=True that it is flipflop's unique
+    answer in canonical form. orient=True first orients every triangle outward /
     simplex positively, exactly (scipy does not orient its hull facets).
     """
     dims = {"hull2": (2,), "hull3": (3,), "delaunay": (2, 3, 4, 5)}

@@ -324,11 +324,7 @@ std::pair<bool, std::pair<std::string, std::string>> certify_cells(const std::st
     } else if (kind == "delaunay" && ps.dim == 2) {
       r = certify::rt2(ps, triangles_of(cells), level);
     } else if (kind == "delaunay") {
-      if (!canonical)
-        throw std::invalid_argument("certifying a " + std::to_string(ps.dim) +
-                                    "-dimensional triangulation is implemented at the canonical level only: pass "
-                                    "canonical=True");
-      r = certify::rtd(ps, cells);
+      r = certify::rtd(ps, cells, level);
     } else {
       throw std::invalid_argument("kind must be 'hull2', 'hull3' or 'delaunay'; got '" + kind + "'");
     }

@@ -98,8 +98,8 @@ def test_delaunay_equals_scipy(d, n):
             if k >= 0:
                 assert set(x) - {x[j]} <= set(t.simplices[k])
     assert len(t.convex_hull) == len(s.convex_hull)
-    if d <= 3:
-        assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+    assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+    assert flipflop.certify("delaunay", p, s.simplices, orient=True)  # scipy's, at the exact level
 
 
 def test_weighted_delaunay_reports_redundant_points():

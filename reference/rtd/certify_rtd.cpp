@@ -7,8 +7,11 @@
 #include <array>
 #include <unordered_map>
 
+#include <gmpxx.h>
+
 #include "predicates/predicates.hpp"
 #include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/rt_incremental.hpp"
 
 namespace flipflop::certify {
 
@@ -49,6 +52,7 @@ struct Checker {
   const PointSet& ps;
   int d;
   Orientation given;
+  bool exact = false;  // Level::exact: unperturbed signs (may be 0), weak conditions
   bool swap_last_two() const { return given == Orientation::volume && d % 2 == 1; }
   pred::Pt P(Index i) const { return {i, ps.point(i)}; }
   pred::WPt W(Index i) const { return {i, ps.point(i), ps.weight(i)}; }
@@ -56,6 +60,11 @@ struct Checker {
     pred::Pt p[kMaxD + 1];
     for (int i = 0; i <= d; ++i) p[i] = P(t[i]);
     if (swap_last_two()) std::swap(p[d - 1], p[d]);
+    if (exact) {
+      const double* rows[kMaxD + 1];
+      for (int i = 0; i <= d; ++i) rows[i] = p[i].x;
+      return pred::orient_d_exact(d, rows);
+    }
     return pred::orient_d(d, p);
   }
   // orient of t with entry i replaced by x
@@ -71,6 +80,15 @@ struct Checker {
     for (int i = 0; i <= d; ++i) p[i] = W(t[static_cast<std::size_t>(i)]);
     if (swap_last_two()) std::swap(p[d - 1], p[d]);
     p[d + 1] = W(x);
+    if (exact) {
+      const double* rows[kMaxD + 2];
+      double w[kMaxD + 2];
+      for (int i = 0; i <= d + 1; ++i) {
+        rows[i] = p[i].x;
+        w[i] = p[i].w;
+      }
+      return pred::power_d_exact(d, rows, w);
+    }
     return pred::power_d(d, p);
   }
 };
@@ -99,9 +117,14 @@ std::string index_problem(const std::vector<std::vector<Index>>& simplices, std:
 std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, Facets& F) {
   const int d = ck.d;
   const std::size_t w = static_cast<std::size_t>(d + 1);
-  for (const auto& t : S)
-    if (ck.orient(t.data()) <= 0)
-      return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
+  for (const auto& t : S) {
+    const int o = ck.orient(t.data());
+    if (o == 0)  // only at Level::exact (SoS signs are never 0)
+      return "simplex-orientation: simplex " + simplex_str(t) +
+             " has zero volume (the exact level accepts none; a canonical answer with zero-volume simplices is "
+             "certified at the canonical level)";
+    if (o < 0) return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
+  }
   // facet -> (simplex, position, induced orientation sign)
   struct Entry {
     std::uint32_t s;
@@ -163,16 +186,53 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
     for (Index x : bverts) {
       if (std::find(t.begin(), t.end(), x) != t.end() && x != t[static_cast<std::size_t>(i)]) continue;  // on f
       if (x == t[static_cast<std::size_t>(i)]) continue;  // the simplex's own apex: inside by orientation
-      if (ck.orient_with(t, i, x) <= 0) {
+      const int o = ck.orient_with(t, i, x);
+      if (o < 0 || (o == 0 && !ck.exact)) {
         std::vector<Index> f;
         for (int j = 0; j <= d; ++j)
           if (j != i) f.push_back(t[static_cast<std::size_t>(j)]);
-        return "boundary-is-hull: boundary vertex " + std::to_string(x) + " is not strictly inside the boundary facet " +
+        return "boundary-is-hull: boundary vertex " + std::to_string(x) + " is not " +
+               (ck.exact ? "on the inner side of" : "strictly inside") + " the boundary facet " +
                simplex_str(f) + " of simplex " + simplex_str(t);
       }
     }
   }
   return {};
+}
+
+// d! times the total volume of the simplices, exactly: each det[p_1 - p_0,
+// ..., p_d - p_0] by Gaussian elimination over the rationals (doubles are
+// dyadic rationals), absolute values summed.
+mpq_class total_volume(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
+  const int d = ps.dim;
+  mpq_class sum = 0;
+  std::vector<mpq_class> m(static_cast<std::size_t>(d * d));
+  for (const auto& t : S) {
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j)
+        m[static_cast<std::size_t>(i * d + j)] =
+            mpq_class(ps.point(t[static_cast<std::size_t>(i + 1)])[j]) - mpq_class(ps.point(t[0])[j]);
+    mpq_class det = 1;
+    for (int c = 0; c < d && det != 0; ++c) {
+      int r = c;
+      while (r < d && m[static_cast<std::size_t>(r * d + c)] == 0) ++r;
+      if (r == d) {
+        det = 0;
+        break;
+      }
+      if (r != c) {
+        for (int j = 0; j < d; ++j) std::swap(m[static_cast<std::size_t>(r * d + j)], m[static_cast<std::size_t>(c * d + j)]);
+        det = -det;
+      }
+      det *= m[static_cast<std::size_t>(c * d + c)];
+      for (int k = c + 1; k < d; ++k) {
+        const mpq_class f = m[static_cast<std::size_t>(k * d + c)] / m[static_cast<std::size_t>(c * d + c)];
+        for (int j = c; j < d; ++j) m[static_cast<std::size_t>(k * d + j)] -= f * m[static_cast<std::size_t>(c * d + j)];
+      }
+    }
+    sum += abs(det);
+  }
+  return sum;
 }
 
 Report fail_from(const std::string& why) {
@@ -192,22 +252,23 @@ std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Ind
 }
 }  // namespace rtd_detail
 
-Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level) {
   const int d = ps.dim;
+  const bool exact = level == Level::exact;
   if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2..5");
   const std::size_t n = ps.size();
   if (n < static_cast<std::size_t>(d) + 1)
     return Report::fail("input-dimension", std::to_string(n) + " points, at least " + std::to_string(d + 1) +
                                                " needed in " + std::to_string(d) + "D");
   if (std::string why = index_problem(S, n, d); !why.empty()) return fail_from(why);
-  for (std::size_t k = 0; k < S.size(); ++k) {
+  for (std::size_t k = 0; k < S.size() && !exact; ++k) {
     if (!is_canonical_shape(S[k]))
       return Report::fail("canonical-form", "simplex " + simplex_str(S[k]) + " is not in canonical order");
     if (k > 0 && !(S[k - 1] < S[k]))
       return Report::fail("canonical-form", "simplices " + simplex_str(S[k - 1]) + " and " + simplex_str(S[k]) +
                                                 " are not sorted or repeat");
   }
-  Checker ck{ps, d, Orientation::volume};
+  Checker ck{ps, d, Orientation::volume, exact};
   Facets F;
   if (std::string why = tiling(ck, S, F); !why.empty()) return fail_from(why);
   // (the tiling covers a full-dimensional convex region, so the input spans R^d)
@@ -222,10 +283,12 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
       Index b = 0;
       for (Index x : u)
         if (std::find(S[s].begin(), S[s].end(), x) == S[s].end()) b = x;
-      if (ck.power(S[s], b) >= 0)
+      const int pw = ck.power(S[s], b);
+      if (pw > 0 || (pw == 0 && !exact))
         return Report::fail("locally-regular", "the facet between " + simplex_str(S[s]) + " and " + simplex_str(u) +
                                                    " is not locally regular: the lifted point of " + std::to_string(b) +
-                                                   " is not strictly above the lifted " + simplex_str(S[s]));
+                                                   " is not " + (exact ? "on or above" : "strictly above") +
+                                                   " the lifted " + simplex_str(S[s]));
     }
 
   // every missing point redundant: locate it (visibility walk, perturbed),
@@ -263,20 +326,34 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S) {
     if (found < 0 && !outside) {  // the walk did not settle (cannot happen after regularity): scan
       for (std::size_t s = 0; s < S.size() && found < 0; ++s) {
         bool in = true;
-        for (int i = 0; i <= d && in; ++i) in = ck.orient_with(S[s], i, p) > 0;
+        for (int i = 0; i <= d && in; ++i) in = exact ? ck.orient_with(S[s], i, p) >= 0 : ck.orient_with(S[s], i, p) > 0;
         if (in) found = static_cast<long>(s);
       }
     }
     if (found < 0)
       return Report::fail("missing-point-redundant", "point " + std::to_string(p) +
                                                          " is not a vertex and lies outside every simplex (under the perturbation)");
-    if (ck.power(S[static_cast<std::size_t>(found)], p) >= 0)
+    const int pw = ck.power(S[static_cast<std::size_t>(found)], p);
+    if (pw > 0 || (pw == 0 && !exact))
       return Report::fail("missing-point-redundant",
-                          "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is not "
-                          "strictly above the lifted simplex " + simplex_str(S[static_cast<std::size_t>(found)]));
+                          "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is " +
+                              (exact ? "strictly below" : "not strictly above") + " the lifted simplex " +
+                              simplex_str(S[static_cast<std::size_t>(found)]));
     cur = static_cast<std::size_t>(found);
   }
   (void)w;
+  if (exact) {
+    // covers-hull-once (header): the simplices tile conv(P) k times, k >= 1;
+    // their exact total volume equals that of conv(P) — taken from the
+    // canonical answer, certified here first — iff k = 1.
+    const std::vector<std::vector<Index>> canonical = ref::rtd_incremental(ps).simplices;
+    if (const Report rc = rtd(ps, canonical, Level::canonical); !rc.ok)
+      return Report::fail("covers-hull-once", "the reference triangulation used for the hull's volume failed: " +
+                                                  rc.message());
+    if (total_volume(ps, S) != total_volume(ps, canonical))
+      return Report::fail("covers-hull-once", "the simplices' total volume differs from the convex hull's: they "
+                                              "cover it more than once");
+  }
   return Report::pass();
 }
 

@@ -67,7 +67,27 @@
 
 namespace flipflop::certify {
 
-Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices);
+// Level::canonical (the default): flipflop's unique answer, conditions above.
+// Level::exact: *a* regular triangulation of the exact input, any program's,
+// any tie-breaking (CGAL's on degenerate input): no canonical form; every
+// simplex of strictly positive volume (exact, no perturbation: a zero-volume
+// simplex, which flipflop's canonical answer may hold on degenerate input,
+// is refused — that answer is certified at the canonical level); facet-
+// manifold; every boundary vertex on the inner side (weakly) of every
+// boundary facet; every interior facet weakly locally regular (the lifted
+// opposite vertex on or above); every missing point in a simplex (closed)
+// with its lifted point on or above it; and covers-hull-once: the exact
+// total volume of the simplices equals that of conv(P) (from the canonical
+// answer, certified first).
+// Why: as in 1. above, the simplices cover the polytope Q cut out by the
+// boundary facets' half-spaces k >= 1 times (every boundary vertex is in Q,
+// so the boundary cycle lies on ∂Q and the covering number is constant
+// inside); the missing points lie in simplices and the vertices are input
+// points, so Q = conv(P); the volumes give k = 1. The lifted piecewise-
+// linear function is then convex (weakly regular facets) and interpolates
+// the lifted vertices with every other lifted point on or above it: it is
+// the lower hull (Thm 2.2, weak form), i.e. a regular triangulation.
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level = Level::canonical);
 
 namespace rtd_detail {
 // The structural part (conditions simplex-indices, simplex-orientation,
