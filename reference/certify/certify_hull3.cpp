@@ -33,7 +33,9 @@
 // perturbed at both levels; geometric conditions are exact (>= 0) at the exact
 // level and perturbed and strict at the canonical level.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
@@ -168,6 +170,55 @@ bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index
   return true;
 }
 
+// Where a walk over the cones from s starts: the directions from s are cut
+// into the cells of a cube map (6 faces of kSide x kSide); each cell holds a
+// facet whose centroid direction falls into it (empty cells: the previous
+// filled cell's). Floating point throughout — the table is a hint, never a
+// decision: the exact walk from any facet reaches the right cone, a good
+// start only makes it short (10^7 ball points: about one step).
+class DirectionTable {
+ public:
+  static constexpr int kSide = 64;
+  DirectionTable(const PointSet& ps, const std::vector<Triangle>& tris, const double* sd,
+                 const pred::RationalPoint& s) {
+    for (int j = 0; j < 3; ++j) s_[j] = sd ? sd[j] : s.approx[j].v;
+    cell_.assign(6 * kSide * kSide, kEmpty);
+    for (std::size_t i = 0; i < tris.size(); ++i) {
+      double c[3];
+      for (int j = 0; j < 3; ++j)
+        c[j] = (ps.point(tris[i][0])[j] + ps.point(tris[i][1])[j] + ps.point(tris[i][2])[j]) / 3;
+      std::uint32_t& slot = cell_[cell(c)];
+      if (slot == kEmpty) slot = static_cast<std::uint32_t>(i);
+    }
+    std::uint32_t last = 0;
+    for (std::uint32_t& slot : cell_) {
+      if (slot == kEmpty) slot = last;
+      last = slot;
+    }
+  }
+  std::size_t hint(const double* p) const { return cell_[cell(p)]; }
+
+ private:
+  static constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
+  std::size_t cell(const double* p) const {
+    const double v[3] = {p[0] - s_[0], p[1] - s_[1], p[2] - s_[2]};
+    int a = 0;
+    for (int j = 1; j < 3; ++j)
+      if (std::abs(v[j]) > std::abs(v[a])) a = j;
+    const double m = std::abs(v[a]);
+    if (!(m > 0) || !std::isfinite(m)) return 0;
+    const int face = 2 * a + (v[a] < 0 ? 1 : 0);
+    auto coord = [&](double x) {
+      const int c = static_cast<int>((x / m + 1) * 0.5 * kSide);
+      return std::clamp(c, 0, kSide - 1);
+    };
+    const int u = coord(v[(a + 1) % 3]), w = coord(v[(a + 2) % 3]);
+    return static_cast<std::size_t>((face * kSide + u) * kSide + w);
+  }
+  double s_[3];
+  std::vector<std::uint32_t> cell_;
+};
+
 }  // namespace
 
 Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
@@ -279,28 +330,35 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
   }
 
   // ---- every point inside ------------------------------------------------------
-  std::vector<Index> todo;
-  for (Index p = 0; p < n; ++p)
-    if (!is_vertex[p]) todo.push_back(p);
-  detail::morton_sort(ps, todo);
-  detail::XorShift rng;
-  std::size_t cur = 0;
+  // Each point is located by a stochastic visibility walk over the cones from
+  // s (perturbed, so no ties), started at the facet a direction table gives
+  // for the direction from s (a hint only: any start reaches the one cone
+  // that contains the point), then checked against that facet. The points
+  // are taken in index order, so the first failing point is the smallest.
+  std::vector<std::array<std::uint32_t, 3>> across(tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      across[i][static_cast<std::size_t>(k)] =
+          static_cast<std::uint32_t>(edges.find(tris[i][(k + 1) % 3], tris[i][static_cast<std::size_t>(k)]));
+  const DirectionTable table(ps, tris, ck.s_is_double ? ck.sd : nullptr, ck.s);
   const std::size_t cap = 4 * tris.size() + 100;
-  for (Index p : todo) {
-    // Stochastic visibility walk over the cones from s (perturbed, so no ties).
+  auto check_point = [&](Index p) -> Report {
+    std::size_t cur = table.hint(ps.point(p));
+    detail::XorShift rng;
+    rng.s ^= static_cast<std::uint64_t>(p) * 0xD1B54A32D192ED03ull;
     std::size_t steps = 0;
     bool found = false;
     while (steps++ < cap) {
       const Triangle& t = tris[cur];
       int cand[3], nc = 0;
       for (int k = 0; k < 3; ++k)
-        if (ck.side(t[k], t[(k + 1) % 3], p) > 0) cand[nc++] = k;
+        if (ck.side(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)], p) > 0) cand[nc++] = k;
       if (nc == 0) {
         found = true;
         break;
       }
-      int k = cand[nc == 1 ? 0 : rng.next() % static_cast<std::uint32_t>(nc)];
-      cur = static_cast<std::size_t>(edges.find(t[(k + 1) % 3], t[k]));
+      const int k = cand[nc == 1 ? 0 : rng.next() % static_cast<std::uint32_t>(nc)];
+      cur = across[cur][static_cast<std::size_t>(k)];
     }
     auto check = [&](const Triangle& t) -> Report {
       int sgn = ck.facet_vs_point(t, p);
@@ -311,15 +369,16 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
                                                 tri_str(t) + (canonical ? " under the perturbation" : ""));
       return Report::pass();
     };
-    if (found) {
-      if (Report r = check(tris[cur]); !r.ok) return r;
-    } else {
-      // The walk did not settle (it terminates with probability 1; this bound
-      // only protects against pathological cases): test every facet.
-      for (const Triangle& t : tris)
-        if (Report r = check(t); !r.ok) return r;
-    }
-  }
+    if (found) return check(tris[cur]);
+    // The walk did not settle (it terminates with probability 1; this bound
+    // only protects against pathological cases): test every facet.
+    for (const Triangle& t : tris)
+      if (Report r = check(t); !r.ok) return r;
+    return Report::pass();
+  };
+  for (Index p = 0; p < n; ++p)
+    if (!is_vertex[p])
+      if (Report r = check_point(p); !r.ok) return r;
   return Report::pass();
 }
 
