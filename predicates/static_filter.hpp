@@ -293,32 +293,35 @@ class StaticFilter {
   // From n points of `dim` coordinates (row-major) and optional weights.
   // Every predicate call whose coordinates and weights are among these values
   // (any subset of points, any coordinate projection) may use the bounds.
+  // `extra` (extra_count values) are further coordinate values the calls may
+  // use (e.g. an auxiliary point of double coordinates), scanned like coords.
   static StaticFilter for_points(const double* coords, std::size_t n, int dim,
-                                 const double* weights = nullptr) {
+                                 const double* weights = nullptr, const double* extra = nullptr,
+                                 std::size_t extra_count = 0) {
     StaticFilter f;
     double M = 0.0, W = 0.0;
     int lsb = 0;  // min(L, 0) over every value, L the exponent of its lowest set bit
     bool finite = true;
+    // from the IEEE 754 bits: a normal x = (2^52 + m) 2^(e - 1075), a
+    // subnormal x = m 2^-1074; the lowest set bit of the integer mantissa
+    // gives L
     auto scan = [&](double x, double& mx) {
-      if (!std::isfinite(x)) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      const int e = static_cast<int>((bits >> 52) & 0x7ff);
+      if (e == 0x7ff) {
         finite = false;
         return;
       }
       mx = std::fmax(mx, std::fabs(x));
-      if (x != 0.0) {
-        int e = 0;
-        double frac = std::frexp(x, &e);  // x = frac 2^e, 53-bit integer mantissa frac 2^53
-        auto mant = static_cast<std::int64_t>(std::ldexp(std::fabs(frac), 53));
-        int tz = 0;
-        while ((mant & 1) == 0) {
-          mant >>= 1;
-          ++tz;
-        }
-        const int low = e - 53 + tz;
-        if (low < lsb) lsb = low;
-      }
+      std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+      if (e != 0) mant |= std::uint64_t{1} << 52;
+      if (mant == 0) return;  // a zero
+      const int low = (e == 0 ? -1074 : e - 1075) + __builtin_ctzll(mant);
+      if (low < lsb) lsb = low;
     };
     for (std::size_t i = 0; i < n * static_cast<std::size_t>(dim); ++i) scan(coords[i], M);
+    for (std::size_t i = 0; i < extra_count; ++i) scan(extra[i], M);
     if (weights)
       for (std::size_t i = 0; i < n; ++i) scan(weights[i], W);
     if (!finite || n == 0) return f;

@@ -13,7 +13,9 @@
 #include "proptests/support/planar_inputs.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/canonical.hpp"
+#include "gen/generate.hpp"
 #include "reference/certify/certify.hpp"
+#include "reference/hull3/hull3.hpp"
 #include "reference/dimension.hpp"
 
 using namespace flipflop;
@@ -311,5 +313,44 @@ TEST_CASE("certify: broken rt2 outputs are rejected", "[certify]") {
     // a negative weight lifts the point high above the plane: redundant
     PointSet red = points(2, {0, 0, 4, 0, 0, 4, 1, 1}, {0, 0, 0, -10});
     CHECK(certify::rt2(red, {{0, 1, 2}}, Level::exact).ok);
+  }
+}
+
+TEST_CASE("certify: hull3 on many interior points (the inner-ball fast path) still rejects every outside point", "[certify]") {
+  // 20000 ball points: far more interior points than facets, so the
+  // certifier's exactly verified inner ball decides most of them; a hull of
+  // the input without some of its vertices must still be rejected, naming
+  // the smallest outside point
+  gen::Options o;
+  o.seed = 17;
+  const PointSet ps = gen::generate("ball", 20000, o);
+  const std::vector<Triangle> hull = ref::hull3(ps, "ffhull");
+  REQUIRE(certify::hull3(ps, hull, certify::Level::exact).ok);
+  REQUIRE(certify::hull3(ps, hull, certify::Level::canonical).ok);
+  std::vector<Index> verts;
+  for (const Triangle& t : hull) verts.insert(verts.end(), t.begin(), t.end());
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  for (std::size_t k : {std::size_t{0}, verts.size() / 2, verts.size() - 1}) {
+    // the hull without vertices verts[k] and verts[k/3]: they end up outside
+    std::set<Index> gone = {verts[k], verts[k / 3]};
+    PointSet sub;
+    sub.dim = 3;
+    std::vector<Index> back;
+    for (Index i = 0; i < ps.size(); ++i)
+      if (!gone.count(i)) {
+        back.push_back(i);
+        sub.coords.insert(sub.coords.end(), ps.point(i), ps.point(i) + 3);
+      }
+    std::vector<Triangle> smaller = ref::hull3(sub, "ffhull");
+    for (Triangle& t : smaller)
+      for (Index& x : t) x = back[x];
+    smaller = canonical_triangles(smaller);
+    for (certify::Level level : {certify::Level::exact, certify::Level::canonical}) {
+      const certify::Report r = certify::hull3(ps, smaller, level);
+      INFO(r.message());
+      REQUIRE(r.condition == "point-inside");
+      REQUIRE(r.detail.rfind("point " + std::to_string(*gone.begin()) + " ", 0) == 0);
+    }
   }
 }
