@@ -10,6 +10,7 @@
 #include "io/index_io.hpp"
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
+#include "kernels_cpu/hull2/certify_hull2.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
@@ -196,7 +197,10 @@ int run_compute(const ComputeArgs& a) {
 
   // Never print a result that was not checked: certify the canonical answer.
   const auto t1 = Clock::now();
-  certify::Report r = a.kind == "hull2"   ? certify::hull2(ps, cycle, certify::Level::canonical)
+  // (the cpu backend's 2D hull: the per-point witnesses checked in parallel)
+  certify::Report r = a.kind == "hull2" && backend == "cpu"
+                          ? cpu::certify_hull2(ps, cycle, certify::Level::canonical, a.threads)
+                      : a.kind == "hull2" ? certify::hull2(ps, cycle, certify::Level::canonical)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);

@@ -17,7 +17,9 @@
 // Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
 // by prop_scaled): degenerate / random sets of 3..80 points 2000 / 4 = 500;
 // every generator family at 3..4000 points 2000 / 10 = 200; the deterministic
-// sweep: 11 families x 6 sizes x 2 seeds x 3 thread counts x 2 option sets.
+// sweep: 11 families x 6 sizes x 2 seeds x 3 thread counts x 2 option sets;
+// the parallel certifier: 2000 / 4 = 500 sets, each with 5 answers (right and
+// edited) at 2 levels and 3 thread counts.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -28,6 +30,7 @@
 #include <string>
 
 #include "gen/generate.hpp"
+#include "kernels_cpu/hull2/certify_hull2.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull2/throw_away.hpp"
 #include "proptests/support/families.hpp"
@@ -179,4 +182,37 @@ TEST_CASE("hull2 cpu: input that does not span the plane is rejected like the re
   bad.threads = -1;
   ps.coords = {0, 0, 1, 0, 0, 1};
   REQUIRE_THROWS_AS(cpu::hull2_graham_sort(ps, bad), std::invalid_argument);
+}
+
+TEST_CASE("hull2 cpu: the parallel certifier gives the sequential certifier's verdict and message", "[hull2_cpu]") {
+  test::prop_scaled("right and edited answers of family and degenerate sets: cpu::certify_hull2 == certify::hull2 "
+                    "at both levels, 1, 2, 8 threads",
+                    4, [] {
+                      const PointSet ps = *rc::gen::oneOf(test::thinned(test::family_points(2, 3, 3000, false)),
+                                                          test::degenerate_points(2, 3, 80, false));
+                      if (!dimension_problem(ps).empty()) return;
+                      const std::vector<Index> answer = ref::hull2_graham_sort(ps);
+                      std::vector<std::vector<Index>> cycles = {answer};
+                      const std::size_t m = answer.size(), k = *rc::gen::inRange<std::size_t>(0, m);
+                      std::vector<Index> c = answer;  // a vertex removed
+                      c.erase(c.begin() + static_cast<long>(k));
+                      cycles.push_back(c);
+                      cycles.emplace_back(answer.rbegin(), answer.rend());  // clockwise
+                      c = answer;  // rotated
+                      std::rotate(c.begin(), c.begin() + 1, c.end());
+                      cycles.push_back(c);
+                      c = answer;  // a point inserted (the first index that is no vertex, if any)
+                      for (Index p = 0; p < ps.size(); ++p)
+                        if (std::find(answer.begin(), answer.end(), p) == answer.end()) {
+                          c.insert(c.begin() + static_cast<long>(k) + 1, p);
+                          break;
+                        }
+                      cycles.push_back(c);
+                      for (const auto& cycle : cycles)
+                        for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
+                          const std::string expect = certify::hull2(ps, cycle, level).message();
+                          for (int t : kThreads) RC_ASSERT(cpu::certify_hull2(ps, cycle, level, t).message() == expect);
+                        }
+                      RC_ASSERT(cpu::certify_hull2(ps, answer, certify::Level::canonical).ok);
+                    });
 }
