@@ -8,6 +8,10 @@
 //   par_argmax              deterministic arg-max (a strict total order on
 //                           (key, index), so the answer does not depend on how
 //                           the range is split or on the thread count);
+//   par_sort                sort by a strict total order (chunks sorted in
+//                           parallel, then merged pairwise in parallel
+//                           rounds): the result is unique, so it does not
+//                           depend on the thread count;
 //   par_select              the indices i of [0, n) with keep(i), in increasing
 //                           order (fixed chunks, each filtered by one task,
 //                           then concatenated in chunk order);
@@ -97,6 +101,37 @@ Index par_argmax(std::size_t n, const Key& key) {
   for (const Best& c : part)
     if (c.i != kNone && better(c.key, c.i, b)) b = c;
   return b.i;
+}
+
+// ---- parallel sort -------------------------------------------------------------
+// Chunks of kChunk elements sorted by one task each (std::sort), then rounds
+// of pairwise merges of neighbouring runs (std::merge, one task per pair).
+// Written with par_for rather than tbb::parallel_sort so that every hand-off
+// is a fork/join declared to ThreadSanitizer. `less` must be a strict total
+// order on the elements (no two equivalent), which makes the result unique.
+template <class T, class Less>
+void par_sort(std::vector<T>& v, const Less& less) {
+  const std::size_t n = v.size();
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c)
+      std::sort(v.begin() + static_cast<std::ptrdiff_t>(c * kChunk),
+                v.begin() + static_cast<std::ptrdiff_t>(std::min(n, (c + 1) * kChunk)), less);
+  });
+  if (chunks <= 1) return;
+  std::vector<T> out(n);
+  for (std::size_t width = kChunk; width < n; width *= 2) {
+    const std::size_t pairs = (n + 2 * width - 1) / (2 * width);
+    par_for(pairs, 1, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t p = lo; p < hi; ++p) {
+        const std::size_t a = p * 2 * width, m = std::min(n, a + width), e = std::min(n, a + 2 * width);
+        std::merge(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(m),
+                   v.begin() + static_cast<std::ptrdiff_t>(m), v.begin() + static_cast<std::ptrdiff_t>(e),
+                   out.begin() + static_cast<std::ptrdiff_t>(a), less);
+      }
+    });
+    v.swap(out);
+  }
 }
 
 // ---- deterministic parallel selection ----------------------------------------

@@ -2,8 +2,6 @@
 // §4.2 Algorithm 3; see graham_sorting.hpp).
 #include "kernels_cpu/hull2/graham_sorting.hpp"
 
-#include <tbb/parallel_sort.h>
-
 #include <algorithm>
 
 #include "kernels_cpu/parallel.hpp"
@@ -82,7 +80,7 @@ std::vector<Index> graham_sorting(std::vector<Pt2> pts, const pred::StaticFilter
                                   ScanCounts& counts) {
   chunk = std::max<std::size_t>(chunk, 1);
   // lines 4-5, once for both sets: the x order under the perturbation
-  tbb::parallel_sort(pts.begin(), pts.end(), x_less);
+  par_sort(pts, x_less);
   // line 1
   const Pt2 vl = pts.front(), vr = pts.back();
   const std::size_t n = pts.size();

@@ -2,8 +2,8 @@
 // Algorithm 3, with the chunked local flipping of §4.2 on oneTBB.
 //
 //   line 1     v_l, v_r: the first and last point after sorting by x (the
-//              sort of lines 4-5 is done once, on all points, by
-//              tbb::parallel_sort);
+//              sort of lines 4-5 is done once, on all points, by par_sort:
+//              chunks sorted in parallel, then parallel merge rounds);
 //   lines 2-3  S_a above v_l v_r (orient2d(v_l, v_r, p) > 0), S_b below:
 //              labels in parallel, then a stable parallel selection
 //              (par_select), so both keep the x order;
