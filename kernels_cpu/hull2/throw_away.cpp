@@ -8,6 +8,7 @@
 #include "kernels_cpu/hull2/graham_sorting.hpp"
 #include "kernels_cpu/parallel.hpp"
 #include "predicates/static_filter.hpp"
+#include "reference/pseudo_angle.hpp"
 
 namespace flipflop::cpu::hull2 {
 
@@ -17,13 +18,6 @@ constexpr std::size_t kMinSample = 1024;
 constexpr std::size_t kMaxSample = std::size_t{1} << 17;
 constexpr std::size_t kScanChunk = 4096;
 constexpr int kBuckets = 4096;                     // pseudo-angle buckets of the wedge table
-
-// A monotone stand-in for the angle of (dx, dy) in [0, 4) (the "diamond
-// angle"); NaN for (0, 0) or non-finite input.
-inline double pseudo_angle(double dx, double dy) {
-  if (dy >= 0) return dx >= 0 ? dy / (dx + dy) : 1 - dx / (dy - dx);
-  return dx < 0 ? 2 - dy / (-dx - dy) : 3 + dx / (dx - dy);
-}
 
 // The polygon, the centre and the filter bound of the pass.
 struct Polygon {

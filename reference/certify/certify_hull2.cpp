@@ -12,7 +12,7 @@
 //   point-inside      every point is on the inner side of (or on) the edge of
 //                     the fan sector that contains it; canonical: strictly
 //                     inside for every point that is not a vertex. The sector
-//                     is guessed by a floating-point binary search and the
+//                     is guessed from a pseudo-angle bucket table and the
 //                     guess verified exactly (the two rays around p); only an
 //                     unverified guess costs the exact binary search. The
 //                     points may be checked in parallel (Speedups): the
@@ -28,6 +28,7 @@
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/dimension.hpp"
+#include "reference/pseudo_angle.hpp"
 
 namespace flipflop::certify {
 
@@ -141,21 +142,41 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
   const Index v0 = L[0];
   const int strict = canonical ? 0 : -1;  // smallest accepted orientation is strict+1
   // The sector of p: the largest k in [1, mc-2] with orient(v0, L[k], p) >= 0.
-  // First a floating-point binary search (a guess), accepted when exactly
-  // orient(v0, L[k], p) >= 0 and (k = mc-2 or orient(v0, L[k+1], p) < 0):
-  // by the monotonicity of the fan rays that k is the exact search's answer.
+  // First a guess from floating point, accepted when exactly
+  // orient(v0, L[k], p) >= 0 and (k = mc-2 or orient(v0, L[k+1], p) < 0): by
+  // the monotonicity of the fan rays that k is the exact search's answer, run
+  // only when the guess fails. The guess: the rays' pseudo-angles around v0
+  // measured from the first ray (increasing along the fan, which spans less
+  // than a half-turn) and a table of 4 mc buckets over them.
   const double* o = ck.P(v0);
+  const double first_ray = pseudo_angle(ck.P(L[1])[0] - o[0], ck.P(L[1])[1] - o[1]);
+  auto turn = [&](Index q) {
+    const double a = pseudo_angle(ck.P(q)[0] - o[0], ck.P(q)[1] - o[1]) - first_ray;
+    return a < 0 ? a + 4 : a;
+  };
+  std::vector<double> ang(mc, 0.0);
+  bool table = true;
+  for (std::size_t k = 2; k < mc; ++k) {
+    ang[k] = turn(L[k]);
+    table = table && ang[k] > ang[k - 1] && ang[k] < 4;  // false also on NaN (overflow)
+  }
+  const std::size_t buckets = 4 * mc;
+  const double scale = table ? static_cast<double>(buckets) / ang[mc - 1] : 0.0;
+  std::vector<std::size_t> bucket_first(table ? buckets : 0);
+  for (std::size_t b = 0; b < bucket_first.size(); ++b) {
+    const auto it = std::upper_bound(ang.begin() + 1, ang.begin() + static_cast<long>(mc - 1),
+                                     static_cast<double>(b) / scale);
+    bucket_first[b] = std::max<std::size_t>(1, static_cast<std::size_t>(it - ang.begin()) - 1);
+  }
   auto sector = [&](Index p) {
-    const double* q = ck.P(p);
-    std::size_t lo = 1, hi = mc - 2;
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi + 1) / 2;
-      const double* r = ck.P(L[mid]);
-      if ((r[0] - o[0]) * (q[1] - o[1]) - (r[1] - o[1]) * (q[0] - o[0]) >= 0) lo = mid;
-      else hi = mid - 1;
+    std::size_t k = 1;
+    const double a = table ? turn(p) : -1.0;
+    if (a >= 0 && a <= ang[mc - 1]) {
+      k = bucket_first[std::min(buckets - 1, static_cast<std::size_t>(a * scale))];
+      while (k < mc - 2 && ang[k + 1] <= a) ++k;
     }
-    if (ck.orient(v0, L[lo], p) >= 0 && (lo == mc - 2 || ck.orient(v0, L[lo + 1], p) < 0)) return lo;
-    lo = 1, hi = mc - 2;
+    if (ck.orient(v0, L[k], p) >= 0 && (k == mc - 2 || ck.orient(v0, L[k + 1], p) < 0)) return k;
+    std::size_t lo = 1, hi = mc - 2;
     while (lo < hi) {
       const std::size_t mid = (lo + hi + 1) / 2;
       if (ck.orient(v0, L[mid], p) >= 0) lo = mid;
