@@ -22,6 +22,7 @@
 // point is a vertex and every vertex lies on the boundary.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
@@ -162,6 +163,7 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
   }
   const std::size_t buckets = 4 * mc;
   const double scale = table ? static_cast<double>(buckets) / ang[mc - 1] : 0.0;
+  table = table && std::isfinite(scale);  // a subnormal fan angle overflows the scale: no table
   std::vector<std::size_t> bucket_first(table ? buckets : 0);
   for (std::size_t b = 0; b < bucket_first.size(); ++b) {
     const auto it = std::upper_bound(ang.begin() + 1, ang.begin() + static_cast<long>(mc - 1),
@@ -172,7 +174,8 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
     std::size_t k = 1;
     const double a = table ? turn(p) : -1.0;
     if (a >= 0 && a <= ang[mc - 1]) {
-      k = bucket_first[std::min(buckets - 1, static_cast<std::size_t>(a * scale))];
+      const double x = a * scale;  // in [0, buckets], compared before the conversion
+      k = bucket_first[x < static_cast<double>(buckets) ? static_cast<std::size_t>(x) : buckets - 1];
       while (k < mc - 2 && ang[k + 1] <= a) ++k;
     }
     if (ck.orient(v0, L[k], p) >= 0 && (k == mc - 2 || ck.orient(v0, L[k + 1], p) < 0)) return k;
