@@ -22,7 +22,7 @@ const char* kUsage =
     "usage: flipflop bench predicates [--n N] [--reps R] [--seed S] [--csv]\n"
     "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
     "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n"
-    "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case)\n";
+    "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case) [--csv]\n";
 
 unsigned long long to_count(const std::string& opt, const std::string& s) {
   char* end = nullptr;

@@ -5,7 +5,7 @@
 //                  (each stage of the staged predicates alone, CGAL Epick and
 //                  GMP; columns and input families in bench_predicates.cpp)
 //   flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]
-//                  [--thickness T] [--weights LO,HI] [--hull-points H]
+//                  [--thickness T] [--weights LO,HI] [--hull-points H] [--run P,...] [--csv]
 //
 // Every number printed is measured in this process: medians of R runs timed
 // with std::chrono::steady_clock; input generation is never timed.

@@ -3,8 +3,10 @@
 // "Benchmarks"), side by side, in one process, on one generated input
 // (gen/generate.hpp; generation not timed).
 //
-//   hull2  flipflop graham-sort, graham-insert; Qhull (libqhull_r), CGAL
-//          ch_akl_toussaint, CGAL ch_graham_andrew
+//   hull2  flipflop:cpu (kernels_cpu/hull2: throw-away and parallel
+//          Graham-sorting, all cores), flipflop:reference:graham-sort and
+//          :graham-insert; qhull (libqhull_r), cgal:ch_akl_toussaint,
+//          cgal:ch_graham_andrew
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
 //          flipflop ffhull, splay (twist-flip, quadratic, for n <= 20000);
 //          Qhull (libqhull_r, Qt), CGAL convex_hull_3
@@ -28,6 +30,7 @@
 
 #include "bench/timing.hpp"
 #include "gen/generate.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "peers/peers.hpp"
 #include "reference/hull2/hull2.hpp"
@@ -89,6 +92,21 @@ int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Out
   for (const Row& r : rows)
     if (r.error.empty() && (fastest == 0 || median(r.times) < fastest)) fastest = median(r.times);
 
+  if (a.csv) {  // DESIGN.md "Benchmarks": identical = the first successful row's canonical output
+    std::printf("name,median_s,min_s,max_s,size,identical\n");
+    std::size_t k = 0;
+    for (const Row& r : rows) {
+      if (!r.error.empty()) {
+        std::printf("%s,,,,,failed\n", r.name.c_str());
+        continue;
+      }
+      const auto [lo, hi] = std::minmax_element(r.times.begin(), r.times.end());
+      std::printf("%s,%.6f,%.6f,%.6f,%zu,%d\n", r.name.c_str(), median(r.times), *lo, *hi, r.size,
+                  outputs[k] == outputs[0] ? 1 : 0);
+      ++k;
+    }
+    return 0;
+  }
   std::printf("%-34s %12s %12s %12s %12s %10s\n", "peer", "median s", "min s", "max s",
               size_label, "/fastest");
   for (const Row& r : rows) {
@@ -129,22 +147,25 @@ int bench_peers(const Args& a) {
   o.hull_points = a.hull_points;
   PointSet pts;
   const double gen_s = seconds([&] { pts = gen::generate(a.dist, a.n, o); });
-  std::printf("flipflop bench %s: dist %s, n %zu, seed %llu", a.experiment.c_str(),
-              a.dist.c_str(), pts.size(), a.seed);
-  if (a.weighted) std::printf(", weights in [%g, %g]", a.wlo, a.whi);
-  std::printf(", median of %d runs (input generated in %.3f s, not timed)\n", a.reps, gen_s);
+  if (!a.csv) {
+    std::printf("flipflop bench %s: dist %s, n %zu, seed %llu", a.experiment.c_str(), a.dist.c_str(),
+                pts.size(), a.seed);
+    if (a.weighted) std::printf(", weights in [%g, %g]", a.wlo, a.whi);
+    std::printf(", median of %d runs (input generated in %.3f s, not timed)\n", a.reps, gen_s);
+  }
 
   using Cycle = std::vector<Index>;
   using Tris = std::vector<Triangle>;
   if (a.experiment == "hull2") {
     return compare_peers<Cycle>(
         a, pts,
-        {{"flipflop graham-sort (exact)", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
-         {"flipflop graham-insert (exact)", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
-         {"Qhull (libqhull_r)", peers::qhull_hull2},
-         {"CGAL ch_akl_toussaint",
+        {{"flipflop:cpu", [](const PointSet& p) { return cpu::hull2_graham_sort(p); }},
+         {"flipflop:reference:graham-sort", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
+         {"flipflop:reference:graham-insert", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
+         {"qhull", peers::qhull_hull2},
+         {"cgal:ch_akl_toussaint",
           [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::akl_toussaint); }},
-         {"CGAL ch_graham_andrew",
+         {"cgal:ch_graham_andrew",
           [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::graham_andrew); }}},
         "vertices");
   }

@@ -43,7 +43,7 @@ struct Args {
   bool weighted = false;
   double wlo = 0, whi = 0;
   std::size_t hull_points = 0;
-  bool csv = false;  // predicates: CSV rows instead of the table
+  bool csv = false;  // CSV rows instead of the table (DESIGN.md "Benchmarks")
   std::vector<std::string> run;  // --run: row name prefixes (case-insensitive); empty: every row
 };
 

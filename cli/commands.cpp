@@ -12,6 +12,9 @@
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
 #include "io/write_result.hpp"
+
+#include "kernels_cpu/hull2/certify_hull2.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -81,12 +84,20 @@ void write_result_file(const std::string& path, io::Format f, const std::functio
 }
 
 std::vector<std::string> available_backends(const std::string& kind) {
-  if (kind == "hull3") return {"cpu", "reference"};
+  if (kind == "hull3" || kind == "hull2") return {"cpu", "reference"};
   return {"reference"};
 }
 
+namespace {
+// The algorithm the cpu backend computes (kernels_cpu/hull2: parallel
+// Graham-sorting, kernels_cpu/hull3: parallel ffHull); "" when none.
+std::string cpu_algorithm(const std::string& kind) {
+  return kind == "hull3" ? "ffhull" : kind == "hull2" ? "graham-sort" : "";
+}
+}  // namespace
+
 std::string default_backend(const std::string& kind, const std::string& algo) {
-  return kind == "hull3" && algo == "ffhull" ? "cpu" : "reference";
+  return !cpu_algorithm(kind).empty() && algo == cpu_algorithm(kind) ? "cpu" : "reference";
 }
 
 std::vector<std::string> available_algorithms(const std::string& kind) {
@@ -159,8 +170,9 @@ int run_compute(const ComputeArgs& a) {
   const double t_read = seconds_since(t_read0);
   const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
-  if (backend == "cpu" && algo != "ffhull")
-    throw UsageError("the cpu backend computes --algo ffhull only, got '" + algo + "' (use --backend reference)");
+  if (backend == "cpu" && algo != cpu_algorithm(a.kind))
+    throw UsageError("the cpu backend computes --algo " + cpu_algorithm(a.kind) + " only, got '" + algo +
+                     "' (use --backend reference)");
   if (a.threads != 0 && backend != "cpu")
     throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
@@ -171,8 +183,16 @@ int run_compute(const ComputeArgs& a) {
   std::vector<Triangle> tris;
   std::string counts;
   if (a.kind == "hull2" && algo != "brute") {
+    // kernels_cpu/hull2: throw-away and parallel Graham-sorting, byte-identical
+    // to the reference
     ref::Hull2Stats st;
-    cycle = ref::hull2(ps, algo, &st);
+    if (backend == "cpu") {
+      cpu::Hull2Options o;
+      o.threads = a.threads;
+      cycle = cpu::hull2_graham_sort(ps, o, &st);
+    } else {
+      cycle = ref::hull2(ps, algo, &st);
+    }
     counts = "2-1 flips " + std::to_string(st.flips_2_1) + ", flip-pop passes " + std::to_string(st.rounds) +
              ", points discarded early " + std::to_string(st.discarded_early) + ", insertions " +
              std::to_string(st.insertions) + ", twists " + std::to_string(st.twists);
@@ -207,7 +227,10 @@ int run_compute(const ComputeArgs& a) {
 
   // Never print a result that was not checked: certify the canonical answer.
   const auto t1 = Clock::now();
-  certify::Report r = a.kind == "hull2"   ? certify::hull2(ps, cycle, certify::Level::canonical)
+  // (the cpu backend's 2D hull: the per-point witnesses checked in parallel)
+  certify::Report r = a.kind == "hull2" && backend == "cpu"
+                          ? cpu::certify_hull2(ps, cycle, certify::Level::canonical, a.threads)
+                      : a.kind == "hull2" ? certify::hull2(ps, cycle, certify::Level::canonical)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);

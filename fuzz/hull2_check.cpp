@@ -18,6 +18,12 @@
 //     reversal is rejected, and so is removing a vertex that is a strict
 //     corner in exact arithmetic (orient2d_exact(prev, v, next) > 0 and no
 //     other vertex at its location): v then lies strictly outside the polygon.
+// The multithreaded hull of kernels_cpu/hull2 (the cpu backend) is run at 1
+// and 2 threads with its throw-away forced on these small inputs (sample size
+// and flip-pop chunk chosen by the last bytes): it must return the answer
+// byte for byte, with its counters' lemmas (every point discarded or in the
+// chains' polygon, every flip removes one vertex), and reject the same inputs
+// with std::invalid_argument.
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
@@ -25,6 +31,7 @@
 
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -50,6 +57,17 @@ void expect(bool accept, const PointSet& ps, const std::vector<Index>& cycle, Le
          describe(ps) + "cycle " + describe(cycle));
 }
 
+// The cpu backend at `threads` threads, throw-away forced, tuning from bytes.
+std::vector<Index> cpu_hull(const PointSet& ps, int threads, std::uint8_t sample, std::uint8_t chunk,
+                            ref::Hull2Stats* st) {
+  cpu::Hull2Options o;
+  o.threads = threads;
+  o.throw_away_from = 0;
+  o.sample = sample % 70;  // 0: automatic (the whole input here)
+  o.scan_chunk = 1 + chunk % 9;
+  return cpu::hull2_graham_sort(ps, o, st);
+}
+
 bool same_location(const PointSet& ps, Index a, Index b) {
   return ps.point(a)[0] == ps.point(b)[0] && ps.point(a)[1] == ps.point(b)[1];
 }
@@ -70,6 +88,16 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
       } catch (const std::invalid_argument&) {
       } catch (const std::exception& e) {
         fail(kTarget, algo + " threw " + e.what() + " instead of std::invalid_argument", describe(ps));
+      }
+    }
+    const std::uint8_t sample = r.byte(), chunk = r.byte();
+    for (int threads : {1, 2}) {
+      try {
+        (void)cpu_hull(ps, threads, sample, chunk, nullptr);
+        fail(kTarget, "cpu returned a hull of input that does not span the plane", describe(ps));
+      } catch (const std::invalid_argument&) {
+      } catch (const std::exception& e) {
+        fail(kTarget, std::string("cpu threw ") + e.what() + " instead of std::invalid_argument", describe(ps));
       }
     }
     if (n >= 3) {
@@ -147,6 +175,21 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
       expect(false, ps, c, Level::canonical, "the answer with non-vertex " + std::to_string(p) + " inserted");
       break;
     }
+  }
+  const std::uint8_t sample = r.byte(), chunk = r.byte();
+  for (int threads : {1, 2}) {
+    std::vector<Index> got;
+    ref::Hull2Stats st;
+    try {
+      got = cpu_hull(ps, threads, sample, chunk, &st);
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("cpu threw: ") + e.what(), describe(ps));
+    }
+    if (got != answer)
+      fail(kTarget, "cpu (" + std::to_string(threads) + " threads) differs from " + answer_from,
+           describe(ps) + "cpu " + describe(got) + "\n" + answer_from + " " + describe(answer));
+    if (st.discarded_early + st.polygon_vertices != n || st.polygon_vertices - st.flips_2_1 != got.size())
+      fail(kTarget, "cpu: counters break their lemmas", describe(ps));
   }
   return true;
 }

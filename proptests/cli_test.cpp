@@ -233,6 +233,32 @@ TEST_CASE("cli: computed answers round-trip through certify --canonical", "[cli]
   }
 }
 
+namespace {
+// `kind IN` with the cpu backend (by default and named, at 1, 2, 8 threads)
+// writes the bytes of --backend reference; each of `bad` exits 2 with one line.
+void check_cpu_backend(TempDir& t, const std::string& kind, const fs::path& in, const std::vector<std::string>& bad) {
+  const fs::path ref_out = t.dir / "ref.txt";
+  REQUIRE(run(t, kind + " " + in.string() + " --backend reference -o " + ref_out.string()).code == 0);
+  const std::string expect = slurp(ref_out);
+  REQUIRE(!expect.empty());
+  for (const char* opts : {"", "--backend cpu", "--backend cpu --threads 1", "--threads 2", "--threads 8"}) {
+    const fs::path out = t.dir / "cpu.txt";
+    const Run r = run(t, kind + " " + in.string() + " " + opts + " -o " + out.string());
+    INFO(opts << ": " << r.err);
+    REQUIRE(r.code == 0);
+    CHECK(slurp(out) == expect);
+  }
+  const Run s = run(t, kind + " " + in.string() + " --threads 2 --stats -o " + (t.dir / "x.txt").string());
+  CHECK(s.err.find("backend cpu (2 threads)") != std::string::npos);
+  for (const std::string& b : bad) {
+    const Run r = run(t, kind + " " + in.string() + " " + b);
+    INFO(b << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+  }
+}
+}  // namespace
+
 TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; bad options get one line",
           "[cli]") {
   TempDir t;
@@ -240,30 +266,12 @@ TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; ba
   for (int x = 0; x < 6; ++x)
     for (int y = 0; y < 6; ++y)
       for (int z = 0; z < 6; ++z) grid += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
-  const fs::path in = t.file("grid.xyz", grid);
-  const fs::path ref_out = t.dir / "ref.txt";
-  REQUIRE(run(t, "hull3 " + in.string() + " --backend reference -o " + ref_out.string()).code == 0);
-  const std::string expect = slurp(ref_out);
-  REQUIRE(!expect.empty());
-  for (const char* opts : {"", "--backend cpu", "--backend cpu --threads 1", "--threads 2", "--threads 8"}) {
-    const fs::path out = t.dir / "cpu.txt";
-    const Run r = run(t, "hull3 " + in.string() + " " + opts + " -o " + out.string());
-    INFO(opts << ": " << r.err);
-    REQUIRE(r.code == 0);
-    CHECK(slurp(out) == expect);
-  }
-  const Run s = run(t, "hull3 " + in.string() + " --threads 2 --stats -o " + (t.dir / "x.txt").string());
-  CHECK(s.err.find("backend cpu (2 threads)") != std::string::npos);
-  for (const char* bad : {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo splay",
-                          "--backend reference --threads 2", "--algo twist-flip --threads 2"}) {
-    const Run r = run(t, "hull3 " + in.string() + " " + bad);
-    INFO(bad << ": " << r.err);
-    CHECK(r.code == 2);
-    CHECK(lines(r.err) == 1);
-  }
-  // the cpu backend exists for hull3 only
+  check_cpu_backend(t, "hull3", t.file("grid.xyz", grid),
+                    {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo splay",
+                     "--backend reference --threads 2", "--algo twist-flip --threads 2"});
+  // no cpu backend for the triangulations
   const fs::path p2 = t.file("ok2.xyz", "0 0\n1 0\n0 1\n");
-  const Run r = run(t, "hull2 " + p2.string() + " --backend cpu");
+  const Run r = run(t, "dt2 " + p2.string() + " --backend cpu");
   CHECK(r.code == 2);
   CHECK(lines(r.err) == 1);
 }
@@ -338,4 +346,25 @@ TEST_CASE("cli: dt2/rt2 --strict on a 12x12 grid: CGAL's 242 triangles, no zero-
   Run refused = run(t, "hull2 " + in.string() + " --strict");
   CHECK(refused.code == 2);
   CHECK(lines(refused.err) == 1);
+}
+
+TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes; bad options and collinear input "
+          "get one line",
+          "[cli]") {
+  TempDir t;
+  std::string grid;  // a 40x40 lattice (enough points for the throw-away): many collinear hull points
+  for (int x = 0; x < 40; ++x)
+    for (int y = 0; y < 40; ++y) grid += std::to_string(x) + " " + std::to_string(y) + "\n";
+  check_cpu_backend(t, "hull2", t.file("grid2.xyz", grid),
+                    {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo twist",
+                     "--backend reference --threads 2", "--algo graham-insert --threads 2"});
+  std::string line;  // 2000 collinear points
+  for (int i = 0; i < 2000; ++i) line += std::to_string(i) + " " + std::to_string(2 * i + 1) + "\n";
+  const fs::path flat = t.file("line.xyz", line);
+  for (const char* backend : {"cpu", "reference"}) {
+    const Run r = run(t, "hull2 " + flat.string() + " --backend " + backend);
+    INFO(backend << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+  }
 }

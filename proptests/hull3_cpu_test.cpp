@@ -20,9 +20,9 @@
 #include <string>
 
 #include "gen/generate.hpp"
-#include "io/index_io.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -34,22 +34,8 @@ namespace {
 
 constexpr int kThreads[] = {1, 2, 8};
 
-// The canonical text a backend writes (io::write_triangles).
-std::string text(const std::vector<Triangle>& tris) {
-  std::ostringstream os;
-  io::write_triangles(os, tris);
-  return os.str();
-}
-
-// The output text, or "error: <message>" when the algorithm rejects the input.
-template <class F>
-std::string outcome(F&& f) {
-  try {
-    return text(f());
-  } catch (const std::invalid_argument& e) {
-    return std::string("error: ") + e.what();
-  }
-}
+using test::is_error;
+using test::outcome;
 
 std::string cpu_text(const PointSet& ps, int threads, ref::Hull3Stats* st = nullptr) {
   cpu::Hull3Options o;
@@ -69,7 +55,7 @@ std::string check_rc(const PointSet& ps) {
     ref::Hull3Stats st;
     const std::string got = cpu_text(ps, t, &st);
     RC_ASSERT(got == expect);
-    if (expect.rfind("error: ", 0) != 0) {
+    if (!is_error(expect)) {
       RC_ASSERT(st.insertions == st.flips_1_3);
       RC_ASSERT(st.insertions + st.discarded_early + 4 == ps.size());
     }
@@ -84,7 +70,7 @@ TEST_CASE("hull3 cpu: degenerate and random small sets equal the reference at 1,
   test::prop_scaled("degenerate sets of 4..60 points: cpu == reference byte for byte, certified", 4, [] {
     const PointSet ps = *test::degenerate_points(3, 4, 60, false);
     const std::string expect = check_rc(ps);
-    if (expect.rfind("error: ", 0) != 0)
+    if (!is_error(expect))
       RC_ASSERT(certify::hull3(ps, cpu::hull3_ffhull(ps), certify::Level::canonical).ok);
   });
 }
@@ -108,7 +94,7 @@ TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread co
         const PointSet ps = gen::generate(fam, n, o);
         INFO(fam << " n=" << n << " seed=" << seed);
         const std::string expect = ref_text(ps);
-        if (expect.rfind("error: ", 0) == 0) {
+        if (is_error(expect)) {
           ++rejected;
           REQUIRE(!dimension_problem(ps).empty());
         }
@@ -144,10 +130,10 @@ TEST_CASE("hull3 cpu: input that does not span R^3 is rejected like the referenc
   ps.dim = 3;
   ps.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0};  // coplanar
   REQUIRE(cpu_text(ps, 2) == ref_text(ps));
-  REQUIRE(cpu_text(ps, 2).rfind("error: ", 0) == 0);
+  REQUIRE(is_error(cpu_text(ps, 2)));
   ps.coords.resize(9);  // three points
   REQUIRE(cpu_text(ps, 1) == ref_text(ps));
-  REQUIRE(cpu_text(ps, 1).rfind("error: ", 0) == 0);
+  REQUIRE(is_error(cpu_text(ps, 1)));
   cpu::Hull3Options bad;
   bad.threads = -1;
   REQUIRE_THROWS_AS(cpu::hull3_ffhull(ps, bad), std::invalid_argument);

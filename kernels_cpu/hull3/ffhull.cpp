@@ -3,21 +3,16 @@
 // is documented in ffhull.hpp.
 #include "kernels_cpu/hull3/ffhull.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <deque>
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "kernels_cpu/parallel.hpp"
 #include "kernels_cpu/tsan.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
@@ -35,100 +30,6 @@ namespace {
 using pred::PointId;
 using pred::Pt;
 using pred::StaticFilter;
-
-constexpr std::uint32_t kNone = ~std::uint32_t{0};
-constexpr std::size_t kChunk = std::size_t{1} << 13;  // points per work unit
-
-// tbb::parallel_for over [0, n) in blocks, body(lo, hi); the fork/join edges
-// are declared to ThreadSanitizer (kernels_cpu/tsan.hpp).
-template <class Body>
-void par_for(std::size_t n, std::size_t grain, const Body& body) {
-  if (n == 0) return;
-  tsan::ForkJoin fj;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
-    fj.task_begin();
-    body(r.begin(), r.end());
-    fj.task_end();
-  });
-  fj.joined();
-}
-
-// ---- deterministic parallel arg-max ------------------------------------------
-// A candidate (key, index); the larger key wins, equal keys the smaller index,
-// NaN keys count as -inf. A strict total order, so the result does not depend
-// on how the range is split: fixed chunks, each reduced by one task, then the
-// chunk results combined in order.
-struct Best {
-  double key = -HUGE_VAL;
-  Index i = kNone;
-};
-inline bool better(double key, Index i, const Best& b) {
-  if (std::isnan(key)) key = -HUGE_VAL;
-  if (b.i == kNone) return true;
-  return key > b.key || (key == b.key && i < b.i);
-}
-template <class Key>
-Index par_argmax(std::size_t n, const Key& key) {
-  const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<Best> part(chunks);
-  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t c = lo; c < hi; ++c) {
-      Best b;
-      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
-        const double k = key(static_cast<Index>(p));
-        if (better(k, static_cast<Index>(p), b)) b = {std::isnan(k) ? -HUGE_VAL : k, static_cast<Index>(p)};
-      }
-      part[c] = b;
-    }
-  });
-  Best b;
-  for (const Best& c : part)
-    if (c.i != kNone && better(c.key, c.i, b)) b = c;
-  return b.i;
-}
-
-// ---- the per-input static filter, scanned in parallel -------------------------
-// StaticFilter::for_points depends only on the largest magnitude, the lowest
-// set bit over all values and whether all are finite; so it is computed on a
-// few representatives (per chunk: the value of largest magnitude, the value of
-// lowest bit, a non-finite value if any) plus the extra points given.
-int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple of 2^result
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  const int e = static_cast<int>((b >> 52) & 0x7ff);
-  std::uint64_t m = b & ((std::uint64_t{1} << 52) - 1);
-  if (e == 0) return -1074 + __builtin_ctzll(m);  // subnormal
-  m |= std::uint64_t{1} << 52;
-  return e - 1075 + __builtin_ctzll(m);
-}
-
-StaticFilter parallel_static_filter(const PointSet& ps, const std::vector<double>& extra) {
-  const std::size_t m = ps.coords.size();
-  const std::size_t chunks = (m + kChunk - 1) / kChunk;
-  std::vector<double> reps(chunks * 3, 0.0);
-  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t c = lo; c < hi; ++c) {
-      double big = 0.0, low = 0.0, bad = 0.0;
-      int low_e = std::numeric_limits<int>::max();
-      for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
-        const double x = ps.coords[i];
-        if (!std::isfinite(x)) {
-          bad = x;
-          continue;
-        }
-        if (std::fabs(x) > std::fabs(big)) big = x;
-        if (x != 0.0) {
-          const int e = low_bit_exponent(x);
-          if (e < low_e) low_e = e, low = x;
-        }
-      }
-      reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
-    }
-  });
-  reps.insert(reps.end(), extra.begin(), extra.end());
-  while (reps.size() % 3) reps.push_back(0.0);
-  return StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
-}
 
 // orient3d under SoS, static filter first (inline), then the staged predicate.
 inline int orient(const StaticFilter& f, PointId ia, const double* a, PointId ib, const double* b, PointId ic,
@@ -724,8 +625,9 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st) {
   bool inside = std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]);
   for (const Triangle& F : faces)
     inside = inside && pred::orient3d_exact(ps.point(F[0]), ps.point(F[1]), ps.point(F[2]), s.data()) > 0;
-  const StaticFilter f = parallel_static_filter(ps, inside ? std::vector<double>(s.begin(), s.end())
-                                                           : std::vector<double>{});
+  const StaticFilter f =
+      parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
+                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
   if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
@@ -738,15 +640,7 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, 
   ref::Hull3Stats st;
   std::vector<Triangle> out;
   if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
-  if (opt.threads == 0) {
-    out = compute(ps, st);
-  } else {
-    // exactly `threads` threads, also more than the machine's cores (TBB caps
-    // its worker pool at the core count unless told otherwise)
-    tbb::global_control allow(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(opt.threads));
-    tbb::task_arena arena(opt.threads);
-    arena.execute([&] { out = compute(ps, st); });
-  }
+  with_threads(opt.threads, [&] { out = compute(ps, st); });
   if (stats) *stats = st;
   return out;
 }

@@ -9,7 +9,8 @@
 // algorithm and backend present (the property letters are those of issue 6):
 //
 //   hull2_canonical  (a)(b) every ref::hull2 algorithm (twist only up to 300
-//                    points: Θ(n^2)) and brute::hull2 (n <= 40) return
+//                    points: Θ(n^2)), the cpu backend (kernels_cpu/hull2)
+//                    and brute::hull2 (n <= 40) return
 //                    byte-identical canonical text, certified at
 //                    Level::canonical; CGAL's hulls are certified at
 //                    Level::exact (a peer is not SoS-canonical). Input that
@@ -139,7 +140,8 @@
 #include "reference/hull3/initial_stars.hpp"
 #include "reference/hull3/rational_kernel.hpp"
 #include "reference/hull3/twist_flip.hpp"
-// the multithreaded ffHull (kernels_cpu/hull3, linked through flipflop_all)
+// the multithreaded hulls (kernels_cpu/hull2, kernels_cpu/hull3, linked through flipflop_all)
+#include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #endif
 #ifdef FLIPFLOP_TEST_HAVE_RTD
@@ -346,12 +348,22 @@ inline constexpr std::size_t kTwistMax = 300;      // twist is Θ(n^2)
 inline constexpr std::size_t kBruteHull2Max = 40;  // brute::hull2 is O(n^3)
 
 // Every reference 2D hull algorithm (ref::hull2_algorithms(): new ones join
-// automatically), and brute::hull2 for small n.
+// automatically), the cpu backend (kernels_cpu/hull2, 2 threads, its
+// throw-away forced with a 16-point sample and flip-pop chunks of 3 so that
+// small inputs reach every stage) and brute::hull2 for small n.
 inline std::vector<Hull2Algorithm> hull2_algorithms(std::size_t n) {
   std::vector<Hull2Algorithm> out;
   for (const std::string& name : ref::hull2_algorithms())
     if (name != "twist" || n <= kTwistMax)
       out.push_back({name, [name](const PointSet& ps, ref::Hull2Stats* st) { return ref::hull2(ps, name, st); }});
+  out.push_back({"cpu", [](const PointSet& ps, ref::Hull2Stats* st) {
+                   cpu::Hull2Options o;
+                   o.threads = 2;
+                   o.throw_away_from = 0;
+                   o.sample = 16;
+                   o.scan_chunk = 3;
+                   return cpu::hull2_graham_sort(ps, o, st);
+                 }});
   if (n <= kBruteHull2Max)
     out.push_back({"brute", [](const PointSet& ps, ref::Hull2Stats*) { return brute::hull2(ps); }});
   return out;
@@ -460,6 +472,9 @@ inline Outcome hull2_counts(const PointSet& ps, const Params& p) {
                      << st.polygon_vertices);
     if (a.name == "graham-sort" || a.name == "twist")
       FF_EXPECT(st.polygon_vertices == n, a.name << ": polygon of " << st.polygon_vertices << " of " << n << " points");
+    if (a.name == "cpu")  // every point is thrown away or goes into the chains' polygon
+      FF_EXPECT(st.discarded_early + st.polygon_vertices == n,
+                "cpu: discarded " << st.discarded_early << " + polygon " << st.polygon_vertices << " != " << n);
     if (a.name == "graham-insert") {
       FF_EXPECT(st.insertions + st.discarded_early + 2 == n,
                 "graham-insert: inserted " << st.insertions << " + dropped " << st.discarded_early << " + 2 != " << n);

@@ -38,10 +38,16 @@
 // Level::canonical.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "reference/point_set.hpp"
+
+namespace flipflop::pred {
+class StaticFilter;
+}
 
 namespace flipflop::certify {
 
@@ -61,6 +67,19 @@ struct Report {
 
 // 2D hull: vertex indices in counter-clockwise order.
 Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level = Level::exact);
+
+// Ways to certify faster that never change the verdict or its message (the
+// multithreaded backends pass them, kernels_cpu/hull2/certify_hull2.hpp):
+//   filter     a per-input static filter valid for every coordinate of ps
+//              (predicates/static_filter.hpp), tried before every predicate;
+//   for_range  runs body(lo, hi) over pieces covering [0, n), in any order,
+//              possibly at once; the per-point checks run through it (the
+//              first failing point, in index order, is still the one reported).
+struct Speedups {
+  const pred::StaticFilter* filter = nullptr;
+  std::function<void(std::size_t n, const std::function<void(std::size_t lo, std::size_t hi)>& body)> for_range;
+};
+Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, const Speedups& speedups);
 
 // 3D hull: triangles counter-clockwise seen from outside.
 Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);

@@ -11,16 +11,25 @@
 //   winds-once        the edge directions turn through exactly 2π
 //   point-inside      every point is on the inner side of (or on) the edge of
 //                     the fan sector that contains it; canonical: strictly
-//                     inside for every point that is not a vertex
+//                     inside for every point that is not a vertex. The sector
+//                     is guessed from a pseudo-angle bucket table and the
+//                     guess verified exactly (the two rays around p); only an
+//                     unverified guess costs the exact binary search. The
+//                     points may be checked in parallel (Speedups): the
+//                     smallest failing index is reported either way.
 // A polygon with convex turns that winds once is convex; with all points on
 // the inner side of its edges its vertices span conv(S), so every extreme
 // point is a vertex and every vertex lies on the boundary.
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/dimension.hpp"
+#include "reference/pseudo_angle.hpp"
 
 namespace flipflop::certify {
 
@@ -31,11 +40,17 @@ using detail::edge_str;
 struct Hull2Checker {
   const PointSet& ps;
   bool canonical;
+  const pred::StaticFilter* filter = nullptr;
 
   const double* P(Index i) const { return ps.point(i); }
   bool same_location(Index a, Index b) const { return P(a)[0] == P(b)[0] && P(a)[1] == P(b)[1]; }
-  // orientation used for the geometric conditions
+  // orientation used for the geometric conditions (the static filter decides
+  // only non-zero exact signs, which the perturbation keeps)
   int orient(Index a, Index b, Index c) const {
+    if (filter) {
+      const double* p[3] = {P(a), P(b), P(c)};
+      if (int s = pred::static_sign<3>(*filter, p, nullptr)) return s;
+    }
     return canonical ? pred::orient2d({a, P(a)}, {b, P(b)}, {c, P(c)})
                      : pred::orient2d_exact(P(a), P(b), P(c));
   }
@@ -51,11 +66,15 @@ struct Hull2Checker {
 }  // namespace
 
 Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level) {
+  return hull2(ps, cycle, level, Speedups{});
+}
+
+Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, const Speedups& speedups) {
   if (ps.dim != 2) return Report::fail("input-dimension", "hull2 needs 2D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
   const bool canonical = level == Level::canonical;
-  Hull2Checker ck{ps, canonical};
+  Hull2Checker ck{ps, canonical, speedups.filter};
 
   // vertex-indices
   if (cycle.size() < 3)
@@ -122,25 +141,81 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level) {
   }
   const std::size_t mc = L.size();
   const Index v0 = L[0];
-  for (Index p = 0; p < n; ++p) {
-    if (is_vertex[p]) continue;
-    auto outside = [&](Index a, Index b) {
-      return Report::fail("point-inside", "point " + std::to_string(p) + (canonical ? " is not strictly inside" : " lies strictly outside") +
-                                              " edge " + edge_str(a, b) +
-                                              (canonical ? " under the perturbation" : ""));
-    };
-    const int strict = canonical ? 0 : -1;  // smallest accepted orientation is strict+1
-    if (ck.orient(v0, L[1], p) <= strict) return outside(v0, L[1]);
-    if (-ck.orient(v0, L[mc - 1], p) <= strict) return outside(L[mc - 1], v0);
-    std::size_t lo = 1, hi = mc - 2;  // largest k in [1, m-2] with orient(v0, L[k], p) >= 0
-    while (lo < hi) {
-      std::size_t mid = (lo + hi + 1) / 2;
-      if (ck.orient(v0, L[mid], p) >= 0)
-        lo = mid;
-      else
-        hi = mid - 1;
+  const int strict = canonical ? 0 : -1;  // smallest accepted orientation is strict+1
+  // The sector of p: the largest k in [1, mc-2] with orient(v0, L[k], p) >= 0.
+  // First a guess from floating point, accepted when exactly
+  // orient(v0, L[k], p) >= 0 and (k = mc-2 or orient(v0, L[k+1], p) < 0): by
+  // the monotonicity of the fan rays that k is the exact search's answer, run
+  // only when the guess fails. The guess: the rays' pseudo-angles around v0
+  // measured from the first ray (increasing along the fan, which spans less
+  // than a half-turn) and a table of 4 mc buckets over them.
+  const double* o = ck.P(v0);
+  const double first_ray = pseudo_angle(ck.P(L[1])[0] - o[0], ck.P(L[1])[1] - o[1]);
+  auto turn = [&](Index q) {
+    const double a = pseudo_angle(ck.P(q)[0] - o[0], ck.P(q)[1] - o[1]) - first_ray;
+    return a < 0 ? a + 4 : a;
+  };
+  std::vector<double> ang(mc, 0.0);
+  bool table = true;
+  for (std::size_t k = 2; k < mc; ++k) {
+    ang[k] = turn(L[k]);
+    table = table && ang[k] > ang[k - 1] && ang[k] < 4;  // false also on NaN (overflow)
+  }
+  const std::size_t buckets = 4 * mc;
+  const double scale = table ? static_cast<double>(buckets) / ang[mc - 1] : 0.0;
+  table = table && std::isfinite(scale);  // a subnormal fan angle overflows the scale: no table
+  std::vector<std::size_t> bucket_first(table ? buckets : 0);
+  for (std::size_t b = 0; b < bucket_first.size(); ++b) {
+    const auto it = std::upper_bound(ang.begin() + 1, ang.begin() + static_cast<long>(mc - 1),
+                                     static_cast<double>(b) / scale);
+    bucket_first[b] = std::max<std::size_t>(1, static_cast<std::size_t>(it - ang.begin()) - 1);
+  }
+  auto sector = [&](Index p) {
+    std::size_t k = 1;
+    const double a = table ? turn(p) : -1.0;
+    if (a >= 0 && a <= ang[mc - 1]) {
+      const double x = a * scale;  // in [0, buckets], compared before the conversion
+      k = bucket_first[x < static_cast<double>(buckets) ? static_cast<std::size_t>(x) : buckets - 1];
+      while (k < mc - 2 && ang[k + 1] <= a) ++k;
     }
-    if (ck.orient(L[lo], L[lo + 1], p) <= strict) return outside(L[lo], L[lo + 1]);
+    if (ck.orient(v0, L[k], p) >= 0 && (k == mc - 2 || ck.orient(v0, L[k + 1], p) < 0)) return k;
+    std::size_t lo = 1, hi = mc - 2;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi + 1) / 2;
+      if (ck.orient(v0, L[mid], p) >= 0) lo = mid;
+      else hi = mid - 1;
+    }
+    return lo;
+  };
+  // The edge p is not inside (ea -> eb), or false when p passes.
+  auto fails = [&](Index p, Index& ea, Index& eb) {
+    if (ck.orient(v0, L[1], p) <= strict) return ea = v0, eb = L[1], true;
+    if (-ck.orient(v0, L[mc - 1], p) <= strict) return ea = L[mc - 1], eb = v0, true;
+    const std::size_t k = sector(p);
+    if (ck.orient(L[k], L[k + 1], p) <= strict) return ea = L[k], eb = L[k + 1], true;
+    return false;
+  };
+  std::atomic<Index> first_bad{static_cast<Index>(n)};
+  auto check_range = [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      const auto p = static_cast<Index>(i);
+      if (p >= first_bad.load(std::memory_order_relaxed)) return;  // a smaller failure is known
+      Index a, b;
+      if (is_vertex[p] || !fails(p, a, b)) continue;
+      Index cur = first_bad.load();
+      while (p < cur && !first_bad.compare_exchange_weak(cur, p)) {
+      }
+      return;
+    }
+  };
+  if (speedups.for_range) speedups.for_range(n, check_range);
+  else check_range(0, n);
+  if (const Index p = first_bad.load(); p < n) {
+    Index a = 0, b = 0;
+    fails(p, a, b);
+    return Report::fail("point-inside", "point " + std::to_string(p) +
+                                            (canonical ? " is not strictly inside" : " lies strictly outside") +
+                                            " edge " + edge_str(a, b) + (canonical ? " under the perturbation" : ""));
   }
   return Report::pass();
 }

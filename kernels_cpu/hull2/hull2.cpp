@@ -1,0 +1,78 @@
+// hull2.cpp — the multithreaded 2D hull: throw-away, then parallel Graham-
+// sorting with chunked flip-pop (hull2.hpp).
+#include "kernels_cpu/hull2/hull2.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "kernels_cpu/hull2/graham_sorting.hpp"
+#include "kernels_cpu/hull2/throw_away.hpp"
+#include "kernels_cpu/parallel.hpp"
+#include "predicates/predicates.hpp"
+
+namespace flipflop::cpu {
+
+namespace {
+
+// the reference's name of the algorithm computed (ref::hull2_graham_sort), so
+// that rejected input gets the reference's message
+constexpr const char* kWho = "hull2 graham-sort";
+
+// Some three points of `cycle` are not collinear (exactly). The cycle holds
+// every extreme point of the input, so this fails only when the whole input
+// lies on one line.
+bool spans_plane(const PointSet& ps, const std::vector<Index>& cycle) {
+  const double* a = ps.point(cycle[0]);
+  const double* b = nullptr;
+  for (Index v : cycle) {
+    const double* q = ps.point(v);
+    if (!b) {
+      if (q[0] != a[0] || q[1] != a[1]) b = q;
+    } else if (pred::orient2d_exact(a, b, q) != 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats& st) {
+  const hull2::ThrowAwayResult kept = hull2::throw_away(ps, opt.throw_away_from, opt.sample);  // 1.
+  const std::vector<Index>& idx = kept.survivors;
+  std::vector<hull2::Pt2> pts(idx.size());
+  par_for(idx.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t k = lo; k < hi; ++k) pts[k] = {ps.point(idx[k])[0], ps.point(idx[k])[1], idx[k]};
+  });
+  hull2::ScanCounts counts;
+  const pred::StaticFilter f = hull2::static_filter_of(pts);
+  std::vector<Index> cycle = hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts);  // 2.
+  // a strictly interior point exists only when the input spans the plane
+  if (idx.size() == ps.size() && !spans_plane(ps, cycle)) {
+    ref::require_planar_input(ps, kWho);  // throws the reference's message
+    throw std::logic_error(std::string(kWho) + ": collinear hull of an input that spans the plane");
+  }
+  st.input_vertices = ps.size();
+  st.discarded_early = ps.size() - idx.size();
+  st.polygon_vertices = idx.size();
+  st.flips_2_1 = counts.flips_2_1;
+  st.rounds = counts.passes;
+  st.hull_vertices = cycle.size();
+  return ref::rotate_to_smallest(std::move(cycle));
+}
+
+}  // namespace
+
+std::vector<Index> hull2_graham_sort(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats* stats) {
+  if (opt.threads < 0) throw std::invalid_argument("hull2 (cpu): the number of threads must be positive");
+  if (ps.dim != 2 || ps.size() < 3) {
+    ref::require_planar_input(ps, kWho);  // throws the reference's message
+    throw std::invalid_argument(std::string(kWho) + ": at least 3 points in 2D are needed");
+  }
+  if (ps.size() >= kNone / 2) throw std::invalid_argument(std::string(kWho) + ": too many points for 32-bit indices");
+  ref::Hull2Stats st;
+  std::vector<Index> out;
+  with_threads(opt.threads, [&] { out = compute(ps, opt, st); });
+  if (stats) *stats = st;
+  return out;
+}
+
+}  // namespace flipflop::cpu

@@ -1,0 +1,202 @@
+// parallel.hpp — the data-parallel steps the multithreaded kernels share
+// (kernels_cpu/hull2, kernels_cpu/hull3), written once on oneTBB:
+//
+//   with_threads            run f() on exactly `threads` threads (0: the
+//                           runtime's default);
+//   par_for                 tbb::parallel_for over [0, n) in blocks, fork/join
+//                           declared to ThreadSanitizer (tsan.hpp);
+//   par_argmax              deterministic arg-max (a strict total order on
+//                           (key, index), so the answer does not depend on how
+//                           the range is split or on the thread count);
+//   par_sort                sort by a strict total order (chunks sorted in
+//                           parallel, then merged pairwise in parallel
+//                           rounds): the result is unique, so it does not
+//                           depend on the thread count;
+//   par_select              the indices i of [0, n) with keep(i), in increasing
+//                           order (fixed chunks, each filtered by one task,
+//                           then concatenated in chunk order);
+//   parallel_static_filter  the per-input static filter of
+//                           predicates/static_filter.hpp from a parallel scan.
+#pragma once
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "kernels_cpu/tsan.hpp"
+#include "predicates/static_filter.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::cpu {
+
+constexpr std::uint32_t kNone = ~std::uint32_t{0};
+constexpr std::size_t kChunk = std::size_t{1} << 13;  // points per work unit
+
+// f() inside a task arena of exactly `threads` threads, also more than the
+// machine's cores (TBB caps its worker pool at the core count unless told
+// otherwise); threads == 0: the runtime's default.
+template <class F>
+void with_threads(int threads, const F& f) {
+  if (threads <= 0) {
+    f();
+    return;
+  }
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  tbb::task_arena arena(threads);
+  arena.execute([&] { f(); });
+}
+
+// tbb::parallel_for over [0, n) in blocks, body(lo, hi); the fork/join edges
+// are declared to ThreadSanitizer (kernels_cpu/tsan.hpp).
+template <class Body>
+void par_for(std::size_t n, std::size_t grain, const Body& body) {
+  if (n == 0) return;
+  tsan::ForkJoin fj;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+    fj.task_begin();
+    body(r.begin(), r.end());
+    fj.task_end();
+  });
+  fj.joined();
+}
+
+// ---- deterministic parallel arg-max ------------------------------------------
+// A candidate (key, index); the larger key wins, equal keys the smaller index,
+// NaN keys count as -inf. A strict total order, so the result does not depend
+// on how the range is split: fixed chunks, each reduced by one task, then the
+// chunk results combined in order.
+struct Best {
+  double key = -HUGE_VAL;
+  Index i = kNone;
+};
+inline bool better(double key, Index i, const Best& b) {
+  if (std::isnan(key)) key = -HUGE_VAL;
+  if (b.i == kNone) return true;
+  return key > b.key || (key == b.key && i < b.i);
+}
+template <class Key>
+Index par_argmax(std::size_t n, const Key& key) {
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<Best> part(chunks);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c) {
+      Best b;
+      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
+        const double k = key(static_cast<Index>(p));
+        if (better(k, static_cast<Index>(p), b)) b = {std::isnan(k) ? -HUGE_VAL : k, static_cast<Index>(p)};
+      }
+      part[c] = b;
+    }
+  });
+  Best b;
+  for (const Best& c : part)
+    if (c.i != kNone && better(c.key, c.i, b)) b = c;
+  return b.i;
+}
+
+// ---- parallel sort -------------------------------------------------------------
+// Chunks of kChunk elements sorted by one task each (std::sort), then rounds
+// of pairwise merges of neighbouring runs (std::merge, one task per pair).
+// Written with par_for rather than tbb::parallel_sort so that every hand-off
+// is a fork/join declared to ThreadSanitizer. `less` must be a strict total
+// order on the elements (no two equivalent), which makes the result unique.
+template <class T, class Less>
+void par_sort(std::vector<T>& v, const Less& less) {
+  const std::size_t n = v.size();
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c)
+      std::sort(v.begin() + static_cast<std::ptrdiff_t>(c * kChunk),
+                v.begin() + static_cast<std::ptrdiff_t>(std::min(n, (c + 1) * kChunk)), less);
+  });
+  if (chunks <= 1) return;
+  std::vector<T> out(n);
+  for (std::size_t width = kChunk; width < n; width *= 2) {
+    const std::size_t pairs = (n + 2 * width - 1) / (2 * width);
+    par_for(pairs, 1, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t p = lo; p < hi; ++p) {
+        const std::size_t a = p * 2 * width, m = std::min(n, a + width), e = std::min(n, a + 2 * width);
+        std::merge(v.begin() + static_cast<std::ptrdiff_t>(a), v.begin() + static_cast<std::ptrdiff_t>(m),
+                   v.begin() + static_cast<std::ptrdiff_t>(m), v.begin() + static_cast<std::ptrdiff_t>(e),
+                   out.begin() + static_cast<std::ptrdiff_t>(a), less);
+      }
+    });
+    v.swap(out);
+  }
+}
+
+// ---- deterministic parallel selection ----------------------------------------
+// The i in [0, n) with keep(i), increasing. Chunks of kChunk are filtered by
+// one task each into their own buffer, the buffers concatenated in order: the
+// result is the sequential filter's, whatever the thread count.
+template <class Keep>
+std::vector<Index> par_select(std::size_t n, const Keep& keep) {
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<Index>> part(chunks);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c)
+      for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
+        if (keep(static_cast<Index>(i))) part[c].push_back(static_cast<Index>(i));
+  });
+  std::size_t total = 0;
+  for (const auto& p : part) total += p.size();
+  std::vector<Index> out;
+  out.reserve(total);
+  for (const auto& p : part) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+// ---- the per-input static filter, scanned in parallel -------------------------
+// StaticFilter::for_points over the m values value(0..m) and `extra`, as if
+// they were one input: it depends only on the largest magnitude, the lowest
+// set bit over all values and whether all are finite, so it is computed on a
+// few representatives (per chunk: the value of largest magnitude, the value of
+// lowest bit, a non-finite value if any) plus the extra values given.
+inline int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple of 2^result
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  const int e = static_cast<int>((b >> 52) & 0x7ff);
+  std::uint64_t m = b & ((std::uint64_t{1} << 52) - 1);
+  if (e == 0) return -1074 + __builtin_ctzll(m);  // subnormal
+  m |= std::uint64_t{1} << 52;
+  return e - 1075 + __builtin_ctzll(m);
+}
+
+template <class Value>
+pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra) {
+  const std::size_t chunks = (m + kChunk - 1) / kChunk;
+  std::vector<double> reps(chunks * 3, 0.0);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c) {
+      double big = 0.0, low = 0.0, bad = 0.0;
+      int low_e = std::numeric_limits<int>::max();
+      for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
+        const double x = value(i);
+        if (!std::isfinite(x)) {
+          bad = x;
+          continue;
+        }
+        if (std::fabs(x) > std::fabs(big)) big = x;
+        if (x != 0.0) {
+          const int e = low_bit_exponent(x);
+          if (e < low_e) low_e = e, low = x;
+        }
+      }
+      reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
+    }
+  });
+  reps.insert(reps.end(), extra.begin(), extra.end());
+  while (reps.size() % 3) reps.push_back(0.0);
+  return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
+}
+
+}  // namespace flipflop::cpu
