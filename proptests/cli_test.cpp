@@ -255,7 +255,7 @@ void check_cpu_backend(TempDir& t, const std::string& kind, const fs::path& in, 
 }
 }  // namespace
 
-TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; bad options get one line",
+TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes, bad options get one line",
           "[cli]") {
   TempDir t;
   std::string grid;  // a 6x6x6 lattice: heavily degenerate (coplanar faces with many points)
@@ -272,7 +272,7 @@ TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; ba
   CHECK(lines(r.err) == 1);
 }
 
-TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes; bad options and collinear input "
+TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, bad options and collinear input "
           "get one line",
           "[cli]") {
   TempDir t;
