@@ -259,7 +259,7 @@ void check_cpu_backend(TempDir& t, const std::string& kind, const fs::path& in, 
 }
 }  // namespace
 
-TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes; bad options get one line",
+TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes, bad options get one line",
           "[cli]") {
   TempDir t;
   std::string grid;  // a 6x6x6 lattice: heavily degenerate (coplanar faces with many points)
@@ -348,7 +348,7 @@ TEST_CASE("cli: dt2/rt2 --strict on a 12x12 grid: CGAL's 242 triangles, no zero-
   CHECK(lines(refused.err) == 1);
 }
 
-TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes; bad options and collinear input "
+TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, bad options and collinear input "
           "get one line",
           "[cli]") {
   TempDir t;
