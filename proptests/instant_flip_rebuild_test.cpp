@@ -101,7 +101,7 @@ TEST_CASE("instant flip: many vertices become redundant under U", "[instant_flip
   CHECK(full.redundant.size() > 10);
 }
 
-TEST_CASE("instant flip: W = U changes nothing; reversed run returns", "[instant_flip]") {
+TEST_CASE("instant flip: W = U changes nothing, and the reversed run returns", "[instant_flip]") {
   for (int d = 2; d <= 5; ++d) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(100 + d));
     const std::size_t n = d == 2 ? 80 : (d == 3 ? 40 : 20);

@@ -627,7 +627,7 @@ TEST_CASE("canonical_hull2: starts at the smallest index, a rotation of the inpu
   });
 }
 
-TEST_CASE("index files: write then read is the identity; the format is plain") {
+TEST_CASE("index files: write then read is the identity, and the format is plain") {
   TempDir t;
   const std::string tp = t.path("t.txt"), hp = t.path("h.txt");
   rc::prop("triangles and cycles round trip", [&] {
