@@ -27,7 +27,7 @@ __version__: str = _flipflop.__version__
 __all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "generate", "distributions",
            "__version__"]
 
-_HULL_BACKENDS = {2: ("reference",), 3: ("cpu", "reference")}
+_HULL_BACKENDS = {2: ("cpu", "reference"), 3: ("cpu", "reference")}
 _DELAUNAY_BACKENDS = ("reference",)
 
 
@@ -101,7 +101,7 @@ class ConvexHull:
         if d == 2:
             if strict:
                 raise ValueError("ConvexHull: strict=True applies to 3D hulls")
-            cycle = _flipflop.hull2(a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"))
+            cycle = _flipflop.hull2(a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"), int(threads))
             self.vertices = cycle
             self.simplices = np.stack([cycle, np.roll(cycle, -1)], axis=1)
         elif strict:

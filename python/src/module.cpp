@@ -30,6 +30,8 @@
 #include <vector>
 
 #include "gen/generate.hpp"
+#include "kernels_cpu/hull2/certify_hull2.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/certify/certify.hpp"
@@ -132,16 +134,24 @@ std::vector<Triangle> triangles_of(const std::vector<std::vector<Index>>& cells)
 
 // ---- hulls -------------------------------------------------------------------
 
-IndexArray hull2(const Points& p, const std::string& backend) {
+IndexArray hull2(const Points& p, const std::string& backend, int threads) {
   PointSet ps = point_set(p, std::nullopt);
   if (ps.dim != 2) throw std::invalid_argument("hull2 expects points of shape (n, 2)");
   std::vector<Index> cycle;
   {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
-    if (backend != "reference") throw std::invalid_argument("hull2 backends: 'reference'; got '" + backend + "'");
-    cycle = ref::hull2(ps, ref::hull2_algorithms().front());
-    check_certified(certify::hull2(ps, cycle, certify::Level::canonical), "hull2");
+    if (backend == "cpu") {
+      cpu::Hull2Options o;
+      o.threads = threads;
+      cycle = cpu::hull2_graham_sort(ps, o);
+      check_certified(cpu::certify_hull2(ps, cycle, certify::Level::canonical, threads), "hull2");
+    } else if (backend == "reference") {
+      cycle = ref::hull2(ps, ref::hull2_algorithms().front());
+      check_certified(certify::hull2(ps, cycle, certify::Level::canonical), "hull2");
+    } else {
+      throw std::invalid_argument("hull2 backends: 'cpu', 'reference'; got '" + backend + "'");
+    }
   }
   return list_array(cycle);
 }
@@ -419,7 +429,7 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
 NB_MODULE(_flipflop, m) {
   m.doc() = "flipflop's compiled core (use the flipflop package, not this module)";
   m.attr("__version__") = FLIPFLOP_VERSION;
-  m.def("hull2", &hull2, nb::arg("points"), nb::arg("backend"));
+  m.def("hull2", &hull2, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("triangulate"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),

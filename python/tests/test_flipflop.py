@@ -72,6 +72,8 @@ def test_hull2_equals_scipy(seed):
     assert h.area == pytest.approx(s.area, rel=1e-12)
     assert flipflop.certify("hull2", p, h.simplices, canonical=True)
     assert flipflop.certify("hull2", p, h.vertices, canonical=True)
+    for backend, threads in (("reference", 0), ("cpu", 1), ("cpu", 2)):  # every backend, the same answer
+        assert list(flipflop.ConvexHull(p, backend=backend, threads=threads).vertices) == v
 
 
 @pytest.mark.parametrize("d,n", [(2, 2000), (3, 600), (4, 150)])
