@@ -14,12 +14,15 @@
 
 #include "cli/commands.hpp"
 #include "gen/generate.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
 #include "peers/peers.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
 #include "reference/rt2/rt2.hpp"
+#include "reference/rt2/strict_rt2.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -93,6 +96,8 @@ int run_demo() {
     gen::Options o;
     PointSet ps = gen::generate(dist, n, o);
     std::string job = std::string("hull3 ") + dist;
+    all_ok &= run_one<Tris>(job, "flipflop:cpu (TBB ffHull)", ps, [&] { return cpu::hull3_ffhull(ps); }, h3(ps),
+                            Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop ffHull", ps, [&] { return ref::hull3(ps, "ffhull"); }, h3(ps),
                             Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop star splaying", ps, [&] { return ref::hull3(ps, "splay"); }, h3(ps),
@@ -104,6 +109,8 @@ int run_demo() {
   {
     gen::Options o;
     PointSet ps = gen::generate("disk", 1000000, o);
+    all_ok &= run_one<Cycle>("hull2 disk", "flipflop:cpu (TBB Graham)", ps, [&] { return cpu::hull2_graham_sort(ps); },
+                             h2(ps), Level::canonical);
     all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-insert", ps, [&] { return ref::hull2_graham_insert(ps); },
                              h2(ps), Level::canonical);
     all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-sort", ps, [&] { return ref::hull2_graham_sort(ps); },
@@ -147,6 +154,13 @@ int run_demo() {
     const std::string job = "dt2 integer grid";
     all_ok &= run_one<Tris>(job, "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps), Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop Lawson", ps, [&] { return ref::dt2_lawson(ps); }, r2(ps), Level::canonical);
+    // the strict view: no zero-area triangle (dt2 --strict), certified as such
+    all_ok &= run_one<Tris>(
+        job, "flipflop ffRT --strict", ps, [&] { return ref::strict_rt2(ps, ref::rt2_ffrt(ps)); },
+        std::function<certify::Report(const Tris&, Level)>([&ps](const Tris& t, Level) {
+          return certify::rt2_strict(ps, t);
+        }),
+        Level::exact);
     all_ok &= run_one<Tris>(job, "CGAL Delaunay_triangulation_2", ps, [&] { return peers::cgal_delaunay2(ps); },
                             r2(ps), Level::exact);
   }
