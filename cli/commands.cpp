@@ -12,9 +12,11 @@
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
 #include "io/write_result.hpp"
+#include "cli/progress.hpp"
 
 #include "kernels_cpu/hull2/certify_hull2.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
+#include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -165,6 +167,8 @@ int run_compute(const ComputeArgs& a) {
   if (a.triangulate && (!a.strict || a.kind != "hull3"))
     throw UsageError("--triangulate applies to the strict view of a 3D hull (hull3 --strict)");
   const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
+  Progress progress(Progress::stderr_is_terminal(), "flipflop " + a.kind);
+  progress.stage("reading " + a.in);
   const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
   const double t_read = seconds_since(t_read0);
@@ -178,6 +182,7 @@ int run_compute(const ComputeArgs& a) {
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
     throw UsageError(a.in + ": " + std::to_string(ps.size()) + " points exceed the limit of " +
                      std::to_string(brute_limit(a.kind)) + " of the brute-force reference ('--algo brute')");
+  progress.stage("computing (" + std::to_string(ps.size()) + " points, backend " + backend + ")");
   const auto t0 = Clock::now();
   std::vector<Index> cycle;
   std::vector<Triangle> tris;
@@ -226,11 +231,14 @@ int run_compute(const ComputeArgs& a) {
   const double t_compute = seconds_since(t0);
 
   // Never print a result that was not checked: certify the canonical answer.
+  progress.stage("certifying");
   const auto t1 = Clock::now();
-  // (the cpu backend's 2D hull: the per-point witnesses checked in parallel)
+  // (the cpu backends: the checks split over the same threads)
   certify::Report r = a.kind == "hull2" && backend == "cpu"
                           ? cpu::certify_hull2(ps, cycle, certify::Level::canonical, a.threads)
                       : a.kind == "hull2" ? certify::hull2(ps, cycle, certify::Level::canonical)
+                      : a.kind == "hull3" && backend == "cpu"
+                          ? cpu::certify_hull3(ps, tris, certify::Level::canonical, a.threads)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);
@@ -248,6 +256,7 @@ int run_compute(const ComputeArgs& a) {
     const certify::Report rs = certify::rt2_strict(ps, tris);
     if (!rs.ok) throw InternalError("the strict view of the " + a.kind + " result failed certification: " + rs.message());
   }
+  progress.stage("writing " + (a.out.empty() ? std::string("the result") : a.out));
   const auto t2 = Clock::now();
   std::vector<std::vector<Index>> cells;
   if (strict_hull) cells = strict.facets;
@@ -307,6 +316,8 @@ int certify_rtd_file(const CertifyArgs& a) {
 int run_certify(const CertifyArgs& a) {
   if (a.kind == "rtd") return certify_rtd_file(a);
   if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
+  if (a.threads != 0 && a.kind != "hull2" && a.kind != "hull3")
+    throw UsageError("--threads applies to certify hull2 and hull3");
   const PointSet ps = io::read_points(a.points, dim_of(a.kind), weighted(a.kind));
   const certify::Level level = a.canonical ? certify::Level::canonical : certify::Level::exact;
   certify::Report r;
@@ -314,11 +325,11 @@ int run_certify(const CertifyArgs& a) {
   if (a.kind == "hull2") {
     std::vector<Index> cycle = io::read_index_cycle(a.output);
     count = cycle.size();
-    r = certify::hull2(ps, cycle, level);
+    r = cpu::certify_hull2(ps, cycle, level, a.threads);
   } else {
     std::vector<Triangle> tris = io::read_triangles(a.output);
     count = tris.size();
-    r = a.kind == "hull3" ? certify::hull3(ps, tris, level) : certify::rt2(ps, tris, level);
+    r = a.kind == "hull3" ? cpu::certify_hull3(ps, tris, level, a.threads) : certify::rt2(ps, tris, level);
   }
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {

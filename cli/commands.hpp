@@ -45,7 +45,8 @@ struct ComputeArgs {
 struct CertifyArgs {
   std::string kind, points, output;
   bool canonical = false;
-  int dim = 0;  // rtd: the dimension d (2..5)
+  int dim = 0;      // rtd: the dimension d (2..5)
+  int threads = 0;  // hull2, hull3: worker threads of the parallel checks (0: all cores)
 };
 
 // Per kind, the backends and the algorithms that exist in this build (the

@@ -90,13 +90,7 @@ void refuse(const std::string& path, Format f, const std::string& why, CellKind 
 // orient2d 0.
 bool collinear(const PointSet& ps, Index a, Index b, Index c) {
   if (ps.dim == 2) return pred::orient2d_exact(ps.point(a), ps.point(b), ps.point(c)) == 0;
-  const int pairs[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  for (const auto& pr : pairs) {
-    double pa[2] = {ps.point(a)[pr[0]], ps.point(a)[pr[1]]}, pb[2] = {ps.point(b)[pr[0]], ps.point(b)[pr[1]]},
-           pc[2] = {ps.point(c)[pr[0]], ps.point(c)[pr[1]]};
-    if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
-  }
-  return true;
+  return pred::collinear3_exact(ps.point(a), ps.point(b), ps.point(c));
 }
 
 std::string num(double x) {

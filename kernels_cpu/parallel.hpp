@@ -16,7 +16,9 @@
 //                           order (fixed chunks, each filtered by one task,
 //                           then concatenated in chunk order);
 //   parallel_static_filter  the per-input static filter of
-//                           predicates/static_filter.hpp from a parallel scan.
+//                           predicates/static_filter.hpp from a parallel scan;
+//   certify_in_parallel     a reference certifier with certify::Speedups
+//                           (parallel per-point checks, parallel filter scan).
 #pragma once
 
 #include <tbb/blocked_range.h>
@@ -29,11 +31,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <vector>
 
 #include "kernels_cpu/tsan.hpp"
 #include "predicates/static_filter.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::cpu {
@@ -197,6 +201,26 @@ pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, con
   reps.insert(reps.end(), extra.begin(), extra.end());
   while (reps.size() % 3) reps.push_back(0.0);
   return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
+}
+
+// Runs certify(speedups) (a certifier of reference/certify taking
+// certify::Speedups) inside an arena of `threads` workers (0: the runtime's
+// default), the per-point checks split into kChunk pieces, the static filter
+// of the input (plus the certifier's extra values) from a parallel scan.
+template <class Certify>
+certify::Report certify_in_parallel(const PointSet& ps, int threads, const Certify& certify) {
+  certify::Report r;
+  with_threads(threads, [&] {
+    certify::Speedups s;
+    s.make_filter = [&](const std::vector<double>& extra) {
+      return parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; }, extra);
+    };
+    s.for_range = [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) {
+      par_for(n, kChunk, body);
+    };
+    r = certify(s);
+  });
+  return r;
 }
 
 }  // namespace flipflop::cpu

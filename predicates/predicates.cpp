@@ -319,6 +319,15 @@ int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   return lambda_sign_staged<5>(&f, id, p, w);
 }
 
+bool collinear3_exact(const double* a, const double* b, const double* c) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
+    if (orient2d_exact(pa, pb, pc) != 0) return false;
+  }
+  return true;
+}
+
 int dot2d_exact(const double* a, const double* b, const double* c) {
   ErrDouble ux = ErrDouble(b[0]) - ErrDouble(a[0]), uy = ErrDouble(b[1]) - ErrDouble(a[1]);
   ErrDouble vx = ErrDouble(c[0]) - ErrDouble(b[0]), vy = ErrDouble(c[1]) - ErrDouble(b[1]);

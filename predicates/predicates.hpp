@@ -155,6 +155,11 @@ int compare_sos(Pt a, Pt b, int coord, Mode m = Mode::filtered);
 // ---- Small exact helpers used by certifiers --------------------------------
 // Sign of (b - a) · (c - b) in 2D, exactly.
 int dot2d_exact(const double* a, const double* b, const double* c);
+// Are three points of R^3 on one line (or not all distinct), exactly, i.e.
+// (b - a) x (c - a) = 0? True iff all three coordinate-plane projections
+// (xy, yz, zx) have orient2d_exact 0: a cross product vanishes iff each of its
+// components, which are these projected signed areas (times 2), does.
+bool collinear3_exact(const double* a, const double* b, const double* c);
 
 // The general entry point: sign of det Λ for k = dim+1 points (k <= 8).
 // `coords[i]` points to the coordinates of point i; if `weights` is non-null

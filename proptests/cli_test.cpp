@@ -212,6 +212,15 @@ TEST_CASE("cli: certify accepts Qhull's output and rejects a broken one", "[cli]
   Run bad = run(t, "certify hull3 " + pts.string() + " " + broken.string());
   CHECK(bad.code == 1);
   CHECK(bad.out.find("NOT certified") != std::string::npos);
+  // the parallel checks name the same first violation at any thread count
+  for (const char* threads : {"1", "2", "8"}) {
+    Run par = run(t, "certify hull3 " + pts.string() + " " + broken.string() + " --threads " + threads);
+    CHECK(par.code == 1);
+    CHECK(par.out == bad.out);
+  }
+  Run misuse = run(t, "certify rt2 " + pts.string() + " " + qout.string() + " --threads 2");
+  CHECK(misuse.code == 2);
+  CHECK(misuse.err.find("--threads applies to certify hull2 and hull3") != std::string::npos);
 }
 
 TEST_CASE("cli: computed answers round-trip through certify --canonical", "[cli]") {

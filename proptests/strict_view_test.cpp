@@ -41,13 +41,6 @@ namespace {
 
 bool spans_3d(const PointSet& ps) { return ps.size() >= 4 && affine_dimension(ps) == 3; }
 
-bool collinear(const double* a, const double* b, const double* c) {
-  for (int i = 0; i < 3; ++i) {
-    const double pa[2] = {a[i], a[(i + 1) % 3]}, pb[2] = {b[i], b[(i + 1) % 3]}, pc[2] = {c[i], c[(i + 1) % 3]};
-    if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
-  }
-  return true;
-}
 
 // Twice the area vector (b - a) x (c - a) of a triangle, exactly (doubles
 // are dyadic rationals): for the triangles of one planar polygon, all
@@ -83,7 +76,7 @@ std::map<std::vector<Index>, AreaVec> cgal_facet_areas(const PointSet& ps, const
   for (std::size_t t = 0; t < tris.size(); ++t) {
     const Triangle& T = tris[t];
     // CGAL's hull has no flat triangle (the merging below relies on it)
-    REQUIRE_FALSE(collinear(ps.point(T[0]), ps.point(T[1]), ps.point(T[2])));
+    REQUIRE_FALSE(pred::collinear3_exact(ps.point(T[0]), ps.point(T[1]), ps.point(T[2])));
     for (int e = 0; e < 3; ++e) at[{T[e], T[(e + 1) % 3]}] = t;
   }
   for (std::size_t t = 0; t < tris.size(); ++t) {
@@ -132,7 +125,7 @@ void check_triangulated(const PointSet& ps, const ref::StrictHull3& h) {
     REQUIRE(f.size() == 3);
     REQUIRE(f[0] < f[1]);
     REQUIRE(f[0] < f[2]);
-    REQUIRE_FALSE(collinear(ps.point(f[0]), ps.point(f[1]), ps.point(f[2])));
+    REQUIRE_FALSE(pred::collinear3_exact(ps.point(f[0]), ps.point(f[1]), ps.point(f[2])));
     for (int e = 0; e < 3; ++e) {
       REQUIRE(ext.count(f[e]));
       used.insert(f[e]);

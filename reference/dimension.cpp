@@ -16,16 +16,6 @@ bool same_location(const PointSet& ps, std::size_t a, std::size_t b) {
   return true;
 }
 
-// Three points of R^3 are collinear iff all three coordinate projections of the
-// triangle have zero signed area.
-bool collinear3(const double* a, const double* b, const double* c) {
-  const int axes[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  for (const auto& ax : axes) {
-    double pa[2] = {a[ax[0]], a[ax[1]]}, pb[2] = {b[ax[0]], b[ax[1]]}, pc[2] = {c[ax[0]], c[ax[1]]};
-    if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
-  }
-  return true;
-}
 // d >= 4: the rank of the difference vectors p_i - p_0, by exact rational
 // Gaussian elimination (doubles convert to mpq exactly). The basis is kept in
 // echelon form: basis[k] has its leading entry in column lead[k]. Stops as
@@ -69,7 +59,7 @@ int affine_dimension(const PointSet& ps) {
     return c == n ? 1 : 2;
   }
   // dim == 3
-  while (c < n && collinear3(ps.point(0), ps.point(b), ps.point(c))) ++c;
+  while (c < n && pred::collinear3_exact(ps.point(0), ps.point(b), ps.point(c))) ++c;
   if (c == n) return 1;
   std::size_t d = c + 1;
   while (d < n && pred::orient3d_exact(ps.point(0), ps.point(b), ps.point(c), ps.point(d)) == 0) ++d;

@@ -7,18 +7,8 @@ namespace flipflop::cpu {
 
 certify::Report certify_hull2(const PointSet& ps, const std::vector<Index>& cycle, certify::Level level,
                               int threads) {
-  certify::Report r;
-  with_threads(threads, [&] {
-    const pred::StaticFilter f =
-        parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; }, {});
-    certify::Speedups s;
-    s.filter = &f;
-    s.for_range = [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) {
-      par_for(n, kChunk, body);
-    };
-    r = certify::hull2(ps, cycle, level, s);
-  });
-  return r;
+  return certify_in_parallel(ps, threads,
+                             [&](const certify::Speedups& s) { return certify::hull2(ps, cycle, level, s); });
 }
 
 }  // namespace flipflop::cpu

@@ -22,7 +22,6 @@
 #include <cmath>
 #include <array>
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +31,7 @@
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/certify_hull2.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
+#include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/certify/certify.hpp"
@@ -172,7 +172,9 @@ IndexArray hull3(const Points& p, const std::string& backend, int threads) {
     } else {
       throw std::invalid_argument("hull3 backends: 'cpu', 'reference'; got '" + backend + "'");
     }
-    check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
+    check_certified(backend == "cpu" ? cpu::certify_hull3(ps, tris, certify::Level::canonical, threads)
+                                     : certify::hull3(ps, tris, certify::Level::canonical),
+                    "hull3");
   }
   return cells_array(tris, 3);
 }
@@ -187,7 +189,7 @@ std::pair<IndexArray, std::vector<std::vector<Index>>> hull3_strict(const Points
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     const std::vector<Triangle> tris = cpu::hull3_ffhull(ps);
-    check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
+    check_certified(cpu::certify_hull3(ps, tris, certify::Level::canonical), "hull3");
     h = ref::strict_hull3(ps, tris);
     if (triangulate) h = ref::fan_triangulated(h);
   }
@@ -234,20 +236,35 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
 // simplex i, -1 on the boundary (scipy's convention).
 IndexArray neighbors(const Cells& c) {
   const std::size_t m = c.shape(0), k = c.shape(1);
+  if (k < 2 || k > 6) throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..6");
   std::vector<std::int64_t> nb(m * k, -1);
-  std::map<std::vector<std::int64_t>, std::pair<std::size_t, std::size_t>> open;
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = 0; j < k; ++j) {
-      std::vector<std::int64_t> f;
-      for (std::size_t l = 0; l < k; ++l)
-        if (l != j) f.push_back(c.data()[i * k + l]);
-      std::sort(f.begin(), f.end());
-      auto [it, fresh] = open.try_emplace(f, i, j);
-      if (fresh) continue;
-      nb[i * k + j] = static_cast<std::int64_t>(it->second.first);
-      nb[it->second.first * k + it->second.second] = static_cast<std::int64_t>(i);
-      open.erase(it);
-    }
+  {
+    nb::gil_scoped_release nogil;
+    // every (simplex, opposite vertex) with its facet's sorted vertices; after
+    // sorting by facet, the two simplices sharing a facet are adjacent
+    struct Side {
+      std::array<std::int64_t, 5> facet{};  // unused tail entries stay 0
+      std::size_t slot;                     // i * k + j
+    };
+    std::vector<Side> sides(m * k);
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = 0; j < k; ++j) {
+        Side& s = sides[i * k + j];
+        s.slot = i * k + j;
+        std::size_t f = 0;
+        for (std::size_t l = 0; l < k; ++l)
+          if (l != j) s.facet[f++] = c.data()[i * k + l];
+        std::sort(s.facet.begin(), s.facet.begin() + static_cast<std::ptrdiff_t>(f));
+      }
+    std::sort(sides.begin(), sides.end(),
+              [](const Side& a, const Side& b) { return a.facet != b.facet ? a.facet < b.facet : a.slot < b.slot; });
+    for (std::size_t a = 0; a + 1 < sides.size(); ++a)
+      if (sides[a].facet == sides[a + 1].facet) {
+        nb[sides[a].slot] = static_cast<std::int64_t>(sides[a + 1].slot / k);
+        nb[sides[a + 1].slot] = static_cast<std::int64_t>(sides[a].slot / k);
+        ++a;  // a facet of a valid triangulation has at most two simplices
+      }
+  }
   return index_array(std::move(nb), m, k);
 }
 
@@ -327,10 +344,10 @@ std::pair<bool, std::pair<std::string, std::string>> certify_cells(const std::st
       std::vector<Index> cycle;
       for (const auto& row : cells)
         for (Index x : row) cycle.push_back(x);
-      r = certify::hull2(ps, cycle, level);
+      r = cpu::certify_hull2(ps, cycle, level);
     } else if (kind == "hull3") {
       if (ps.dim != 3) throw std::invalid_argument("hull3 expects points of shape (n, 3)");
-      r = certify::hull3(ps, triangles_of(cells), level);
+      r = cpu::certify_hull3(ps, triangles_of(cells), level);
     } else if (kind == "delaunay" && ps.dim == 2) {
       r = certify::rt2(ps, triangles_of(cells), level);
     } else if (kind == "delaunay") {

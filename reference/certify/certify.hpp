@@ -74,15 +74,24 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level = 
 //              (predicates/static_filter.hpp), tried before every predicate;
 //   for_range  runs body(lo, hi) over pieces covering [0, n), in any order,
 //              possibly at once; the per-point checks run through it (the
-//              first failing point, in index order, is still the one reported).
+//              first failing point, in index order, is still the one reported);
+//   make_filter  builds the per-input static filter of ps' coordinates and
+//              `extra` further values (an auxiliary point of the certifier),
+//              e.g. by a parallel scan; certifiers that need such a filter
+//              call it instead of their own sequential scan.
 struct Speedups {
   const pred::StaticFilter* filter = nullptr;
   std::function<void(std::size_t n, const std::function<void(std::size_t lo, std::size_t hi)>& body)> for_range;
+  std::function<pred::StaticFilter(const std::vector<double>& extra)> make_filter;
 };
 Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, const Speedups& speedups);
 
 // 3D hull: triangles counter-clockwise seen from outside.
 Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);
+// The same verdict and message, the per-facet and per-point checks through
+// speedups.for_range, the static filter from speedups.make_filter
+// (kernels_cpu/hull3/certify_hull3.hpp).
+Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups);
 
 // 2D regular triangulation (weights from ps; a Delaunay triangulation when
 // ps is unweighted): counter-clockwise triangles.

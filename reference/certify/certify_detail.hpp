@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -165,6 +166,29 @@ inline void morton_sort(const PointSet& ps, std::vector<Index>& pts) {
   for (Index p : pts) keyed.emplace_back(key(p), p);
   std::sort(keyed.begin(), keyed.end());
   for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = keyed[i].second;
+}
+
+// The smallest i in [0, n) with fails(i), n when there is none. With
+// for_range (a certify::Speedups::for_range) the indices are split into pieces
+// run in any order, possibly at once; a piece stops at its first failure or
+// once a smaller failing index is known, so the answer is the sequential
+// scan's whatever the schedule. fails must be safe to call concurrently.
+template <class ForRange, class Fails>
+std::size_t smallest_failing(std::size_t n, const ForRange& for_range, const Fails& fails) {
+  std::atomic<std::size_t> first{n};
+  auto body = [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      if (i >= first.load(std::memory_order_relaxed)) return;  // a smaller failure is known
+      if (!fails(i)) continue;
+      std::size_t cur = first.load();
+      while (i < cur && !first.compare_exchange_weak(cur, i)) {
+      }
+      return;
+    }
+  };
+  if (for_range) for_range(n, body);
+  else body(0, n);
+  return first.load();
 }
 
 // A small deterministic generator for the stochastic walks (Devillers–Pion–

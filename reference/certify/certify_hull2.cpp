@@ -74,7 +74,10 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
   const bool canonical = level == Level::canonical;
-  Hull2Checker ck{ps, canonical, speedups.filter};
+  pred::StaticFilter own;
+  const pred::StaticFilter* filter = speedups.filter;
+  if (!filter && speedups.make_filter) own = speedups.make_filter({}), filter = &own;
+  Hull2Checker ck{ps, canonical, filter};
 
   // vertex-indices
   if (cycle.size() < 3)
@@ -195,22 +198,11 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
     if (ck.orient(L[k], L[k + 1], p) <= strict) return ea = L[k], eb = L[k + 1], true;
     return false;
   };
-  std::atomic<Index> first_bad{static_cast<Index>(n)};
-  auto check_range = [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i) {
-      const auto p = static_cast<Index>(i);
-      if (p >= first_bad.load(std::memory_order_relaxed)) return;  // a smaller failure is known
-      Index a, b;
-      if (is_vertex[p] || !fails(p, a, b)) continue;
-      Index cur = first_bad.load();
-      while (p < cur && !first_bad.compare_exchange_weak(cur, p)) {
-      }
-      return;
-    }
-  };
-  if (speedups.for_range) speedups.for_range(n, check_range);
-  else check_range(0, n);
-  if (const Index p = first_bad.load(); p < n) {
+  const std::size_t bad = detail::smallest_failing(n, speedups.for_range, [&](std::size_t i) {
+    Index a, b;
+    return !is_vertex[i] && fails(static_cast<Index>(i), a, b);
+  });
+  if (const auto p = static_cast<Index>(bad); bad < n) {
     Index a = 0, b = 0;
     fails(p, a, b);
     return Report::fail("point-inside", "point " + std::to_string(p) +

@@ -192,7 +192,9 @@ bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index
 class InnerBall {
  public:
   InnerBall() = default;
-  InnerBall(const PointSet& ps, const std::vector<Triangle>& tris) {
+  // The exact per-facet checks run through for_range (Speedups::for_range).
+  template <class ForRange>
+  InnerBall(const PointSet& ps, const std::vector<Triangle>& tris, const ForRange& for_range) {
     // the centre: the mean of the facets' vertices, rounded (any point works:
     // the set-up verifies exactly that the ball is inside)
     double sd[3] = {0, 0, 0};
@@ -217,7 +219,8 @@ class InnerBall {
     const mpq_class R2(r2);
     mpq_class S[3];
     for (int j = 0; j < 3; ++j) S[j] = mpq_class(sd[j]);
-    for (const Triangle& t : tris) {
+    auto outside = [&](std::size_t i) {
+      const Triangle& t = tris[i];
       mpq_class A[3], U[3], V[3];
       for (int j = 0; j < 3; ++j) {
         A[j] = mpq_class(ps.point(t[0])[j]);
@@ -226,10 +229,11 @@ class InnerBall {
       }
       const mpq_class N[3] = {U[1] * V[2] - U[2] * V[1], U[2] * V[0] - U[0] * V[2], U[0] * V[1] - U[1] * V[0]};
       const mpq_class M = N[0] * N[0] + N[1] * N[1] + N[2] * N[2];
-      if (M == 0) continue;
+      if (M == 0) return false;
       const mpq_class D = -(N[0] * (S[0] - A[0]) + N[1] * (S[1] - A[1]) + N[2] * (S[2] - A[2]));
-      if (D <= 0 || D * D < R2 * M) return;  // not verified: no ball
-    }
+      return D <= 0 || D * D < R2 * M;
+    };
+    if (detail::smallest_failing(tris.size(), for_range, outside) < tris.size()) return;  // not verified: no ball
     limit_ = r2 * (1 - 0x1p-40);
   }
   bool strictly_inside(const double* p) const {
@@ -294,6 +298,10 @@ class DirectionTable {
 }  // namespace
 
 Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
+  return hull3(ps, tris, level, Speedups{});
+}
+
+Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups) {
   if (ps.dim != 3) return Report::fail("input-dimension", "hull3 needs 3D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
@@ -362,13 +370,17 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
   Hull3Checker ck{ps, canonical, pred::RationalPoint::centroid(tp, 4, 3), static_cast<pred::PointId>(n), false,
                   {0, 0, 0}, pred::StaticFilter{}};
   ck.s_is_double = rounded_centroid_inside(tp, ck.sd);
-  ck.f = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), 3, nullptr, ck.s_is_double ? ck.sd : nullptr,
-                                       ck.s_is_double ? 3 : 0);
+  if (speedups.make_filter)
+    ck.f = speedups.make_filter(ck.s_is_double ? std::vector<double>(ck.sd, ck.sd + 3) : std::vector<double>{});
+  else
+    ck.f = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), 3, nullptr, ck.s_is_double ? ck.sd : nullptr,
+                                         ck.s_is_double ? 3 : 0);
 
   // ---- star-shapedness w.r.t. s --------------------------------------------
-  for (const Triangle& t : tris)
-    if (ck.facet_vs_s(t) <= 0)
-      return Report::fail("facet-orientation", "facet " + tri_str(t) +
+  if (const std::size_t bad = detail::smallest_failing(
+          tris.size(), speedups.for_range, [&](std::size_t i) { return ck.facet_vs_s(tris[i]) <= 0; });
+      bad < tris.size())
+      return Report::fail("facet-orientation", "facet " + tri_str(tris[bad]) +
                                                    " does not face away from the interior point (it is oriented "
                                                    "inward or is not on the hull)");
   for (Index v : verts) {
@@ -383,16 +395,34 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
   }
 
   // ---- convexity (Thm 6.2) ----------------------------------------------------
-  for (const Triangle& t : tris) {
+  // edge k of triangle t (each undirected edge once, from its triangle with
+  // a < b): its opposite vertex d across it, d's orientation against t
+  auto convexity = [&](const Triangle& t, int k, Index& d, const Triangle*& o) {
+    const Index a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
+    if (a > b) return 1;
+    o = &tris[static_cast<std::size_t>(edges.find(b, a))];
+    d = detail::third_vertex(*o, a, b);
+    return ck.facet_vs_point(t, d);
+  };
+  auto reflex = [&](int sgn) { return canonical ? sgn <= 0 : sgn < 0; };
+  if (const std::size_t bad = detail::smallest_failing(tris.size(), speedups.for_range,
+                                                       [&](std::size_t i) {
+                                                         Index d = 0;
+                                                         const Triangle* o = nullptr;
+                                                         for (int k = 0; k < 3; ++k)
+                                                           if (reflex(convexity(tris[i], k, d, o))) return true;
+                                                         return false;
+                                                       });
+      bad < tris.size()) {
+    const Triangle& t = tris[bad];
     for (int k = 0; k < 3; ++k) {
-      Index a = t[k], b = t[(k + 1) % 3];
-      if (a > b) continue;  // each undirected edge once
-      const Triangle& o = tris[static_cast<std::size_t>(edges.find(b, a))];
-      Index d = detail::third_vertex(o, a, b);
-      int sgn = ck.facet_vs_point(t, d);
-      if (canonical ? sgn <= 0 : sgn < 0)
-        return Report::fail("convex-edge", "edge " + edge_str(a, b) + " is " + (sgn < 0 ? "reflex" : "flat") +
-                                               ": vertex " + std::to_string(d) + " of facet " + tri_str(o) +
+      Index d = 0;
+      const Triangle* o = nullptr;
+      const int sgn = convexity(t, k, d, o);
+      if (reflex(sgn))
+        return Report::fail("convex-edge", "edge " + edge_str(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]) +
+                                               " is " + (sgn < 0 ? "reflex" : "flat") + ": vertex " +
+                                               std::to_string(d) + " of facet " + tri_str(*o) +
                                                " is not on the inner side of facet " + tri_str(t) +
                                                (canonical ? " under the perturbation" : ""));
     }
@@ -413,7 +443,7 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
   std::size_t candidates = 0;
   for (Index p = 0; p < n; ++p) candidates += !is_vertex[p];
   // worth its exact set-up (one GMP test per facet) when points outnumber facets
-  const InnerBall ball = candidates >= 8 * tris.size() ? InnerBall(ps, tris) : InnerBall();
+  const InnerBall ball = candidates >= 8 * tris.size() ? InnerBall(ps, tris, speedups.for_range) : InnerBall();
   const std::size_t cap = 4 * tris.size() + 100;
   auto check_point = [&](Index p) -> Report {
     if (ball.strictly_inside(ps.point(p))) return Report::pass();
@@ -450,9 +480,11 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level)
       if (Report r = check(t); !r.ok) return r;
     return Report::pass();
   };
-  for (Index p = 0; p < n; ++p)
-    if (!is_vertex[p])
-      if (Report r = check_point(p); !r.ok) return r;
+  if (const std::size_t bad = detail::smallest_failing(
+          n, speedups.for_range,
+          [&](std::size_t p) { return !is_vertex[p] && !check_point(static_cast<Index>(p)).ok; });
+      bad < n)
+    return check_point(static_cast<Index>(bad));
   return Report::pass();
 }
 

@@ -46,16 +46,6 @@ struct UnionFind {
   }
 };
 
-// Are the three points on one line (or not distinct)? All three coordinate
-// projections must be degenerate.
-bool collinear(const double* a, const double* b, const double* c) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const double pa[2] = {a[i], a[j]}, pb[2] = {b[i], b[j]}, pc[2] = {c[i], c[j]};
-    if (pred::orient2d_exact(pa, pb, pc) != 0) return false;
-  }
-  return true;
-}
 
 // The plane of a non-degenerate triangle as an exact key: normal
 // n = (b - a) x (c - a) and offset n·a, dyadic rationals scaled to integers
@@ -147,7 +137,7 @@ StrictHull3 strict_hull3(const PointSet& ps, const std::vector<Triangle>& hull) 
   auto P = [&](Index v) { return ps.point(rep[v]); };
 
   std::vector<std::uint8_t> degenerate(m);
-  for (std::uint32_t t = 0; t < m; ++t) degenerate[t] = collinear(P(hull[t][0]), P(hull[t][1]), P(hull[t][2]));
+  for (std::uint32_t t = 0; t < m; ++t) degenerate[t] = pred::collinear3_exact(P(hull[t][0]), P(hull[t][1]), P(hull[t][2]));
 
   // Step 1: union across edges of exactly coplanar non-degenerate triangles.
   UnionFind uf(m);

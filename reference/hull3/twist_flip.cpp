@@ -68,16 +68,6 @@ std::string tri_str(const Triangle& t) {
   return "(" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," + std::to_string(t[2]) + ")";
 }
 
-// Are v, a, b exactly collinear? (a - v) x (b - v) = 0: the three coordinate-
-// plane orientations vanish.
-bool collinear_exact(const PointSet& ps, Index v, Index a, Index b) {
-  const double* P[3] = {ps.point(v), ps.point(a), ps.point(b)};
-  if (pred::orient2d_exact(P[0], P[1], P[2]) != 0) return false;          // x, y
-  if (pred::orient2d_exact(P[0] + 1, P[1] + 1, P[2] + 1) != 0) return false;  // y, z
-  double xz[3][2];
-  for (int i = 0; i < 3; ++i) xz[i][0] = P[i][0], xz[i][1] = P[i][2];
-  return pred::orient2d_exact(xz[0], xz[1], xz[2]) == 0;  // x, z
-}
 
 }  // namespace
 
@@ -249,7 +239,7 @@ pred::RationalPoint TwistFlip::secondary_kernel(const PointSet& ps, const std::v
     std::size_t ja = 0;
     while (ja < k && same_location(L[ja])) ++ja;
     std::size_t jb = ja;
-    while (jb < k && collinear_exact(ps, v, L[ja], L[jb])) ++jb;
+    while (jb < k && pred::collinear3_exact(ps.point(v), ps.point(L[ja]), ps.point(L[jb]))) ++jb;
     if (jb == k) reject("the vertices of the polyhedron are collinear");
     std::size_t jc = 0;
     while (jc < k && !independent(L[ja], L[jb], L[jc])) ++jc;
