@@ -22,7 +22,9 @@ const char* kUsage =
     "usage: flipflop bench predicates [--n N] [--reps R] [--seed S] [--csv]\n"
     "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
     "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n"
-    "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case) [--csv]\n";
+    "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case) [--csv]\n"
+    "       flipflop bench hull2|hull3 --stages --dist NAME --n N [...]  (time by stage of flipflop:cpu:\n"
+    "                      read .xyz/.npy, the kernel's stages, certify, write)\n";
 
 unsigned long long to_count(const std::string& opt, const std::string& s) {
   char* end = nullptr;
@@ -47,8 +49,8 @@ Args parse(int argc, char** argv) {
   bool have_n = false;
   for (int i = 2; i < argc; ++i) {
     const std::string opt = argv[i];
-    if (opt == "--csv") {  // the only flag without a value
-      a.csv = true;
+    if (opt == "--csv" || opt == "--stages") {  // the flags without a value
+      (opt == "--csv" ? a.csv : a.stages) = true;
       continue;
     }
     if (i + 1 >= argc) throw Usage("option " + opt + " needs a value");
@@ -116,6 +118,7 @@ int run(int argc, char** argv) {
   try {
     Args a = parse(argc, argv);
     if (a.experiment == "predicates") return detail::bench_predicates(a);
+    if (a.stages) return detail::bench_stages(a);
     return detail::bench_peers(a);
   } catch (const Usage& e) {
     std::fprintf(stderr, "flipflop bench: error: %s\n%s", e.what(), kUsage);

@@ -8,8 +8,8 @@
 //          :graham-insert; qhull (libqhull_r), cgal:ch_akl_toussaint,
 //          cgal:ch_graham_andrew
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
-//          flipflop ffhull, splay (twist-flip, quadratic, for n <= 20000);
-//          Qhull (libqhull_r, Qt), CGAL convex_hull_3
+//          flipflop:reference:ffhull, :splay (:twist-flip, quadratic, for
+//          n <= 20000); qhull (libqhull_r, Qt), cgal:convex_hull_3
 //   dt2    flipflop ffrt, lawson; CGAL Delaunay_triangulation_2
 //   rt2    flipflop ffrt; CGAL Regular_triangulation_2
 //
@@ -133,7 +133,7 @@ int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Out
 
 }  // namespace
 
-int bench_peers(const Args& a) {
+PointSet generated_input(const Args& a) {
   const int need = a.experiment == "hull3" ? 3 : 2;
   if (gen::dimension_of(a.dist) != need)
     throw Usage("distribution '" + a.dist + "' is not " + std::to_string(need) + "D (" +
@@ -145,8 +145,12 @@ int bench_peers(const Args& a) {
   o.wlo = a.wlo;
   o.whi = a.whi;
   o.hull_points = a.hull_points;
+  return gen::generate(a.dist, a.n, o);
+}
+
+int bench_peers(const Args& a) {
   PointSet pts;
-  const double gen_s = seconds([&] { pts = gen::generate(a.dist, a.n, o); });
+  const double gen_s = seconds([&] { pts = generated_input(a); });
   if (!a.csv) {
     std::printf("flipflop bench %s: dist %s, n %zu, seed %llu", a.experiment.c_str(), a.dist.c_str(),
                 pts.size(), a.seed);
@@ -171,14 +175,14 @@ int bench_peers(const Args& a) {
   }
   if (a.experiment == "hull3") {
     std::vector<Peer<Tris>> rows = {
-        {"flipflop:cpu (exact, TBB ffhull)", [](const PointSet& p) { return cpu::hull3_ffhull(p); }},
-        {"flipflop ffhull (exact)", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
-        {"flipflop splay (exact)", [](const PointSet& p) { return ref::hull3(p, "splay"); }}};
+        {"flipflop:cpu", [](const PointSet& p) { return cpu::hull3_ffhull(p); }},
+        {"flipflop:reference:ffhull", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
+        {"flipflop:reference:splay", [](const PointSet& p) { return ref::hull3(p, "splay"); }}};
     // twist-flip's twisting stage is a bubble sort (thesis Thm 8.1): O(n^2)
     if (pts.size() <= 20000)
-      rows.push_back({"flipflop twist-flip (exact)", [](const PointSet& p) { return ref::hull3(p, "twist-flip"); }});
-    rows.push_back({"Qhull (libqhull_r, Qt)", peers::qhull_hull3});
-    rows.push_back({"CGAL convex_hull_3", peers::cgal_hull3});
+      rows.push_back({"flipflop:reference:twist-flip", [](const PointSet& p) { return ref::hull3(p, "twist-flip"); }});
+    rows.push_back({"qhull", peers::qhull_hull3});  // libqhull_r, Qt
+    rows.push_back({"cgal:convex_hull_3", peers::cgal_hull3});
     return compare_peers<Tris>(a, pts, rows, "triangles");
   }
   if (a.experiment == "dt2")

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "reference/point_set.hpp"
+
 namespace flipflop::bench::detail {
 
 // Wall-clock seconds of one call of f, by std::chrono::steady_clock.
@@ -45,9 +47,14 @@ struct Args {
   std::size_t hull_points = 0;
   bool csv = false;  // CSV rows instead of the table (DESIGN.md "Benchmarks")
   std::vector<std::string> run;  // --run: row name prefixes (case-insensitive); empty: every row
+  bool stages = false;  // --stages: time by stage of flipflop:cpu (hull2, hull3)
 };
 
 int bench_predicates(const Args& a);
 int bench_peers(const Args& a);
+int bench_stages(const Args& a);
+// The input of a hull/triangulation experiment: gen::generate with the
+// options of `a`, checked to have the experiment's dimension.
+PointSet generated_input(const Args& a);
 
 }  // namespace flipflop::bench::detail

@@ -136,7 +136,9 @@ int run_gen(const GenArgs& a) {
     o.whi = hi;
   }
   PointSet ps = gen::generate(a.dist, a.n, o);
-  write_output(a.out, [&](std::ostream& os) { io::write_points(os, ps); });
+  // .npy: float64 (n, d[+1]), read back without parsing; anything else: .xyz text
+  const bool npy = a.out.size() >= 4 && a.out.compare(a.out.size() - 4, 4, ".npy") == 0;
+  write_output(a.out, [&](std::ostream& os) { npy ? io::write_points_npy(os, ps) : io::write_points(os, ps); });
   return 0;
 }
 
@@ -318,11 +320,29 @@ int run_certify(const CertifyArgs& a) {
   if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
   if (a.threads != 0 && a.kind != "hull2" && a.kind != "hull3")
     throw UsageError("--threads applies to certify hull2 and hull3");
+  if (a.strict && a.kind == "hull2") throw UsageError("--strict applies to certify hull3, rt2 and dt2");
+  if (a.strict && a.canonical)
+    throw UsageError("--canonical does not apply to the strict views (certified at the exact level)");
+  if (a.triangulate && (!a.strict || a.kind != "hull3"))
+    throw UsageError("--triangulate applies to the strict view of a 3D hull (certify hull3 --strict)");
   const PointSet ps = io::read_points(a.points, dim_of(a.kind), weighted(a.kind));
   const certify::Level level = a.canonical ? certify::Level::canonical : certify::Level::exact;
   certify::Report r;
   std::size_t count = 0;
-  if (a.kind == "hull2") {
+  std::string what = a.kind == "hull2" ? " vertices" : " triangles";
+  const std::string view = a.strict ? "strict" : a.canonical ? "canonical" : "exact";
+  if (a.strict && a.kind == "hull3") {
+    // the strict view: strictly extreme points and convex polygons (or their
+    // fan triangles with --triangulate)
+    const auto [extreme, facets] = io::read_strict_hull3(a.output);
+    count = facets.size();
+    what = a.triangulate ? " triangles" : " facets";
+    r = certify::hull3_strict(ps, extreme, facets, a.triangulate);
+  } else if (a.strict) {
+    const std::vector<Triangle> tris = io::read_triangles(a.output);
+    count = tris.size();
+    r = certify::rt2_strict(ps, tris);
+  } else if (a.kind == "hull2") {
     std::vector<Index> cycle = io::read_index_cycle(a.output);
     count = cycle.size();
     r = cpu::certify_hull2(ps, cycle, level, a.threads);
@@ -333,12 +353,10 @@ int run_certify(const CertifyArgs& a) {
   }
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {
-    std::cout << "NOT certified (" << a.kind << ", " << (a.canonical ? "canonical" : "exact")
-              << "): " << r.message() << "\n";
+    std::cout << "NOT certified (" << a.kind << ", " << view << "): " << r.message() << "\n";
     return 1;
   }
-  std::cout << "certified (" << a.kind << ", " << (a.canonical ? "canonical" : "exact") << "): " << ps.size()
-            << " points, " << count << (a.kind == "hull2" ? " vertices" : " triangles") << "\n";
+  std::cout << "certified (" << a.kind << ", " << view << "): " << ps.size() << " points, " << count << what << "\n";
   return 0;
 }
 

@@ -47,6 +47,8 @@ struct CertifyArgs {
   bool canonical = false;
   int dim = 0;      // rtd: the dimension d (2..5)
   int threads = 0;  // hull2, hull3: worker threads of the parallel checks (0: all cores)
+  bool strict = false;       // the strict views (hull3 --strict polygons, rt2/dt2 --strict triangles)
+  bool triangulate = false;  // hull3 --strict --triangulate (fan triangles)
 };
 
 // Per kind, the backends and the algorithms that exist in this build (the

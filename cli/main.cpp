@@ -6,6 +6,7 @@
 //   flipflop rtd IN --dim d [-o OUT] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N (hull2, hull3)]
+//                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
 //   flipflop bench ...
 //   flipflop demo
 //
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
   gen->add_option("--thickness", g.thickness, "shell/band thickness of frame, circle, box, sphere");
   gen->add_option("--weights", g.weights, "weights uniform in LO,HI (adds a weight column)");
   gen->add_option("--hull-points", g.hull_points, "controlled ball: number of points on the sphere");
-  gen->add_option("-o,--output", g.out, "output .xyz file");
+  gen->add_option("-o,--output", g.out, "output file: .npy (float64, shape (n, d) or (n, d+1)) or .xyz text");
   gen->add_flag("--list", g.list, "list the distributions and exit");
 
   // ---- hull2 / hull3 / rt2 / dt2 -----------------------------------------------
@@ -114,6 +115,10 @@ int main(int argc, char** argv) {
       ->required();
   cert->add_option("--threads", v.threads, "hull2, hull3: worker threads of the parallel checks (default: all cores)")
       ->check(CLI::Range(1, 1024));
+  cert->add_flag("--strict", v.strict,
+                 "the output is a strict view (hull3 --strict: extreme points and polygons; rt2|dt2 --strict: "
+                 "no zero-area triangle), certified at the exact level");
+  cert->add_flag("--triangulate", v.triangulate, "with certify hull3 --strict: the view of hull3 --strict --triangulate");
   cert->add_flag("--canonical", v.canonical,
                  "also require flipflop's unique answer under Simulation of Simplicity, in canonical form");
 

@@ -20,6 +20,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/input_error.hpp"
@@ -45,5 +46,13 @@ std::vector<Index> read_index_cycle(const std::string& path);
 // the count must match the facets that follow. Qhull lists 3-d facets
 // clockwise seen from outside; they are returned reversed, counter-clockwise.
 std::vector<Triangle> read_triangles(const std::string& path);
+
+// The strict view of a 3D hull (`flipflop hull3 --strict`, format in
+// reference/hull3/strict_hull3.hpp): a line "E F", E lines of one index, F
+// lines of at least 3 indices each. Counts that do not match the lines that
+// follow, and facets of fewer than 3 indices, are an InputError naming the
+// line. Returns (extreme points, facets) as written (not validated further:
+// that is the certifier's job).
+std::pair<std::vector<Index>, std::vector<std::vector<Index>>> read_strict_hull3(const std::string& path);
 
 }  // namespace flipflop::io

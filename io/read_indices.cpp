@@ -2,6 +2,7 @@
 #include "io/index_io.hpp"
 
 #include <charconv>
+#include <string>
 #include <limits>
 #include <string_view>
 #include <utility>
@@ -90,6 +91,48 @@ std::vector<Triangle> read_triangles(const std::string& path) {
                      "the Qhull facet count on line " + std::to_string(header_line) + " is " +
                          std::to_string(announced) + ", but " + std::to_string(out.size()) +
                          " facets follow");
+  return out;
+}
+
+std::pair<std::vector<Index>, std::vector<std::vector<Index>>> read_strict_hull3(const std::string& path) {
+  LineReader in(path, '#');
+  std::pair<std::vector<Index>, std::vector<std::vector<Index>>> out;
+  std::string_view line;
+  std::vector<std::string_view> tok(64);
+  std::size_t extreme = 0, facets = 0;
+  bool header = false;
+  while (in.next(line)) {
+    std::size_t k = split(line, tok.data(), tok.size());
+    if (k > tok.size()) {  // a long facet: split again with room for every token
+      tok.resize(k);
+      k = split(line, tok.data(), tok.size());
+    }
+    if (k == 0) continue;
+    if (!header) {
+      if (k != 2) throw InputError(path, in.line_number(), "expected the counts \"E F\" on the first line, " + found(k));
+      extreme = parse_index(in, tok[0]);
+      facets = parse_index(in, tok[1]);
+      header = true;
+      continue;
+    }
+    if (out.first.size() < extreme) {
+      if (k != 1) throw InputError(path, in.line_number(), "expected 1 extreme point index per line, " + found(k));
+      out.first.push_back(parse_index(in, tok[0]));
+      continue;
+    }
+    if (out.second.size() == facets)
+      throw InputError(path, in.line_number(), "more facets than the " + std::to_string(facets) + " announced");
+    if (k < 3) throw InputError(path, in.line_number(), "expected a facet of at least 3 indices, " + found(k));
+    std::vector<Index> f(k);
+    for (std::size_t i = 0; i < k; ++i) f[i] = parse_index(in, tok[i]);
+    out.second.push_back(std::move(f));
+  }
+  if (!header) throw InputError(path, 1, "empty: expected the counts \"E F\"");
+  if (out.first.size() != extreme || out.second.size() != facets)
+    throw InputError(path, in.line_number() > 0 ? in.line_number() : 1,
+                     "announced " + std::to_string(extreme) + " extreme points and " + std::to_string(facets) +
+                         " facets, found " + std::to_string(out.first.size()) + " and " +
+                         std::to_string(out.second.size()));
   return out;
 }
 

@@ -180,17 +180,7 @@ void write_npy(std::ostream& os, const std::vector<std::vector<Index>>& cells, b
   std::size_t k = cells.empty() ? 0 : cells[0].size();
   if (one_cycle) shape = "(" + std::to_string(k) + ",)";
   else shape = "(" + std::to_string(cells.size()) + ", " + std::to_string(k) + ")";
-  std::string header = "{'descr': '<i8', 'fortran_order': False, 'shape': " + shape + ", }";
-  // magic (6) + version (2) + header length (2) + header, padded with
-  // spaces to a multiple of 64 and ended by '\n' (format 1.0)
-  const std::size_t total = 10 + header.size() + 1;
-  header.append((64 - total % 64) % 64, ' ');
-  header += '\n';
-  os.write("\x93NUMPY\x01\x00", 8);
-  const std::uint16_t len = static_cast<std::uint16_t>(header.size());
-  const char lb[2] = {static_cast<char>(len & 0xff), static_cast<char>(len >> 8)};
-  os.write(lb, 2);
-  os << header;
+  write_npy_header(os, "<i8", shape);
   for (const auto& c : cells)
     for (Index x : c) {
       const std::uint64_t u = static_cast<std::uint64_t>(static_cast<std::int64_t>(x));

@@ -3,6 +3,8 @@
 // right answers (ours and Qhull's) and rejects wrong ones with exit code 1.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -223,6 +225,26 @@ TEST_CASE("cli: certify accepts Qhull's output and rejects a broken one", "[cli]
   CHECK(misuse.err.find("--threads applies to certify hull2 and hull3") != std::string::npos);
 }
 
+TEST_CASE("cli: gen -o FILE.npy writes the points .xyz holds and every command reads it", "[cli]") {
+  TempDir t;
+  for (const char* job : {"hull3 ball", "hull2 disk", "rt2 square"}) {
+    const std::string kind = std::string(job).substr(0, 4) == "hull" ? std::string(job, 5) : "rt2";
+    const std::string dist = std::string(job).substr(kind.size() + 1);
+    const std::string w = kind == "rt2" ? " --weights 0,0.001" : "";
+    const fs::path npy = t.dir / "p.npy", xyz = t.dir / "p.xyz", a = t.dir / "a.txt", b = t.dir / "b.txt";
+    REQUIRE(run(t, "gen " + dist + " 3000 --seed 4" + w + " -o " + npy.string()).code == 0);
+    REQUIRE(run(t, "gen " + dist + " 3000 --seed 4" + w + " -o " + xyz.string()).code == 0);
+    REQUIRE(slurp(npy).substr(0, 6) == "\x93NUMPY");
+    Run from_npy = run(t, kind + " " + npy.string() + " -o " + a.string());
+    Run from_xyz = run(t, kind + " " + xyz.string() + " -o " + b.string());
+    INFO(job << ": " << from_npy.err << from_xyz.err);
+    REQUIRE(from_npy.code == 0);
+    REQUIRE(from_xyz.code == 0);
+    CHECK(slurp(a) == slurp(b));
+    CHECK(!slurp(a).empty());
+  }
+}
+
 TEST_CASE("cli: computed answers round-trip through certify --canonical", "[cli]") {
   TempDir t;
   const char* jobs[][3] = {{"grid2", "hull2", "60"}, {"grid3", "hull3", "40"}, {"sphere-lattice", "hull3", "60"},
@@ -355,6 +377,62 @@ TEST_CASE("cli: dt2/rt2 --strict on a 12x12 grid: CGAL's 242 triangles, no zero-
   Run refused = run(t, "hull2 " + in.string() + " --strict");
   CHECK(refused.code == 2);
   CHECK(lines(refused.err) == 1);
+  // certify --strict: the strict view passes, the canonical answer (zero-area
+  // triangles) does not
+  Run strict = run(t, "certify dt2 " + in.string() + " " + out.string() + " --strict");
+  CHECK(strict.code == 0);
+  CHECK(strict.out == "certified (dt2, strict): 144 points, 242 triangles\n");
+  Run flat = run(t, "certify dt2 " + in.string() + " " + canon.string() + " --strict");
+  CHECK(flat.code == 1);
+  CHECK(flat.out.find("NOT certified (dt2, strict): zero-area") == 0);
+}
+
+TEST_CASE("cli: certify hull3 --strict [--triangulate] checks hull3's strict views", "[cli]") {
+  TempDir t;
+  const fs::path in = t.dir / "g.xyz", poly = t.dir / "p.txt", tri = t.dir / "t.txt";
+  REQUIRE(run(t, "gen sphere-lattice 2000 -o " + in.string()).code == 0);
+  REQUIRE(run(t, "hull3 " + in.string() + " --strict -o " + poly.string()).code == 0);
+  REQUIRE(run(t, "hull3 " + in.string() + " --strict --triangulate -o " + tri.string()).code == 0);
+  Run p = run(t, "certify hull3 " + in.string() + " " + poly.string() + " --strict");
+  INFO(p.out << p.err);
+  CHECK(p.code == 0);
+  CHECK(p.out.find("certified (hull3, strict): 2000 points, ") == 0);
+  Run q = run(t, "certify hull3 " + in.string() + " " + tri.string() + " --strict --triangulate");
+  CHECK(q.code == 0);
+  // the triangulated view is not the polygon view (coplanar neighbours), when
+  // some facet has more than three vertices
+  bool polygons = false;
+  {
+    std::istringstream ls(slurp(poly));
+    std::string line;
+    while (std::getline(ls, line)) polygons = polygons || std::count(line.begin(), line.end(), ' ') >= 3;
+  }
+  REQUIRE(polygons);
+  Run mixed = run(t, "certify hull3 " + in.string() + " " + tri.string() + " --strict");
+  CHECK(mixed.code == 1);
+  CHECK(mixed.out.find("NOT certified (hull3, strict): maximal-facets") == 0);
+  // a facet reversed: the last line's vertices in the opposite order
+  std::string text = slurp(poly);
+  const std::size_t last = text.rfind('\n', text.size() - 2) + 1;
+  std::istringstream facet(text.substr(last));
+  std::vector<std::string> vs;
+  for (std::string v; facet >> v;) vs.push_back(v);
+  std::string reversed;
+  for (auto it = vs.rbegin(); it != vs.rend(); ++it) reversed += (reversed.empty() ? "" : " ") + *it;
+  const fs::path bad = t.file("bad.txt", text.substr(0, last) + reversed + "\n");
+  Run wrong = run(t, "certify hull3 " + in.string() + " " + bad.string() + " --strict");
+  CHECK(wrong.code == 1);
+  CHECK(wrong.out.find("NOT certified (hull3, strict): facet-polygon") == 0);
+  // a count that does not match the lines: one line naming the file, exit 2
+  const fs::path short_file = t.file("short.txt", text.substr(0, last));
+  Run malformed = run(t, "certify hull3 " + in.string() + " " + short_file.string() + " --strict");
+  CHECK(malformed.code == 2);
+  CHECK(lines(malformed.err) == 1);
+  CHECK(malformed.err.find(short_file.string()) != std::string::npos);
+  Run misuse = run(t, "certify hull3 " + in.string() + " " + poly.string() + " --strict --canonical");
+  CHECK(misuse.code == 2);
+  Run misuse2 = run(t, "certify hull2 " + in.string() + " " + poly.string() + " --strict");
+  CHECK(misuse2.code == 2);
 }
 
 TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, bad options and collinear input "

@@ -31,6 +31,7 @@
 #include "proptests/support/rc_scaled.hpp"
 #include "proptests/support/splay_inputs.hpp"
 #include "reference/brute_force.hpp"
+#include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull3/initial_stars.hpp"
 #include "reference/hull3/strict_hull3.hpp"
@@ -184,6 +185,19 @@ void check_against_cgal(const PointSet& ps, const ref::StrictHull3& h) {
   check_polygons(ps, h);
 }
 
+// The cube [0,4]^3 sampled on its integer lattice (point (x,y,z) at index
+// (5x + y)5 + z: points inside facets, on edges, inside), then its 8 corners
+// again at indices 125..132.
+PointSet lattice_cube() {
+  PointSet ps;
+  ps.dim = 3;
+  for (int x = 0; x <= 4; ++x)
+    for (int y = 0; y <= 4; ++y)
+      for (int z = 0; z <= 4; ++z) ps.coords.insert(ps.coords.end(), {double(x), double(y), double(z)});
+  for (int c = 0; c < 8; ++c) ps.coords.insert(ps.coords.end(), {4.0 * (c & 1), 4.0 * (c >> 1 & 1), 4.0 * (c >> 2 & 1)});
+  return ps;
+}
+
 // The text form read back: counts, extreme points, facets.
 ref::StrictHull3 parse(const std::string& text) {
   std::istringstream in(text);
@@ -214,6 +228,10 @@ TEST_CASE("strict: view equals CGAL: 4..40 points, random and degenerate", "[str
     check_against_cgal(ps, h);
     check_triangulated(ps, h);
     RC_ASSERT(parse(ref::format_strict_hull3(h)) == h);
+    // the view (equal to CGAL's, above) passes the strict certifier, both forms
+    RC_ASSERT(certify::hull3_strict(ps, h.extreme_points, h.facets, false).ok);
+    const auto t = ref::fan_triangulated(h);
+    RC_ASSERT(certify::hull3_strict(ps, t.extreme_points, t.facets, true).ok);
   });
 }
 
@@ -227,18 +245,17 @@ TEST_CASE("strict: view equals CGAL on every generator family", "[strict]") {
       check_against_cgal(ps, h);
       check_triangulated(ps, h);
       if (n <= 50) REQUIRE(ref::strict_hull3(ps, brute::hull3(ps)) == h);
+      INFO(certify::hull3_strict(ps, h.extreme_points, h.facets, false).message());
+      REQUIRE(certify::hull3_strict(ps, h.extreme_points, h.facets, false).ok);
+      const auto t = ref::fan_triangulated(h);
+      REQUIRE(certify::hull3_strict(ps, t.extreme_points, t.facets, true).ok);
     }
 }
 
 TEST_CASE("strict: view: points on hull edges and facets, duplicated corners", "[strict]") {
   // The cube [0,4]^3 sampled on its integer lattice (points inside facets,
   // on edges, inside), corners repeated, in a shuffled order.
-  PointSet ps;
-  ps.dim = 3;
-  for (int x = 0; x <= 4; ++x)
-    for (int y = 0; y <= 4; ++y)
-      for (int z = 0; z <= 4; ++z) ps.coords.insert(ps.coords.end(), {double(x), double(y), double(z)});
-  for (int c = 0; c < 8; ++c) ps.coords.insert(ps.coords.end(), {4.0 * (c & 1), 4.0 * (c >> 1 & 1), 4.0 * (c >> 2 & 1)});
+  const PointSet ps = lattice_cube();
   std::vector<std::size_t> order(ps.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::mt19937_64 rng(3);
@@ -277,4 +294,107 @@ TEST_CASE("strict: view: malformed triangle lists are rejected", "[strict]") {
   PointSet flat = ps;
   flat.dim = 2;
   REQUIRE_THROWS_AS(ref::strict_hull3(flat, hull), std::invalid_argument);
+}
+
+// certify::hull3_strict rejects each way a strict view can be wrong, naming
+// the violated condition. Inputs: the lattice cube [0,4]^3 with its corners
+// repeated at larger indices (squares with lattice points on their edges and
+// inside), and a sphere lattice (many polygons of >= 4 vertices).
+TEST_CASE("strict: the strict certifier rejects wrong views with the violated condition", "[strict]") {
+  const PointSet cube = lattice_cube();
+  const auto h = ref::strict_hull3(cube, brute::hull3(cube));
+  auto expect = [&](const PointSet& ps, const std::vector<Index>& e, const std::vector<std::vector<Index>>& f,
+                    bool tri, const std::string& condition) {
+    const certify::Report r = certify::hull3_strict(ps, e, f, tri);
+    INFO(r.message());
+    REQUIRE_FALSE(r.ok);
+    REQUIRE(r.condition == condition);
+  };
+  REQUIRE(certify::hull3_strict(cube, h.extreme_points, h.facets, false).ok);
+  auto at = [&](int x, int y, int z) { return static_cast<Index>((x * 5 + y) * 5 + z); };
+  SECTION("a facet turned inward") {
+    auto f = h.facets;
+    std::reverse(f[2].begin() + 1, f[2].end());
+    expect(cube, h.extreme_points, f, false, "facet-polygon");
+  }
+  SECTION("a square split into two triangles") {
+    auto f = h.facets;
+    const auto sq = f[0];
+    f[0] = {sq[0], sq[1], sq[2]};
+    f.push_back({sq[0], sq[2], sq[3]});
+    expect(cube, h.extreme_points, f, false, "maximal-facets");
+    // in the triangulated view that split is allowed; the other squares are not triangles
+    expect(cube, h.extreme_points, f, true, "strict-indices");
+  }
+  SECTION("a lattice point inside an edge listed as a vertex") {
+    // (2,0,0) lies on the edge (0,0,0)-(4,0,0): inserted between them in
+    // both squares of that edge, it is a straight corner
+    const Index a = at(0, 0, 0), b = at(4, 0, 0), mid = at(2, 0, 0);
+    auto e = h.extreme_points;
+    e.insert(std::upper_bound(e.begin(), e.end(), mid), mid);
+    auto f = h.facets;
+    for (auto& poly : f)
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Index u = poly[i], v = poly[(i + 1) % poly.size()];
+        if ((u == a && v == b) || (u == b && v == a)) {
+          poly.insert(poly.begin() + static_cast<long>(i) + 1, mid);
+          break;
+        }
+      }
+    expect(cube, e, f, false, "facet-polygon");
+  }
+  SECTION("a corner reported by its larger duplicate") {
+    const Index small = at(4, 4, 4), big = static_cast<Index>(125 + 7);
+    auto e = h.extreme_points;
+    std::replace(e.begin(), e.end(), small, big);
+    std::sort(e.begin(), e.end());
+    auto f = h.facets;
+    for (auto& poly : f) std::replace(poly.begin(), poly.end(), small, big);
+    expect(cube, e, f, false, "smallest-index");
+  }
+  SECTION("a corner missing: the view of the input without it") {
+    PointSet cut;
+    cut.dim = 3;
+    std::vector<Index> back;
+    for (Index i = 0; i < cube.size(); ++i) {
+      const double* p = cube.point(i);
+      if (p[0] == 4 && p[1] == 4 && p[2] == 4) continue;
+      back.push_back(i);
+      test::add_point(cut, p);
+    }
+    auto c = ref::strict_hull3(cut, brute::hull3(cut));
+    for (Index& v : c.extreme_points) v = back[v];
+    for (auto& poly : c.facets)
+      for (Index& v : poly) v = back[v];
+    std::sort(c.extreme_points.begin(), c.extreme_points.end());
+    expect(cube, c.extreme_points, c.facets, false, "point-inside");
+  }
+  SECTION("a triangulated view with a vertex inside a facet") {
+    // fan each square from its centre point instead of from a corner: the
+    // centre is in one facet plane only
+    auto e = h.extreme_points;
+    std::vector<std::vector<Index>> f;
+    for (const auto& sq : h.facets) {
+      double c[3] = {0, 0, 0};
+      for (Index v : sq)
+        for (int j = 0; j < 3; ++j) c[j] += cube.point(v)[j] / 4;
+      const Index centre = at(static_cast<int>(c[0]), static_cast<int>(c[1]), static_cast<int>(c[2]));
+      e.push_back(centre);
+      for (std::size_t i = 0; i < 4; ++i) {
+        std::vector<Index> t = {centre, sq[i], sq[(i + 1) % 4]};
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        f.push_back(t);
+      }
+    }
+    std::sort(e.begin(), e.end());
+    expect(cube, e, f, true, "strictly-extreme");
+  }
+  SECTION("bad indices") {
+    auto e = h.extreme_points;
+    std::swap(e[0], e[1]);
+    expect(cube, e, h.facets, false, "strict-indices");
+    auto f = h.facets;
+    f[0][1] = at(2, 2, 2);  // an interior point, not listed
+    expect(cube, h.extreme_points, f, false, "strict-indices");
+  }
 }

@@ -3,21 +3,7 @@
 README's "multithreaded 2D hull" section): 10^7 points per distribution,
 the circle-thickness sweep, and the growth from 10^5 to 10^8 disk points.
 Run: /usr/bin/python3 docs/bench/plot_hull2.py (python3-matplotlib)."""
-import csv
-import os
-
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-here = os.path.dirname(os.path.abspath(__file__))
-
-
-def rows(name):
-    with open(os.path.join(here, name)) as f:
-        return list(csv.DictReader(l for l in f if not l.startswith("#")))
-
+from benchplot import plt, rows, save
 
 fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
 peers = ["flipflop:cpu", "flipflop:reference:graham-insert", "qhull", "cgal:ch_akl_toussaint",
@@ -49,5 +35,4 @@ ax[2].set_title("growth: flipflop:cpu exponent 0.93 (10^6..10^8)")
 ax[2].legend(fontsize=7)
 
 fig.suptitle("flipflop 2D hull (kernels_cpu/hull2, 2 cores) against Qhull and CGAL — identical outputs")
-fig.tight_layout()
-fig.savefig(os.path.join(here, "hull2.png"), dpi=90)
+save(fig, "hull2.png")

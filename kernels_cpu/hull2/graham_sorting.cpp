@@ -77,10 +77,11 @@ pred::StaticFilter static_filter_of(const std::vector<Pt2>& pts) {
 }
 
 std::vector<Index> graham_sorting(std::vector<Pt2> pts, const pred::StaticFilter& f, std::size_t chunk,
-                                  ScanCounts& counts) {
+                                  ScanCounts& counts, StageClock* clock) {
   chunk = std::max<std::size_t>(chunk, 1);
   // lines 4-5, once for both sets: the x order under the perturbation
   par_sort(pts, x_less);
+  if (clock) clock->mark("sort by x");
   // line 1
   const Pt2 vl = pts.front(), vr = pts.back();
   const std::size_t n = pts.size();
@@ -110,6 +111,7 @@ std::vector<Index> graham_sorting(std::vector<Pt2> pts, const pred::StaticFilter
   cycle.reserve(upper.size() + lower.size() - 2);
   for (std::size_t k = 0; k + 1 < upper.size(); ++k) cycle.push_back(upper[k].i);
   for (std::size_t k = 0; k + 1 < lower.size(); ++k) cycle.push_back(lower[k].i);
+  if (clock) clock->mark("split and flip-pop");
   return cycle;
 }
 

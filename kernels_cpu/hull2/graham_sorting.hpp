@@ -35,6 +35,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernels_cpu/stage_times.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/point_set.hpp"
 
@@ -56,8 +57,9 @@ struct ScanCounts {
 // SoS hull counter-clockwise, starting at v_r (not rotated). `f` must be valid
 // for every coordinate of `pts`.
 // `chunk`: vertices per chunk of the parallel flip-pop pass (>= 1).
+// `clock`, if given, marks the stages "sort by x" and "split and flip-pop".
 std::vector<Index> graham_sorting(std::vector<Pt2> pts, const pred::StaticFilter& f, std::size_t chunk,
-                                  ScanCounts& counts);
+                                  ScanCounts& counts, StageClock* clock = nullptr);
 
 // The static filter for the coordinates of pts (a parallel scan).
 pred::StaticFilter static_filter_of(const std::vector<Pt2>& pts);

@@ -36,6 +36,7 @@ bool spans_plane(const PointSet& ps, const std::vector<Index>& cycle) {
 }
 
 std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats& st) {
+  StageClock clock(opt.times);
   const hull2::ThrowAwayResult kept = hull2::throw_away(ps, opt.throw_away_from, opt.sample);  // 1.
   const std::vector<Index>& idx = kept.survivors;
   std::vector<hull2::Pt2> pts(idx.size());
@@ -44,7 +45,8 @@ std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hul
   });
   hull2::ScanCounts counts;
   const pred::StaticFilter f = hull2::static_filter_of(pts);
-  std::vector<Index> cycle = hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts);  // 2.
+  clock.mark("throw-away");
+  std::vector<Index> cycle = hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts, &clock);  // 2.
   // a strictly interior point exists only when the input spans the plane
   if (idx.size() == ps.size() && !spans_plane(ps, cycle)) {
     ref::require_planar_input(ps, kWho);  // throws the reference's message
@@ -56,7 +58,9 @@ std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hul
   st.flips_2_1 = counts.flips_2_1;
   st.rounds = counts.passes;
   st.hull_vertices = cycle.size();
-  return ref::rotate_to_smallest(std::move(cycle));
+  std::vector<Index> out = ref::rotate_to_smallest(std::move(cycle));
+  clock.mark("output");
+  return out;
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "kernels_cpu/stage_times.hpp"
 #include "reference/hull2/polygon.hpp"
 #include "reference/point_set.hpp"
 
@@ -33,6 +34,9 @@ struct Hull2Options {
   std::size_t throw_away_from = 1024;  // fewer points: no throw-away pass
   std::size_t sample = 0;              // throw-away sample size; 0: min(2^17, max(n / 64, 1024))
   std::size_t scan_chunk = 4096;       // vertices per chunk of the parallel flip-pop pass (>= 1)
+  // when set, filled with the seconds of each stage: throw-away, sort by x,
+  // split and flip-pop, output
+  StageTimes* times = nullptr;
 };
 
 // stats, if given, is reset and filled: input_vertices, discarded_early (by

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "kernels_cpu/parallel.hpp"
+#include "kernels_cpu/stage_times.hpp"
 #include "kernels_cpu/tsan.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
@@ -583,8 +584,9 @@ class FlipFlop {
 
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
-                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
+                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock) {
   const Mesh M = construct(ps, f, s, sd, tet, st);
+  clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
   // the reference's polyhedron structure, filled from the flat arrays (same
   // conventions: adj[t][k] is the triangle across edge k of t)
@@ -607,10 +609,13 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   // line 15: flip-flop (Algorithm 6), sequential
   ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
   FlipFlop(state, f, st).run();
-  return canonical_triangles(ref::poly::triangles(state.P));
+  clock.mark("flip-flop");
+  std::vector<Triangle> out = canonical_triangles(ref::poly::triangles(state.P));
+  clock.mark("canonical output");
+  return out;
 }
 
-std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st) {
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock) {
   if (ps.dim != 3 || ps.size() < 4 || ps.size() >= kNone / 2) {
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
     throw std::invalid_argument("hull3 (cpu): too many points for 32-bit indices");
@@ -628,10 +633,11 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st) {
   const StaticFilter f =
       parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
                              inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
-  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st);
+  clock.mark("initial tetrahedron and static filter");
+  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, exact, nullptr, tet, st);
+  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock);
 }
 
 }  // namespace
@@ -640,7 +646,8 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, 
   ref::Hull3Stats st;
   std::vector<Triangle> out;
   if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
-  with_threads(opt.threads, [&] { out = compute(ps, st); });
+  StageClock clock(opt.times);
+  with_threads(opt.threads, [&] { out = compute(ps, st, clock); });
   if (stats) *stats = st;
   return out;
 }

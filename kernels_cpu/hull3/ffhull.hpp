@@ -59,12 +59,16 @@
 #include <vector>
 
 #include "reference/hull3/hull3_stats.hpp"
+#include "kernels_cpu/stage_times.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::cpu {
 
 struct Hull3Options {
   int threads = 0;  // worker threads; 0: the runtime's default
+  // when set, filled with the seconds of each stage: initial tetrahedron and
+  // static filter, construction rounds, flip-flop, canonical output
+  StageTimes* times = nullptr;
 };
 
 // The canonical SoS convex hull (identical to ref::hull3_ffhull(ps)). stats,

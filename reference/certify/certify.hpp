@@ -107,4 +107,17 @@ Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level = 
 // vertex).
 Report rt2_strict(const PointSet& ps, const std::vector<Triangle>& tris);
 
+// The strict view of a 3D hull (reference/hull3/strict_hull3.hpp, `hull3
+// --strict`): `extreme` the strictly extreme points (increasing, the
+// smallest index at each location), `facets` convex polygons counter-
+// clockwise seen from outside, no two adjacent ones coplanar; with
+// `triangulated` (`--strict --triangulate`) the facets are triangles of
+// non-zero area and adjacent ones may be coplanar. Conditions in
+// certify_hull3_strict.cpp (strict-indices, smallest-index, facet-polygon,
+// hull3's conditions on the fan triangles at Level::exact, strictly-extreme,
+// maximal-facets). Independent of the algorithm: any program's strict hull
+// in this form can be checked.
+Report hull3_strict(const PointSet& ps, const std::vector<Index>& extreme,
+                    const std::vector<std::vector<Index>>& facets, bool triangulated);
+
 }  // namespace flipflop::certify

@@ -12,26 +12,11 @@
 
 #include "predicates/exact.hpp"
 #include "predicates/predicates.hpp"
+#include "reference/locations.hpp"
 
 namespace flipflop::ref {
 
 namespace {
-
-using Location = std::array<double, 3>;
-
-// Hash of a location; +0.0 folds -0.0 into 0.0 (they compare equal).
-struct LocationHash {
-  std::size_t operator()(const Location& p) const {
-    std::size_t h = 0;
-    for (double c : p) {
-      const double z = c + 0.0;
-      std::uint64_t bits;
-      std::memcpy(&bits, &z, sizeof bits);
-      h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-    }
-    return h;
-  }
-};
 
 struct UnionFind {
   std::vector<std::uint32_t> up;
@@ -118,22 +103,10 @@ StrictHull3 strict_hull3(const PointSet& ps, const std::vector<Triangle>& hull) 
     }
 
   // Every vertex to the smallest index at its location.
-  std::unordered_map<Location, Index, LocationHash> smallest;
+  const SmallestAtLocation smallest(ps);
   std::vector<Index> rep(n);
-  {
-    std::vector<std::uint8_t> used(n, 0);
-    for (const Triangle& T : hull)
-      for (Index v : T) used[v] = 1;
-    for (Index i = 0; i < n; ++i) {
-      const double* p = ps.point(i);
-      smallest.emplace(Location{p[0], p[1], p[2]}, i);  // the first (smallest) index stays
-    }
-    for (Index i = 0; i < n; ++i)
-      if (used[i]) {
-        const double* p = ps.point(i);
-        rep[i] = smallest.at(Location{p[0], p[1], p[2]});
-      }
-  }
+  for (const Triangle& T : hull)
+    for (Index v : T) rep[v] = smallest(v);
   auto P = [&](Index v) { return ps.point(rep[v]); };
 
   std::vector<std::uint8_t> degenerate(m);

@@ -1,0 +1,143 @@
+// bench_stages.cpp — `flipflop bench hull2|hull3 --stages`: where the time of
+// a whole `flipflop hull2|hull3` run on the multithreaded backend goes, stage
+// by stage, each the median of --reps runs:
+//
+//   read .xyz / read .npy   the generated input written to a temporary file
+//                           once (not timed), then read back by io::read_points
+//                           (parallel text parser / one-copy binary reader);
+//                           the points read must equal the generated ones bit
+//                           for bit;
+//   the kernel's stages     cpu::Hull2Options::times / Hull3Options::times
+//                           (throw-away, sort, flip-pop; initial tetrahedron,
+//                           construction rounds, flip-flop; canonical output);
+//   certify                 cpu::certify_hull2 / cpu::certify_hull3 at the
+//                           canonical level (must pass);
+//   write                   the index text to a temporary file.
+//
+// The last row, "total (.npy)", is read .npy + compute + certify + write of
+// each run (median over runs), what `flipflop hull3 in.npy -o out` spends
+// outside process start-up.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench/timing.hpp"
+#include "io/index_io.hpp"
+#include "io/read_points.hpp"
+#include "io/write_points.hpp"
+#include "kernels_cpu/hull2/certify_hull2.hpp"
+#include "kernels_cpu/hull2/hull2.hpp"
+#include "kernels_cpu/hull3/certify_hull3.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
+
+namespace flipflop::bench::detail {
+
+namespace {
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// A temporary directory removed at the end of the benchmark.
+struct TempDir {
+  std::filesystem::path dir;
+  TempDir() {
+    dir = std::filesystem::temp_directory_path() / ("flipflop-bench-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+}  // namespace
+
+int bench_stages(const Args& a) {
+  if (a.experiment != "hull2" && a.experiment != "hull3")
+    throw Usage("--stages applies to hull2 and hull3 (the multithreaded backends)");
+  const bool h3 = a.experiment == "hull3";
+  const PointSet pts = generated_input(a);
+  TempDir tmp;
+  const std::string xyz = (tmp.dir / "in.xyz").string(), npy = (tmp.dir / "in.npy").string(),
+                    out = (tmp.dir / "out.txt").string();
+  io::write_file(xyz, [&](std::ostream& os) { io::write_points(os, pts); });
+  io::write_file(npy, [&](std::ostream& os) { io::write_points_npy(os, pts); });
+
+  std::vector<std::string> order;  // stage names in first-seen order
+  std::map<std::string, std::vector<double>> times;
+  auto add = [&](const std::string& name, double s) {
+    if (!times.count(name)) order.push_back(name);
+    times[name].push_back(s);
+  };
+  std::size_t size = 0;
+  for (int r = 0; r < a.reps; ++r) {
+    double total = 0;
+    PointSet in;
+    add("read .xyz", seconds([&] { in = io::read_points(xyz, pts.dim, false); }));
+    if (!same_bits(in.coords, pts.coords)) throw std::runtime_error("bench --stages: .xyz read back differs");
+    double t = seconds([&] { in = io::read_points(npy, pts.dim, false); });
+    add("read .npy", t);
+    total += t;
+    if (!same_bits(in.coords, pts.coords)) throw std::runtime_error("bench --stages: .npy read back differs");
+    cpu::StageTimes st;
+    std::vector<Index> cycle;
+    std::vector<Triangle> tris;
+    if (h3) {
+      cpu::Hull3Options o;
+      o.times = &st;
+      t = seconds([&] { tris = cpu::hull3_ffhull(in, o); });
+      size = tris.size();
+    } else {
+      cpu::Hull2Options o;
+      o.times = &st;
+      t = seconds([&] { cycle = cpu::hull2_graham_sort(in, o); });
+      size = cycle.size();
+    }
+    total += t;
+    for (const auto& [name, s] : st.stages) add("compute: " + name, s);
+    certify::Report rep;
+    t = seconds([&] {
+      rep = h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
+               : cpu::certify_hull2(in, cycle, certify::Level::canonical);
+    });
+    if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
+    add("certify", t);
+    total += t;
+    t = seconds([&] {
+      io::write_file(out, [&](std::ostream& os) { h3 ? io::write_triangles(os, tris) : io::write_hull2(os, cycle); });
+    });
+    add("write", t);
+    total += t;
+    add("total (.npy)", total);
+  }
+  if (a.csv) {
+    std::printf("stage,median_s,min_s,max_s,size\n");
+    for (const std::string& name : order) {
+      const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
+      std::printf("%s,%.6f,%.6f,%.6f,%zu\n", name.c_str(), median(times[name]), *lo, *hi, size);
+    }
+    return 0;
+  }
+  std::printf("flipflop bench %s --stages: dist %s, n %zu, seed %llu, median of %d runs, flipflop:cpu, %zu %s\n",
+              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size, h3 ? "triangles" : "vertices");
+  const double total = median(times["total (.npy)"]);
+  std::printf("%-46s %12s %12s %12s %8s\n", "stage", "median s", "min s", "max s", "share");
+  for (const std::string& name : order) {
+    const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
+    const bool in_total = name != "read .xyz" && name.rfind("compute: ", 0) != 0;
+    std::printf("%-46s %12.4f %12.4f %12.4f", name.c_str(), median(times[name]), *lo, *hi);
+    if (name.rfind("compute: ", 0) == 0 || in_total) std::printf(" %7.1f%%", 100.0 * median(times[name]) / total);
+    std::printf("\n");
+  }
+  return 0;
+}
+
+}  // namespace flipflop::bench::detail
