@@ -15,6 +15,7 @@
 #include "reference/canonical.hpp"
 #include "gen/generate.hpp"
 #include "reference/certify/certify.hpp"
+#include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
 #include "reference/dimension.hpp"
 
@@ -351,6 +352,41 @@ TEST_CASE("certify: hull3 on many interior points (the inner-ball fast path) sti
       INFO(r.message());
       REQUIRE(r.condition == "point-inside");
       REQUIRE(r.detail.rfind("point " + std::to_string(*gone.begin()) + " ", 0) == 0);
+    }
+  }
+}
+
+TEST_CASE("certify: hull2 on many interior points (the inner-disk fast path) still rejects every outside point", "[certify]") {
+  // the 2D analogue: 20000 disk and square points, the hull of the input
+  // without two of its vertices, which must be named (the smallest)
+  for (const char* dist : {"disk", "square"}) {
+    gen::Options o;
+    o.seed = 23;
+    const PointSet ps = gen::generate(dist, 20000, o);
+    const std::vector<Index> hull = ref::hull2(ps, "graham-sort");
+    REQUIRE(certify::hull2(ps, hull, certify::Level::exact).ok);
+    REQUIRE(certify::hull2(ps, hull, certify::Level::canonical).ok);
+    std::vector<Index> verts = hull;
+    std::sort(verts.begin(), verts.end());
+    for (std::size_t k : {std::size_t{0}, verts.size() / 2, verts.size() - 1}) {
+      std::set<Index> gone = {verts[k], verts[k / 3]};
+      PointSet sub;
+      sub.dim = 2;
+      std::vector<Index> back;
+      for (Index i = 0; i < ps.size(); ++i)
+        if (!gone.count(i)) {
+          back.push_back(i);
+          sub.coords.insert(sub.coords.end(), ps.point(i), ps.point(i) + 2);
+        }
+      std::vector<Index> smaller = ref::hull2(sub, "graham-sort");
+      for (Index& x : smaller) x = back[x];
+      std::rotate(smaller.begin(), std::min_element(smaller.begin(), smaller.end()), smaller.end());
+      for (certify::Level level : {certify::Level::exact, certify::Level::canonical}) {
+        const certify::Report r = certify::hull2(ps, smaller, level);
+        INFO(dist << ": " << r.message());
+        REQUIRE(r.condition == "point-inside");
+        REQUIRE(r.detail.rfind("point " + std::to_string(*gone.begin()) + " ", 0) == 0);
+      }
     }
   }
 }

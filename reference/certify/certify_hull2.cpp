@@ -21,6 +21,7 @@
 // the inner side of its edges its vertices span conv(S), so every extreme
 // point is a vertex and every vertex lies on the boundary.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -28,6 +29,7 @@
 #include "predicates/static_filter.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_detail.hpp"
+#include "reference/certify/inner_ball.hpp"
 #include "reference/dimension.hpp"
 #include "reference/pseudo_angle.hpp"
 
@@ -190,8 +192,17 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
     }
     return lo;
   };
+  // Points strictly inside an exactly verified inner disk pass at once
+  // (inner_ball.hpp; the polygon L is certified convex above).
+  std::size_t candidates = 0;
+  for (Index p = 0; p < n; ++p) candidates += !is_vertex[p];
+  std::vector<std::array<Index, 2>> edges(mc);
+  for (std::size_t k = 0; k < mc; ++k) edges[k] = {L[k], L[(k + 1) % mc]};
+  const detail::InnerBall<2> ball =
+      candidates >= 8 * mc ? detail::InnerBall<2>(ps, edges, speedups.for_range) : detail::InnerBall<2>();
   // The edge p is not inside (ea -> eb), or false when p passes.
   auto fails = [&](Index p, Index& ea, Index& eb) {
+    if (ball.strictly_inside(ck.P(p))) return false;
     if (ck.orient(v0, L[1], p) <= strict) return ea = v0, eb = L[1], true;
     if (-ck.orient(v0, L[mc - 1], p) <= strict) return ea = L[mc - 1], eb = v0, true;
     const std::size_t k = sector(p);

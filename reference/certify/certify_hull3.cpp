@@ -45,6 +45,7 @@
 #include "predicates/static_filter.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_detail.hpp"
+#include "reference/certify/inner_ball.hpp"
 #include "reference/dimension.hpp"
 
 namespace flipflop::certify {
@@ -172,79 +173,6 @@ bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index
   out[0] = a, out[1] = b, out[2] = c, out[3] = d;
   return true;
 }
-
-// A ball inside the (already certified convex, star-shaped) surface:
-// a point strictly inside it is strictly inside conv(S), so it lies strictly
-// on the inner side of the facet whose cone contains it — exactly and under
-// the perturbation (an infinitesimal perturbation keeps it inside) — and needs
-// no walk (10^7 ball points: 97 % of them).
-// Set-up: a centre c (the rounded mean of the facets' vertices), r2 =
-// (0.999999 * min over facets of the floating distance from c)^2, a double;
-// then, for every facet (a, b, c') with outward normal n = (b - a) x (c' - a)
-// and w = c - a, exactly (GMP rationals): -n.w > 0 and (n.w)^2 >= r2 |n|^2,
-// i.e. the plane is at distance >= sqrt(r2) (zero-area facets bound nothing
-// and are skipped); any failure leaves the ball empty. The per-point test
-// |p - c|^2 < r2 is decided in floating point with room for its rounding:
-// the computed sum of three squared differences is within a relative 8u of
-// the exact one, plus 3 * 2^-1000 for underflow; with r2 >= 2^-900 the test
-// computed + 2^-990 < r2 (1 - 2^-40) implies the exact one. Overflow gives
-// Inf and no decision.
-class InnerBall {
- public:
-  InnerBall() = default;
-  // The exact per-facet checks run through for_range (Speedups::for_range).
-  template <class ForRange>
-  InnerBall(const PointSet& ps, const std::vector<Triangle>& tris, const ForRange& for_range) {
-    // the centre: the mean of the facets' vertices, rounded (any point works:
-    // the set-up verifies exactly that the ball is inside)
-    double sd[3] = {0, 0, 0};
-    for (const Triangle& t : tris)
-      for (Index v : t)
-        for (int j = 0; j < 3; ++j) sd[j] += ps.point(v)[j] / (3.0 * static_cast<double>(tris.size()));
-    for (int j = 0; j < 3; ++j) s_[j] = sd[j];
-    double dmin = std::numeric_limits<double>::infinity();
-    for (const Triangle& t : tris) {
-      const double *a = ps.point(t[0]), *b = ps.point(t[1]), *c = ps.point(t[2]);
-      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const double nn[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      const double len = std::sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
-      if (!(len > 0)) continue;
-      // facets are counter-clockwise seen from outside: n points outward
-      const double d = -(nn[0] * (sd[0] - a[0]) + nn[1] * (sd[1] - a[1]) + nn[2] * (sd[2] - a[2])) / len;
-      dmin = std::min(dmin, d);
-    }
-    const double r = dmin * 0.999999;
-    const double r2 = r * r;
-    if (!(r > 0) || !std::isfinite(r2) || r2 < 0x1p-900) return;
-    const mpq_class R2(r2);
-    mpq_class S[3];
-    for (int j = 0; j < 3; ++j) S[j] = mpq_class(sd[j]);
-    auto outside = [&](std::size_t i) {
-      const Triangle& t = tris[i];
-      mpq_class A[3], U[3], V[3];
-      for (int j = 0; j < 3; ++j) {
-        A[j] = mpq_class(ps.point(t[0])[j]);
-        U[j] = mpq_class(ps.point(t[1])[j]) - A[j];
-        V[j] = mpq_class(ps.point(t[2])[j]) - A[j];
-      }
-      const mpq_class N[3] = {U[1] * V[2] - U[2] * V[1], U[2] * V[0] - U[0] * V[2], U[0] * V[1] - U[1] * V[0]};
-      const mpq_class M = N[0] * N[0] + N[1] * N[1] + N[2] * N[2];
-      if (M == 0) return false;
-      const mpq_class D = -(N[0] * (S[0] - A[0]) + N[1] * (S[1] - A[1]) + N[2] * (S[2] - A[2]));
-      return D <= 0 || D * D < R2 * M;
-    };
-    if (detail::smallest_failing(tris.size(), for_range, outside) < tris.size()) return;  // not verified: no ball
-    limit_ = r2 * (1 - 0x1p-40);
-  }
-  bool strictly_inside(const double* p) const {
-    const double dx = p[0] - s_[0], dy = p[1] - s_[1], dz = p[2] - s_[2];
-    return dx * dx + dy * dy + dz * dz + 0x1p-990 < limit_;
-  }
-
- private:
-  double s_[3] = {0, 0, 0};
-  double limit_ = 0;  // 0: empty ball, no point is inside
-};
 
 // Where a walk over the cones from s starts: the directions from s are cut
 // into the cells of a cube map (6 faces of kSide x kSide); each cell holds a
@@ -443,7 +371,8 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
   std::size_t candidates = 0;
   for (Index p = 0; p < n; ++p) candidates += !is_vertex[p];
   // worth its exact set-up (one GMP test per facet) when points outnumber facets
-  const InnerBall ball = candidates >= 8 * tris.size() ? InnerBall(ps, tris, speedups.for_range) : InnerBall();
+  const detail::InnerBall<3> ball =
+      candidates >= 8 * tris.size() ? detail::InnerBall<3>(ps, tris, speedups.for_range) : detail::InnerBall<3>();
   const std::size_t cap = 4 * tris.size() + 100;
   auto check_point = [&](Index p) -> Report {
     if (ball.strictly_inside(ps.point(p))) return Report::pass();
