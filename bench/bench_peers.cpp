@@ -4,7 +4,8 @@
 // (gen/generate.hpp; generation not timed).
 //
 //   hull2  flipflop:cpu (kernels_cpu/hull2: throw-away and parallel
-//          Graham-sorting, all cores), flipflop:reference:graham-sort and
+//          Graham-sorting, all cores), flipflop:cpu:graham-insert (the same
+//          with parallel Graham-insertion), flipflop:reference:graham-sort and
 //          :graham-insert; qhull (libqhull_r), cgal:ch_akl_toussaint,
 //          cgal:ch_graham_andrew
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
@@ -164,6 +165,7 @@ int bench_peers(const Args& a) {
     return compare_peers<Cycle>(
         a, pts,
         {{"flipflop:cpu", [](const PointSet& p) { return cpu::hull2_graham_sort(p); }},
+         {"flipflop:cpu:graham-insert", [](const PointSet& p) { return cpu::hull2_graham_insert(p); }},
          {"flipflop:reference:graham-sort", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
          {"flipflop:reference:graham-insert", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
          {"qhull", peers::qhull_hull2},

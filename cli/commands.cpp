@@ -1,6 +1,7 @@
 // commands.cpp — gen, hull2/hull3/rt2/dt2 and certify.
 #include "cli/commands.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -91,15 +92,21 @@ std::vector<std::string> available_backends(const std::string& kind) {
 }
 
 namespace {
-// The algorithm the cpu backend computes (kernels_cpu/hull2: parallel
-// Graham-sorting, kernels_cpu/hull3: parallel ffHull); "" when none.
-std::string cpu_algorithm(const std::string& kind) {
-  return kind == "hull3" ? "ffhull" : kind == "hull2" ? "graham-sort" : "";
+// The algorithms the cpu backend computes (kernels_cpu/hull2: parallel
+// Graham-sorting and Graham-insertion, kernels_cpu/hull3: parallel ffHull).
+std::vector<std::string> cpu_algorithms(const std::string& kind) {
+  if (kind == "hull3") return {"ffhull"};
+  if (kind == "hull2") return {"graham-sort", "graham-insert"};
+  return {};
+}
+bool cpu_computes(const std::string& kind, const std::string& algo) {
+  const auto algos = cpu_algorithms(kind);
+  return std::find(algos.begin(), algos.end(), algo) != algos.end();
 }
 }  // namespace
 
 std::string default_backend(const std::string& kind, const std::string& algo) {
-  return !cpu_algorithm(kind).empty() && algo == cpu_algorithm(kind) ? "cpu" : "reference";
+  return cpu_computes(kind, algo) ? "cpu" : "reference";
 }
 
 std::vector<std::string> available_algorithms(const std::string& kind) {
@@ -176,9 +183,11 @@ int run_compute(const ComputeArgs& a) {
   const double t_read = seconds_since(t_read0);
   const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
-  if (backend == "cpu" && algo != cpu_algorithm(a.kind))
-    throw UsageError("the cpu backend computes --algo " + cpu_algorithm(a.kind) + " only, got '" + algo +
-                     "' (use --backend reference)");
+  if (backend == "cpu" && !cpu_computes(a.kind, algo)) {
+    std::string list;
+    for (const std::string& x : cpu_algorithms(a.kind)) list += (list.empty() ? "" : ", ") + x;
+    throw UsageError("the cpu backend computes --algo " + list + " only, got '" + algo + "' (use --backend reference)");
+  }
   if (a.threads != 0 && backend != "cpu")
     throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
@@ -196,7 +205,7 @@ int run_compute(const ComputeArgs& a) {
     if (backend == "cpu") {
       cpu::Hull2Options o;
       o.threads = a.threads;
-      cycle = cpu::hull2_graham_sort(ps, o, &st);
+      cycle = algo == "graham-insert" ? cpu::hull2_graham_insert(ps, o, &st) : cpu::hull2_graham_sort(ps, o, &st);
     } else {
       cycle = ref::hull2(ps, algo, &st);
     }

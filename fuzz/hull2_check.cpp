@@ -57,15 +57,16 @@ void expect(bool accept, const PointSet& ps, const std::vector<Index>& cycle, Le
          describe(ps) + "cycle " + describe(cycle));
 }
 
-// The cpu backend at `threads` threads, throw-away forced, tuning from bytes.
+// The cpu backend at `threads` threads, throw-away forced, tuning from bytes;
+// Graham-sorting or (insert) Graham-insertion.
 std::vector<Index> cpu_hull(const PointSet& ps, int threads, std::uint8_t sample, std::uint8_t chunk,
-                            ref::Hull2Stats* st) {
+                            ref::Hull2Stats* st, bool insert) {
   cpu::Hull2Options o;
   o.threads = threads;
   o.throw_away_from = 0;
   o.sample = sample % 70;  // 0: automatic (the whole input here)
   o.scan_chunk = 1 + chunk % 9;
-  return cpu::hull2_graham_sort(ps, o, st);
+  return insert ? cpu::hull2_graham_insert(ps, o, st) : cpu::hull2_graham_sort(ps, o, st);
 }
 
 bool same_location(const PointSet& ps, Index a, Index b) {
@@ -93,7 +94,7 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
     const std::uint8_t sample = r.byte(), chunk = r.byte();
     for (int threads : {1, 2}) {
       try {
-        (void)cpu_hull(ps, threads, sample, chunk, nullptr);
+        (void)cpu_hull(ps, threads, sample, chunk, nullptr, threads == 2);
         fail(kTarget, "cpu returned a hull of input that does not span the plane", describe(ps));
       } catch (const std::invalid_argument&) {
       } catch (const std::exception& e) {
@@ -177,16 +178,19 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
     }
   }
   const std::uint8_t sample = r.byte(), chunk = r.byte();
-  for (int threads : {1, 2}) {
+  for (int run = 0; run < 4; ++run) {
+    const int threads = 1 + run % 2;
+    const bool insert = run >= 2;
     std::vector<Index> got;
     ref::Hull2Stats st;
     try {
-      got = cpu_hull(ps, threads, sample, chunk, &st);
+      got = cpu_hull(ps, threads, sample, chunk, &st, insert);
     } catch (const std::exception& e) {
       fail(kTarget, std::string("cpu threw: ") + e.what(), describe(ps));
     }
     if (got != answer)
-      fail(kTarget, "cpu (" + std::to_string(threads) + " threads) differs from " + answer_from,
+      fail(kTarget, std::string("cpu ") + (insert ? "graham-insert" : "graham-sort") + " (" + std::to_string(threads) +
+                        " threads) differs from " + answer_from,
            describe(ps) + "cpu " + describe(got) + "\n" + answer_from + " " + describe(answer));
     if (st.discarded_early + st.polygon_vertices != n || st.polygon_vertices - st.flips_2_1 != got.size())
       fail(kTarget, "cpu: counters break their lemmas", describe(ps));

@@ -12,6 +12,7 @@
 //                           parallel, then merged pairwise in parallel
 //                           rounds): the result is unique, so it does not
 //                           depend on the thread count;
+//   make_units              pieces of at most kChunk points of segmented lists;
 //   par_select              the indices i of [0, n) with keep(i), in increasing
 //                           order (fixed chunks, each filtered by one task,
 //                           then concatenated in chunk order);
@@ -105,6 +106,31 @@ Index par_argmax(std::size_t n, const Key& key) {
   for (const Best& c : part)
     if (c.i != kNone && better(c.key, c.i, b)) b = c;
   return b.i;
+}
+
+// ---- work units of segmented point lists ----------------------------------------
+// Points grouped in K segments, segment k = [lo[k], lo[k + 1]); a unit is a
+// piece of at most kChunk points of one segment (load balance for the few
+// huge segments of the first rounds and the many small ones later).
+struct Units {
+  std::vector<std::uint32_t> seg;
+  std::vector<std::size_t> lo, hi;
+  std::vector<std::size_t> first;  // per segment: its first unit; size K + 1
+};
+inline Units make_units(const std::vector<std::size_t>& lo) {
+  Units U;
+  const std::size_t K = lo.empty() ? 0 : lo.size() - 1;
+  U.first.reserve(K + 1);
+  for (std::size_t k = 0; k < K; ++k) {
+    U.first.push_back(U.seg.size());
+    for (std::size_t i = lo[k]; i < lo[k + 1]; i += kChunk) {
+      U.seg.push_back(static_cast<std::uint32_t>(k));
+      U.lo.push_back(i);
+      U.hi.push_back(std::min(lo[k + 1], i + kChunk));
+    }
+  }
+  U.first.push_back(U.seg.size());
+  return U;
 }
 
 // ---- parallel sort -------------------------------------------------------------

@@ -444,7 +444,13 @@ TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, ba
     for (int y = 0; y < 40; ++y) grid += std::to_string(x) + " " + std::to_string(y) + "\n";
   check_cpu_backend(t, "hull2", t.file("grid2.xyz", grid),
                     {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo twist",
-                     "--backend reference --threads 2", "--algo graham-insert --threads 2"});
+                     "--backend reference --threads 2", "--algo twist --threads 2"});
+  // the cpu backend's Graham-insertion writes the same bytes
+  const fs::path a = t.dir / "insert.txt", b = t.dir / "sort.txt";
+  REQUIRE(run(t, "hull2 " + (t.dir / "grid2.xyz").string() + " --algo graham-insert --backend cpu --threads 2 -o " +
+                     a.string()).code == 0);
+  REQUIRE(run(t, "hull2 " + (t.dir / "grid2.xyz").string() + " --backend reference -o " + b.string()).code == 0);
+  CHECK(slurp(a) == slurp(b));
   std::string line;  // 2000 collinear points
   for (int i = 0; i < 2000; ++i) line += std::to_string(i) + " " + std::to_string(2 * i + 1) + "\n";
   const fs::path flat = t.file("line.xyz", line);

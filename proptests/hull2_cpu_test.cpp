@@ -1,6 +1,8 @@
 // hull2_cpu_test.cpp — the multithreaded 2D hull of kernels_cpu/hull2 (throw-
-// away, parallel Graham-sorting with chunked flip-pop) against the exact
-// sequential reference (ref::hull2_graham_sort): byte-identical canonical
+// away, then parallel Graham-sorting or parallel Graham-insertion, with
+// chunked flip-pop) against the exact sequential reference
+// (ref::hull2_graham_sort, and ref::hull2_graham_insert for the messages of
+// rejected input): byte-identical canonical
 // text for every input, at 1, 2 and 8 threads, degenerate inputs included,
 // and the same rejection (same message) of input that does not span the plane.
 //
@@ -17,7 +19,8 @@
 // Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
 // by prop_scaled): degenerate / random sets of 3..80 points 2000 / 4 = 500;
 // every generator family at 3..4000 points 2000 / 10 = 200; the deterministic
-// sweep: 11 families x 6 sizes x 2 seeds x 3 thread counts x 2 option sets;
+// sweep: 11 families x 6 sizes x 2 seeds x 3 thread counts x 2 option sets
+// x 2 algorithms;
 // the parallel certifier: 2000 / 4 = 500 sets, each with 5 answers (right and
 // edited) at 2 levels and 3 thread counts.
 #include <catch2/catch.hpp>
@@ -49,13 +52,20 @@ constexpr int kThreads[] = {1, 2, 8};
 using test::is_error;
 using test::outcome;
 
-std::string cpu_text(const PointSet& ps, cpu::Hull2Options o, int threads, ref::Hull2Stats* st = nullptr) {
+// The cpu backend's two algorithms, each against the reference's run of the
+// same algorithm (the same hull; on rejected input the same message, which
+// names the algorithm).
+enum class Algo { sort, insert };
+constexpr Algo kAlgos[] = {Algo::sort, Algo::insert};
+
+std::string cpu_text(const PointSet& ps, cpu::Hull2Options o, int threads, ref::Hull2Stats* st = nullptr,
+                     Algo a = Algo::sort) {
   o.threads = threads;
-  return outcome([&] { return cpu::hull2_graham_sort(ps, o, st); });
+  return outcome([&] { return a == Algo::sort ? cpu::hull2_graham_sort(ps, o, st) : cpu::hull2_graham_insert(ps, o, st); });
 }
 
-std::string ref_text(const PointSet& ps) {
-  return outcome([&] { return ref::hull2_graham_sort(ps); });
+std::string ref_text(const PointSet& ps, Algo a = Algo::sort) {
+  return outcome([&] { return a == Algo::sort ? ref::hull2_graham_sort(ps) : ref::hull2_graham_insert(ps); });
 }
 
 // Options that reach every path on small inputs (or the defaults).
@@ -76,15 +86,17 @@ rc::Gen<cpu::Hull2Options> any_options() {
 // removes one polygon vertex). Returns the reference text.
 std::string check_rc(const PointSet& ps, const cpu::Hull2Options& o) {
   const std::string expect = ref_text(ps);
-  for (int t : kThreads) {
-    ref::Hull2Stats st;
-    const std::string got = cpu_text(ps, o, t, &st);
-    RC_ASSERT(got == expect);
-    if (!is_error(expect)) {
-      RC_ASSERT(st.discarded_early + st.polygon_vertices == ps.size());
-      RC_ASSERT(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+  for (Algo a : kAlgos)
+    for (int t : kThreads) {
+      ref::Hull2Stats st;
+      const std::string got = cpu_text(ps, o, t, &st, a);
+      RC_ASSERT(got == ref_text(ps, a));
+      if (!is_error(expect)) {
+        RC_ASSERT(got == expect);
+        RC_ASSERT(st.discarded_early + st.polygon_vertices == ps.size());
+        RC_ASSERT(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+      }
     }
-  }
   // the throw-away alone keeps every vertex of the reference hull
   if (!is_error(expect)) {
     const auto kept = cpu::hull2::throw_away(ps, o.throw_away_from, o.sample).survivors;
@@ -135,15 +147,16 @@ TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread count
           REQUIRE(!dimension_problem(ps).empty());
         }
         for (const cpu::Hull2Options& o : {cpu::Hull2Options{}, forced})
-          for (int t : kThreads) {
-            INFO("threads " << t << ", sample " << o.sample);
-            REQUIRE(cpu_text(ps, o, t) == expect);
-            ++cases;
-          }
+          for (Algo a : kAlgos)
+            for (int t : kThreads) {
+              INFO("threads " << t << ", sample " << o.sample << (a == Algo::insert ? ", insertion" : ", sorting"));
+              REQUIRE(cpu_text(ps, o, t, nullptr, a) == (a == Algo::sort ? expect : ref_text(ps, a)));
+              ++cases;
+            }
       }
   std::cout << "hull2 cpu sweep: " << cases << " runs identical to the reference (" << rejected
             << " inputs rejected as collinear by both)\n";
-  REQUIRE(cases >= 11 * 6 * 2 * 3 * 2);
+  REQUIRE(cases >= 11 * 6 * 2 * 3 * 2 * 2);
 }
 
 TEST_CASE("hull2 cpu: large inputs of every family equal the reference, certified", "[hull2_cpu]") {
@@ -159,6 +172,7 @@ TEST_CASE("hull2 cpu: large inputs of every family equal the reference, certifie
       continue;
     }
     for (int t : kThreads) REQUIRE(cpu_text(ps, {}, t) == expect);
+    for (int t : kThreads) REQUIRE(cpu_text(ps, {}, t, nullptr, Algo::insert) == expect);
     REQUIRE(certify::hull2(ps, cpu::hull2_graham_sort(ps), certify::Level::canonical).ok);
   }
 }
@@ -171,6 +185,7 @@ TEST_CASE("hull2 cpu: input that does not span the plane is rejected like the re
     ps.coords.push_back(3.0 - 0.25 * i);
   }
   for (int t : kThreads) REQUIRE(cpu_text(ps, {}, t) == ref_text(ps));
+  for (int t : kThreads) REQUIRE(cpu_text(ps, {}, t, nullptr, Algo::insert) == ref_text(ps, Algo::insert));
   REQUIRE(is_error(cpu_text(ps, {}, 2)));
   ps.coords.assign(2000, 1.25);  // 1000 copies of one point
   REQUIRE(cpu_text(ps, {}, 2) == ref_text(ps));

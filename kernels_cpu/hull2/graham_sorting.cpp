@@ -9,10 +9,8 @@
 
 namespace flipflop::cpu::hull2 {
 
-namespace {
-
 // orient2d(a, b, c) under SoS: the static filter, then the staged predicate.
-inline int orient(const pred::StaticFilter& f, const Pt2& a, const Pt2& b, const Pt2& c) {
+int orient(const pred::StaticFilter& f, const Pt2& a, const Pt2& b, const Pt2& c) {
   const double* p[3] = {&a.x, &b.x, &c.x};
   if (int s = pred::static_sign<3>(f, p, nullptr)) return s;
   return pred::orient2d({a.i, &a.x}, {b.i, &b.x}, {c.i, &c.x});
@@ -20,11 +18,13 @@ inline int orient(const pred::StaticFilter& f, const Pt2& a, const Pt2& b, const
 
 // a before b in x under the perturbation (a strict total order on distinct
 // indices: the sort's result is unique).
-inline bool x_less(const Pt2& a, const Pt2& b) {
+bool x_less(const Pt2& a, const Pt2& b) {
   if (a.x != b.x) return a.x < b.x;
   if (a.i == b.i) return false;
   return pred::compare_sos({a.i, &a.x}, {b.i, &b.x}, 0) < 0;
 }
+
+namespace {
 
 // Flip-pop on c[lo, hi) as a stack scan, the two ends held; the kept vertices
 // are moved to c[lo, lo + k), k returned. A pop removes the stack's top p_i
@@ -43,8 +43,8 @@ std::size_t scan(const pred::StaticFilter& f, Pt2* c, std::size_t lo, std::size_
   return top - lo;
 }
 
-// Flip-pop on one chain (its first and last vertex are v_r / v_l: extreme,
-// never flipped): the chunk pass in parallel, then the final pass.
+}  // namespace
+
 std::vector<Pt2> flip_pop_chain(std::vector<Pt2> chain, const pred::StaticFilter& f, std::size_t chunk,
                                 ScanCounts& counts) {
   const std::size_t n = chain.size();
@@ -68,8 +68,6 @@ std::vector<Pt2> flip_pop_chain(std::vector<Pt2> chain, const pred::StaticFilter
   chain.resize(m);
   return chain;
 }
-
-}  // namespace
 
 pred::StaticFilter static_filter_of(const std::vector<Pt2>& pts) {
   return parallel_static_filter(

@@ -64,4 +64,16 @@ std::vector<Index> graham_sorting(std::vector<Pt2> pts, const pred::StaticFilter
 // The static filter for the coordinates of pts (a parallel scan).
 pred::StaticFilter static_filter_of(const std::vector<Pt2>& pts);
 
+// ---- shared with graham_insertion.hpp ---------------------------------------
+// orient2d(a, b, c) under SoS: the static filter, then the staged predicate.
+int orient(const pred::StaticFilter& f, const Pt2& a, const Pt2& b, const Pt2& c);
+// a before b in x under the perturbation (a strict total order on distinct
+// indices).
+bool x_less(const Pt2& a, const Pt2& b);
+// Flip-pop on one chain v_r ... v_l (upper, x descending) or v_l ... v_r
+// (lower, x ascending), whose two ends are extreme and never flipped: fixed
+// chunks in parallel, then a final pass (line 7 above).
+std::vector<Pt2> flip_pop_chain(std::vector<Pt2> chain, const pred::StaticFilter& f, std::size_t chunk,
+                                ScanCounts& counts);
+
 }  // namespace flipflop::cpu::hull2

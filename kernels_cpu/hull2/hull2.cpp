@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels_cpu/hull2/graham_insertion.hpp"
 #include "kernels_cpu/hull2/graham_sorting.hpp"
 #include "kernels_cpu/hull2/throw_away.hpp"
 #include "kernels_cpu/parallel.hpp"
@@ -14,9 +15,10 @@ namespace flipflop::cpu {
 
 namespace {
 
-// the reference's name of the algorithm computed (ref::hull2_graham_sort), so
-// that rejected input gets the reference's message
-constexpr const char* kWho = "hull2 graham-sort";
+// the reference's names of the algorithms computed (ref::hull2_graham_sort,
+// ref::hull2_graham_insert), so that rejected input gets the reference's message
+constexpr const char* kSort = "hull2 graham-sort";
+constexpr const char* kInsert = "hull2 graham-insert";
 
 // Some three points of `cycle` are not collinear (exactly). The cycle holds
 // every extreme point of the input, so this fails only when the whole input
@@ -35,7 +37,7 @@ bool spans_plane(const PointSet& ps, const std::vector<Index>& cycle) {
   return false;
 }
 
-std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats& st) {
+std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats& st, const char* who) {
   StageClock clock(opt.times);
   const hull2::ThrowAwayResult kept = hull2::throw_away(ps, opt.throw_away_from, opt.sample);  // 1.
   const std::vector<Index>& idx = kept.survivors;
@@ -46,15 +48,20 @@ std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hul
   hull2::ScanCounts counts;
   const pred::StaticFilter f = hull2::static_filter_of(pts);
   clock.mark("throw-away");
-  std::vector<Index> cycle = hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts, &clock);  // 2.
+  hull2::InsertionCounts ins;
+  std::vector<Index> cycle =
+      who == kInsert ? hull2::graham_insertion(std::move(pts), f, opt.scan_chunk, counts, ins, &clock)
+                     : hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts, &clock);  // 2.
   // a strictly interior point exists only when the input spans the plane
   if (idx.size() == ps.size() && !spans_plane(ps, cycle)) {
-    ref::require_planar_input(ps, kWho);  // throws the reference's message
-    throw std::logic_error(std::string(kWho) + ": collinear hull of an input that spans the plane");
+    ref::require_planar_input(ps, who);  // throws the reference's message
+    throw std::logic_error(std::string(who) + ": collinear hull of an input that spans the plane");
   }
   st.input_vertices = ps.size();
-  st.discarded_early = ps.size() - idx.size();
-  st.polygon_vertices = idx.size();
+  st.discarded_early = ps.size() - idx.size() + ins.dropped;
+  st.insertions = ins.insertions;
+  st.insertion_rounds = ins.rounds;
+  st.polygon_vertices = who == kInsert ? ins.insertions + 2 : idx.size();  // what flip-pop starts from
   st.flips_2_1 = counts.flips_2_1;
   st.rounds = counts.passes;
   st.hull_vertices = cycle.size();
@@ -63,20 +70,28 @@ std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hul
   return out;
 }
 
+std::vector<Index> run(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats* stats, const char* who) {
+  if (opt.threads < 0) throw std::invalid_argument("hull2 (cpu): the number of threads must be positive");
+  if (ps.dim != 2 || ps.size() < 3) {
+    ref::require_planar_input(ps, who);  // throws the reference's message
+    throw std::invalid_argument(std::string(who) + ": at least 3 points in 2D are needed");
+  }
+  if (ps.size() >= kNone / 2) throw std::invalid_argument(std::string(who) + ": too many points for 32-bit indices");
+  ref::Hull2Stats st;
+  std::vector<Index> out;
+  with_threads(opt.threads, [&] { out = compute(ps, opt, st, who); });
+  if (stats) *stats = st;
+  return out;
+}
+
 }  // namespace
 
 std::vector<Index> hull2_graham_sort(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats* stats) {
-  if (opt.threads < 0) throw std::invalid_argument("hull2 (cpu): the number of threads must be positive");
-  if (ps.dim != 2 || ps.size() < 3) {
-    ref::require_planar_input(ps, kWho);  // throws the reference's message
-    throw std::invalid_argument(std::string(kWho) + ": at least 3 points in 2D are needed");
-  }
-  if (ps.size() >= kNone / 2) throw std::invalid_argument(std::string(kWho) + ": too many points for 32-bit indices");
-  ref::Hull2Stats st;
-  std::vector<Index> out;
-  with_threads(opt.threads, [&] { out = compute(ps, opt, st); });
-  if (stats) *stats = st;
-  return out;
+  return run(ps, opt, stats, kSort);
+}
+
+std::vector<Index> hull2_graham_insert(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats* stats) {
+  return run(ps, opt, stats, kInsert);
 }
 
 }  // namespace flipflop::cpu

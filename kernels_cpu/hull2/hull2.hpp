@@ -8,7 +8,9 @@
 //                       on the survivors, with flip-pop (§4.1 Algorithm 1)
 //                       in chunks of the chains in parallel, then a final
 //                       pass (the CPU analogue of §4.2's shared-memory
-//                       variant).
+//                       variant) — or graham_insertion.hpp, parallel
+//                       Graham-insertion (§4.3 Algorithm 4) in rounds, then
+//                       the same flip-pop.
 //
 // The result is the canonical hull (DESIGN.md): counter-clockwise from the
 // smallest index, the unique SoS hull — identical to ref::hull2(ps, algo) for
@@ -43,5 +45,11 @@ struct Hull2Options {
 // the throw-away), polygon_vertices (the chains' polygon), flips_2_1, rounds
 // (flip-pop passes), hull_vertices.
 std::vector<Index> hull2_graham_sort(const PointSet& ps, const Hull2Options& opt = {}, ref::Hull2Stats* stats = nullptr);
+
+// The same hull by parallel Graham-insertion (graham_insertion.hpp, thesis
+// §4.3 Algorithm 4) on the throw-away's survivors: identical output. stats
+// as above, plus insertions and insertion_rounds; discarded_early counts the
+// points dropped by the throw-away and by the insertion rounds.
+std::vector<Index> hull2_graham_insert(const PointSet& ps, const Hull2Options& opt = {}, ref::Hull2Stats* stats = nullptr);
 
 }  // namespace flipflop::cpu

@@ -151,28 +151,6 @@ struct Segments {
   std::size_t count() const { return tri.size(); }
 };
 
-// Work units: pieces of at most kChunk points of one segment (load balance
-// for the few huge segments of the first rounds and the many small ones later).
-struct Units {
-  std::vector<std::uint32_t> seg;
-  std::vector<std::size_t> lo, hi;
-  std::vector<std::size_t> first;  // per segment: its first unit; size K + 1
-};
-Units make_units(const Segments& S) {
-  Units U;
-  U.first.reserve(S.count() + 1);
-  for (std::size_t k = 0; k < S.count(); ++k) {
-    U.first.push_back(U.seg.size());
-    for (std::size_t i = S.lo[k]; i < S.lo[k + 1]; i += kChunk) {
-      U.seg.push_back(static_cast<std::uint32_t>(k));
-      U.lo.push_back(i);
-      U.hi.push_back(std::min(S.lo[k + 1], i + kChunk));
-    }
-  }
-  U.first.push_back(U.seg.size());
-  return U;
-}
-
 // The buffers of the rounds, allocated once (fresh allocations every round
 // cost more in page faults than the round's work): the next round's segments
 // and the per-point child codes.
@@ -309,7 +287,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     X.side_plane(da, d, a), X.side_plane(dc, d, c), X.side_plane(dbp, d, b);
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
-    const Units U = make_units(S);
+    const Units U = make_units(S.lo);
     const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
@@ -330,7 +308,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     ++st.rounds;
     const std::size_t K = S.count();
     const std::uint32_t T = M.size();
-    const Units U = make_units(S);
+    const Units U = make_units(S.lo);
     // line 8: the furthest point of each triangle by the rounded distance keys
     // (ties: the smaller index; any point of the segment is correct, ffhull.hpp)
     std::vector<Best> ubest(U.seg.size());
