@@ -5,9 +5,11 @@
 // power5d: k = d+2 weighted points, the lifted test) and four input families,
 // n calls on fresh points each, the median over R runs of (time of the n
 // calls) / n, in ns, of
-//   flipflop_ns    the default path as the algorithms call it,
-//                  pred::lambda_sign(&filter, k, ids, p, w) with point ids
-//                  0..k-1: static filter, semi-static filter, dynamic filter,
+//   flipflop_ns    the default path as the algorithms call it: for orient2d,
+//                  orient3d, power2d and power3d the typed functions of
+//                  predicates/fast.hpp (the static filter inlined, the rest
+//                  out of line), otherwise pred::lambda_sign(&filter, k, ids,
+//                  p, w); point ids 0..k-1: static filter, semi-static filter, dynamic filter,
 //                  exact stage and, where the determinant is 0 (the degenerate
 //                  family), Simulation of Simplicity — a question CGAL does not
 //                  answer (it returns 0 there);
@@ -79,6 +81,7 @@
 
 #include "bench/timing.hpp"
 #include "peers/cgal_predicates.hpp"
+#include "predicates/fast.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 
@@ -262,6 +265,20 @@ struct Row {
                            std::to_string(want) + ")");
 }
 
+// The default path as the algorithms call it (see flipflop_ns above).
+inline int default_path(const pred::StaticFilter& f, const Kind& kind, const PointId* id, const double* const* p,
+                        const double* w) {
+  if (!kind.lifted && kind.k == 3) return pred::fast::orient2d(f, {id[0], p[0]}, {id[1], p[1]}, {id[2], p[2]});
+  if (!kind.lifted && kind.k == 4 && kind.dim == 3)
+    return pred::fast::orient3d(f, {id[0], p[0]}, {id[1], p[1]}, {id[2], p[2]}, {id[3], p[3]});
+  if (kind.lifted && kind.dim == 2)
+    return pred::fast::power2d(f, {id[0], p[0], w[0]}, {id[1], p[1], w[1]}, {id[2], p[2], w[2]}, {id[3], p[3], w[3]});
+  if (kind.lifted && kind.dim == 3)
+    return pred::fast::power3d(f, {id[0], p[0], w[0]}, {id[1], p[1], w[1]}, {id[2], p[2], w[2]},
+                               {id[3], p[3], w[3]}, {id[4], p[4], w[4]});
+  return pred::lambda_sign(&f, kind.k, id, p, w);
+}
+
 Row measure(const Kind& kind, Family fam, const Args& a) {
   const Calls c = make_calls(kind, fam, a.n, a.seed);
   const int k = kind.k;
@@ -293,14 +310,14 @@ Row measure(const Kind& kind, Family fam, const Args& a) {
     if (ex_sos != sos) disagree(kind, fam, "the expansion stage with SoS", i, ex_sos, sos);
     const int ff_sos = pred::lambda_sign(&filter, k, ids, p, w);
     if (ff_sos != sos) disagree(kind, fam, "the default path with SoS", i, ff_sos, sos);
+    const int typed = default_path(filter, kind, ids, p, w);
+    if (typed != sos) disagree(kind, fam, "the typed default path (fast.hpp) with SoS", i, typed, sos);
   }
   Row r;
   r.static_decides = static_cast<double>(st_dec) / static_cast<double>(c.n);
   r.dynamic_decides = static_cast<double>(dyn_dec) / static_cast<double>(c.n);
   // ---- times ----
-  r.flipflop = ns_per_call(c.n, a.reps, [&](std::size_t i) {
-    return pred::lambda_sign(&filter, k, ids, c.p(i), c.w(i));
-  });
+  r.flipflop = ns_per_call(c.n, a.reps, [&](std::size_t i) { return default_path(filter, kind, ids, c.p(i), c.w(i)); });
   r.stat = ns_per_call(c.n, a.reps, [&](std::size_t i) {
     return pred::stage::static_filter(filter, k, c.p(i), c.w(i));
   });

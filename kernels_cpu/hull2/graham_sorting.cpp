@@ -5,15 +5,13 @@
 #include <algorithm>
 
 #include "kernels_cpu/parallel.hpp"
-#include "predicates/predicates.hpp"
+#include "predicates/fast.hpp"
 
 namespace flipflop::cpu::hull2 {
 
 // orient2d(a, b, c) under SoS: the static filter, then the staged predicate.
 int orient(const pred::StaticFilter& f, const Pt2& a, const Pt2& b, const Pt2& c) {
-  const double* p[3] = {&a.x, &b.x, &c.x};
-  if (int s = pred::static_sign<3>(f, p, nullptr)) return s;
-  return pred::orient2d({a.i, &a.x}, {b.i, &b.x}, {c.i, &c.x});
+  return pred::fast::orient2d(f, {a.i, &a.x}, {b.i, &b.x}, {c.i, &c.x});
 }
 
 // a before b in x under the perturbation (a strict total order on distinct
