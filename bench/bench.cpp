@@ -23,7 +23,7 @@ const char* kUsage =
     "       flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]\n"
     "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n"
     "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case) [--csv]\n"
-    "       flipflop bench hull2|hull3 --stages --dist NAME --n N [...]  (time by stage of flipflop:cpu:\n"
+    "       flipflop bench hull2|hull3|rt2|dt2 --stages --dist NAME --n N [...]  (time by stage of flipflop:cpu:\n"
     "                      read .xyz/.npy, the kernel's stages, certify, write)\n";
 
 unsigned long long to_count(const std::string& opt, const std::string& s) {

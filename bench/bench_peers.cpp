@@ -11,8 +11,12 @@
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
 //          flipflop:reference:ffhull, :splay (:twist-flip, quadratic, for
 //          n <= 20000); qhull (libqhull_r, Qt), cgal:convex_hull_3
-//   dt2    flipflop ffrt, lawson; CGAL Delaunay_triangulation_2
-//   rt2    flipflop ffrt; CGAL Regular_triangulation_2
+//   dt2    flipflop:cpu (kernels_cpu/rt2: BRIO order, incremental flipping,
+//          parallel sort and output), flipflop:reference:ffrt and :lawson;
+//          cgal:delaunay_triangulation_2 (range insertion, spatially sorted),
+//          qhull (libqhull_r, d Qbb Qt)
+//   rt2    flipflop:cpu, flipflop:reference:ffrt;
+//          cgal:regular_triangulation_2 (range insertion, spatially sorted)
 //
 // A timed run is one call: for a peer, the peers/ wrapper (copying the points
 // into the peer's types, the peer's computation, and sorting its output into
@@ -33,6 +37,7 @@
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #include "peers/peers.hpp"
 #include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
@@ -190,14 +195,17 @@ int bench_peers(const Args& a) {
   if (a.experiment == "dt2")
     return compare_peers<Tris>(
         a, pts,
-        {{"flipflop ffrt (exact)", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
-         {"flipflop lawson (exact)", [](const PointSet& p) { return ref::dt2_lawson(p); }},
-         {"CGAL Delaunay_triangulation_2", peers::cgal_delaunay2}},
+        {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }},
+         {"flipflop:reference:ffrt", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
+         {"flipflop:reference:lawson", [](const PointSet& p) { return ref::dt2_lawson(p); }},
+         {"cgal:delaunay_triangulation_2", peers::cgal_delaunay2},
+         {"qhull", peers::qhull_delaunay2}},
         "triangles");
   return compare_peers<Tris>(
       a, pts,
-      {{"flipflop ffrt (exact)", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
-       {"CGAL Regular_triangulation_2", peers::cgal_regular2}},
+      {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }},
+       {"flipflop:reference:ffrt", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
+       {"cgal:regular_triangulation_2", peers::cgal_regular2}},
       "triangles");
 }
 

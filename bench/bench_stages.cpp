@@ -1,17 +1,19 @@
-// bench_stages.cpp — `flipflop bench hull2|hull3 --stages`: where the time of
-// a whole `flipflop hull2|hull3` run on the multithreaded backend goes, stage
-// by stage, each the median of --reps runs:
+// bench_stages.cpp — `flipflop bench hull2|hull3|rt2|dt2 --stages`: where the
+// time of a whole `flipflop hull2|hull3|rt2|dt2` run on the multithreaded
+// backend goes, stage by stage, each the median of --reps runs:
 //
 //   read .xyz / read .npy   the generated input written to a temporary file
 //                           once (not timed), then read back by io::read_points
 //                           (parallel text parser / one-copy binary reader);
 //                           the points read must equal the generated ones bit
 //                           for bit;
-//   the kernel's stages     cpu::Hull2Options::times / Hull3Options::times
-//                           (throw-away, sort, flip-pop; initial tetrahedron,
-//                           construction rounds, flip-flop; canonical output);
-//   certify                 cpu::certify_hull2 / cpu::certify_hull3 at the
-//                           canonical level (must pass);
+//   the kernel's stages     cpu::Hull2Options::times / Hull3Options::times /
+//                           Rt2Options::times (throw-away, sort, flip-pop;
+//                           initial tetrahedron, construction rounds,
+//                           flip-flop; BRIO sort, insertion, output; the
+//                           canonical output);
+//   certify                 cpu::certify_hull2 / cpu::certify_hull3 /
+//                           certify::rt2 at the canonical level (must pass);
 //   write                   the index text to a temporary file.
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
@@ -36,6 +38,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 
 namespace flipflop::bench::detail {
 
@@ -61,9 +64,7 @@ struct TempDir {
 }  // namespace
 
 int bench_stages(const Args& a) {
-  if (a.experiment != "hull2" && a.experiment != "hull3")
-    throw Usage("--stages applies to hull2 and hull3 (the multithreaded backends)");
-  const bool h3 = a.experiment == "hull3";
+  const bool h3 = a.experiment == "hull3", tri = a.experiment == "rt2" || a.experiment == "dt2";
   const PointSet pts = generated_input(a);
   TempDir tmp;
   const std::string xyz = (tmp.dir / "in.xyz").string(), npy = (tmp.dir / "in.npy").string(),
@@ -81,16 +82,23 @@ int bench_stages(const Args& a) {
   for (int r = 0; r < a.reps; ++r) {
     double total = 0;
     PointSet in;
-    add("read .xyz", seconds([&] { in = io::read_points(xyz, pts.dim, false); }));
-    if (!same_bits(in.coords, pts.coords)) throw std::runtime_error("bench --stages: .xyz read back differs");
-    double t = seconds([&] { in = io::read_points(npy, pts.dim, false); });
+    add("read .xyz", seconds([&] { in = io::read_points(xyz, pts.dim, pts.weighted); }));
+    if (!same_bits(in.coords, pts.coords) || !same_bits(in.weights, pts.weights))
+      throw std::runtime_error("bench --stages: .xyz read back differs");
+    double t = seconds([&] { in = io::read_points(npy, pts.dim, pts.weighted); });
     add("read .npy", t);
     total += t;
-    if (!same_bits(in.coords, pts.coords)) throw std::runtime_error("bench --stages: .npy read back differs");
+    if (!same_bits(in.coords, pts.coords) || !same_bits(in.weights, pts.weights))
+      throw std::runtime_error("bench --stages: .npy read back differs");
     cpu::StageTimes st;
     std::vector<Index> cycle;
     std::vector<Triangle> tris;
-    if (h3) {
+    if (tri) {
+      cpu::Rt2Options o;
+      o.times = &st;
+      t = seconds([&] { tris = cpu::rt2(in, o); });
+      size = tris.size();
+    } else if (h3) {
       cpu::Hull3Options o;
       o.times = &st;
       t = seconds([&] { tris = cpu::hull3_ffhull(in, o); });
@@ -105,14 +113,15 @@ int bench_stages(const Args& a) {
     for (const auto& [name, s] : st.stages) add("compute: " + name, s);
     certify::Report rep;
     t = seconds([&] {
-      rep = h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
-               : cpu::certify_hull2(in, cycle, certify::Level::canonical);
+      rep = tri  ? certify::rt2(in, tris, certify::Level::canonical)
+            : h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
+                 : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });
     if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
     add("certify", t);
     total += t;
     t = seconds([&] {
-      io::write_file(out, [&](std::ostream& os) { h3 ? io::write_triangles(os, tris) : io::write_hull2(os, cycle); });
+      io::write_file(out, [&](std::ostream& os) { h3 || tri ? io::write_triangles(os, tris) : io::write_hull2(os, cycle); });
     });
     add("write", t);
     total += t;
@@ -127,7 +136,7 @@ int bench_stages(const Args& a) {
     return 0;
   }
   std::printf("flipflop bench %s --stages: dist %s, n %zu, seed %llu, median of %d runs, flipflop:cpu, %zu %s\n",
-              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size, h3 ? "triangles" : "vertices");
+              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size, h3 || tri ? "triangles" : "vertices");
   const double total = median(times["total (.npy)"]);
   std::printf("%-46s %12s %12s %12s %8s\n", "stage", "median s", "min s", "max s", "share");
   for (const std::string& name : order) {

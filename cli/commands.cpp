@@ -19,6 +19,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -87,17 +88,25 @@ void write_result_file(const std::string& path, io::Format f, const std::functio
 }
 
 std::vector<std::string> available_backends(const std::string& kind) {
-  if (kind == "hull3" || kind == "hull2") return {"cpu", "reference"};
+  if (kind == "hull3" || kind == "hull2" || kind == "rt2" || kind == "dt2") return {"cpu", "reference"};
   return {"reference"};
 }
 
 namespace {
 // The algorithms the cpu backend computes (kernels_cpu/hull2: parallel
-// Graham-sorting and Graham-insertion, kernels_cpu/hull3: parallel ffHull).
+// Graham-sorting and Graham-insertion, kernels_cpu/hull3: parallel ffHull,
+// kernels_cpu/rt2: incremental flipping in BRIO order, which only it has).
 std::vector<std::string> cpu_algorithms(const std::string& kind) {
   if (kind == "hull3") return {"ffhull"};
   if (kind == "hull2") return {"graham-sort", "graham-insert"};
+  if (kind == "rt2" || kind == "dt2") return {"incremental"};
   return {};
+}
+// The reference's default algorithm (when --backend reference is asked for
+// without --algo).
+std::string reference_default_algorithm(const std::string& kind) {
+  if (kind == "rt2" || kind == "dt2") return "ffrt";
+  return default_algorithm(kind);
 }
 bool cpu_computes(const std::string& kind, const std::string& algo) {
   const auto algos = cpu_algorithms(kind);
@@ -112,8 +121,8 @@ std::string default_backend(const std::string& kind, const std::string& algo) {
 std::vector<std::string> available_algorithms(const std::string& kind) {
   std::vector<std::string> algos;
   if (kind == "hull2") algos = ref::hull2_algorithms();
-  if (kind == "rt2") algos = {"ffrt", "ffrt-vfirst"};
-  if (kind == "dt2") algos = {"ffrt", "ffrt-vfirst", "lawson"};
+  if (kind == "rt2") algos = {"incremental", "ffrt", "ffrt-vfirst"};
+  if (kind == "dt2") algos = {"incremental", "ffrt", "ffrt-vfirst", "lawson"};
   if (kind == "hull3") algos = ref::hull3_algorithms();
   algos.push_back("brute");
   return algos;
@@ -181,8 +190,13 @@ int run_compute(const ComputeArgs& a) {
   const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
   const double t_read = seconds_since(t_read0);
-  const std::string algo = a.algo.empty() ? default_algorithm(a.kind) : a.algo;
+  const std::string algo = !a.algo.empty()            ? a.algo
+                           : a.backend == "reference" ? reference_default_algorithm(a.kind)
+                                                      : default_algorithm(a.kind);
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
+  if (backend == "reference" && algo == "incremental")
+    throw UsageError("--algo incremental is the cpu backend's (kernels_cpu/rt2); the reference computes ffrt, "
+                     "ffrt-vfirst" + std::string(a.kind == "dt2" ? ", lawson" : "") + " and brute");
   if (backend == "cpu" && !cpu_computes(a.kind, algo)) {
     std::string list;
     for (const std::string& x : cpu_algorithms(a.kind)) list += (list.empty() ? "" : ", ") + x;
@@ -212,6 +226,15 @@ int run_compute(const ComputeArgs& a) {
     counts = "2-1 flips " + std::to_string(st.flips_2_1) + ", flip-pop passes " + std::to_string(st.rounds) +
              ", points discarded early " + std::to_string(st.discarded_early) + ", insertions " +
              std::to_string(st.insertions) + ", twists " + std::to_string(st.twists);
+  } else if ((a.kind == "rt2" || a.kind == "dt2") && backend == "cpu") {
+    // kernels_cpu/rt2: BRIO order, incremental flipping, byte-identical to
+    // the reference
+    ref::Rt2Stats st;
+    cpu::Rt2Options o;
+    o.threads = a.threads;
+    tris = cpu::rt2(ps, o, &st);
+    counts = "1-3 flips " + std::to_string(st.flips_1_3) + ", 2-2 flips " + std::to_string(st.flips_2_2) +
+             ", 3-1 flips " + std::to_string(st.flips_3_1) + ", discarded early " + std::to_string(st.discarded_early);
   } else if ((a.kind == "rt2" || a.kind == "dt2") && algo != "brute") {
     // ffRT (§5.3): 1-3 insertions with the virtual vertex, then flip-flop
     // (Algorithm 5: combined V/D criterion, or V-criterion first); Lawson

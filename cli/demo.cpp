@@ -16,6 +16,7 @@
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #include "peers/peers.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -127,6 +128,8 @@ int run_demo() {
     o.wlo = 0;
     o.whi = 1e-5;
     PointSet ps = gen::generate("square", 100000, o);
+    all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "flipflop:cpu (incremental)", ps, [&] { return cpu::rt2(ps); },
+                            r2(ps), Level::canonical);
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps),
                             Level::canonical);
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "CGAL Regular_triangulation_2", ps,
@@ -152,6 +155,8 @@ int run_demo() {
     gen::Options o;
     PointSet ps = gen::generate("grid2", 144, o);
     const std::string job = "dt2 integer grid";
+    all_ok &= run_one<Tris>(job, "flipflop:cpu (incremental)", ps, [&] { return cpu::rt2(ps); }, r2(ps),
+                            Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps), Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop Lawson", ps, [&] { return ref::dt2_lawson(ps); }, r2(ps), Level::canonical);
     // the strict view: no zero-area triangle (dt2 --strict), certified as such

@@ -2,7 +2,7 @@
 //
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
-//                                [--threads N (hull2, hull3: cpu backend)]
+//                                [--threads N (cpu backend)]
 //   flipflop rtd IN --dim d [-o OUT] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N (hull2, hull3)]
@@ -61,9 +61,8 @@ int main(int argc, char** argv) {
                     "backend computing the result (default " + default_backend(kinds[k], default_algorithm(kinds[k])) +
                         ")")
         ->check(CLI::IsMember(available_backends(kinds[k])));
-    if (std::string(kinds[k]) == "hull3" || std::string(kinds[k]) == "hull2")
-      cmd->add_option("--threads", c.threads, "worker threads of the cpu backend (default: all cores)")
-          ->check(CLI::PositiveNumber);
+    cmd->add_option("--threads", c.threads, "worker threads of the cpu backend (default: all cores)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--algo", c.algo, "algorithm (default " + default_algorithm(kinds[k]) + ")")
         ->check(CLI::IsMember(available_algorithms(kinds[k])));
     cmd->add_flag("--stats", c.stats, "print counts and timings to standard error");

@@ -5,11 +5,14 @@
 // Byte 0: bit 0 weighted. Then a 2D point set of 1..32 points (fuzz_input.hpp:
 // cocircular lattice points, duplicates, collinear runs, quarter weights,
 // power-of-two scalings). Checked:
-//   * input that does not span the plane: rt2_ffrt (both flip-flop variants)
-//     and dt2_lawson throw std::invalid_argument;
+//   * input that does not span the plane: rt2_ffrt (both flip-flop variants),
+//     dt2_lawson and the cpu backend (kernels_cpu/rt2, one and three
+//     threads, one BRIO round and rounds down to one point) throw
+//     std::invalid_argument;
 //   * otherwise rt2_ffrt with FlipFlopVariant::combined and ::v_first return
 //     the same canonical triangles, equal to brute::rt2 (the definition, for
 //     n <= 20), accepted by certify::rt2 at Level::canonical and Level::exact;
+//   * the cpu backend (same settings) returns the same triangles;
 //   * unweighted input (or all weights 0): dt2_lawson returns the same;
 //   * flip_flop (both variants) started from the answer returns it, and
 //     started from the Delaunay triangulation of the same points without
@@ -26,6 +29,7 @@
 
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -67,6 +71,20 @@ void expect_same(const std::string& what, const PointSet& ps, const Tris& got, c
     fail(kTarget, what + " differs from rt2_ffrt", describe(ps) + what + " " + describe(got) + "\nrt2_ffrt " + describe(answer));
 }
 
+// the cpu backend's settings tried: 1 and 3 threads, one BRIO round and
+// rounds down to a single point (the result must not depend on them)
+std::vector<cpu::Rt2Options> cpu_settings() {
+  std::vector<cpu::Rt2Options> out;
+  for (int threads : {1, 3})
+    for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
+      cpu::Rt2Options o;
+      o.threads = threads;
+      o.brio_min = brio;
+      out.push_back(o);
+    }
+  return out;
+}
+
 std::size_t vertex_count(const Tris& tris, std::size_t n) {
   std::vector<char> seen(n, 0);
   for (const Triangle& t : tris)
@@ -89,6 +107,8 @@ bool check_rt2_input(const std::uint8_t* data, std::size_t size) {
     must_throw<std::invalid_argument>("rt2_ffrt v_first", ps,
                                       [&] { return ref::rt2_ffrt(ps, nullptr, FlipFlopVariant::v_first); });
     if (zero_weights) must_throw<std::invalid_argument>("dt2_lawson", ps, [&] { return ref::dt2_lawson(ps); });
+    for (const cpu::Rt2Options& o : cpu_settings())
+      must_throw<std::invalid_argument>("cpu::rt2", ps, [&] { return cpu::rt2(ps, o); });
     return true;
   }
 
@@ -98,6 +118,9 @@ bool check_rt2_input(const std::uint8_t* data, std::size_t size) {
               must_return("rt2_ffrt v_first", ps, [&] { return ref::rt2_ffrt(ps, nullptr, FlipFlopVariant::v_first); }),
               answer);
   if (n <= kMaxBrute) expect_same("brute::rt2", ps, brute::rt2(ps), answer);
+  for (const cpu::Rt2Options& o : cpu_settings())
+    expect_same("cpu::rt2 (" + std::to_string(o.threads) + " threads, brio_min " + std::to_string(o.brio_min) + ")", ps,
+                must_return("cpu::rt2", ps, [&] { return cpu::rt2(ps, o); }), answer);
   for (auto level : {certify::Level::canonical, certify::Level::exact}) {
     const certify::Report rep = certify::rt2(ps, answer, level);
     if (!rep.ok)

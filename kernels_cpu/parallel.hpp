@@ -17,7 +17,8 @@
 //                           order (fixed chunks, each filtered by one task,
 //                           then concatenated in chunk order);
 //   parallel_static_filter  the per-input static filter of
-//                           predicates/static_filter.hpp from a parallel scan;
+//                           predicates/static_filter.hpp from a parallel scan
+//                           (of values, or of a point set with its weights);
 //   certify_in_parallel     a reference certifier with certify::Speedups
 //                           (parallel per-point checks, parallel filter scan).
 #pragma once
@@ -201,8 +202,11 @@ inline int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple 
   return e - 1075 + __builtin_ctzll(m);
 }
 
+// The representatives of m values value(0..m) for StaticFilter::for_points:
+// per chunk the value of largest magnitude, the value of lowest set bit and a
+// non-finite value if any (0 where none).
 template <class Value>
-pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra) {
+std::vector<double> filter_representatives(std::size_t m, const Value& value) {
   const std::size_t chunks = (m + kChunk - 1) / kChunk;
   std::vector<double> reps(chunks * 3, 0.0);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
@@ -224,9 +228,29 @@ pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, con
       reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
     }
   });
+  return reps;
+}
+
+template <class Value>
+pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra) {
+  std::vector<double> reps = filter_representatives(m, value);
   reps.insert(reps.end(), extra.begin(), extra.end());
   while (reps.size() % 3) reps.push_back(0.0);
   return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
+}
+
+// The static filter of a point set with its weights (when weighted): the
+// coordinates' and the weights' representatives, padded with zeros (which
+// change neither the largest magnitude nor the lowest set bit).
+inline pred::StaticFilter parallel_static_filter(const PointSet& ps) {
+  std::vector<double> c = filter_representatives(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; });
+  std::vector<double> w;
+  if (ps.weighted) w = filter_representatives(ps.weights.size(), [&](std::size_t i) { return ps.weights[i]; });
+  const std::size_t dim = static_cast<std::size_t>(ps.dim);
+  const std::size_t k = std::max((c.size() + dim - 1) / dim, w.size());
+  c.resize(k * dim, 0.0);
+  w.resize(k, 0.0);
+  return pred::StaticFilter::for_points(c.data(), k, ps.dim, ps.weighted ? w.data() : nullptr);
 }
 
 // Runs certify(speedups) (a certifier of reference/certify taking

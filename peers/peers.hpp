@@ -30,6 +30,11 @@ namespace flipflop::peers {
 std::vector<Index> qhull_hull2(const PointSet& pts);
 // Facets of the 3D hull ("qhull Qt": merged facets triangulated).
 std::vector<Triangle> qhull_hull3(const PointSet& pts);
+// Delaunay triangulation of 2D points ("qhull d Qbb Qt", what qdelaunay and
+// scipy.spatial.Delaunay run): the lower facets of the lifted hull,
+// counter-clockwise. Qhull merges cocircular facets and triangulates them
+// its own way; duplicated points are kept once.
+std::vector<Triangle> qhull_delaunay2(const PointSet& pts);
 // Errors reported by Qhull (too few points, lower-dimensional input, e.g.
 // QH6154 "initial simplex is flat") are thrown as std::runtime_error holding
 // the first line of Qhull's message.

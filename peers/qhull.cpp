@@ -24,6 +24,8 @@
 #include "reference/canonical.hpp"
 #include "peers/peers.hpp"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
@@ -37,9 +39,9 @@ namespace {
 // be reported as one line.
 class QhullRun {
  public:
-  QhullRun(const PointSet& pts, int dim, const char* options) : coords_(pts.coords) {
+  QhullRun(const PointSet& pts, int dim, const char* options, const char* who = nullptr) : coords_(pts.coords) {
     if (pts.dim != dim)
-      throw std::invalid_argument("qhull_hull" + std::to_string(dim) + ": expected " +
+      throw std::invalid_argument((who ? std::string(who) : "qhull_hull" + std::to_string(dim)) + ": expected " +
                                   std::to_string(dim) + "D points, got " +
                                   std::to_string(pts.dim) + "D");
     err_ = open_memstream(&err_buf_, &err_len_);
@@ -93,6 +95,19 @@ class QhullRun {
   bool released_ = false;
 };
 
+// The input indices of a simplicial facet's three vertices, in Qhull's set
+// order (a merged facet is not simplicial: option Qt must be given).
+Triangle facet_triangle(qhT* qh, facetT* facet, const char* who) {
+  if (qh_setsize(qh, facet->vertices) != 3)
+    throw std::runtime_error(std::string(who) + ": Qhull returned a non-triangular facet under Qt");
+  Triangle t;
+  for (int k = 0; k < 3; ++k) {
+    auto* v = static_cast<vertexT*>(facet->vertices->e[k].p);
+    t[static_cast<std::size_t>(k)] = static_cast<Index>(qh_pointid(qh, v->point));
+  }
+  return t;
+}
+
 }  // namespace
 
 std::vector<Index> qhull_hull2(const PointSet& pts) {
@@ -130,15 +145,30 @@ std::vector<Triangle> qhull_hull3(const PointSet& pts) {
   std::vector<Triangle> tris;
   facetT* facet;
   FORALLfacets {
-    if (qh_setsize(qh, facet->vertices) != 3)
-      throw std::runtime_error("qhull_hull3: Qhull returned a non-triangular facet under Qt");
-    Triangle t;
-    for (int k = 0; k < 3; ++k) {
-      auto* v = static_cast<vertexT*>(facet->vertices->e[k].p);
-      t[static_cast<std::size_t>(k)] = static_cast<Index>(qh_pointid(qh, v->point));
-    }
+    Triangle t = facet_triangle(qh, facet, "qhull_hull3");
     // Qhull's printed order, then reversed to counter-clockwise from outside.
     if (facet->toporient ^ qh_ORIENTclock) std::swap(t[0], t[1]);
+    tris.push_back(t);
+  }
+  return canonical_triangles(std::move(tris));
+}
+
+std::vector<Triangle> qhull_delaunay2(const PointSet& pts) {
+  // "d": the Delaunay triangulation as the lower hull of the points lifted to
+  // the paraboloid; "Qbb": the lifted coordinate scaled to the others' range
+  // (qdelaunay's recommended option); "Qt": merged facets triangulated.
+  QhullRun run(pts, 2, "d Qbb Qt", "qhull_delaunay2");
+  qhT* qh = run.qh();
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Triangle> tris;
+  facetT* facet;
+  FORALLfacets {
+    if (facet->upperdelaunay) continue;  // the upper hull is not part of the triangulation
+    Triangle t = facet_triangle(qh, facet, "qhull_delaunay2");
+    // counter-clockwise in the plane (exact orientation of the input points;
+    // a triangle Qhull made flat keeps its order)
+    auto P = [&](Index i) { return K::Point_2(pts.point(i)[0], pts.point(i)[1]); };
+    if (CGAL::orientation(P(t[0]), P(t[1]), P(t[2])) == CGAL::CLOCKWISE) std::swap(t[1], t[2]);
     tris.push_back(t);
   }
   return canonical_triangles(std::move(tris));

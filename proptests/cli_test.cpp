@@ -300,11 +300,29 @@ TEST_CASE("cli: hull3 --backend cpu --threads N writes the reference's bytes, ba
   check_cpu_backend(t, "hull3", t.file("grid.xyz", grid),
                     {"--threads 0", "--threads -3", "--threads x", "--backend cpu --algo splay",
                      "--backend reference --threads 2", "--algo twist-flip --threads 2"});
-  // no cpu backend for the triangulations
-  const fs::path p2 = t.file("ok2.xyz", "0 0\n1 0\n0 1\n");
-  const Run r = run(t, "dt2 " + p2.string() + " --backend cpu");
-  CHECK(r.code == 2);
-  CHECK(lines(r.err) == 1);
+}
+
+TEST_CASE("cli: rt2 and dt2 --backend cpu (the default) write the reference's bytes, bad options get one line",
+          "[cli]") {
+  TempDir t;
+  // an 8x8 grid with repeated points (cocircular quadruples, collinear
+  // boundary points, duplicates); weighted: quarter weights
+  std::string dt, rt;
+  for (int k = 0; k < 80; ++k) {
+    const int x = k % 8, y = (k / 8) % 8;
+    dt += std::to_string(x) + " " + std::to_string(y) + "\n";
+    rt += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string((k % 5) * 0.25) + "\n";
+  }
+  const std::vector<std::string> bad = {"--threads 0", "--threads -1", "--backend cpu --algo lawson",
+                                        "--backend reference --algo incremental", "--backend reference --threads 2",
+                                        "--algo ffrt --threads 2"};
+  check_cpu_backend(t, "dt2", t.file("grid.xyz", dt), bad);
+  check_cpu_backend(t, "rt2", t.file("grid_w.xyz", rt), {bad[0], bad[1], bad[3], bad[4], bad[5]});
+  // the strict view from the cpu backend's answer is the reference's
+  const fs::path grid = t.dir / "grid.xyz";
+  REQUIRE(run(t, "dt2 " + grid.string() + " --strict -o " + (t.dir / "s_cpu.txt").string()).code == 0);
+  REQUIRE(run(t, "dt2 " + grid.string() + " --strict --backend reference -o " + (t.dir / "s_ref.txt").string()).code == 0);
+  CHECK(slurp(t.dir / "s_cpu.txt") == slurp(t.dir / "s_ref.txt"));
 }
 
 TEST_CASE("cli: certify rtd (exact and --canonical) accepts rtd's output and CGAL's, rejects a reversed simplex", "[cli]") {

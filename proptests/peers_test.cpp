@@ -210,6 +210,18 @@ TEST_CASE("peers: CGAL Delaunay triangulation is locally Delaunay everywhere", "
   });
 }
 
+TEST_CASE("peers: Qhull's Delaunay triangulation (d Qbb Qt) is CGAL's on random input", "[peers]") {
+  rc::prop("qhull_delaunay2 == cgal_delaunay2, certified", [] {
+    // (Qhull's initial simplex of the lifted points needs 4 of them)
+    const auto n = static_cast<std::size_t>(*rc::gen::inRange(4, 200));
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    PointSet ps = uniform_points(2, n, seed);
+    const auto q = pp::qhull_delaunay2(ps);
+    RC_ASSERT(q == pp::cgal_delaunay2(ps));
+    check_regular2(ps, q, pp::qhull_hull2(ps), /*all_vertices=*/true);
+  });
+}
+
 TEST_CASE("peers: CGAL regular triangulation matches flipflop's power2d weight convention",
           "[peers]") {
   // If CGAL's weight were not the squared radius w of |x - p|^2 - w, interior
@@ -291,5 +303,7 @@ TEST_CASE("peers: lower-dimensional input is reported as one-line errors", "[pee
   CHECK_THROWS_AS(pp::cgal_hull2(line, pp::Hull2Algo::akl_toussaint), std::runtime_error);
   CHECK_THROWS_AS(pp::cgal_hull2(line, pp::Hull2Algo::graham_andrew), std::runtime_error);
   CHECK_THROWS_AS(pp::cgal_delaunay2(line), std::runtime_error);
+  CHECK_THROWS_AS(pp::qhull_delaunay2(line), std::runtime_error);
+  CHECK_THROWS_AS(pp::qhull_delaunay2(flat), std::invalid_argument);  // wrong dimension
   CHECK_THROWS_AS(pp::cgal_hull3(line), std::invalid_argument);  // wrong dimension
 }

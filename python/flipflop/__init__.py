@@ -28,7 +28,8 @@ __all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "
            "__version__"]
 
 _HULL_BACKENDS = {2: ("cpu", "reference"), 3: ("cpu", "reference")}
-_DELAUNAY_BACKENDS = ("reference",)
+# per dimension: the multithreaded kernel exists for d = 2 (kernels_cpu/rt2)
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference"), 3: ("reference",), 4: ("reference",), 5: ("reference",)}
 
 
 def _points(points, dims: Sequence[int], what: str) -> np.ndarray:
@@ -169,16 +170,22 @@ class Delaunay:
     (2D) returns the strict view instead: a regular triangulation of the
     exact input without zero-area triangles (the grid's 2(k-1)^2 triangles),
     certified (`dt2 --strict` on the command line).
+
+    backend: 'cpu' (2D only, the default there: the multithreaded kernel of
+    kernels_cpu/rt2) or 'reference' (the exact sequential reference: ffRT in
+    2D, the default in 3D..5D); every backend returns the same simplices.
+    threads: worker threads of the 'cpu' backend (0: all cores).
     """
 
-    def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None):
+    def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None,
+                 threads: int = 0):
         a = _points(points, (2, 3, 4, 5), "Delaunay")
         w = _weights(weights, a.shape[0], "Delaunay")
         self.points = a
         self.weights = w
         self.ndim = a.shape[1]
         self.simplices, self.redundant = _flipflop.triangulate(
-            a, w, _backend(backend, _DELAUNAY_BACKENDS, "Delaunay"), bool(strict))
+            a, w, _backend(backend, _DELAUNAY_BACKENDS[a.shape[1]], "Delaunay"), bool(strict), int(threads))
         self.neighbors = _flipflop.neighbors(self.simplices)
         hull = []
         for i, j in zip(*np.nonzero(self.neighbors < 0)):

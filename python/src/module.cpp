@@ -33,6 +33,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -198,14 +199,16 @@ std::pair<IndexArray, std::vector<std::vector<Index>>> hull3_strict(const Points
 
 // ---- triangulations ------------------------------------------------------------
 
-// (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by
-// ffRT (the 2D reference), d = 3..5 by RT+1; both canonical.
+// (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by the
+// cpu backend (kernels_cpu/rt2) or ffRT (the 2D reference), d = 3..5 by
+// RT+1; all canonical.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
-                                              const std::string& backend, bool strict) {
+                                              const std::string& backend, bool strict, int threads) {
   PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
-  if (backend != "reference") throw std::invalid_argument("Delaunay backends: 'reference'; got '" + backend + "'");
+  if (!(backend == "reference" || (backend == "cpu" && d == 2)))
+    throw std::invalid_argument("Delaunay backends: 'cpu' (2D), 'reference'; got '" + backend + "'");
   if (strict && d != 2)
     throw std::invalid_argument("Delaunay: the strict view (no zero-volume simplex) exists for 2D input only");
   std::vector<std::vector<Index>> simplices;
@@ -214,7 +217,9 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     if (d == 2) {
-      std::vector<Triangle> tris = ref::rt2_ffrt(ps);
+      cpu::Rt2Options o;
+      o.threads = threads;
+      std::vector<Triangle> tris = backend == "cpu" ? cpu::rt2(ps, o) : ref::rt2_ffrt(ps);
       check_certified(certify::rt2(ps, tris, certify::Level::canonical), "Delaunay");
       if (strict) {
         tris = ref::strict_rt2(ps, tris);
@@ -450,7 +455,7 @@ NB_MODULE(_flipflop, m) {
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("triangulate"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
-        nb::arg("strict"));
+        nb::arg("strict"), nb::arg("threads"));
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
         nb::arg("queries"));

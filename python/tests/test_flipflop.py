@@ -102,6 +102,27 @@ def test_delaunay_equals_scipy(d, n):
     assert len(t.convex_hull) == len(s.convex_hull)
     assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
     assert flipflop.certify("delaunay", p, s.simplices, orient=True)  # scipy's, at the exact level
+    if d == 2:  # every backend, the same answer (cpu: the default in 2D)
+        for backend, threads in (("reference", 0), ("cpu", 1), ("cpu", 2)):
+            assert (flipflop.Delaunay(p, backend=backend, threads=threads).simplices == t.simplices).all()
+    else:
+        with pytest.raises(ValueError, match="backend"):
+            flipflop.Delaunay(p, backend="cpu")
+
+
+def test_weighted_delaunay_backends_agree_on_degenerate_input():
+    # a 9x9 grid (cocircular quadruples, collinear boundary points) with
+    # duplicated points and integer weights: the cpu kernel and the reference
+    # give the same canonical simplices and the same redundant points
+    g = np.array([(x, y) for x in range(9) for y in range(9)], dtype=np.float64)
+    p = np.vstack([g, g[::7]])
+    w = (np.arange(len(p)) % 3).astype(np.float64) * 0.25
+    for weights in (None, w):
+        a = flipflop.Delaunay(p, weights=weights, backend="cpu", threads=2)
+        b = flipflop.Delaunay(p, weights=weights, backend="reference")
+        assert (a.simplices == b.simplices).all()
+        assert list(a.redundant) == list(b.redundant)
+        assert flipflop.certify("delaunay", p, a.simplices, weights=weights, canonical=True)
 
 
 def test_weighted_delaunay_reports_redundant_points():

@@ -14,8 +14,6 @@
 
 namespace flipflop::ref {
 
-namespace {
-
 void require_plane(const PointSet& ps, const char* who) {
   if (ps.dim != 2)
     throw std::invalid_argument(std::string(who) + ": needs 2D points, got dimension " + std::to_string(ps.dim));
@@ -24,6 +22,8 @@ void require_plane(const PointSet& ps, const char* who) {
   const std::string problem = dimension_problem(ps);
   if (!problem.empty()) throw std::invalid_argument(std::string(who) + ": " + problem);
 }
+
+namespace {
 
 std::vector<Index> missing_points(const tri::Triangulation2& T) {
   std::vector<Index> out;

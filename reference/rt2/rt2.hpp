@@ -28,6 +28,11 @@
 
 namespace flipflop::ref {
 
+// Throws std::invalid_argument "WHO: <problem>" unless ps is a 2D point set
+// of at least 3 points that spans the plane (the check of every entry point
+// below, and of the cpu backend, kernels_cpu/rt2).
+void require_plane(const PointSet& ps, const char* who);
+
 // ffRT (§5.3): constructing stage (1-3 insertions into an extended
 // triangulation, points proved redundant by their triangle discarded) then
 // flip-flop (Algorithm 5, or the V-first variant).

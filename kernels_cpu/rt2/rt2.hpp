@@ -1,0 +1,79 @@
+// rt2.hpp — the multithreaded 2D regular / Delaunay triangulation (cpu
+// backend of `flipflop rt2|dt2`), on oneTBB.
+//
+// Stages (StageTimes names in brackets):
+//   1. [sort]     the per-input static filter from a parallel scan; the points
+//                 in a biased randomized insertion order (BRIO, Amenta–Choi–
+//                 Rote): rounds of geometrically growing size taken by a hash
+//                 of the index, each round along a Hilbert curve — keys
+//                 computed in parallel, one parallel sort; the points copied
+//                 in that order into one flat array (x, y, w, index) for
+//                 locality;
+//   2. [insert]   incremental flipping (Edelsbrunner–Shah 1996; thesis §2.3's
+//                 flips on the extended triangulation of §2.1): each point is
+//                 located by a remembering visibility walk from the previous
+//                 point's triangle; a point in a real triangle whose lifted
+//                 point lies above that triangle's lifted plane is redundant
+//                 and never inserted (ffRT's early discard, §5.3); otherwise a
+//                 1-3 flip inserts it — into a virtual triangle when it lies
+//                 outside the current hull, whose visible edges are then
+//                 absorbed by 2-2 flips of virtual edges (§2.2's rule for two
+//                 virtual triangles) — and the edges of its link are made
+//                 locally regular by 2-2 flips and 3-1 flips (a vertex
+//                 becoming redundant is removed), Algorithm 5's V- and
+//                 D-criterion restricted to the link of the new point;
+//   3. [output]   the real triangles in canonical form (DESIGN.md), mapped to
+//                 input indices in parallel, sorted in parallel.
+// Triangles are flat arrays: three vertex slots and three twin half-edges per
+// triangle (half-edge 3t + i is the edge opposite corner i, its twin stored as
+// 3u + j), freed slots reused; the virtual vertex is vertex n. Predicates are
+// predicates/fast.hpp's (per-input static filter inlined, then the staged
+// exact path with Simulation of Simplicity).
+//
+// Why the answer is the reference's byte for byte: under the Simulation of
+// Simplicity (one perturbation with δ = 3, index = SoS index, as in
+// reference/rt2) the perturbed weighted points are in general position and
+// their regular triangulation is unique (DESIGN.md); every decision here is
+// an exact SoS predicate, and the flipping insertion returns the regular
+// triangulation of the points inserted so far after every step (Edelsbrunner
+// & Shah, "Incremental topological flipping works for regular
+// triangulations", Algorithmica 15 (1996), Lemma 4.2 and Thm 4.3: while a
+// link edge of the new point is locally non-regular, one of them is
+// flippable by a 2-2 or a 3-1 flip; the flips terminate). A point discarded
+// as redundant stays redundant (the lower hull of the lifted points only
+// moves down as points are added), so the final triangulation is RT(S ⊕ W)
+// under SoS, which is ref::rt2_ffrt's and ref::dt2_lawson's answer.
+//
+// Parallelism: stages 1 and 3 (and certification, cpu::certify_rt2) run on
+// all threads; stage 2 is sequential — see the closing note of issue 13 and
+// README "2D regular triangulation" for the measurements behind that choice.
+// The output does not depend on the thread count.
+//
+// Input that does not span the plane is rejected with the reference's
+// std::invalid_argument (ref::require_plane, "rt2 (cpu): <problem>").
+#pragma once
+
+#include <vector>
+
+#include "kernels_cpu/stage_times.hpp"
+#include "reference/point_set.hpp"
+#include "reference/rt2/triangulation2.hpp"  // ref::Rt2Stats
+
+namespace flipflop::cpu {
+
+struct Rt2Options {
+  int threads = 0;  // worker threads; 0: the runtime's default
+  // Tuning; the result does not depend on it (tests vary it):
+  std::size_t brio_min = 256;  // BRIO rounds stop below this many points (>= 1)
+  // when set, filled with the seconds of each stage: sort, insert, output
+  StageTimes* times = nullptr;
+};
+
+// RT(S ⊕ W) of the weighted planar points ps (weights 0 when unweighted: the
+// Delaunay triangulation) under flipflop's SoS, canonical counter-clockwise
+// triangles — identical to ref::rt2_ffrt(ps). stats, if given, is reset and
+// filled: flips_1_3 (insertions), flips_2_2, flips_3_1 (vertices removed),
+// discarded_early (points found redundant when located), rounds (1).
+std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt = {}, ref::Rt2Stats* stats = nullptr);
+
+}  // namespace flipflop::cpu

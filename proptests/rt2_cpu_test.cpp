@@ -1,0 +1,207 @@
+// rt2_cpu_test.cpp — the multithreaded 2D regular / Delaunay triangulation of
+// kernels_cpu/rt2 against the exact sequential reference (ref::rt2_ffrt):
+// byte-identical canonical text for every input, at 1, 2 and 8 threads and
+// with several BRIO round sizes, degenerate inputs included, and the same
+// rejection of input that does not span the plane.
+//
+// Oracles: ref::rt2_ffrt (itself tested against brute force, CGAL and the
+// certifier in rt2_reference_test.cpp), certify::rt2 at Level::canonical,
+// and CGAL's Regular_triangulation_2 / Delaunay_triangulation_2 on random
+// input in general position.
+//
+// Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
+// by prop_scaled): degenerate sets of 3..60 points 2000 / 4 = 500 each
+// weighted and unweighted; every generator family at 3..2000 points
+// 2000 / 20 = 100 each; the deterministic sweep: 2D families x 6 sizes x 2
+// seeds x 2 weightings x 3 thread counts x 2 BRIO settings.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <iostream>
+#include <set>
+#include <string>
+
+#include "gen/generate.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
+#include "peers/peers.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/outcome.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/dimension.hpp"
+#include "reference/rt2/rt2.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+constexpr int kThreads[] = {1, 2, 8};
+
+using test::is_error;
+using test::outcome;
+
+// The rejection message without its "error: WHO: " prefix (the reference
+// names itself "rt2 (ffRT)", the kernel "rt2 (cpu)"; the problem must agree).
+std::string problem_of(const std::string& text) {
+  if (!is_error(text)) return text;
+  const std::size_t colon = text.find(": ", 7);
+  return colon == std::string::npos ? text : "error: " + text.substr(colon + 2);
+}
+
+std::string cpu_text(const PointSet& ps, int threads, std::size_t brio_min = 256, ref::Rt2Stats* st = nullptr) {
+  cpu::Rt2Options o;
+  o.threads = threads;
+  o.brio_min = brio_min;
+  return problem_of(outcome([&] { return cpu::rt2(ps, o, st); }));
+}
+
+std::string ref_text(const PointSet& ps) { return problem_of(outcome([&] { return ref::rt2_ffrt(ps); })); }
+
+std::size_t vertex_count(const std::vector<Triangle>& tris) {
+  std::set<Index> v;
+  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
+  return v.size();
+}
+
+// cpu == reference at every thread count and two BRIO settings (one round;
+// rounds down to a single point); the counts are consistent: every point is
+// one of the initial three, inserted by a 1-3 flip or discarded when located,
+// and the vertices are the inserted points less the 3-1 flips.
+template <class Assert>
+std::string check(const PointSet& ps, const Assert& require) {
+  const std::string expect = ref_text(ps);
+  for (int t : kThreads)
+    for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
+      ref::Rt2Stats st;
+      require(cpu_text(ps, t, brio, &st) == expect, t, brio);
+      if (!is_error(expect)) {
+        require(st.flips_1_3 + st.discarded_early + 3 == ps.size(), t, brio);
+        cpu::Rt2Options o;
+        o.threads = t;
+        o.brio_min = brio;
+        require(vertex_count(cpu::rt2(ps, o)) == st.flips_1_3 + 3 - st.flips_3_1, t, brio);
+      }
+    }
+  return expect;
+}
+
+std::string check_rc(const PointSet& ps) {
+  return check(ps, [](bool ok, int, std::size_t) { RC_ASSERT(ok); });
+}
+
+}  // namespace
+
+TEST_CASE("rt2 cpu: degenerate and random small sets equal the reference (shrinking)", "[rt2_cpu]") {
+  for (bool weighted : {false, true})
+    test::prop_scaled(std::string("degenerate sets of 3..60 points, ") + (weighted ? "weighted" : "unweighted") +
+                          ": cpu == reference byte for byte at 1, 2, 8 threads, certified",
+                      4, [weighted] {
+                        const PointSet ps = *test::degenerate_points(2, 3, 60, weighted);
+                        const std::string expect = check_rc(ps);
+                        if (!is_error(expect)) RC_ASSERT(certify::rt2(ps, cpu::rt2(ps), certify::Level::canonical).ok);
+                      });
+}
+
+TEST_CASE("rt2 cpu: every generator family up to 2000 points equals the reference (shrinking)", "[rt2_cpu]") {
+  for (bool weighted : {false, true})
+    test::prop_scaled(std::string("family sets of 3..2000 points (grid2, circle, duplicates2, huge2, tiny2, ...), ") +
+                          (weighted ? "weights from none to 99% redundant" : "unweighted") +
+                          ": cpu == reference at 1, 2, 8 threads",
+                      20, [weighted] {
+                        const PointSet ps = *test::thinned(test::family_points(2, 3, 2000, weighted));
+                        check_rc(ps);
+                      });
+}
+
+TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and thread counts", "[rt2_cpu]") {
+  std::size_t cases = 0, rejected = 0, families = 0;
+  for (const std::string& fam : test::families(2)) {
+    ++families;
+    for (std::size_t n : {3, 4, 9, 40, 300, 3000})
+      for (std::uint64_t seed = 1; seed <= 2; ++seed)
+        for (bool weighted : {false, true}) {
+          gen::Options o;
+          o.seed = seed;
+          PointSet ps = gen::generate(fam, n, o);
+          if (weighted) {
+            o.weighted = true;
+            o.wlo = 0;
+            o.whi = 1e-3 * test::squared_extent(ps);
+            ps = gen::generate(fam, n, o);
+          }
+          INFO(fam << " n=" << n << " seed=" << seed << (weighted ? " weighted" : ""));
+          const std::string expect = check(ps, [](bool ok, int t, std::size_t brio) {
+            INFO("threads " << t << ", brio_min " << brio);
+            REQUIRE(ok);
+          });
+          if (is_error(expect)) {
+            ++rejected;
+            REQUIRE(!dimension_problem(ps).empty());
+          }
+          cases += 6;
+        }
+  }
+  std::cout << "rt2 cpu sweep: " << cases << " runs over " << families << " families identical to the reference ("
+            << rejected << " inputs rejected as collinear by both)\n";
+  REQUIRE(families >= 8);
+}
+
+TEST_CASE("rt2 cpu: 20000-point inputs in the three weight ranges of §5.4 equal the reference, certified", "[rt2_cpu]") {
+  // weights in [0, w] of a unit square: about 99 %, 20-30 % and 1 % of the
+  // points non-redundant (measured by the counts below), and unweighted
+  struct Case {
+    const char* fam;
+    double whi;
+  };
+  for (const Case c : {Case{"square", 0}, Case{"square", 1e-5}, Case{"square", 1e-3}, Case{"square", 1e-1},
+                       Case{"grid2", 0}, Case{"circle", 0}, Case{"duplicates2", 0}}) {
+    gen::Options o;
+    o.seed = 5;
+    o.weighted = c.whi > 0;
+    o.whi = c.whi;
+    const PointSet ps = gen::generate(c.fam, 20000, o);
+    INFO(c.fam << " weights [0, " << c.whi << "]");
+    const auto expect = ref::rt2_ffrt(ps);
+    for (int t : kThreads) {
+      cpu::Rt2Options opt;
+      opt.threads = t;
+      ref::Rt2Stats st;
+      REQUIRE(cpu::rt2(ps, opt, &st) == expect);
+      if (t == 1)
+        std::cout << "rt2 cpu " << c.fam << " w<=" << c.whi << ": " << vertex_count(expect) << " of " << ps.size()
+                  << " points are vertices; 2-2 flips " << st.flips_2_2 << ", 3-1 flips " << st.flips_3_1
+                  << ", discarded early " << st.discarded_early << "\n";
+    }
+    REQUIRE(certify::rt2(ps, expect, certify::Level::canonical).ok);
+  }
+}
+
+TEST_CASE("rt2 cpu: random input equals CGAL's regular and Delaunay triangulations", "[rt2_cpu]") {
+  for (std::uint64_t seed : {1, 2, 3}) {
+    gen::Options o;
+    o.seed = seed;
+    const PointSet dps = gen::generate("square", 50000, o);
+    REQUIRE(cpu::rt2(dps) == peers::cgal_delaunay2(dps));
+    o.weighted = true;
+    o.whi = 1e-4;
+    const PointSet wps = gen::generate("square", 50000, o);
+    REQUIRE(cpu::rt2(wps) == peers::cgal_regular2(wps));
+  }
+}
+
+TEST_CASE("rt2 cpu: input that does not span the plane is rejected like the reference", "[rt2_cpu]") {
+  PointSet ps;
+  ps.dim = 2;
+  ps.coords = {0, 0, 1, 1, 2, 2, 3, 3, -1, -1};  // collinear
+  REQUIRE(cpu_text(ps, 2) == ref_text(ps));
+  REQUIRE(is_error(cpu_text(ps, 2)));
+  ps.coords = {0, 0, 1, 1};  // two points
+  REQUIRE(cpu_text(ps, 1) == ref_text(ps));
+  REQUIRE(is_error(cpu_text(ps, 1)));
+  ps.coords = {4, 4, 4, 4, 4, 4, 4, 4};  // one location
+  REQUIRE(cpu_text(ps, 1) == ref_text(ps));
+  REQUIRE(is_error(cpu_text(ps, 1)));
+  ps.dim = 3;
+  ps.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  REQUIRE_THROWS_AS(cpu::rt2(ps), std::invalid_argument);
+}
