@@ -13,7 +13,7 @@
 //                           flip-flop; BRIO sort, insertion, output; the
 //                           canonical output);
 //   certify                 cpu::certify_hull2 / cpu::certify_hull3 /
-//                           certify::rt2 at the canonical level (must pass);
+//                           cpu::certify_rt2 at the canonical level (must pass);
 //   write                   the index text to a temporary file.
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
@@ -38,6 +38,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
 
 namespace flipflop::bench::detail {
@@ -113,7 +114,7 @@ int bench_stages(const Args& a) {
     for (const auto& [name, s] : st.stages) add("compute: " + name, s);
     certify::Report rep;
     t = seconds([&] {
-      rep = tri  ? certify::rt2(in, tris, certify::Level::canonical)
+      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical)
             : h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
                  : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });

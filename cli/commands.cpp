@@ -18,6 +18,7 @@
 #include "kernels_cpu/hull2/certify_hull2.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
+#include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
 #include "reference/brute_force.hpp"
@@ -274,6 +275,7 @@ int run_compute(const ComputeArgs& a) {
                       : a.kind == "hull3" && backend == "cpu"
                           ? cpu::certify_hull3(ps, tris, certify::Level::canonical, a.threads)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
+                      : backend == "cpu"  ? cpu::certify_rt2(ps, tris, certify::Level::canonical, a.threads)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
@@ -348,10 +350,9 @@ int certify_rtd_file(const CertifyArgs& a) {
 }  // namespace
 
 int run_certify(const CertifyArgs& a) {
+  if (a.threads != 0 && a.kind == "rtd") throw UsageError("--threads applies to certify hull2, hull3, rt2 and dt2");
   if (a.kind == "rtd") return certify_rtd_file(a);
   if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
-  if (a.threads != 0 && a.kind != "hull2" && a.kind != "hull3")
-    throw UsageError("--threads applies to certify hull2 and hull3");
   if (a.strict && a.kind == "hull2") throw UsageError("--strict applies to certify hull3, rt2 and dt2");
   if (a.strict && a.canonical)
     throw UsageError("--canonical does not apply to the strict views (certified at the exact level)");
@@ -381,7 +382,7 @@ int run_certify(const CertifyArgs& a) {
   } else {
     std::vector<Triangle> tris = io::read_triangles(a.output);
     count = tris.size();
-    r = a.kind == "hull3" ? cpu::certify_hull3(ps, tris, level, a.threads) : certify::rt2(ps, tris, level);
+    r = a.kind == "hull3" ? cpu::certify_hull3(ps, tris, level, a.threads) : cpu::certify_rt2(ps, tris, level, a.threads);
   }
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {

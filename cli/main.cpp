@@ -5,7 +5,7 @@
 //                                [--threads N (cpu backend)]
 //   flipflop rtd IN --dim d [-o OUT] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
-//   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N (hull2, hull3)]
+//   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
 //   flipflop bench ...
 //   flipflop demo
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   cert->add_option("POINTS", v.points, "input point file")->required();
   cert->add_option("OUTPUT", v.output, "index output to check (flipflop's or another program's, e.g. qhull i Qt)")
       ->required();
-  cert->add_option("--threads", v.threads, "hull2, hull3: worker threads of the parallel checks (default: all cores)")
+  cert->add_option("--threads", v.threads, "hull2, hull3, rt2, dt2: worker threads of the parallel checks (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cert->add_flag("--strict", v.strict,
                  "the output is a strict view (hull3 --strict: extreme points and polygons; rt2|dt2 --strict: "

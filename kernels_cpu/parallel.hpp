@@ -202,9 +202,8 @@ inline int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple 
   return e - 1075 + __builtin_ctzll(m);
 }
 
-// The representatives of m values value(0..m) for StaticFilter::for_points:
-// per chunk the value of largest magnitude, the value of lowest set bit and a
-// non-finite value if any (0 where none).
+// Per chunk of the m values value(0..m): the value of largest magnitude, the
+// value of lowest set bit and a non-finite value if any (0 where none).
 template <class Value>
 std::vector<double> filter_representatives(std::size_t m, const Value& value) {
   const std::size_t chunks = (m + kChunk - 1) / kChunk;
@@ -239,32 +238,32 @@ pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, con
   return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
 }
 
-// The static filter of a point set with its weights (when weighted): the
-// coordinates' and the weights' representatives, padded with zeros (which
-// change neither the largest magnitude nor the lowest set bit).
-inline pred::StaticFilter parallel_static_filter(const PointSet& ps) {
-  std::vector<double> c = filter_representatives(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; });
+// The same over the coordinates of ps and `extra`, and ps' weights when it
+// has them (StaticFilter::for_points(coords, n, dim, weights)): the weights'
+// representatives are the weights of as many points (zeros added on either
+// side change neither the magnitudes nor the lowest bit).
+inline pred::StaticFilter parallel_static_filter(const PointSet& ps, const std::vector<double>& extra) {
+  std::vector<double> reps = filter_representatives(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; });
+  reps.insert(reps.end(), extra.begin(), extra.end());
   std::vector<double> w;
   if (ps.weighted) w = filter_representatives(ps.weights.size(), [&](std::size_t i) { return ps.weights[i]; });
-  const std::size_t dim = static_cast<std::size_t>(ps.dim);
-  const std::size_t k = std::max((c.size() + dim - 1) / dim, w.size());
-  c.resize(k * dim, 0.0);
-  w.resize(k, 0.0);
-  return pred::StaticFilter::for_points(c.data(), k, ps.dim, ps.weighted ? w.data() : nullptr);
+  const std::size_t points = std::max((reps.size() + 2) / 3, w.size());
+  reps.resize(3 * points, 0.0);
+  w.resize(points, 0.0);
+  return pred::StaticFilter::for_points(reps.data(), points, 3, ps.weighted ? w.data() : nullptr);
 }
 
 // Runs certify(speedups) (a certifier of reference/certify taking
 // certify::Speedups) inside an arena of `threads` workers (0: the runtime's
 // default), the per-point checks split into kChunk pieces, the static filter
-// of the input (plus the certifier's extra values) from a parallel scan.
+// of the input (its coordinates, its weights if any, and the certifier's
+// extra values) from a parallel scan.
 template <class Certify>
 certify::Report certify_in_parallel(const PointSet& ps, int threads, const Certify& certify) {
   certify::Report r;
   with_threads(threads, [&] {
     certify::Speedups s;
-    s.make_filter = [&](const std::vector<double>& extra) {
-      return parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; }, extra);
-    };
+    s.make_filter = [&](const std::vector<double>& extra) { return parallel_static_filter(ps, extra); };
     s.for_range = [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) {
       par_for(n, kChunk, body);
     };

@@ -1,11 +1,15 @@
-// fast.hpp — the default path with a per-input static filter, its first stage
-// inlined into the caller: the static filter (static_filter.hpp: a few
+// fast.hpp — the default path with a per-input static filter, its first two
+// stages inlined into the caller: the static filter (static_filter.hpp: a few
 // subtractions, a 2x2..4x4 determinant and one comparison with a bound
 // computed once per input) decides almost every call on non-degenerate input
-// without a function call; what it cannot decide goes to the out-of-line
-// staged predicate (predicates.hpp: semi-static filter, dynamic filter, exact
-// expansion stage, Simulation of Simplicity). Same answers as
-// pred::orient2d(f, ...) etc. — the static filter only decides sooner, and
+// without a function call; when it cannot — typically for points much closer
+// to each other than the input's extent, e.g. the power tests of a Delaunay
+// triangulation of 10^7 points, whose determinants are far below the
+// per-input bound — the per-call semi-static filter (the same determinant,
+// its bound from this call's own magnitudes) is tried, still inline; what
+// neither decides goes to the out-of-line staged predicate (predicates.hpp:
+// dynamic filter, exact expansion stage, Simulation of Simplicity). Same
+// answers as pred::orient2d(f, ...) etc. — the filters only decide sooner, and
 // never on an exactly degenerate determinant (|det| > bound implies the sign).
 //
 // Include it in the hot loops of the kernels (kernels_cpu/, and the reference
@@ -20,12 +24,14 @@ namespace flipflop::pred::fast {
 inline int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
   const double* p[3] = {a.x, b.x, c.x};
   if (const int s = static_sign<3>(f, p, nullptr)) return s;
+  if (const int s = semi_static_sign<3>(p, nullptr)) return s;
   return pred::orient2d(f, a, b, c);
 }
 
 inline int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d) {
   const double* p[4] = {a.x, b.x, c.x, d.x};
   if (const int s = static_sign<4>(f, p, nullptr)) return s;
+  if (const int s = semi_static_sign<4>(p, nullptr)) return s;
   return pred::orient3d(f, a, b, c, d);
 }
 
@@ -33,6 +39,7 @@ inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
   const double* p[4] = {a.x, b.x, c.x, d.x};
   const double w[4] = {a.w, b.w, c.w, d.w};
   if (const int s = static_sign<4>(f, p, w)) return s;
+  if (const int s = semi_static_sign<4>(p, w)) return s;
   return pred::power2d(f, a, b, c, d);
 }
 
@@ -40,6 +47,7 @@ inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   if (const int s = static_sign<5>(f, p, w)) return s;
+  if (const int s = semi_static_sign<5>(p, w)) return s;
   return pred::power3d(f, a, b, c, d, e);
 }
 

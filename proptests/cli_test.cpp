@@ -220,9 +220,44 @@ TEST_CASE("cli: certify accepts Qhull's output and rejects a broken one", "[cli]
     CHECK(par.code == 1);
     CHECK(par.out == bad.out);
   }
-  Run misuse = run(t, "certify rt2 " + pts.string() + " " + qout.string() + " --threads 2");
+  Run misuse = run(t, "certify rtd " + pts.string() + " " + qout.string() + " --dim 2 --threads 2");
   CHECK(misuse.code == 2);
-  CHECK(misuse.err.find("--threads applies to certify hull2 and hull3") != std::string::npos);
+  CHECK(misuse.err.find("--threads applies to certify hull2, hull3, rt2 and dt2") != std::string::npos);
+}
+
+TEST_CASE("cli: certify rt2|dt2 --threads N gives the verdict and message of the sequential checks", "[cli]") {
+  TempDir t;
+  for (const char* kind : {"rt2", "dt2"}) {
+    const fs::path pts = t.dir / (std::string(kind) + ".xyz"), out = t.dir / (std::string(kind) + ".txt");
+    const std::string w = std::string(kind) == "rt2" ? " --weights 0,0.001" : "";
+    REQUIRE(run(t, "gen square 12000 --seed 3" + w + " -o " + pts.string()).code == 0);
+    REQUIRE(run(t, std::string(kind) + " " + pts.string() + " -o " + out.string()).code == 0);
+    // broken: the middle triangle dropped (a hole: condition boundary)
+    std::istringstream lines_in(slurp(out));
+    std::vector<std::string> tri_lines;
+    for (std::string line; std::getline(lines_in, line);) tri_lines.push_back(line);
+    std::string text;
+    for (std::size_t i = 0; i < tri_lines.size(); ++i)
+      if (i != tri_lines.size() / 2) text += tri_lines[i] + "\n";
+    const fs::path broken = t.file(std::string(kind) + "_broken.txt", text);
+    for (const char* level : {"", " --canonical"}) {
+      const Run good = run(t, "certify " + std::string(kind) + " " + pts.string() + " " + out.string() + level);
+      const Run bad = run(t, "certify " + std::string(kind) + " " + pts.string() + " " + broken.string() + level);
+      INFO(kind << level << ": " << good.out << good.err << bad.out << bad.err);
+      CHECK(good.code == 0);
+      CHECK(bad.code == 1);
+      CHECK(bad.out.find("NOT certified") != std::string::npos);
+      for (const char* threads : {"1", "2", "8"}) {
+        const std::string opt = std::string(level) + " --threads " + threads;
+        const Run par_good = run(t, "certify " + std::string(kind) + " " + pts.string() + " " + out.string() + opt);
+        const Run par_bad = run(t, "certify " + std::string(kind) + " " + pts.string() + " " + broken.string() + opt);
+        CHECK(par_good.code == 0);
+        CHECK(par_good.out == good.out);
+        CHECK(par_bad.code == 1);
+        CHECK(par_bad.out == bad.out);
+      }
+    }
+  }
 }
 
 TEST_CASE("cli: gen -o FILE.npy writes the points .xyz holds and every command reads it", "[cli]") {

@@ -11,38 +11,15 @@ the script. --quick: small sizes, one run (to check the script, not to
 report). Writes hull3_1e6.csv, hull3_thickness.csv, hull3_growth.csv and
 hull3_stages.csv next to this file.
 """
-import csv
-import io
-import os
-import subprocess
 import sys
-import time
 
-flipflop = sys.argv[1]
+from benchrun import Runner
+
 quick = "--quick" in sys.argv
-here = os.path.dirname(os.path.abspath(__file__))
 M = 1000 if quick else 1
-reps = "1" if quick else "3"
-stamp = time.strftime("%Y-%m-%d")
-load = lambda: os.getloadavg()[0]
-
-
-def bench(args, run):
-    out = subprocess.run([flipflop, "bench", "hull3"] + args + ["--reps", reps, "--csv", "--run", run],
-                         check=True, capture_output=True, text=True).stdout
-    rows = list(csv.DictReader(io.StringIO(out)))
-    if not all(r["identical"] == "1" for r in rows):
-        sys.exit("outputs differ: %s %s" % (args, out))
-    return rows
-
-
-def write(name, header, lines, note):
-    with open(os.path.join(here, name), "w") as f:
-        f.write("# %s\n# measured %s on the 2-core development VM by measure_hull3.py; load average %.2f at the end\n"
-                % (note, stamp, load()))
-        w = csv.writer(f, lineterminator="\n")
-        w.writerow(header)
-        w.writerows(lines)
+R = Runner(sys.argv[1], "measure_hull3.py", "1" if quick else "3")
+bench = lambda args, run: R.bench("hull3", args, run)
+write = R.write
 
 
 peers = "flipflop:cpu,flipflop:reference:ffhull,qhull,cgal"
@@ -72,9 +49,7 @@ write("hull3_growth.csv", ["n", "flipflop:cpu", "qhull", "triangles"], lines, "b
 
 lines = []
 for n in [10**6, 10**7]:
-    out = subprocess.run([flipflop, "bench", "hull3", "--stages", "--dist", "ball", "--n", str(n // M), "--reps", reps,
-                          "--csv"], check=True, capture_output=True, text=True).stdout
-    for r in csv.DictReader(io.StringIO(out)):
+    for r in R.stages("hull3", ["--dist", "ball", "--n", str(n // M)]):
         lines.append([n // M, r["stage"], r["median_s"]])
 write("hull3_stages.csv", ["n", "stage", "median_s"], lines,
       "flipflop bench hull3 --stages --dist ball: a whole run by stage (read, kernel stages, certify, write)")

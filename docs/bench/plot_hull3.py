@@ -4,9 +4,7 @@ measure_hull3.py; the README's "multithreaded 3D hull" section): 10^6 points per
 distribution, the sphere-thickness sweep, the growth from 10^5 to 10^7 ball points
 with its fitted exponent, and a whole run by stage.
 Run: /usr/bin/python3 docs/bench/plot_hull3.py (python3-matplotlib)."""
-import math
-
-from benchplot import plt, rows, save
+from benchplot import growth, plt, rows, save, stages
 
 fig, ax = plt.subplots(1, 4, figsize=(20, 4.6))
 peers = ["flipflop:cpu", "flipflop:reference:ffhull", "qhull", "cgal:convex_hull_3"]
@@ -28,28 +26,8 @@ ax[1].set_ylabel("seconds")
 ax[1].set_title("sphere-thickness sweep, 10^6 points")
 ax[1].legend(fontsize=7)
 
-g = rows("hull3_growth.csv")
-n = [int(r["n"]) for r in g]
-for p in ["flipflop:cpu", "qhull"]:
-    ax[2].loglog(n, [float(r[p]) for r in g], "o-", label=p)
-cpu = [float(r["flipflop:cpu"]) for r in g]
-slope = math.log(cpu[-1] / cpu[-2]) / math.log(n[-1] / n[-2])
-ax[2].set_xlabel("points (ball)")
-ax[2].set_ylabel("seconds")
-ax[2].set_title("growth: flipflop:cpu exponent %.2f (%.0e..%.0e)" % (slope, n[-2], n[-1]))
-ax[2].legend(fontsize=7)
-
-s = [r for r in rows("hull3_stages.csv") if r["stage"] not in ("total (.npy)", "read .xyz")]
-sizes = sorted({int(r["n"]) for r in s})
-names = [r["stage"] for r in s if int(r["n"]) == sizes[0]]
-bottom = [0.0] * len(sizes)
-for name in names:
-    v = [float(next(r["median_s"] for r in s if int(r["n"]) == m and r["stage"] == name)) for m in sizes]
-    ax[3].bar([str(m) for m in sizes], v, bottom=bottom, label=name.replace("compute: ", ""))
-    bottom = [b + x for b, x in zip(bottom, v)]
-ax[3].set_ylabel("seconds (median of 3)")
-ax[3].set_title("a whole run from .npy by stage (ball)")
-ax[3].legend(fontsize=7)
+growth(ax[2], rows("hull3_growth.csv"), ["flipflop:cpu", "qhull"], "ball")
+stages(ax[3], rows("hull3_stages.csv"), lambda r: r["n"], "a whole run from .npy by stage (ball)")
 
 fig.suptitle("flipflop 3D hull (kernels_cpu/hull3, 2 cores) against Qhull and CGAL — identical outputs")
 save(fig, "hull3.png")

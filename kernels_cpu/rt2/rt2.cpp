@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "kernels_cpu/parallel.hpp"
-#include "predicates/fast.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/rt2/rt2.hpp"  // require_plane
 
 namespace flipflop::cpu {
@@ -150,13 +151,23 @@ class Builder {
 
   pred::Pt pt(std::uint32_t v) const { return {P_[v].id, &P_[v].x}; }
   pred::WPt wpt(std::uint32_t v) const { return {P_[v].id, &P_[v].x, P_[v].w}; }
+  // The predicates: the per-call semi-static filter inline (the points of a
+  // walk step or a flip are neighbours, much closer to each other than the
+  // input's extent, so the per-input static bound rarely decides here — at
+  // 10^7 uniform points it decided almost no power test), then the staged
+  // exact path with SoS (predicates.hpp).
   int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
-    return pred::fast::orient2d(f_, pt(a), pt(b), pt(c));
+    const double* p[3] = {&P_[a].x, &P_[b].x, &P_[c].x};
+    if (const int s = pred::semi_static_sign<3>(p, nullptr)) return s;
+    return pred::orient2d(f_, pt(a), pt(b), pt(c));
   }
   // > 0 iff d^+ lies strictly below the lifted plane of the counter-clockwise
   // (a, b, c) under SoS: d is inside the power circle (never 0)
   int power(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
-    return pred::fast::power2d(f_, wpt(a), wpt(b), wpt(c), wpt(d));
+    const double* p[4] = {&P_[a].x, &P_[b].x, &P_[c].x, &P_[d].x};
+    const double w[4] = {P_[a].w, P_[b].w, P_[c].w, P_[d].w};
+    if (const int s = pred::semi_static_sign<4>(p, w)) return s;
+    return pred::power2d(f_, wpt(a), wpt(b), wpt(c), wpt(d));
   }
   bool is_virtual(std::uint32_t t) const { return tv_[3 * t] == V_ || tv_[3 * t + 1] == V_ || tv_[3 * t + 2] == V_; }
 
@@ -426,31 +437,33 @@ void Builder::run() {
   }
 }
 
-// Canonical order without a comparison sort of the whole: the real
-// triangles, each rotated to its smallest input index m, are distributed into
-// B buckets by m (B·m / n: consecutive index ranges, about 512 triangles
-// each) — per chunk of slots a histogram, one scan over (bucket, chunk), then
-// each chunk writes its own ranges (no atomics; the result does not depend on
-// the thread count) — and each bucket, small enough for the cache, is sorted
-// on its own.
+// Canonical order without a comparison sort: the real triangles, each
+// rotated to its smallest input index m, are gathered per chunk of slots
+// (with a histogram of B coarse buckets of consecutive m), scattered into
+// their buckets (each chunk writes its own ranges: no atomics), then each
+// bucket — a range of about n / B indices, small enough for the cache — is
+// counting-sorted by m and every group of one m (about two triangles) sorted
+// by its other two indices. The result does not depend on the thread count.
 std::vector<Triangle> Builder::output() const {
   const std::size_t slots = tv_.size() / 3, n = V_;
-  const std::size_t kSlots = std::max<std::size_t>(kChunk, (slots + 15) / 16);  // at most 16 chunks
-  const std::size_t chunks = (slots + kSlots - 1) / kSlots;
-  const std::size_t B = std::max<std::size_t>(1, n / 256);
-  auto canonical = [&](std::size_t t, Triangle& x) {
-    if (tv_[3 * t] == kDead || is_virtual(static_cast<std::uint32_t>(t))) return false;
-    const Index a = P_[tv_[3 * t]].id, b = P_[tv_[3 * t + 1]].id, c = P_[tv_[3 * t + 2]].id;
-    x = a < b ? (a < c ? Triangle{a, b, c} : Triangle{c, a, b}) : (b < c ? Triangle{b, c, a} : Triangle{c, a, b});
-    return true;
-  };
+  const std::size_t per = std::max<std::size_t>(kChunk, (slots + 15) / 16);  // slots per chunk: <= 16 chunks
+  const std::size_t chunks = (slots + per - 1) / per;
+  const std::size_t B = std::max<std::size_t>(1, std::min<std::size_t>(1024, n / 64));
   auto bucket = [&](Index m) { return static_cast<std::size_t>(static_cast<std::uint64_t>(m) * B / n); };
+  std::vector<std::vector<Triangle>> part(chunks);
   std::vector<std::size_t> at(chunks * B, 0);  // at[c * B + b]: counts, then write positions
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    Triangle x;
-    for (std::size_t c = lo; c < hi; ++c)
-      for (std::size_t t = c * kSlots; t < std::min(slots, (c + 1) * kSlots); ++t)
-        if (canonical(t, x)) ++at[c * B + bucket(x[0])];
+    for (std::size_t c = lo; c < hi; ++c) {
+      std::vector<Triangle>& L = part[c];
+      L.reserve(std::min(slots, (c + 1) * per) - c * per);
+      for (std::size_t t = c * per; t < std::min(slots, (c + 1) * per); ++t) {
+        if (tv_[3 * t] == kDead || is_virtual(static_cast<std::uint32_t>(t))) continue;
+        const Index a = P_[tv_[3 * t]].id, b = P_[tv_[3 * t + 1]].id, d = P_[tv_[3 * t + 2]].id;
+        L.push_back(a < b ? (a < d ? Triangle{a, b, d} : Triangle{d, a, b})
+                          : (b < d ? Triangle{b, d, a} : Triangle{d, a, b}));
+        ++at[c * B + bucket(L.back()[0])];
+      }
+    }
   });
   std::vector<std::size_t> first(B + 1, 0);
   std::size_t total = 0;
@@ -465,14 +478,33 @@ std::vector<Triangle> Builder::output() const {
   first[B] = total;
   std::vector<Triangle> out(total);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    Triangle x;
-    for (std::size_t c = lo; c < hi; ++c)
-      for (std::size_t t = c * kSlots; t < std::min(slots, (c + 1) * kSlots); ++t)
-        if (canonical(t, x)) out[at[c * B + bucket(x[0])]++] = x;
+    for (std::size_t c = lo; c < hi; ++c) {
+      for (const Triangle& x : part[c]) out[at[c * B + bucket(x[0])]++] = x;
+      std::vector<Triangle>().swap(part[c]);
+    }
   });
   par_for(B, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t b = lo; b < hi; ++b)
-      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first[b]), out.begin() + static_cast<std::ptrdiff_t>(first[b + 1]));
+    std::vector<std::uint32_t> count;
+    std::vector<Triangle> tmp;
+    for (std::size_t b = lo; b < hi; ++b) {
+      if (first[b] == first[b + 1]) continue;
+      // the indices m of bucket b: [mlo, mhi)
+      const Index mlo = static_cast<Index>((static_cast<std::uint64_t>(b) * n + B - 1) / B);
+      const Index mhi = static_cast<Index>(std::min<std::uint64_t>(n, (static_cast<std::uint64_t>(b + 1) * n + B - 1) / B));
+      count.assign(static_cast<std::size_t>(mhi - mlo) + 1, 0);
+      const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first[b]);
+      const auto end = out.begin() + static_cast<std::ptrdiff_t>(first[b + 1]);
+      for (auto it = begin; it != end; ++it) ++count[(*it)[0] - mlo + 1];
+      for (std::size_t k = 1; k < count.size(); ++k) count[k] += count[k - 1];
+      tmp.assign(begin, end);
+      for (const Triangle& x : tmp) *(begin + count[x[0] - mlo]++) = x;
+      // count[m - mlo] is now the end of group m
+      std::uint32_t g = 0;
+      for (std::size_t m = 0; m + 1 < count.size(); ++m) {
+        std::sort(begin + g, begin + count[m]);
+        g = count[m];
+      }
+    }
   });
   return out;
 }
@@ -491,7 +523,7 @@ std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Sta
   std::vector<Triangle> out;
   with_threads(opt.threads, [&] {
     StageClock clock(opt.times);
-    const pred::StaticFilter f = parallel_static_filter(ps);
+    const pred::StaticFilter f = parallel_static_filter(ps, {});
     const std::vector<Index> order = brio_order(ps, opt.brio_min);
     std::vector<Vtx> pts(order.size());
     par_for(order.size(), kChunk, [&](std::size_t lo, std::size_t hi) {

@@ -33,6 +33,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/certify/certify.hpp"
@@ -220,7 +221,9 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       cpu::Rt2Options o;
       o.threads = threads;
       std::vector<Triangle> tris = backend == "cpu" ? cpu::rt2(ps, o) : ref::rt2_ffrt(ps);
-      check_certified(certify::rt2(ps, tris, certify::Level::canonical), "Delaunay");
+      check_certified(backend == "cpu" ? cpu::certify_rt2(ps, tris, certify::Level::canonical, threads)
+                                       : certify::rt2(ps, tris, certify::Level::canonical),
+                      "Delaunay");
       if (strict) {
         tris = ref::strict_rt2(ps, tris);
         check_certified(certify::rt2_strict(ps, tris), "strict Delaunay");

@@ -72,13 +72,15 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level = 
 // multithreaded backends pass them, kernels_cpu/hull2/certify_hull2.hpp):
 //   filter     a per-input static filter valid for every coordinate of ps
 //              (predicates/static_filter.hpp), tried before every predicate;
+//              for rt2 also for every weight of ps;
 //   for_range  runs body(lo, hi) over pieces covering [0, n), in any order,
 //              possibly at once; the per-point checks run through it (the
 //              first failing point, in index order, is still the one reported);
-//   make_filter  builds the per-input static filter of ps' coordinates and
-//              `extra` further values (an auxiliary point of the certifier),
-//              e.g. by a parallel scan; certifiers that need such a filter
-//              call it instead of their own sequential scan.
+//   make_filter  builds the per-input static filter of ps' coordinates (and
+//              weights, when ps has them) and `extra` further values (an
+//              auxiliary point of the certifier), e.g. by a parallel scan;
+//              certifiers that need such a filter call it instead of their
+//              own sequential scan.
 struct Speedups {
   const pred::StaticFilter* filter = nullptr;
   std::function<void(std::size_t n, const std::function<void(std::size_t lo, std::size_t hi)>& body)> for_range;
@@ -96,6 +98,10 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
 // 2D regular triangulation (weights from ps; a Delaunay triangulation when
 // ps is unweighted): counter-clockwise triangles.
 Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level = Level::exact);
+// The same verdict and message, the per-triangle, per-vertex and per-point
+// checks and the tables they use built through speedups.for_range, the static
+// filter from speedups.filter or make_filter (kernels_cpu/rt2/certify_rt2.hpp).
+Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups);
 
 // The strict view of a 2D regular triangulation (reference/rt2/strict_rt2.hpp):
 // condition `zero-area` — every triangle counter-clockwise with non-zero area

@@ -2,12 +2,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "reference/point_set.hpp"
@@ -23,80 +23,169 @@ inline std::string edge_str(Index a, Index b) {
   return "(" + std::to_string(a) + "," + std::to_string(b) + ")";
 }
 
-// Directed edge (t[k], t[k+1]) of triangle t → its triangle id; one entry per
-// directed edge. Returns the offending edge in `dup` when an edge repeats.
-struct DirectedEdges {
-  std::unordered_map<std::uint64_t, std::uint32_t> tri_of;
-
-  // false when a directed edge appears twice (dup_* tell where)
-  bool build(const std::vector<Triangle>& tris, Index& dup_a, Index& dup_b, std::uint32_t& t1,
-             std::uint32_t& t2) {
-    tri_of.reserve(tris.size() * 3 * 2);
-    for (std::uint32_t t = 0; t < tris.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        Index a = tris[t][k], b = tris[t][(k + 1) % 3];
-        auto [it, inserted] = tri_of.emplace(edge_key(a, b), t);
-        if (!inserted) {
-          dup_a = a;
-          dup_b = b;
-          t1 = it->second;
-          t2 = t;
-          return false;
-        }
+// The smallest i in [0, n) with fails(i), n when there is none. With
+// for_range (a certify::Speedups::for_range) the indices are split into pieces
+// run in any order, possibly at once; a piece stops at its first failure or
+// once a smaller failing index is known, so the answer is the sequential
+// scan's whatever the schedule. make_fails(lo) gives the test of the piece
+// that starts at lo (a piece may carry state from one index to the next, e.g.
+// where a walk stopped, as long as fails(i) does not depend on it); it must be
+// safe to call concurrently, and so must the tests.
+template <class ForRange, class MakeFails>
+std::size_t smallest_failing_by_piece(std::size_t n, const ForRange& for_range, const MakeFails& make_fails) {
+  std::atomic<std::size_t> first{n};
+  auto body = [&](std::size_t lo, std::size_t hi) {
+    auto&& fails = make_fails(lo);
+    for (std::size_t i = lo; i < hi; ++i) {
+      if (i >= first.load(std::memory_order_relaxed)) return;  // a smaller failure is known
+      if (!fails(i)) continue;
+      std::size_t cur = first.load();
+      while (i < cur && !first.compare_exchange_weak(cur, i)) {
       }
+      return;
     }
-    return true;
-  }
-  // triangle holding the directed edge (a, b), or -1
-  long find(Index a, Index b) const {
-    auto it = tri_of.find(edge_key(a, b));
-    return it == tri_of.end() ? -1 : static_cast<long>(it->second);
-  }
-};
-
-inline Index third_vertex(const Triangle& t, Index a, Index b) {
-  for (Index v : t)
-    if (v != a && v != b) return v;
-  return t[0];
+  };
+  if (for_range) for_range(n, body);
+  else body(0, n);
+  return first.load();
+}
+// The same with one stateless test fails(i).
+template <class ForRange, class Fails>
+std::size_t smallest_failing(std::size_t n, const ForRange& for_range, const Fails& fails) {
+  return smallest_failing_by_piece(n, for_range, [&](std::size_t) -> const Fails& { return fails; });
 }
 
-// Union-find over triangle ids, for connectivity.
+// body(lo, hi) over [0, n) through for_range when there is one, else at once.
+template <class ForRange, class Body>
+void for_pieces(std::size_t n, const ForRange& for_range, const Body& body) {
+  if (for_range) for_range(n, body);
+  else body(0, n);
+}
+
+constexpr std::uint32_t kNoTriangle = ~std::uint32_t{0};
+
+// Union-find over triangle ids, for connectivity; unite and find may run
+// concurrently (lock-free: a root is linked under a root of smaller id by a
+// compare-and-swap that fails when it has stopped being a root, so every
+// parent has a smaller id and no cycle forms; find halves paths, replacing a
+// parent by an ancestor). The partition after all unions does not depend on
+// their order.
 struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
+  std::vector<std::atomic<std::uint32_t>> parent;
+  explicit UnionFind(std::size_t n) : parent(n) {
+    for (std::size_t i = 0; i < n; ++i) parent[i].store(static_cast<std::uint32_t>(i), std::memory_order_relaxed);
   }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+  std::uint32_t find(std::uint32_t x) {
+    for (;;) {
+      std::uint32_t p = parent[x].load(std::memory_order_relaxed);
+      if (p == x) return x;
+      const std::uint32_t g = parent[p].load(std::memory_order_relaxed);
+      if (g != p) parent[x].compare_exchange_weak(p, g, std::memory_order_relaxed);
+      x = g;
+    }
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    for (;;) {
+      a = find(a), b = find(b);
+      if (a == b) return;
+      if (a < b) std::swap(a, b);
+      std::uint32_t root = a;
+      if (parent[a].compare_exchange_strong(root, b)) return;
+    }
+  }
 };
 
-// Link edges around each vertex: triangle (a,b,c) contributes b→c at a,
-// c→a at b and a→b at c. Stored in CSR form: for vertex v, entries
-// [start[v], start[v+1]) of `from`/`to`.
+// The triangles around each vertex, in CSR form: triangle t = (a, b, c)
+// contributes the link edge b→c at a, c→a at b and a→b at c, each with its
+// corner 3 t + k (t[k] the vertex). For vertex v, entries [start[v],
+// start[v+1]) of `link`, sorted by (from, corner). An entry (from = u) at v
+// is also the directed edge (v, u) of its triangle and an entry (to = u) the
+// directed edge (u, v), so the directed edges and their twins are found among
+// a vertex's few entries, and a repeated directed edge is two entries with
+// one `from`. Built by a counting sort on the vertex, the scatter through
+// for_range (positions taken by atomic increments; the per-vertex sort then
+// makes the result independent of the schedule).
 struct VertexLinks {
+  struct Link {
+    Index from, to;
+    std::uint32_t corner;
+    std::uint32_t tri() const { return corner / 3; }
+    bool operator<(const Link& o) const { return from != o.from ? from < o.from : corner < o.corner; }
+  };
   std::vector<std::uint32_t> start;
-  std::vector<std::pair<Index, Index>> edge;  // (from, to), sorted by from per vertex
+  std::vector<Link> link;
 
-  void build(std::size_t n, const std::vector<Triangle>& tris) {
+  template <class ForRange>
+  void build(std::size_t n, const std::vector<Triangle>& tris, const ForRange& for_range) {
+    std::vector<std::atomic<std::uint32_t>> fill(n + 1);  // value-initialised: zeros
+    for_pieces(tris.size(), for_range, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t t = lo; t < hi; ++t)
+        for (Index v : tris[t]) fill[v + 1].fetch_add(1, std::memory_order_relaxed);
+    });
     start.assign(n + 1, 0);
-    for (const Triangle& t : tris)
-      for (Index v : t) ++start[v + 1];
-    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-    edge.resize(tris.size() * 3);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (const Triangle& t : tris)
-      for (int k = 0; k < 3; ++k) edge[fill[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
-    for (std::size_t v = 0; v < n; ++v)
-      std::sort(edge.begin() + start[v], edge.begin() + start[v + 1]);
+    for (std::size_t v = 0; v < n; ++v) {
+      start[v + 1] = start[v] + fill[v + 1].load(std::memory_order_relaxed);
+      fill[v].store(start[v], std::memory_order_relaxed);
+    }
+    link.resize(tris.size() * 3);
+    for_pieces(tris.size(), for_range, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t t = lo; t < hi; ++t)
+        for (int k = 0; k < 3; ++k)
+          link[fill[tris[t][k]].fetch_add(1, std::memory_order_relaxed)] = {
+              tris[t][(k + 1) % 3], tris[t][(k + 2) % 3], static_cast<std::uint32_t>(3 * t + k)};
+    });
+    for_pieces(n, for_range, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t v = lo; v < hi; ++v) {  // insertion sort: a handful of entries each
+        const auto b = link.begin() + start[v], e = link.begin() + start[v + 1];
+        for (auto i = b; i != e; ++i)
+          for (auto j = i; j != b && *j < *(j - 1); --j) std::iter_swap(j, j - 1);
+      }
+    });
   }
   std::uint32_t degree(Index v) const { return start[v + 1] - start[v]; }
+  Index first_from(Index v) const { return link[start[v]].from; }
 
+  // The entry with from == u at v — the directed edge (v, u) — (the first
+  // one, of the smallest triangle, if it repeats), or nullptr.
+  const Link* entry(Index v, Index u) const {
+    const Link* b = link.data() + start[v];
+    const Link* e = link.data() + start[v + 1];
+    for (; b != e && b->from <= u; ++b)
+      if (b->from == u) return b;
+    return nullptr;
+  }
   // The link vertex following `u` around v, or -1 if there is none.
   long next(Index v, Index u) const {
-    auto b = edge.begin() + start[v], e = edge.begin() + start[v + 1];
-    auto it = std::lower_bound(b, e, std::make_pair(u, Index(0)));
-    return (it != e && it->first == u) ? static_cast<long>(it->second) : -1;
+    const Link* l = entry(v, u);
+    return l ? static_cast<long>(l->to) : -1;
+  }
+
+  // The first repeated directed edge in the order of a scan over the triangles
+  // and their edges (t, k) (edge k of t: (t[k], t[k+1])), as a map from edge
+  // keys would meet it: the directed edge (a, b) whose second occurrence comes
+  // first, t1 the triangle of its first occurrence and t2 of its second.
+  // False when no directed edge repeats.
+  template <class ForRange>
+  bool repeated_edge(const std::vector<Triangle>& tris, const ForRange& for_range, Index& a, Index& b,
+                     std::uint32_t& t1, std::uint32_t& t2) const {
+    constexpr std::uint32_t kNone = ~std::uint32_t{0};
+    std::atomic<std::uint32_t> first{kNone};  // the corner of the second occurrence
+    for_pieces(start.size() - 1, for_range, [&](std::size_t lo, std::size_t hi) {
+      std::uint32_t best = kNone;
+      for (std::size_t v = lo; v < hi; ++v)
+        for (std::uint32_t i = start[v] + 1; i < start[v + 1]; ++i)
+          if (link[i].from == link[i - 1].from && (i == start[v] + 1 || link[i - 2].from != link[i].from))
+            best = std::min(best, link[i].corner);
+      std::uint32_t cur = first.load();
+      while (best < cur && !first.compare_exchange_weak(cur, best)) {
+      }
+    });
+    const std::uint32_t c = first.load();
+    if (c == kNone) return false;
+    t2 = c / 3;
+    a = tris[t2][c % 3], b = tris[t2][(c % 3 + 1) % 3];
+    t1 = entry(a, b)->tri();
+    return true;
   }
 
   // Follows the link of v from `first` for at most degree(v) steps, writing the
@@ -116,6 +205,59 @@ struct VertexLinks {
   }
 };
 
+inline Index third_vertex(const Triangle& t, Index a, Index b) {
+  for (Index v : t)
+    if (v != a && v != b) return v;
+  return t[0];
+}
+
+// The triangle across each edge: across[t][k] is the triangle holding the
+// directed edge (t[k+1], t[k]), the twin of edge k of t, or kNoTriangle; every
+// pair of twins is united in uf. Directed edges must not repeat
+// (VertexLinks::repeated_edge). Through for_range, over the vertices: at v,
+// the twin of the entry (from = u) is the entry (to = u), among v's own.
+template <class ForRange>
+std::vector<std::array<std::uint32_t, 3>> neighbours(const std::vector<Triangle>& tris, const VertexLinks& links,
+                                                     UnionFind& uf, const ForRange& for_range) {
+  std::vector<std::array<std::uint32_t, 3>> across(tris.size());
+  for_pieces(links.start.size() - 1, for_range, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t v = lo; v < hi; ++v) {
+      const VertexLinks::Link* b = links.link.data() + links.start[v];
+      const VertexLinks::Link* e = links.link.data() + links.start[v + 1];
+      for (const VertexLinks::Link* l = b; l != e; ++l) {
+        const VertexLinks::Link* twin = b;
+        while (twin != e && twin->to != l->from) ++twin;
+        across[l->tri()][l->corner % 3] = twin == e ? kNoTriangle : twin->tri();
+        if (twin != e && v < l->from) uf.unite(l->tri(), twin->tri());
+      }
+    }
+  });
+  return across;
+}
+
+// A table of start triangles for point-location walks, a hint only: every
+// stride-th triangle is put into the cell cell_of(its centroid) when that cell
+// is still empty; empty cells then take the previous filled cell's (the
+// first ones triangle 0).
+template <class CellOf>
+std::vector<std::uint32_t> start_cells(std::size_t cells, const PointSet& ps, const std::vector<Triangle>& tris,
+                                       std::size_t stride, const CellOf& cell_of) {
+  std::vector<std::uint32_t> cell(cells, kNoTriangle);
+  const int d = ps.dim;
+  for (std::size_t t = 0; t < tris.size(); t += stride) {
+    double c[3];
+    for (int j = 0; j < d; ++j) c[j] = (ps.point(tris[t][0])[j] + ps.point(tris[t][1])[j] + ps.point(tris[t][2])[j]) / 3;
+    std::uint32_t& slot = cell[cell_of(c)];
+    if (slot == kNoTriangle) slot = static_cast<std::uint32_t>(t);
+  }
+  std::uint32_t last = 0;
+  for (std::uint32_t& slot : cell) {
+    if (slot == kNoTriangle) slot = last;
+    last = slot;
+  }
+  return cell;
+}
+
 // Number of full turns of a sequence of directions that rotates by less than a
 // half-turn, in one sense, at each step. half(x) tells whether direction x is in
 // the half-open half-turn [ref, ref + π) (0) or in [ref + π, ref + 2π) (1);
@@ -134,10 +276,27 @@ int count_turns(const std::vector<Index>& seq, bool cyclic, Half half) {
   return turns;
 }
 
+// body(c, lo, hi) for every chunk c = [lo, hi) = [c size, min(n, (c + 1) size))
+// of [0, n), through for_range: a piece runs the chunks that start in it, so
+// the chunks are the same whatever the split (for steps that need fixed
+// chunks, as a stable parallel scatter does).
+template <class ForRange, class Body>
+void for_chunks(std::size_t n, std::size_t size, const ForRange& for_range, const Body& body) {
+  for_pieces(n, for_range, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = (lo + size - 1) / size; c * size < hi; ++c) body(c, c * size, std::min(n, (c + 1) * size));
+  });
+}
+
 // A locality-preserving order of the given points (Morton order of their
 // bounding-box-normalised coordinates), so that point-location walks started
-// from the previous answer stay short.
-inline void morton_sort(const PointSet& ps, std::vector<Index>& pts) {
+// from the previous answer stay short. Points of one Morton key keep their
+// order in `pts` (with pts increasing: sorted by (key, index)). The keys are
+// computed and sorted through for_range: a stable LSD radix sort on 8-bit
+// digits over fixed chunks (per chunk a digit histogram, their prefix sums in
+// (digit, chunk) order, then a stable scatter per chunk), so the order does
+// not depend on the split.
+template <class ForRange>
+void morton_sort(const PointSet& ps, std::vector<Index>& pts, const ForRange& for_range) {
   if (pts.empty()) return;
   const int d = ps.dim;
   double lo[3], hi[3];
@@ -147,9 +306,9 @@ inline void morton_sort(const PointSet& ps, std::vector<Index>& pts) {
       lo[j] = std::min(lo[j], ps.point(p)[j]);
       hi[j] = std::max(hi[j], ps.point(p)[j]);
     }
-  const int bits = d == 2 ? 16 : 10;
+  const int bits = d == 2 ? 16 : 10;  // keys of at most 32 bits
   auto key = [&](Index p) {
-    std::uint64_t k = 0;
+    std::uint32_t k = 0;
     std::uint32_t cell[3] = {0, 0, 0};
     for (int j = 0; j < d; ++j) {
       double span = hi[j] - lo[j];
@@ -161,34 +320,37 @@ inline void morton_sort(const PointSet& ps, std::vector<Index>& pts) {
       for (int j = 0; j < d; ++j) k = (k << 1) | ((cell[j] >> b) & 1u);
     return k;
   };
-  std::vector<std::pair<std::uint64_t, Index>> keyed;
-  keyed.reserve(pts.size());
-  for (Index p : pts) keyed.emplace_back(key(p), p);
-  std::sort(keyed.begin(), keyed.end());
-  for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = keyed[i].second;
-}
-
-// The smallest i in [0, n) with fails(i), n when there is none. With
-// for_range (a certify::Speedups::for_range) the indices are split into pieces
-// run in any order, possibly at once; a piece stops at its first failure or
-// once a smaller failing index is known, so the answer is the sequential
-// scan's whatever the schedule. fails must be safe to call concurrently.
-template <class ForRange, class Fails>
-std::size_t smallest_failing(std::size_t n, const ForRange& for_range, const Fails& fails) {
-  std::atomic<std::size_t> first{n};
-  auto body = [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i) {
-      if (i >= first.load(std::memory_order_relaxed)) return;  // a smaller failure is known
-      if (!fails(i)) continue;
-      std::size_t cur = first.load();
-      while (i < cur && !first.compare_exchange_weak(cur, i)) {
+  const std::size_t m = pts.size();
+  std::vector<std::uint32_t> keys(m), keys2(m);
+  std::vector<Index> pts2(m);
+  for_pieces(m, for_range, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) keys[i] = key(pts[i]);
+  });
+  constexpr std::size_t kSize = std::size_t{1} << 16;
+  const std::size_t chunks = (m + kSize - 1) / kSize;
+  std::vector<std::size_t> at(chunks * 256);
+  for (int shift = 0; shift < 32; shift += 8) {
+    std::fill(at.begin(), at.end(), 0);
+    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) ++at[c * 256 + ((keys[i] >> shift) & 255u)];
+    });
+    std::size_t sum = 0;
+    for (std::size_t digit = 0; digit < 256; ++digit)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t count = at[c * 256 + digit];
+        at[c * 256 + digit] = sum;
+        sum += count;
       }
-      return;
-    }
-  };
-  if (for_range) for_range(n, body);
-  else body(0, n);
-  return first.load();
+    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) {
+        const std::size_t to = at[c * 256 + ((keys[i] >> shift) & 255u)]++;
+        keys2[to] = keys[i];
+        pts2[to] = pts[i];
+      }
+    });
+    keys.swap(keys2);
+    pts.swap(pts2);
+  }
 }
 
 // A small deterministic generator for the stochastic walks (Devillers–Pion–
@@ -203,32 +365,41 @@ struct XorShift {
   }
 };
 
-// Common index checks: every index < n, three distinct per triangle.
-inline std::string check_triangle_indices(const std::vector<Triangle>& tris, std::size_t n) {
-  for (std::size_t t = 0; t < tris.size(); ++t) {
+// Common index checks: every index < n, three distinct per triangle; the
+// first failing triangle is reported (the triangles checked through
+// for_range).
+template <class ForRange>
+std::string check_triangle_indices(const std::vector<Triangle>& tris, std::size_t n, const ForRange& for_range) {
+  auto problem = [&](std::size_t t) -> std::string {
     for (Index v : tris[t])
       if (v >= n)
-        return "triangle " + std::to_string(t) + " " + tri_str(tris[t]) + " names point " +
-               std::to_string(v) + " but the input has " + std::to_string(n) + " points";
+        return "triangle " + std::to_string(t) + " " + tri_str(tris[t]) + " names point " + std::to_string(v) +
+               " but the input has " + std::to_string(n) + " points";
     if (tris[t][0] == tris[t][1] || tris[t][1] == tris[t][2] || tris[t][0] == tris[t][2])
       return "triangle " + std::to_string(t) + " " + tri_str(tris[t]) + " repeats a vertex";
-  }
-  return {};
+    return {};
+  };
+  const std::size_t bad = smallest_failing(tris.size(), for_range, [&](std::size_t t) {
+    for (Index v : tris[t])
+      if (v >= n) return true;
+    return tris[t][0] == tris[t][1] || tris[t][1] == tris[t][2] || tris[t][0] == tris[t][2];
+  });
+  return bad < tris.size() ? problem(bad) : std::string();
 }
 
 // Canonical form (DESIGN.md): each triangle rotated so its smallest index comes
-// first, lines sorted, no repeats.
-inline std::string check_canonical_triangles(const std::vector<Triangle>& tris) {
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const Triangle& x = tris[t];
-    if (!(x[0] < x[1] && x[0] < x[2]))
-      return "triangle " + std::to_string(t) + " " + tri_str(x) +
-             " is not rotated to start at its smallest index";
-    if (t > 0 && !(tris[t - 1] < x))
-      return "triangles " + std::to_string(t - 1) + " and " + std::to_string(t) +
-             " are not in strictly increasing order";
-  }
-  return {};
+// first, lines sorted, no repeats (the first failing triangle, through
+// for_range).
+template <class ForRange>
+std::string check_canonical_triangles(const std::vector<Triangle>& tris, const ForRange& for_range) {
+  auto rotated = [&](std::size_t t) { return tris[t][0] < tris[t][1] && tris[t][0] < tris[t][2]; };
+  auto ordered = [&](std::size_t t) { return t == 0 || tris[t - 1] < tris[t]; };
+  const std::size_t t =
+      smallest_failing(tris.size(), for_range, [&](std::size_t i) { return !rotated(i) || !ordered(i); });
+  if (t == tris.size()) return {};
+  if (!rotated(t))
+    return "triangle " + std::to_string(t) + " " + tri_str(tris[t]) + " is not rotated to start at its smallest index";
+  return "triangles " + std::to_string(t - 1) + " and " + std::to_string(t) + " are not in strictly increasing order";
 }
 
 }  // namespace flipflop::certify::detail

@@ -186,24 +186,11 @@ class DirectionTable {
   DirectionTable(const PointSet& ps, const std::vector<Triangle>& tris, const double* sd,
                  const pred::RationalPoint& s) {
     for (int j = 0; j < 3; ++j) s_[j] = sd ? sd[j] : s.approx[j].v;
-    cell_.assign(6 * kSide * kSide, kEmpty);
-    for (std::size_t i = 0; i < tris.size(); ++i) {
-      double c[3];
-      for (int j = 0; j < 3; ++j)
-        c[j] = (ps.point(tris[i][0])[j] + ps.point(tris[i][1])[j] + ps.point(tris[i][2])[j]) / 3;
-      std::uint32_t& slot = cell_[cell(c)];
-      if (slot == kEmpty) slot = static_cast<std::uint32_t>(i);
-    }
-    std::uint32_t last = 0;
-    for (std::uint32_t& slot : cell_) {
-      if (slot == kEmpty) slot = last;
-      last = slot;
-    }
+    cell_ = detail::start_cells(6 * kSide * kSide, ps, tris, 1, [&](const double* c) { return cell(c); });
   }
   std::size_t hint(const double* p) const { return cell_[cell(p)]; }
 
  private:
-  static constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
   std::size_t cell(const double* p) const {
     const double v[3] = {p[0] - s_[0], p[1] - s_[1], p[2] - s_[2]};
     int a = 0;
@@ -238,35 +225,36 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
   if (tris.size() < 4)
     return Report::fail("triangle-indices", "a closed surface needs at least 4 triangles, the output has " +
                                                 std::to_string(tris.size()));
-  if (std::string why = detail::check_triangle_indices(tris, n); !why.empty())
+  if (std::string why = detail::check_triangle_indices(tris, n, speedups.for_range); !why.empty())
     return Report::fail("triangle-indices", why);
   if (canonical)
-    if (std::string why = detail::check_canonical_triangles(tris); !why.empty())
+    if (std::string why = detail::check_canonical_triangles(tris, speedups.for_range); !why.empty())
       return Report::fail("canonical-form", why);
 
   // ---- topology -------------------------------------------------------------
-  detail::DirectedEdges edges;
+  detail::VertexLinks links;
+  links.build(n, tris, speedups.for_range);
   {
     Index a = 0, b = 0;
     std::uint32_t t1 = 0, t2 = 0;
-    if (!edges.build(tris, a, b, t1, t2))
+    if (links.repeated_edge(tris, speedups.for_range, a, b, t1, t2))
       return Report::fail("oriented-manifold", "directed edge " + edge_str(a, b) + " appears in triangles " +
                                                    tri_str(tris[t1]) + " and " + tri_str(tris[t2]) +
                                                    " (inconsistent orientation or more than two triangles on an edge)");
   }
   detail::UnionFind uf(tris.size());
-  for (std::uint32_t t = 0; t < tris.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      Index a = tris[t][k], b = tris[t][(k + 1) % 3];
-      long twin = edges.find(b, a);
-      if (twin < 0)
-        return Report::fail("closed-surface", "edge " + edge_str(a, b) + " of triangle " + tri_str(tris[t]) +
-                                                  " has no opposite triangle (the surface has a hole)");
-      uf.unite(t, static_cast<std::uint32_t>(twin));
-    }
+  const std::vector<std::array<std::uint32_t, 3>> across = detail::neighbours(tris, links, uf, speedups.for_range);
+  if (const std::size_t bad = detail::smallest_failing(tris.size(), speedups.for_range,
+                                                       [&](std::size_t t) {
+                                                         return across[t][0] == detail::kNoTriangle ||
+                                                                across[t][1] == detail::kNoTriangle ||
+                                                                across[t][2] == detail::kNoTriangle;
+                                                       });
+      bad < tris.size()) {
+    const std::size_t k = across[bad][0] == detail::kNoTriangle ? 0 : across[bad][1] == detail::kNoTriangle ? 1 : 2;
+    return Report::fail("closed-surface", "edge " + edge_str(tris[bad][k], tris[bad][(k + 1) % 3]) + " of triangle " +
+                                              tri_str(tris[bad]) + " has no opposite triangle (the surface has a hole)");
   }
-  detail::VertexLinks links;
-  links.build(n, tris);
   std::vector<Index> verts;
   std::vector<char> is_vertex(n, 0);
   std::vector<Index> cyc;
@@ -274,15 +262,17 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
     if (links.degree(v) == 0) continue;
     is_vertex[v] = 1;
     verts.push_back(v);
-    bool closed = links.walk(v, links.edge[links.start[v]].first, cyc);
+    bool closed = links.walk(v, links.first_from(v), cyc);
     if (!closed || cyc.size() != links.degree(v))
       return Report::fail("vertex-link", "the triangles around vertex " + std::to_string(v) +
                                              " do not form a single cycle (the surface is pinched there)");
   }
-  for (std::uint32_t t = 1; t < tris.size(); ++t)
-    if (uf.find(t) != uf.find(0))
-      return Report::fail("connected", "triangle " + tri_str(tris[t]) + " is not connected to triangle " +
-                                           tri_str(tris[0]));
+  if (const std::size_t bad = detail::smallest_failing(
+          tris.size(), speedups.for_range,
+          [&](std::size_t t) { return uf.find(static_cast<std::uint32_t>(t)) != uf.find(0); });
+      bad < tris.size())
+    return Report::fail("connected", "triangle " + tri_str(tris[bad]) + " is not connected to triangle " +
+                                         tri_str(tris[0]));
   const long V = static_cast<long>(verts.size()), E = static_cast<long>(tris.size() * 3 / 2),
              F = static_cast<long>(tris.size());
   if (V - E + F != 2)
@@ -312,7 +302,7 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
                                                    " does not face away from the interior point (it is oriented "
                                                    "inward or is not on the hull)");
   for (Index v : verts) {
-    links.walk(v, links.edge[links.start[v]].first, cyc);
+    links.walk(v, links.first_from(v), cyc);
     const Index u1 = cyc[0];
     // rotation sense around the axis s→v: rot(x, y) = -orient3d(s, v, x, y) > 0
     // for consecutive link vertices of facets facing away from s.
@@ -325,10 +315,11 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
   // ---- convexity (Thm 6.2) ----------------------------------------------------
   // edge k of triangle t (each undirected edge once, from its triangle with
   // a < b): its opposite vertex d across it, d's orientation against t
-  auto convexity = [&](const Triangle& t, int k, Index& d, const Triangle*& o) {
+  auto convexity = [&](std::size_t i, int k, Index& d, const Triangle*& o) {
+    const Triangle& t = tris[i];
     const Index a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
     if (a > b) return 1;
-    o = &tris[static_cast<std::size_t>(edges.find(b, a))];
+    o = &tris[across[i][static_cast<std::size_t>(k)]];
     d = detail::third_vertex(*o, a, b);
     return ck.facet_vs_point(t, d);
   };
@@ -338,7 +329,7 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
                                                          Index d = 0;
                                                          const Triangle* o = nullptr;
                                                          for (int k = 0; k < 3; ++k)
-                                                           if (reflex(convexity(tris[i], k, d, o))) return true;
+                                                           if (reflex(convexity(i, k, d, o))) return true;
                                                          return false;
                                                        });
       bad < tris.size()) {
@@ -346,7 +337,7 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
     for (int k = 0; k < 3; ++k) {
       Index d = 0;
       const Triangle* o = nullptr;
-      const int sgn = convexity(t, k, d, o);
+      const int sgn = convexity(bad, k, d, o);
       if (reflex(sgn))
         return Report::fail("convex-edge", "edge " + edge_str(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]) +
                                                " is " + (sgn < 0 ? "reflex" : "flat") + ": vertex " +
@@ -362,11 +353,6 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
   // for the direction from s (a hint only: any start reaches the one cone
   // that contains the point), then checked against that facet. The points
   // are taken in index order, so the first failing point is the smallest.
-  std::vector<std::array<std::uint32_t, 3>> across(tris.size());
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      across[i][static_cast<std::size_t>(k)] =
-          static_cast<std::uint32_t>(edges.find(tris[i][(k + 1) % 3], tris[i][static_cast<std::size_t>(k)]));
   const DirectionTable table(ps, tris, ck.s_is_double ? ck.sd : nullptr, ck.s);
   std::size_t candidates = 0;
   for (Index p = 0; p < n; ++p) candidates += !is_vertex[p];
