@@ -143,6 +143,7 @@
 // the multithreaded hulls (kernels_cpu/hull2, kernels_cpu/hull3, linked through flipflop_all)
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/rt2/rt2.hpp"
 #endif
 #ifdef FLIPFLOP_TEST_HAVE_RTD
 #include "reference/rtd/certify_rtd.hpp"
@@ -578,8 +579,8 @@ struct Rt2Algorithm {
   std::function<std::vector<Triangle>(const PointSet&)> initial;
 };
 
-// Every reference algorithm that applies to the input, and brute::rt2 for
-// small n. Lawson from a triangulation of all points is not here: it may
+// Every reference algorithm that applies to the input, the cpu backend, and
+// brute::rt2 for small n. Lawson from a triangulation of all points is not here: it may
 // legitimately fail (rt2_counts / rt2_canonical check it separately).
 inline std::vector<Rt2Algorithm> rt2_algorithms(const PointSet& ps) {
   using ref::FlipFlopVariant;
@@ -593,6 +594,16 @@ inline std::vector<Rt2Algorithm> rt2_algorithms(const PointSet& ps) {
       {"flip-flop v-first from the hull fan",
        [](const PointSet& q, ref::Rt2Stats* st) { return ref::flip_flop(q, hull_fan(q), FlipFlopVariant::v_first, st); },
        hull_fan},
+      // the cpu backend (kernels_cpu/rt2), 2 threads, BRIO rounds down to
+      // single points (every round path on small inputs)
+      {"cpu",
+       [](const PointSet& q, ref::Rt2Stats* st) {
+         cpu::Rt2Options o;
+         o.threads = 2;
+         o.brio_min = 1;
+         return cpu::rt2(q, o, st);
+       },
+       nullptr},
   };
   if (zero_weights(ps))
     out.push_back({"dt2-lawson", [](const PointSet& q, ref::Rt2Stats* st) { return ref::dt2_lawson(q, st); }, nullptr});
