@@ -18,10 +18,11 @@ namespace flipflop::cpu {
 
 namespace {
 
-// A point in insertion order: coordinates (x, y contiguous: the predicates'
-// coordinate pointer), weight, input index (= SoS index).
+// A point in insertion order: coordinates (the predicates' coordinate
+// pointer), weight, input index (= SoS index).
 struct Vtx {
-  double x, y, w;
+  double xy[2];
+  double w;
   Index id;
 };
 
@@ -149,22 +150,22 @@ class Builder {
   std::uint32_t home_ = 0;  // a live real triangle at the last inserted point: where the walk starts
   std::uint32_t rng_ = 0x2545F491u;
 
-  pred::Pt pt(std::uint32_t v) const { return {P_[v].id, &P_[v].x}; }
-  pred::WPt wpt(std::uint32_t v) const { return {P_[v].id, &P_[v].x, P_[v].w}; }
+  pred::Pt pt(std::uint32_t v) const { return {P_[v].id, P_[v].xy}; }
+  pred::WPt wpt(std::uint32_t v) const { return {P_[v].id, P_[v].xy, P_[v].w}; }
   // The predicates: the per-call semi-static filter inline (the points of a
   // walk step or a flip are neighbours, much closer to each other than the
   // input's extent, so the per-input static bound rarely decides here — at
   // 10^7 uniform points it decided almost no power test), then the staged
   // exact path with SoS (predicates.hpp).
   int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
-    const double* p[3] = {&P_[a].x, &P_[b].x, &P_[c].x};
+    const double* p[3] = {P_[a].xy, P_[b].xy, P_[c].xy};
     if (const int s = pred::semi_static_sign<3>(p, nullptr)) return s;
     return pred::orient2d(f_, pt(a), pt(b), pt(c));
   }
   // > 0 iff d^+ lies strictly below the lifted plane of the counter-clockwise
   // (a, b, c) under SoS: d is inside the power circle (never 0)
   int power(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
-    const double* p[4] = {&P_[a].x, &P_[b].x, &P_[c].x, &P_[d].x};
+    const double* p[4] = {P_[a].xy, P_[b].xy, P_[c].xy, P_[d].xy};
     const double w[4] = {P_[a].w, P_[b].w, P_[c].w, P_[d].w};
     if (const int s = pred::semi_static_sign<4>(p, w)) return s;
     return pred::power2d(f_, wpt(a), wpt(b), wpt(c), wpt(d));
@@ -409,9 +410,9 @@ void Builder::run() {
   std::uint32_t a = 0, b = kDead, c = kDead;
   int o = 0;
   for (std::uint32_t k = 1; k < n && b == kDead; ++k)
-    if (P_[k].x != P_[a].x || P_[k].y != P_[a].y) b = k;
+    if (P_[k].xy[0] != P_[a].xy[0] || P_[k].xy[1] != P_[a].xy[1]) b = k;
   for (std::uint32_t k = b + 1; b != kDead && k < n && c == kDead; ++k)
-    if ((o = pred::orient2d_exact(&P_[a].x, &P_[b].x, &P_[k].x)) != 0) c = k;
+    if ((o = pred::orient2d_exact(P_[a].xy, P_[b].xy, P_[k].xy)) != 0) c = k;
   if (c == kDead) throw std::logic_error("rt2 (cpu): no initial triangle in input that spans the plane");
   if (o < 0) std::swap(b, c);
   initial(a, b, c);
@@ -529,7 +530,7 @@ std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Sta
     par_for(order.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t k = lo; k < hi; ++k) {
         const Index i = order[k];
-        pts[k] = {ps.point(i)[0], ps.point(i)[1], ps.weight(i), i};
+        pts[k] = {{ps.point(i)[0], ps.point(i)[1]}, ps.weight(i), i};
       }
     });
     clock.mark("sort");
