@@ -117,7 +117,9 @@ std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min) {
       keys[i] = (static_cast<std::uint64_t>(rounds - 1 - r) << (30 + kIndexBits)) | (curve << kIndexBits) | i;
     }
   });
-  par_sort(keys, [](std::uint64_t a, std::uint64_t b) { return a < b; });
+  // keys[i] holds i in its low bits, so the stable sort on the high bits is
+  // the sort of the whole (distinct) keys
+  par_radix_sort(keys, kIndexBits);
   std::vector<Index> order(n);
   par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i) order[i] = static_cast<Index>(keys[i] & ((std::uint64_t{1} << kIndexBits) - 1));
