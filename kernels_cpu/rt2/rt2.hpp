@@ -6,7 +6,7 @@
 //                 in a biased randomized insertion order (BRIO, Amenta–Choi–
 //                 Rote): rounds of geometrically growing size taken by a hash
 //                 of the index, each round along a Hilbert curve — keys
-//                 computed in parallel, one parallel sort; the points copied
+//                 computed in parallel, one parallel radix sort; the points copied
 //                 in that order into one flat array (x, y, w, index) for
 //                 locality;
 //   2. [insert]   incremental flipping (Edelsbrunner–Shah 1996; thesis §2.3's
