@@ -30,8 +30,9 @@ namespace flipflop::peers {
 std::vector<Index> qhull_hull2(const PointSet& pts);
 // Facets of the 3D hull ("qhull Qt": merged facets triangulated).
 std::vector<Triangle> qhull_hull3(const PointSet& pts);
-// Delaunay triangulation of 2D points ("qhull d Qbb Qt", what qdelaunay and
-// scipy.spatial.Delaunay run): the lower facets of the lifted hull,
+// Delaunay triangulation of 2D points ("qhull d Qbb Qt": qdelaunay's options
+// with triangulated output; scipy.spatial.Delaunay adds Qc Qz Q12): the
+// lower facets of the lifted hull,
 // counter-clockwise. Qhull merges cocircular facets and triangulates them
 // its own way; duplicated points are kept once.
 std::vector<Triangle> qhull_delaunay2(const PointSet& pts);
