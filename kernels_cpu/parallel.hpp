@@ -13,8 +13,6 @@
 //                           rounds): the result is unique, so it does not
 //                           depend on the thread count;
 //   make_units              pieces of at most kChunk points of segmented lists;
-//   par_radix_sort          stable LSD radix sort of 64-bit keys on their high
-//                           bits (fixed chunks, so independent of threads);
 //   par_select              the indices i of [0, n) with keep(i), in increasing
 //                           order (fixed chunks, each filtered by one task,
 //                           then concatenated in chunk order);
@@ -164,43 +162,6 @@ void par_sort(std::vector<T>& v, const Less& less) {
       }
     });
     v.swap(out);
-  }
-}
-
-// ---- parallel radix sort ---------------------------------------------------------
-// A stable LSD radix sort of 64-bit keys on their bits [lo_bit, 64), 12 bits
-// per pass over at most 64 fixed chunks: per chunk a digit histogram, the
-// prefix sums in (digit, chunk) order, then a stable scatter per chunk. The
-// bits below lo_bit keep the input order among equal high parts (e.g. an
-// index stored there, the keys built in index order: then the result is the
-// sorted order of the whole keys). Independent of the thread count.
-inline void par_radix_sort(std::vector<std::uint64_t>& v, int lo_bit) {
-  constexpr int kBits = 12;
-  constexpr std::size_t R = std::size_t{1} << kBits;
-  const std::size_t n = v.size();
-  const std::size_t per = std::max(kChunk, (n + 63) / 64);
-  const std::size_t chunks = (n + per - 1) / per;
-  std::vector<std::uint64_t> tmp(n);
-  std::vector<std::size_t> at(chunks * R);
-  for (int shift = lo_bit; shift < 64; shift += kBits) {
-    std::fill(at.begin(), at.end(), 0);
-    par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-      for (std::size_t c = lo; c < hi; ++c)
-        for (std::size_t i = c * per; i < std::min(n, (c + 1) * per); ++i) ++at[c * R + ((v[i] >> shift) & (R - 1))];
-    });
-    std::size_t sum = 0;
-    for (std::size_t d = 0; d < R; ++d)
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const std::size_t k = at[c * R + d];
-        at[c * R + d] = sum;
-        sum += k;
-      }
-    par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-      for (std::size_t c = lo; c < hi; ++c)
-        for (std::size_t i = c * per; i < std::min(n, (c + 1) * per); ++i)
-          tmp[at[c * R + ((v[i] >> shift) & (R - 1))]++] = v[i];
-    });
-    v.swap(tmp);
   }
 }
 

@@ -5,11 +5,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "kernels_cpu/parallel.hpp"
+#include "reference/certify/certify_detail.hpp"  // radix_sort_high
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/rt2/rt2.hpp"  // require_plane
@@ -76,6 +78,13 @@ std::uint32_t grid(double x, double lo, double hi) {
 // points) — distinct keys, so the order is unique.
 constexpr int kIndexBits = 29;
 
+// certify::detail::radix_sort_high with the pieces run by par_for
+void radix_sort_par(std::vector<std::uint64_t>& keys, int lo_bit) {
+  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
+      [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) { par_for(n, kChunk, body); };
+  certify::detail::radix_sort_high(keys, lo_bit, for_range);
+}
+
 // Biased randomized insertion order: point i belongs to round r = min(R - 1,
 // (leading zero bits of hash(i)) / 3), i.e. to round r with probability about
 // 8^-r (7/8 of the points in the last round), the rounds inserted from the
@@ -117,9 +126,10 @@ std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min) {
       keys[i] = (static_cast<std::uint64_t>(rounds - 1 - r) << (30 + kIndexBits)) | (curve << kIndexBits) | i;
     }
   });
-  // keys[i] holds i in its low bits, so the stable sort on the high bits is
-  // the sort of the whole (distinct) keys
-  par_radix_sort(keys, kIndexBits);
+  // keys[i] holds i in its low bits, so the stable radix sort on the high
+  // bits (the certifiers' one, here over par_for) is the sort of the whole
+  // (distinct) keys
+  radix_sort_par(keys, kIndexBits);
   std::vector<Index> order(n);
   par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
     for (std::size_t i = a; i < b; ++i) order[i] = static_cast<Index>(keys[i] & ((std::uint64_t{1} << kIndexBits) - 1));

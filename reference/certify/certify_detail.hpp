@@ -287,14 +287,44 @@ void for_chunks(std::size_t n, std::size_t size, const ForRange& for_range, cons
   });
 }
 
+// A stable LSD radix sort of 64-bit keys on their bits [lo_bit, 64), 8-bit
+// digits, through for_range over fixed chunks: per chunk a digit histogram,
+// their prefix sums in (digit, chunk) order, then a stable scatter per chunk,
+// so the order does not depend on the split. The bits below lo_bit keep the
+// input order among equal high parts (e.g. a position stored there, the keys
+// built in that order: the result is then the sorted order of the whole keys).
+template <class ForRange>
+void radix_sort_high(std::vector<std::uint64_t>& v, int lo_bit, const ForRange& for_range) {
+  const std::size_t m = v.size();
+  constexpr std::size_t kSize = std::size_t{1} << 16;
+  const std::size_t chunks = (m + kSize - 1) / kSize;
+  std::vector<std::uint64_t> tmp(m);
+  std::vector<std::size_t> at(chunks * 256);
+  for (int shift = lo_bit; shift < 64; shift += 8) {
+    std::fill(at.begin(), at.end(), 0);
+    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) ++at[c * 256 + ((v[i] >> shift) & 255u)];
+    });
+    std::size_t sum = 0;
+    for (std::size_t digit = 0; digit < 256; ++digit)
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t count = at[c * 256 + digit];
+        at[c * 256 + digit] = sum;
+        sum += count;
+      }
+    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) tmp[at[c * 256 + ((v[i] >> shift) & 255u)]++] = v[i];
+    });
+    v.swap(tmp);
+  }
+}
+
 // A locality-preserving order of the given points (Morton order of their
 // bounding-box-normalised coordinates), so that point-location walks started
 // from the previous answer stay short. Points of one Morton key keep their
 // order in `pts` (with pts increasing: sorted by (key, index)). The keys are
-// computed and sorted through for_range: a stable LSD radix sort on 8-bit
-// digits over fixed chunks (per chunk a digit histogram, their prefix sums in
-// (digit, chunk) order, then a stable scatter per chunk), so the order does
-// not depend on the split.
+// computed through for_range and sorted by radix_sort_high (each key above
+// its position in `pts`), so the order does not depend on the split.
 template <class ForRange>
 void morton_sort(const PointSet& ps, std::vector<Index>& pts, const ForRange& for_range) {
   if (pts.empty()) return;
@@ -321,36 +351,16 @@ void morton_sort(const PointSet& ps, std::vector<Index>& pts, const ForRange& fo
     return k;
   };
   const std::size_t m = pts.size();
-  std::vector<std::uint32_t> keys(m), keys2(m);
-  std::vector<Index> pts2(m);
+  std::vector<std::uint64_t> keys(m);
   for_pieces(m, for_range, [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i) keys[i] = key(pts[i]);
+    for (std::size_t i = a; i < b; ++i) keys[i] = (static_cast<std::uint64_t>(key(pts[i])) << 32) | i;
   });
-  constexpr std::size_t kSize = std::size_t{1} << 16;
-  const std::size_t chunks = (m + kSize - 1) / kSize;
-  std::vector<std::size_t> at(chunks * 256);
-  for (int shift = 0; shift < 32; shift += 8) {
-    std::fill(at.begin(), at.end(), 0);
-    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
-      for (std::size_t i = a; i < b; ++i) ++at[c * 256 + ((keys[i] >> shift) & 255u)];
-    });
-    std::size_t sum = 0;
-    for (std::size_t digit = 0; digit < 256; ++digit)
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const std::size_t count = at[c * 256 + digit];
-        at[c * 256 + digit] = sum;
-        sum += count;
-      }
-    for_chunks(m, kSize, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
-      for (std::size_t i = a; i < b; ++i) {
-        const std::size_t to = at[c * 256 + ((keys[i] >> shift) & 255u)]++;
-        keys2[to] = keys[i];
-        pts2[to] = pts[i];
-      }
-    });
-    keys.swap(keys2);
-    pts.swap(pts2);
-  }
+  radix_sort_high(keys, 32, for_range);
+  std::vector<Index> sorted(m);
+  for_pieces(m, for_range, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) sorted[i] = pts[keys[i] & 0xFFFFFFFFu];
+  });
+  pts.swap(sorted);
 }
 
 // A small deterministic generator for the stochastic walks (Devillers–Pion–

@@ -272,11 +272,11 @@ Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level, c
   // (the first failing one in that order is named) and split into pieces
   // through for_range; each piece walks from the start table's triangle for
   // its first point and its own random generator.
-  std::vector<Index> todo;
+  std::vector<Index> missing;
   for (Index p = 0; p < n; ++p)
-    if (links.degree(p) == 0) todo.push_back(p);
-  if (todo.empty()) return Report::pass();
-  detail::morton_sort(ps, todo, for_range);
+    if (links.degree(p) == 0) missing.push_back(p);
+  if (missing.empty()) return Report::pass();
+  detail::morton_sort(ps, missing, for_range);
   const StartTable table(ps, tris);
   const std::size_t cap = 4 * F + 100;
   // The triangle p is checked against, kNoTriangle when there is none: the one
@@ -311,16 +311,16 @@ Report rt2(const PointSet& ps, const std::vector<Triangle>& tris, Level level, c
     return kNoTriangle;
   };
   auto not_redundant = [&](std::uint32_t t, Index p) { return t == kNoTriangle || irregular(ck.power(tris[t], p)); };
-  const std::size_t bad = detail::smallest_failing_by_piece(todo.size(), for_range, [&](std::size_t lo) {
+  const std::size_t bad = detail::smallest_failing_by_piece(missing.size(), for_range, [&](std::size_t lo) {
     detail::XorShift rng;
     rng.s ^= static_cast<std::uint64_t>(lo) * 0xD1B54A32D192ED03ull;
-    return [&, rng, cur = table.hint(ps.point(todo[lo]))](std::size_t i) mutable {
-      const std::uint32_t t = locate(todo[i], cur, rng);
-      return not_redundant(t, todo[i]);
+    return [&, rng, cur = table.hint(ps.point(missing[lo]))](std::size_t i) mutable {
+      const std::uint32_t t = locate(missing[i], cur, rng);
+      return not_redundant(t, missing[i]);
     };
   });
-  if (bad == todo.size()) return Report::pass();
-  const Index p = todo[bad];
+  if (bad == missing.size()) return Report::pass();
+  const Index p = missing[bad];
   detail::XorShift rng;
   std::uint32_t cur = table.hint(ps.point(p));
   const std::uint32_t t = locate(p, cur, rng);
