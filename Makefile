@@ -68,7 +68,8 @@ asan: deps
 #       built against LLVM's libomp, whose synchronisation TSan learns through
 #       the Archer OMPT tool (libarcher.so, loaded by OMP_TOOL_LIBRARIES).
 TSAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
-TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test
+TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test \
+              hull2_cuda_omp_test
 ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
 
 tsan: deps

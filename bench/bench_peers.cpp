@@ -8,6 +8,9 @@
 //          with parallel Graham-insertion), flipflop:reference:graham-sort and
 //          :graham-insert; qhull (libqhull_r), cgal:ch_akl_toussaint,
 //          cgal:ch_graham_andrew
+//          flipflop:cuda-omp (kernels_cuda/hull2 in thrust's OpenMP build),
+//          flipflop:cuda and flipflop:cuda:no-transfers (the CUDA build, with
+//          and without the host-device copies; rows of a build with nvcc);
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
 //          flipflop:reference:ffhull, :splay (:twist-flip, quadratic, for
 //          n <= 20000); qhull (libqhull_r, Qt), cgal:convex_hull_3
@@ -30,6 +33,7 @@
 #include <cctype>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,9 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "peers/peers.hpp"
 #include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
@@ -49,9 +56,39 @@ namespace {
 
 template <class Output>
 struct Peer {
-  const char* name;
+  std::string name;
   std::function<Output(const PointSet&)> run;
+  // when set, the row's time of a run is what it returns after the run (a
+  // GPU kernel's time without the host-device transfers), not the wall time
+  std::function<double()> self_time = {};
 };
+
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+// The rows of the GPU backends built here (kernels::gpu_backends_built):
+// "flipflop:cuda-omp", and for the CUDA build "flipflop:cuda" (wall time,
+// transfers included) and "flipflop:cuda:no-transfers" (the stages without
+// the upload and download, as the thesis reports GPU times). `run(backend,
+// times)` computes the canonical output and fills times when it is not null.
+template <class Output, class Run>
+void add_gpu_rows(std::vector<Peer<Output>>& rows, Run run) {
+  for (const std::string& b : kernels::gpu_backends_built()) {
+    rows.push_back({"flipflop:" + b, [run, b](const PointSet&) { return run(b, nullptr); }});
+    if (b != "cuda") continue;
+    auto times = std::make_shared<cpu::StageTimes>();
+    rows.push_back({"flipflop:cuda:no-transfers",
+                    [run, times](const PointSet&) {
+                      *times = {};
+                      return run("cuda", times.get());
+                    },
+                    [times] {
+                      double t = 0;
+                      for (const auto& [name, s] : times->stages)
+                        if (name != "upload" && name != "download") t += s;
+                      return t;
+                    }});
+  }
+}
+#endif
 
 struct Row {
   std::string name;
@@ -84,7 +121,10 @@ int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Out
     Row row{p.name, {}, {}, 0};
     Output out;
     try {
-      for (int r = 0; r < a.reps; ++r) row.times.push_back(seconds([&] { out = p.run(pts); }));
+      for (int r = 0; r < a.reps; ++r) {
+        const double wall = seconds([&] { out = p.run(pts); });
+        row.times.push_back(p.self_time ? p.self_time() : wall);
+      }
       row.size = out.size();
       outputs.push_back(std::move(out));
       output_names.push_back(p.name);
@@ -167,18 +207,25 @@ int bench_peers(const Args& a) {
   using Cycle = std::vector<Index>;
   using Tris = std::vector<Triangle>;
   if (a.experiment == "hull2") {
-    return compare_peers<Cycle>(
-        a, pts,
-        {{"flipflop:cpu", [](const PointSet& p) { return cpu::hull2_graham_sort(p); }},
-         {"flipflop:cpu:graham-insert", [](const PointSet& p) { return cpu::hull2_graham_insert(p); }},
-         {"flipflop:reference:graham-sort", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
-         {"flipflop:reference:graham-insert", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
-         {"qhull", peers::qhull_hull2},
-         {"cgal:ch_akl_toussaint",
-          [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::akl_toussaint); }},
-         {"cgal:ch_graham_andrew",
-          [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::graham_andrew); }}},
-        "vertices");
+    std::vector<Peer<Cycle>> rows = {
+        {"flipflop:cpu", [](const PointSet& p) { return cpu::hull2_graham_sort(p); }},
+        {"flipflop:cpu:graham-insert", [](const PointSet& p) { return cpu::hull2_graham_insert(p); }}};
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    add_gpu_rows(rows, [&](const std::string& b, cpu::StageTimes* t) {
+      kernels::Hull2GpuOptions o;
+      o.times = t;
+      return kernels::hull2_gpu(b, pts, o);
+    });
+#endif
+    rows.insert(rows.end(),
+                {{"flipflop:reference:graham-sort", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},
+                 {"flipflop:reference:graham-insert", [](const PointSet& p) { return ref::hull2_graham_insert(p); }},
+                 {"qhull", peers::qhull_hull2},
+                 {"cgal:ch_akl_toussaint",
+                  [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::akl_toussaint); }},
+                 {"cgal:ch_graham_andrew",
+                  [](const PointSet& p) { return peers::cgal_hull2(p, peers::Hull2Algo::graham_andrew); }}});
+    return compare_peers<Cycle>(a, pts, rows, "vertices");
   }
   if (a.experiment == "hull3") {
     std::vector<Peer<Tris>> rows = {

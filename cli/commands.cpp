@@ -21,6 +21,9 @@
 #include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -88,9 +91,27 @@ void write_result_file(const std::string& path, io::Format f, const std::functio
   }
 }
 
+namespace {
+// The algorithms the GPU backends (kernels_cuda/, "cuda" and "cuda-omp")
+// compute.
+std::vector<std::string> gpu_algorithms(const std::string& kind) {
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  if (kind == "hull2") return {"graham-sort"};
+#else
+  (void)kind;
+#endif
+  return {};
+}
+bool is_gpu(const std::string& backend) { return backend == "cuda" || backend == "cuda-omp"; }
+}  // namespace
+
 std::vector<std::string> available_backends(const std::string& kind) {
-  if (kind == "hull3" || kind == "hull2" || kind == "rt2" || kind == "dt2") return {"cpu", "reference"};
-  return {"reference"};
+  std::vector<std::string> b = {"reference"};
+  if (kind == "hull3" || kind == "hull2" || kind == "rt2" || kind == "dt2") b.insert(b.begin(), "cpu");
+  // "cuda" is offered wherever the kernels are: without nvcc or a device it
+  // fails with one line (exit 2), never silently runs elsewhere
+  if (!gpu_algorithms(kind).empty()) b.insert(b.end(), {"cuda", "cuda-omp"});
+  return b;
 }
 
 namespace {
@@ -193,6 +214,7 @@ int run_compute(const ComputeArgs& a) {
   const double t_read = seconds_since(t_read0);
   const std::string algo = !a.algo.empty()            ? a.algo
                            : a.backend == "reference" ? reference_default_algorithm(a.kind)
+                           : is_gpu(a.backend)        ? gpu_algorithms(a.kind).front()
                                                       : default_algorithm(a.kind);
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
   if (backend == "reference" && algo == "incremental")
@@ -202,6 +224,14 @@ int run_compute(const ComputeArgs& a) {
     std::string list;
     for (const std::string& x : cpu_algorithms(a.kind)) list += (list.empty() ? "" : ", ") + x;
     throw UsageError("the cpu backend computes --algo " + list + " only, got '" + algo + "' (use --backend reference)");
+  }
+  if (is_gpu(backend)) {
+    const auto algos = gpu_algorithms(a.kind);
+    if (std::find(algos.begin(), algos.end(), algo) == algos.end()) {
+      std::string list;
+      for (const std::string& x : algos) list += (list.empty() ? "" : ", ") + x;
+      throw UsageError("the " + backend + " backend computes --algo " + list + " only, got '" + algo + "'");
+    }
   }
   if (a.threads != 0 && backend != "cpu")
     throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
@@ -221,6 +251,11 @@ int run_compute(const ComputeArgs& a) {
       cpu::Hull2Options o;
       o.threads = a.threads;
       cycle = algo == "graham-insert" ? cpu::hull2_graham_insert(ps, o, &st) : cpu::hull2_graham_sort(ps, o, &st);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    } else if (is_gpu(backend)) {
+      // kernels_cuda/hull2: Graham-sorting with parallel flip-pop on thrust
+      cycle = kernels::hull2_gpu(backend, ps, {}, &st);
+#endif
     } else {
       cycle = ref::hull2(ps, algo, &st);
     }
@@ -269,13 +304,15 @@ int run_compute(const ComputeArgs& a) {
   progress.stage("certifying");
   const auto t1 = Clock::now();
   // (the cpu backends: the checks split over the same threads)
-  certify::Report r = a.kind == "hull2" && backend == "cpu"
+  // (the GPU backends: the multithreaded certifier on the host)
+  const bool parallel_certifier = backend == "cpu" || is_gpu(backend);
+  certify::Report r = a.kind == "hull2" && parallel_certifier
                           ? cpu::certify_hull2(ps, cycle, certify::Level::canonical, a.threads)
                       : a.kind == "hull2" ? certify::hull2(ps, cycle, certify::Level::canonical)
-                      : a.kind == "hull3" && backend == "cpu"
+                      : a.kind == "hull3" && parallel_certifier
                           ? cpu::certify_hull3(ps, tris, certify::Level::canonical, a.threads)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
-                      : backend == "cpu"  ? cpu::certify_rt2(ps, tris, certify::Level::canonical, a.threads)
+                      : parallel_certifier ? cpu::certify_rt2(ps, tris, certify::Level::canonical, a.threads)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());

@@ -23,7 +23,8 @@
 // and flip-pop chunk chosen by the last bytes): it must return the answer
 // byte for byte, with its counters' lemmas (every point discarded or in the
 // chains' polygon, every flip removes one vertex), and reject the same inputs
-// with std::invalid_argument.
+// with std::invalid_argument. The GPU kernel (kernels_cuda/hull2) in its
+// OpenMP build likewise, with and without its throw-away, chunks of 3..8.
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
@@ -32,6 +33,9 @@
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+#include "kernels_cuda/hull2/hull2.hpp"
+#endif
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -101,6 +105,15 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
         fail(kTarget, std::string("cpu threw ") + e.what() + " instead of std::invalid_argument", describe(ps));
       }
     }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+    try {
+      (void)kernels_omp::hull2_graham_sort(ps);
+      fail(kTarget, "cuda-omp returned a hull of input that does not span the plane", describe(ps));
+    } catch (const std::invalid_argument&) {
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("cuda-omp threw ") + e.what() + " instead of std::invalid_argument", describe(ps));
+    }
+#endif
     if (n >= 3) {
       expect(false, ps, {0, 1, 2}, Level::exact, "a cycle of input that does not span the plane");
       expect(false, ps, {0, 1, 2}, Level::canonical, "a cycle of input that does not span the plane");
@@ -195,6 +208,26 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
     if (st.discarded_early + st.polygon_vertices != n || st.polygon_vertices - st.flips_2_1 != got.size())
       fail(kTarget, "cpu: counters break their lemmas", describe(ps));
   }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  // the GPU kernel's OpenMP build, with and without the throw-away
+  for (bool throw_away : {true, false}) {
+    kernels::Hull2GpuOptions o;
+    o.throw_away = throw_away;
+    o.chunk = 3 + r.byte() % 6;
+    ref::Hull2Stats st;
+    std::vector<Index> got;
+    try {
+      got = kernels_omp::hull2_graham_sort(ps, o, &st);
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("cuda-omp threw: ") + e.what(), describe(ps));
+    }
+    if (got != answer)
+      fail(kTarget, "cuda-omp (chunk " + std::to_string(o.chunk) + ") differs from " + answer_from,
+           describe(ps) + "cuda-omp " + describe(got) + "\n" + answer_from + " " + describe(answer));
+    if (st.discarded_early + st.polygon_vertices != n || st.polygon_vertices - st.flips_2_1 != got.size())
+      fail(kTarget, "cuda-omp: counters break their lemmas", describe(ps));
+  }
+#endif
   return true;
 }
 

@@ -18,11 +18,16 @@
 #include <thrust/execution_policy.h>
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
 #include <thrust/system/omp/execution_policy.h>
+#else
+#include <cuda_runtime_api.h>
 #endif
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
+
+#include "kernels_cuda/kernel_errors.hpp"
 
 namespace flipflop::FF_KERNELS_NS::backend {
 
@@ -45,6 +50,10 @@ void run_step(std::size_t n, Step&& step) {
   else
     step(thrust::omp::par);
 }
+// every step issued so far has finished (a stage clock's mark follows it)
+inline void sync() {}
+// the host is the device: always there
+inline void require_device(const char*) {}
 #else
 template <class T>
 using Buffer = thrust::device_vector<T>;
@@ -63,6 +72,16 @@ std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
 template <std::size_t ParallelFrom, class Step>
 void run_step(std::size_t, Step&& step) {
   step(thrust::device);
+}
+inline void sync() { cudaDeviceSynchronize(); }
+// kernels::NoDeviceError ("<who>: no CUDA device") unless one is usable
+inline void require_device(const char* who) {
+  int count = 0;
+  if (cudaGetDeviceCount(&count) != cudaSuccess) {
+    cudaGetLastError();  // clear the sticky error of a missing driver
+    count = 0;
+  }
+  if (count <= 0) throw kernels::NoDeviceError(std::string(who) + " (--backend cuda): no CUDA device; use --backend cuda-omp or cpu");
 }
 #endif
 

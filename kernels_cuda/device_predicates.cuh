@@ -51,6 +51,7 @@ FF_HD inline int power2d(const StaticFilter* f, const PointId* ids, const double
 // compare_sos(a, b, coord): the sign of a[coord] - b[coord] under the
 // perturbation (never 0 for distinct ids).
 FF_HD inline int compare_sos(PointId ia, const double* a, PointId ib, const double* b, int coord) {
+  if (a[coord] != b[coord]) return a[coord] < b[coord] ? -1 : 1;  // the perturbation is infinitesimal
   const PointId id[2] = {ia, ib};
   const double* p[2] = {a + coord, b + coord};
   return lambda<2>(nullptr, id, p, nullptr);

@@ -514,3 +514,55 @@ TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, ba
     CHECK(lines(r.err) == 1);
   }
 }
+
+TEST_CASE("cli: --backend cuda-omp writes the reference's bytes; --backend cuda writes them or says in one line "
+          "that there is no device",
+          "[cli]") {
+  TempDir t;
+  std::string grid, random;  // a lattice (collinear hull points) and scattered points
+  for (int x = 0; x < 60; ++x)
+    for (int y = 0; y < 60; ++y) grid += std::to_string(x) + " " + std::to_string(y) + "\n";
+  std::srand(7);
+  for (int i = 0; i < 5000; ++i)
+    random += std::to_string(std::rand() % 100000) + " " + std::to_string(std::rand() % 100000) + "\n";
+  struct Job {
+    const char* kind;
+    fs::path in;
+    std::vector<std::string> bad;  // option sets the GPU backends refuse
+  };
+  const std::vector<Job> jobs = {
+      {"hull2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo graham-insert", "--backend cuda-omp --threads 2"}},
+      {"hull2", t.file("random.xyz", random), {}}};
+  for (const Job& j : jobs) {
+    const fs::path expect = t.dir / "expect.txt", got = t.dir / "got.txt";
+    REQUIRE(run(t, std::string(j.kind) + " " + j.in.string() + " --backend reference -o " + expect.string()).code == 0);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    const Run omp = run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda-omp -o " + got.string());
+    INFO(j.kind << " " << j.in << ": " << omp.err);
+    REQUIRE(omp.code == 0);
+    CHECK(slurp(got) == slurp(expect));
+    fs::remove(got);
+    const Run cuda = run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda -o " + got.string());
+    if (cuda.code == 0) {
+      CHECK(slurp(got) == slurp(expect));
+    } else {
+      INFO(cuda.err);
+      CHECK(cuda.code == 2);
+      CHECK(lines(cuda.err) == 1);
+      CHECK((cuda.err.find("no CUDA device") != std::string::npos ||
+             cuda.err.find("without nvcc") != std::string::npos));
+      CHECK(!fs::exists(got));
+    }
+    for (const std::string& opts : j.bad) {
+      const Run r = run(t, std::string(j.kind) + " " + j.in.string() + " " + opts);
+      INFO(opts << ": " << r.err);
+      CHECK(r.code == 2);
+      CHECK(lines(r.err) == 1);
+    }
+#else
+    // without the thrust/OpenMP build the GPU backends are not offered
+    const Run r = run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda-omp");
+    CHECK(r.code == 2);
+#endif
+  }
+}

@@ -37,6 +37,7 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull2/throw_away.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/family_sweep.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -129,23 +130,13 @@ TEST_CASE("hull2 cpu: every generator family up to 4000 points equals the refere
 }
 
 TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread counts and options", "[hull2_cpu]") {
-  std::size_t cases = 0, rejected = 0;
+  std::size_t cases = 0;
   cpu::Hull2Options forced;  // throw-away on every input, a small sample, tiny chunks
   forced.throw_away_from = 0;
   forced.sample = 16;
   forced.scan_chunk = 3;
-  for (const std::string& fam : test::families(2))
-    for (std::size_t n : {3, 7, 30, 200, 2000, 20000})
-      for (std::uint64_t seed = 1; seed <= 2; ++seed) {
-        gen::Options g;
-        g.seed = seed;
-        const PointSet ps = gen::generate(fam, n, g);
-        INFO(fam << " n=" << n << " seed=" << seed);
-        const std::string expect = ref_text(ps);
-        if (is_error(expect)) {
-          ++rejected;
-          REQUIRE(!dimension_problem(ps).empty());
-        }
+  const test::SweepCounts sweep =
+      test::family_sweep(2, {3, 7, 30, 200, 2000, 20000}, 2, [](const PointSet& p) { return ref_text(p); }, [&](const PointSet& ps, const std::string& expect) {
         for (const cpu::Hull2Options& o : {cpu::Hull2Options{}, forced})
           for (Algo a : kAlgos)
             for (int t : kThreads) {
@@ -153,7 +144,8 @@ TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread count
               REQUIRE(cpu_text(ps, o, t, nullptr, a) == (a == Algo::sort ? expect : ref_text(ps, a)));
               ++cases;
             }
-      }
+      });
+  const std::size_t rejected = sweep.rejected;
   std::cout << "hull2 cpu sweep: " << cases << " runs identical to the reference (" << rejected
             << " inputs rejected as collinear by both)\n";
   REQUIRE(cases >= 11 * 6 * 2 * 3 * 2 * 2);

@@ -25,6 +25,7 @@
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/family_sweep.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -88,25 +89,17 @@ TEST_CASE("hull3 cpu: every generator family up to 3000 points equals the refere
 }
 
 TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu]") {
-  std::size_t cases = 0, rejected = 0;
-  for (const std::string& fam : test::families(3))
-    for (std::size_t n : {4, 7, 30, 200, 2000, 20000})
-      for (std::uint64_t seed = 1; seed <= 2; ++seed) {
-        gen::Options o;
-        o.seed = seed;
-        const PointSet ps = gen::generate(fam, n, o);
-        INFO(fam << " n=" << n << " seed=" << seed);
-        const std::string expect = ref_text(ps);
-        if (is_error(expect)) {
-          ++rejected;
-          REQUIRE(!dimension_problem(ps).empty());
-        }
+  std::size_t cases = 0;
+  const test::SweepCounts sweep = test::family_sweep(
+      3, {4, 7, 30, 200, 2000, 20000}, 2, [](const PointSet& ps) { return ref_text(ps); },
+      [&](const PointSet& ps, const std::string& expect) {
         for (int t : kThreads) {
           INFO("threads " << t);
           REQUIRE(cpu_text(ps, t) == expect);
           ++cases;
         }
-      }
+      });
+  const std::size_t rejected = sweep.rejected;
   std::cout << "hull3 cpu sweep: " << cases << " runs identical to the reference (" << rejected
             << " inputs rejected as flat by both)\n";
   REQUIRE(cases >= 13 * 6 * 2 * 3);

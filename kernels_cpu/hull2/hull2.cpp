@@ -20,23 +20,6 @@ namespace {
 constexpr const char* kSort = "hull2 graham-sort";
 constexpr const char* kInsert = "hull2 graham-insert";
 
-// Some three points of `cycle` are not collinear (exactly). The cycle holds
-// every extreme point of the input, so this fails only when the whole input
-// lies on one line.
-bool spans_plane(const PointSet& ps, const std::vector<Index>& cycle) {
-  const double* a = ps.point(cycle[0]);
-  const double* b = nullptr;
-  for (Index v : cycle) {
-    const double* q = ps.point(v);
-    if (!b) {
-      if (q[0] != a[0] || q[1] != a[1]) b = q;
-    } else if (pred::orient2d_exact(a, b, q) != 0) {
-      return true;
-    }
-  }
-  return false;
-}
-
 std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hull2Stats& st, const char* who) {
   StageClock clock(opt.times);
   const hull2::ThrowAwayResult kept = hull2::throw_away(ps, opt.throw_away_from, opt.sample);  // 1.
@@ -53,7 +36,7 @@ std::vector<Index> compute(const PointSet& ps, const Hull2Options& opt, ref::Hul
       who == kInsert ? hull2::graham_insertion(std::move(pts), f, opt.scan_chunk, counts, ins, &clock)
                      : hull2::graham_sorting(std::move(pts), f, opt.scan_chunk, counts, &clock);  // 2.
   // a strictly interior point exists only when the input spans the plane
-  if (idx.size() == ps.size() && !spans_plane(ps, cycle)) {
+  if (idx.size() == ps.size() && !ref::cycle_spans_plane(ps, cycle)) {
     ref::require_planar_input(ps, who);  // throws the reference's message
     throw std::logic_error(std::string(who) + ": collinear hull of an input that spans the plane");
   }

@@ -124,6 +124,21 @@ void require_planar_input(const PointSet& ps, const char* who) {
     throw std::invalid_argument(std::string(who) + ": " + why);
 }
 
+bool cycle_spans_plane(const PointSet& ps, const std::vector<Index>& cycle) {
+  if (cycle.empty()) return false;
+  const double* a = ps.point(cycle[0]);
+  const double* b = nullptr;
+  for (Index v : cycle) {
+    const double* q = ps.point(v);
+    if (!b) {
+      if (q[0] != a[0] || q[1] != a[1]) b = q;
+    } else if (pred::orient2d_exact(a, b, q) != 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<Index> rotate_to_smallest(std::vector<Index> cycle) {
   std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
   return cycle;

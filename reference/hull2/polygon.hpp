@@ -107,6 +107,11 @@ void require_polygon(const PointSet& ps, const std::vector<Index>& polygon, cons
 // Throws std::invalid_argument naming `who` unless ps is 2D and spans the plane
 // (at least 3 points, not all collinear): the hull of such input is a polygon.
 void require_planar_input(const PointSet& ps, const char* who);
+// Some three points of `cycle` are not collinear (exactly). For a cycle that
+// holds every extreme point of the input (a hull computed without first
+// checking the input's dimension), false exactly when the whole input lies on
+// one line.
+bool cycle_spans_plane(const PointSet& ps, const std::vector<Index>& cycle);
 // The cycle rotated to start at its smallest index (DESIGN.md, canonical 2D hull).
 std::vector<Index> rotate_to_smallest(std::vector<Index> cycle);
 

@@ -1,0 +1,54 @@
+// gpu.cpp — the backend dispatch of gpu.hpp. FLIPFLOP_HAVE_KERNELS_CUDA is set
+// (CMake) when the nvcc build, flipflop_kernels_cuda, is linked.
+#include "kernels_cuda/gpu.hpp"
+
+#include <stdexcept>
+
+namespace flipflop::kernels {
+
+namespace {
+
+#ifndef FLIPFLOP_HAVE_KERNELS_CUDA
+[[noreturn]] void no_cuda_build() {
+  throw NoDeviceError("--backend cuda: this flipflop was built without nvcc (no CUDA kernels); "
+                      "use --backend cuda-omp or cpu");
+}
+#endif
+
+template <class Omp, class Cuda>
+auto dispatch(const std::string& backend, Omp&& omp, [[maybe_unused]] Cuda&& cuda) {
+  if (backend == "cuda-omp") return omp();
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+  if (backend == "cuda") return cuda();
+#else
+  if (backend == "cuda") no_cuda_build();
+#endif
+  throw std::invalid_argument("unknown GPU backend '" + backend + "' (cuda, cuda-omp)");
+}
+
+}  // namespace
+
+std::vector<std::string> gpu_backends_built() {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+  return {"cuda", "cuda-omp"};
+#else
+  return {"cuda-omp"};
+#endif
+}
+
+bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "cuda-omp"; }
+
+std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt,
+                             ref::Hull2Stats* stats) {
+  return dispatch(
+      backend, [&] { return kernels_omp::hull2_graham_sort(ps, opt, stats); },
+      [&] {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+        return kernels_cuda::hull2_graham_sort(ps, opt, stats);
+#else
+        return std::vector<Index>{};
+#endif
+      });
+}
+
+}  // namespace flipflop::kernels

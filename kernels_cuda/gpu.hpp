@@ -1,0 +1,29 @@
+// gpu.hpp — one entry per problem for the two builds of the kernels_cuda/
+// algorithms, by backend name, for the command line, the benchmark and the
+// Python package:
+//   "cuda-omp"  the OpenMP build (kernels_omp): runs on any multicore CPU;
+//   "cuda"      the CUDA build (kernels_cuda, nvcc, sm_90) on the GPU;
+//               kernels::NoDeviceError (one line) without a usable device or
+//               in a flipflop built without nvcc.
+// Anything else: std::invalid_argument.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kernels_cuda/hull2/hull2.hpp"
+#include "kernels_cuda/kernel_errors.hpp"
+#include "reference/hull2/polygon.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::kernels {
+
+// The backends whose kernels are built here ("cuda-omp", and "cuda" when nvcc
+// built the CUDA library; "cuda" still needs a device at run time).
+std::vector<std::string> gpu_backends_built();
+bool is_gpu_backend(const std::string& backend);
+
+std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt = {},
+                             ref::Hull2Stats* stats = nullptr);
+
+}  // namespace flipflop::kernels

@@ -1,0 +1,413 @@
+// hull2.cuh — the one source of the GPU 2D hull (hull2.hpp explains the task),
+// included by hull2_omp.cpp (thrust's OpenMP backend, host compiler) and
+// hull2_cuda.cu (nvcc), each defining FF_KERNELS_NS.
+//
+// Every step is a thrust primitive over a __host__ __device__ functor on flat
+// arrays of point indices (the coordinates stay where they are, point-major):
+//
+//   0. the per-input static filter by one reduction (static_filter.cuh);
+//   1. throw-away (Akl–Toussaint): the extreme points in 8 directions by one
+//      reduction; the points strictly inside their convex polygon are dropped
+//      by a stream compaction (copy_if). A point strictly inside a convex
+//      polygon of perturbed input points is inside the perturbed hull and so
+//      no vertex of the SoS hull: no vertex is lost;
+//   2. Algorithm 3 line 1 and lines 4-5: the survivors sorted by x under the
+//      perturbation (a stable radix sort on the doubles' ordered bits, equal x
+//      in the SoS order of indices); v_l, v_r the first and the last;
+//   3. lines 2-3 and 6: S_a = {p above v_l v_r} and S_b = the rest by two
+//      stable compactions; the polygon P = <v_l, S_b (x ascending), v_r, S_a
+//      (x descending)>, counter-clockwise and star-shaped with respect to the
+//      points at infinity below (S_b) and above (S_a) — §4.2;
+//   4. line 7: flip-pop in rounds until no vertex is reflex. Each round is
+//      (a) the chunked pass of §4.2's shared-memory variant (Fig 4.3): one
+//          thread per chunk of `chunk` consecutive vertices flips its chunk
+//          as long as it can — a stack scan in which every pop is the 2-1
+//          flip of Alg 1 line 6 on the vertex between the stack's top-but-one
+//          and the next vertex, the chunk's two end vertices held (their
+//          outer neighbours belong to other chunks) — and a compaction;
+//      (b) one pass of Algorithm 2 on the whole cyclic polygon: every reflex
+//          vertex p_i (orient2d(p_{i-1}, p_{i+1}, p_i) > 0, Alg 2 line 6)
+//          labels itself and its two neighbours with i by an atomic minimum
+//          (lines 7-8), and after the barrier (line 9) p_i is flipped away
+//          when all three labels are still i (lines 10-12): the flips of a
+//          pass touch disjoint vertex triples, and the reflex vertex of
+//          smallest position always wins, so each pass flips at least one
+//          vertex while any is reflex. A pass that finds none ends the loop:
+//          the polygon is convex.
+//      v_l and v_r are extreme, never reflex; they are held explicitly.
+//
+// Why the answer is the reference's byte for byte: flip-pop's result does not
+// depend on the order of its flips (free execution order, §4.1, reference/
+// hull2/flip_pop.hpp): it is the SoS hull of the polygon's vertices, which
+// include every vertex of the SoS hull of the input (step 1 drops none, step 3
+// keeps all survivors). Every decision is an exact SoS predicate on the input
+// indices (device_predicates.cuh); the cycle is rotated to its smallest index.
+#pragma once
+
+#ifndef FF_KERNELS_NS
+#error "define FF_KERNELS_NS (kernels_omp or kernels_cuda) before including hull2.cuh"
+#endif
+
+#include <thrust/copy.h>
+#include <thrust/fill.h>
+#include <thrust/for_each.h>
+#include <thrust/iterator/counting_iterator.h>
+#include <thrust/iterator/reverse_iterator.h>
+#include <thrust/reverse.h>
+#include <thrust/sequence.h>
+#include <thrust/sort.h>
+#include <thrust/transform.h>
+#include <thrust/transform_reduce.h>
+
+#include <cuda/atomic>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "kernels_cuda/backend.cuh"
+#include "kernels_cuda/device_predicates.cuh"
+#include "kernels_cuda/hull2/hull2.hpp"
+#include "kernels_cuda/static_filter.cuh"
+#include "kernels_cpu/stage_times.hpp"
+#include "predicates/predicates.hpp"
+#include "reference/hull2/polygon.hpp"
+
+namespace flipflop::FF_KERNELS_NS {
+
+namespace hull2_detail {
+
+constexpr std::size_t kParallelFrom = std::size_t{1} << 14;
+constexpr Index kNoLabel = 0xffffffffu;
+
+FF_HD inline const double* at(const double* xy, Index i) { return xy + 2 * static_cast<std::size_t>(i); }
+
+// orient2d(a, b, c) of input points under SoS, with the per-input filter.
+struct Orient {
+  const double* xy;
+  pred::StaticFilter f;
+  FF_HD int operator()(Index a, Index b, Index c) const {
+    return dev::orient2d(&f, a, at(xy, a), b, at(xy, b), c, at(xy, c));
+  }
+};
+
+// ---- step 1: the extreme points in 8 directions ------------------------------
+// Directions counter-clockwise from -x: 0 min x, 1 min x+y, 2 min y, 3 max x-y,
+// 4 max x, 5 max x+y, 6 max y, 7 max y-x. Along the axes the order is the
+// perturbed one (compare_sos), so those four are vertices of the SoS hull in
+// counter-clockwise order; along the diagonals the rounded sums decide (ties:
+// the smaller index) and the polygon is checked exactly before it is used.
+struct Extremes {
+  Index e[8];
+};
+
+struct AllDirections {
+  FF_HD Extremes operator()(Index i) const {
+    Extremes r;
+    for (int k = 0; k < 8; ++k) r.e[k] = i;
+    return r;
+  }
+};
+
+struct BestInEachDirection {
+  const double* xy;
+  FF_HD static double diagonal(int k, const double* p) {
+    if (k == 1) return -(p[0] + p[1]);
+    if (k == 3) return p[0] - p[1];
+    if (k == 5) return p[0] + p[1];
+    return p[1] - p[0];
+  }
+  // i beats j in direction k (a strict total order on indices for each k)
+  FF_HD bool beats(int k, Index i, Index j) const {
+    if (i == j) return false;
+    const double* p = at(xy, i);
+    const double* q = at(xy, j);
+    if (k % 2 == 0) {
+      const int s = dev::compare_sos(i, p, j, q, k == 0 || k == 4 ? 0 : 1);
+      return k < 4 ? s < 0 : s > 0;
+    }
+    const double a = diagonal(k, p), b = diagonal(k, q);
+    return a > b || (a == b && i < j);
+  }
+  FF_HD Extremes operator()(const Extremes& a, const Extremes& b) const {
+    Extremes r;
+    for (int k = 0; k < 8; ++k) r.e[k] = beats(k, b.e[k], a.e[k]) ? b.e[k] : a.e[k];
+    return r;
+  }
+};
+
+// A convex polygon of at most 8 input points, counter-clockwise.
+struct Octagon {
+  Index v[8] = {};
+  int m = 0;
+};
+
+// Keep flag: point i is not strictly inside the polygon (a vertex of it is
+// kept: orient2d with a repeated index is 0).
+struct NotInside {
+  Orient o;
+  Octagon poly;
+  FF_HD bool operator()(Index i) const {
+    for (int k = 0; k < poly.m; ++k)
+      if (o(poly.v[k], poly.v[(k + 1) % poly.m], i) <= 0) return true;
+    return false;
+  }
+};
+
+// ---- step 2: sort keys -------------------------------------------------------
+// The bits of x as an unsigned key of the same order (-0 and +0 equal).
+struct XKey {
+  const double* xy;
+  FF_HD std::uint64_t operator()(Index i) const {
+    const double x = at(xy, i)[0] + 0.0;
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return (b >> 63) ? ~b : (b | (std::uint64_t{1} << 63));
+  }
+};
+
+// ---- step 3: S_a ---------------------------------------------------------------
+struct Above {
+  Orient o;
+  Index vl, vr;
+  FF_HD char operator()(Index i) const { return o(vl, vr, i) > 0 ? 1 : 0; }
+};
+struct IsSet {
+  FF_HD bool operator()(char c) const { return c != 0; }
+};
+struct IsClear {
+  FF_HD bool operator()(char c) const { return c == 0; }
+};
+
+// ---- step 4a: the chunked pass ----------------------------------------------
+struct ChunkScan {
+  Orient o;
+  Index* c;  // the polygon, flipped in place chunk by chunk
+  std::size_t m, chunk;
+  Index vl, vr;
+  std::size_t* kept;  // per chunk: vertices left at the chunk's start
+  FF_HD void operator()(std::size_t ch) const {
+    const std::size_t lo = ch * chunk, hi = lo + chunk < m ? lo + chunk : m;
+    std::size_t top = lo, base = lo;  // c[lo, top): the stack; c[base] is never popped
+    for (std::size_t k = lo; k < hi; ++k) {
+      const Index v = c[k];
+      while (top - base >= 2 && o(c[top - 2], v, c[top - 1]) > 0) --top;  // Alg 1 line 6
+      c[top++] = v;
+      if (v == vl || v == vr) base = top - 1;  // held
+    }
+    kept[ch] = top - lo;
+  }
+};
+
+struct KeptInChunk {
+  const std::size_t* kept;
+  std::size_t chunk;
+  FF_HD bool operator()(std::size_t k) const { return k % chunk < kept[k / chunk]; }
+};
+
+// ---- step 4b: one pass of Algorithm 2 ----------------------------------------
+struct LabelReflex {  // lines 5-8
+  Orient o;
+  const Index* c;
+  std::size_t m;
+  Index vl, vr;
+  Index* label;
+  FF_HD void operator()(std::size_t i) const {
+    const Index v = c[i];
+    if (v == vl || v == vr) return;
+    const std::size_t prev = (i + m - 1) % m, next = (i + 1) % m;
+    if (o(c[prev], c[next], v) <= 0) return;
+    const Index me = static_cast<Index>(i);
+    cuda::atomic_ref<Index, cuda::thread_scope_device>(label[prev]).fetch_min(me);
+    cuda::atomic_ref<Index, cuda::thread_scope_device>(label[i]).fetch_min(me);
+    cuda::atomic_ref<Index, cuda::thread_scope_device>(label[next]).fetch_min(me);
+  }
+};
+
+struct SurvivesPass {  // lines 10-12: p_i goes when its three labels are still i
+  const Index* label;
+  std::size_t m;
+  FF_HD bool operator()(std::size_t i) const {
+    const Index me = static_cast<Index>(i);
+    return !(label[i] == me && label[(i + m - 1) % m] == me && label[(i + 1) % m] == me);
+  }
+};
+
+// The polygon of the extreme points, checked exactly (host): consecutive
+// repeats removed; empty unless it has >= 3 vertices and turns left at every
+// vertex under the perturbation.
+inline Octagon checked_polygon(const PointSet& ps, const Index* ids, int count) {
+  Octagon poly;
+  for (int k = 0; k < count; ++k)
+    if (poly.m == 0 || poly.v[poly.m - 1] != ids[k]) poly.v[poly.m++] = ids[k];
+  while (poly.m > 1 && poly.v[poly.m - 1] == poly.v[0]) --poly.m;
+  if (poly.m < 3) return {};
+  for (int k = 0; k < poly.m; ++k) {
+    const Index a = poly.v[k], b = poly.v[(k + 1) % poly.m], c = poly.v[(k + 2) % poly.m];
+    if (a == c || pred::orient2d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}) <= 0) return {};
+  }
+  return poly;
+}
+
+inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                      ref::Hull2Stats& st, const char* who) {
+  const std::size_t n = ps.size();
+  const std::size_t chunk = std::max<std::size_t>(opt.chunk, 3);
+  cpu::StageClock clock(opt.times);
+  backend::Buffer<double> b_xy;
+  backend::Buffer<Index> b_surv, b_poly, b_poly2, b_label;
+  backend::Buffer<std::uint64_t> b_keys;
+  backend::Buffer<char> b_above;
+  backend::Buffer<std::size_t> b_kept;
+  const double* xy = nullptr;
+  try {
+    xy = backend::to_device(ps.coords.data(), ps.coords.size(), b_xy);
+    b_surv.resize(n), b_poly.resize(n), b_poly2.resize(n), b_keys.resize(n), b_above.resize(n);
+    b_label.resize(n), b_kept.resize(n / chunk + 1);
+  } catch (const std::bad_alloc&) {
+    throw kernels::DeviceMemoryError(std::string(who) + ": " + std::to_string(n) +
+                                     " points do not fit in device memory (about 50 bytes per point)");
+  }
+  backend::sync();
+  clock.mark("upload");
+  thrust::counting_iterator<Index> first(0);
+  thrust::counting_iterator<std::size_t> k0(0);
+  auto step = [&](std::size_t count, auto&& body) { backend::run_step<kParallelFrom>(count, body); };
+
+  // 0. the static filter; 1. throw-away
+  const pred::StaticFilter f = filter::static_filter<kParallelFrom>(xy, 2 * n);
+  const Orient o{xy, f};
+  Octagon poly;
+  if (opt.throw_away) {
+    Extremes ext{};
+    step(n, [&](auto policy) {
+      ext = thrust::transform_reduce(policy, first, first + n, AllDirections(), AllDirections()(0),
+                                     BestInEachDirection{xy});
+    });
+    poly = checked_polygon(ps, ext.e, 8);
+    if (poly.m == 0) {
+      const Index axes[4] = {ext.e[0], ext.e[2], ext.e[4], ext.e[6]};
+      poly = checked_polygon(ps, axes, 4);
+    }
+  }
+  Index* surv = thrust::raw_pointer_cast(b_surv.data());
+  std::size_t s = n;
+  if (poly.m > 0) {
+    step(n, [&](auto policy) {
+      s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, surv, NotInside{o, poly}) - surv);
+    });
+  } else {
+    step(n, [&](auto policy) { thrust::sequence(policy, surv, surv + n); });
+  }
+  backend::sync();
+  clock.mark("throw-away");
+
+  // 2. sort by x under the perturbation: equal x in the SoS order of indices
+  // (one rule for every pair, read off compare_sos once)
+  const double probe[2] = {0.0, 0.0};
+  const bool larger_index_first = pred::compare_sos({1, probe}, {0, probe}, 0) < 0;
+  std::uint64_t* keys = thrust::raw_pointer_cast(b_keys.data());
+  step(s, [&](auto policy) {
+    if (larger_index_first) thrust::reverse(policy, surv, surv + s);
+    thrust::transform(policy, surv, surv + s, keys, XKey{xy});
+    thrust::stable_sort_by_key(policy, keys, keys + s, surv);
+  });
+  backend::sync();
+  clock.mark("sort by x");
+
+  // 3. split; P = <v_l, S_b ascending, v_r, S_a descending>
+  const Index vl = b_surv[0], vr = b_surv[s - 1];
+  char* above = thrust::raw_pointer_cast(b_above.data());
+  Index* P = thrust::raw_pointer_cast(b_poly.data());
+  Index* P2 = thrust::raw_pointer_cast(b_poly2.data());
+  std::size_t nb = 0, na = 0;
+  step(s, [&](auto policy) {
+    thrust::transform(policy, surv + 1, surv + s - 1, above + 1, Above{o, vl, vr});
+    nb = static_cast<std::size_t>(thrust::copy_if(policy, surv + 1, surv + s - 1, above + 1, P + 1, IsClear()) -
+                                  (P + 1));
+    using RevIdx = thrust::reverse_iterator<Index*>;
+    using RevChar = thrust::reverse_iterator<char*>;
+    na = static_cast<std::size_t>(thrust::copy_if(policy, RevIdx(surv + s - 1), RevIdx(surv + 1),
+                                                  RevChar(above + s - 1), P + 2 + nb, IsSet()) -
+                                  (P + 2 + nb));
+  });
+  b_poly[0] = vl;
+  b_poly[1 + nb] = vr;
+  std::size_t m = s;
+  if (nb + na + 2 != s) throw std::logic_error(std::string(who) + ": the split lost points");
+  backend::sync();
+  clock.mark("split");
+
+  // 4. flip-pop rounds
+  std::size_t* kept = thrust::raw_pointer_cast(b_kept.data());
+  Index* label = thrust::raw_pointer_cast(b_label.data());
+  std::size_t passes = 0;
+  for (;;) {
+    if (m > chunk) {  // (a)
+      const std::size_t chunks = (m + chunk - 1) / chunk;
+      std::size_t left = 0;
+      step(m, [&](auto policy) {
+        thrust::for_each(policy, k0, k0 + chunks, ChunkScan{o, P, m, chunk, vl, vr, kept});
+        left = static_cast<std::size_t>(thrust::copy_if(policy, P, P + m, k0, P2, KeptInChunk{kept, chunk}) - P2);
+      });
+      std::swap(P, P2);
+      m = left;
+      ++passes;
+    }
+    std::size_t left = m;  // (b)
+    step(m, [&](auto policy) {
+      thrust::fill(policy, label, label + m, kNoLabel);
+      thrust::for_each(policy, k0, k0 + m, LabelReflex{o, P, m, vl, vr, label});
+      left = static_cast<std::size_t>(thrust::copy_if(policy, P, P + m, k0, P2, SurvivesPass{label, m}) - P2);
+    });
+    std::swap(P, P2);
+    ++passes;
+    const bool flipped = left != m;
+    m = left;
+    if (!flipped) break;
+  }
+  backend::sync();
+  clock.mark("flip-pop");
+
+  std::vector<Index> cycle(m);
+  thrust::copy(thrust::device_pointer_cast(P), thrust::device_pointer_cast(P) + static_cast<std::ptrdiff_t>(m),
+               cycle.begin());
+  clock.mark("download");
+  st.input_vertices = n;
+  st.discarded_early = n - s;
+  st.polygon_vertices = s;
+  st.flips_2_1 = s - m;
+  st.rounds = passes;
+  st.hull_vertices = m;
+  return cycle;
+}
+
+}  // namespace hull2_detail
+
+std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                     ref::Hull2Stats* stats) {
+  constexpr const char* who = "hull2 graham-sort";  // the reference's name (its messages)
+  if (ps.dim != 2 || ps.size() < 3) {
+    ref::require_planar_input(ps, who);  // throws the reference's message
+    throw std::invalid_argument(std::string(who) + ": at least 3 points in 2D are needed");
+  }
+  if (ps.size() >= hull2_detail::kNoLabel / 2)
+    throw std::invalid_argument(std::string(who) + ": too many points for 32-bit indices");
+  backend::require_device(who);
+  ref::Hull2Stats st;
+  std::vector<Index> cycle = hull2_detail::graham_sort(ps, opt, st, who);
+  // the cycle holds every extreme point of the input: collinear iff the input
+  // is (the throw-away's SoS test drops points of collinear input too)
+  if (!ref::cycle_spans_plane(ps, cycle)) {
+    ref::require_planar_input(ps, who);  // throws the reference's message
+    throw std::logic_error(std::string(who) + ": collinear hull of an input that spans the plane");
+  }
+  if (stats) *stats = st;
+  return ref::rotate_to_smallest(std::move(cycle));
+}
+
+}  // namespace flipflop::FF_KERNELS_NS

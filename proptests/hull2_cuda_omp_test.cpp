@@ -1,0 +1,126 @@
+// hull2_cuda_omp_test.cpp — the GPU 2D hull (kernels_cuda/hull2: throw-away,
+// Graham-sorting, chunked and labelled parallel flip-pop) built against
+// thrust's OpenMP backend (kernels_omp::hull2_graham_sort) against the exact
+// sequential reference ref::hull2_graham_sort: byte-identical canonical text
+// for every input, degenerate ones included, with and without the throw-away
+// and with chunks of 3..256 vertices (many chunk borders, many labelled
+// passes); the same rejection (same message) of input that does not span the
+// plane. The CUDA build runs the same comparisons on a device
+// (kernels_cuda/hull2_cuda_test.cpp).
+//
+// Oracles: ref::hull2_graham_sort (tested against brute::hull2, CGAL and the
+// certifier in hull2_reference_test.cpp) and certify::hull2 at
+// Level::canonical; the counts are checked for consistency.
+//
+// Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
+// by prop_scaled): degenerate / random sets of 3..80 points 2000 / 4 = 500;
+// every generator family at 3..4000 points 2000 / 10 = 200; the deterministic
+// sweep: 11 families x 6 sizes x 2 seeds x 2 option sets.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <sstream>
+#include <string>
+
+#include "gen/generate.hpp"
+#include "kernels_cuda/hull2/hull2.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/family_sweep.hpp"
+#include "proptests/support/outcome.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/dimension.hpp"
+#include "reference/hull2/hull2.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+using test::is_error;
+using test::outcome;
+
+std::string omp_text(const PointSet& ps, const kernels::Hull2GpuOptions& o, ref::Hull2Stats* st = nullptr) {
+  return outcome([&] { return kernels_omp::hull2_graham_sort(ps, o, st); });
+}
+
+std::string ref_text(const PointSet& ps) {
+  return outcome([&] { return ref::hull2_graham_sort(ps); });
+}
+
+rc::Gen<kernels::Hull2GpuOptions> any_options() {
+  return rc::gen::exec([] {
+    kernels::Hull2GpuOptions o;
+    o.throw_away = *rc::gen::element(true, false);
+    o.chunk = *rc::gen::element<std::size_t>(3, 4, 5, 8, 256);
+    return o;
+  });
+}
+
+// kernels_omp == reference; counts consistent. Returns the reference text.
+std::string check_rc(const PointSet& ps, const kernels::Hull2GpuOptions& o) {
+  const std::string expect = ref_text(ps);
+  ref::Hull2Stats st;
+  const std::string got = omp_text(ps, o, &st);
+  RC_ASSERT(got == expect);
+  if (!is_error(expect)) {
+    RC_ASSERT(st.discarded_early + st.polygon_vertices == ps.size());
+    RC_ASSERT(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+    if (!o.throw_away) RC_ASSERT(st.discarded_early == 0u);
+  }
+  return expect;
+}
+
+}  // namespace
+
+TEST_CASE("hull2 cuda-omp: degenerate and random small sets equal the reference (shrinking)", "[hull2_cuda_omp]") {
+  test::prop_scaled("degenerate sets of 3..80 points: cuda-omp == reference byte for byte, certified", 4, [] {
+    const PointSet ps = *test::degenerate_points(2, 3, 80, false);
+    const kernels::Hull2GpuOptions o = *any_options();
+    const std::string expect = check_rc(ps, o);
+    if (!is_error(expect))
+      RC_ASSERT(certify::hull2(ps, kernels_omp::hull2_graham_sort(ps, o), certify::Level::canonical).ok);
+  });
+}
+
+TEST_CASE("hull2 cuda-omp: every generator family up to 4000 points equals the reference (shrinking)",
+          "[hull2_cuda_omp]") {
+  test::prop_scaled("family sets of 3..4000 points: cuda-omp == reference", 10, [] {
+    const PointSet ps = *test::thinned(test::family_points(2, 3, 4000, false));
+    check_rc(ps, *any_options());
+  });
+}
+
+TEST_CASE("hull2 cuda-omp: deterministic sweep over the families, sizes and options", "[hull2_cuda_omp]") {
+  std::size_t cases = 0;
+  kernels::Hull2GpuOptions tiny;  // no throw-away, chunks of 3: the most passes
+  tiny.throw_away = false;
+  tiny.chunk = 3;
+  const test::SweepCounts sweep = test::family_sweep(
+      2, {3, 7, 30, 200, 2000, 50000}, 2, ref_text, [&](const PointSet& ps, const std::string& expect) {
+        for (const kernels::Hull2GpuOptions& o : {kernels::Hull2GpuOptions{}, tiny}) {
+          ref::Hull2Stats st;
+          REQUIRE(omp_text(ps, o, &st) == expect);
+          if (!is_error(expect)) REQUIRE(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+          ++cases;
+        }
+      });
+  const std::size_t rejected = sweep.rejected;
+  INFO("cases " << cases << ", rejected " << rejected);
+  REQUIRE(cases > 0);
+  REQUIRE(rejected < cases);
+}
+
+TEST_CASE("hull2 cuda-omp: input that does not span the plane is rejected with the reference's message",
+          "[hull2_cuda_omp]") {
+  for (const std::string& pts : {std::string("0 0\n1 1\n2 2\n3 3\n"), std::string("1 2\n1 2\n1 2\n"),
+                                 std::string("0 0\n1 0\n")}) {
+    PointSet ps;
+    ps.dim = 2;
+    double x, y;
+    std::istringstream in(pts);
+    while (in >> x >> y) ps.coords.insert(ps.coords.end(), {x, y});
+    const std::string expect = ref_text(ps);
+    REQUIRE(is_error(expect));
+    REQUIRE(omp_text(ps, {}) == expect);
+  }
+}
