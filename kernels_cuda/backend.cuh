@@ -23,7 +23,9 @@
 #endif
 
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -34,6 +36,30 @@ namespace flipflop::FF_KERNELS_NS::backend {
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
 template <class T>
 using Buffer = std::vector<T>;
+// Scratch<T>: a buffer every step writes before it reads — in the OpenMP build
+// its elements are left uninitialised (std::vector would zero n elements, a
+// pass over memory that costs as much as a kernel step); on the device an
+// ordinary Buffer.
+template <class T>
+struct DefaultInit : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInit<U>;
+  };
+  DefaultInit() = default;
+  template <class U>
+  DefaultInit(const DefaultInit<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+template <class T>
+using Scratch = std::vector<T, DefaultInit<T>>;
 template <class T>
 const T* to_device(const T* first, std::size_t, Buffer<T>&) {
   return first;
@@ -57,6 +83,8 @@ inline void require_device(const char*) {}
 #else
 template <class T>
 using Buffer = thrust::device_vector<T>;
+template <class T>
+using Scratch = thrust::device_vector<T>;
 template <class T>
 const T* to_device(const T* first, std::size_t count, Buffer<T>& b) {
   if (count == 0) return nullptr;

@@ -6,11 +6,13 @@
 // arrays of point indices (the coordinates stay where they are, point-major):
 //
 //   0. the per-input static filter by one reduction (static_filter.cuh);
-//   1. throw-away (Akl–Toussaint): the extreme points in 8 directions by one
-//      reduction; the points strictly inside their convex polygon are dropped
-//      by a stream compaction (copy_if). A point strictly inside a convex
-//      polygon of perturbed input points is inside the perturbed hull and so
-//      no vertex of the SoS hull: no vertex is lost;
+//   1. throw-away (Akl–Toussaint): a convex polygon of input points — the
+//      extreme points in 8 directions by one reduction, or on large inputs
+//      the hull of a sample (throw_away_polygon) — with an inner box and an
+//      exactly verified inner disk; the points strictly inside are dropped by a stream
+//      compaction (copy_if). A point strictly inside a convex polygon of
+//      perturbed input points is inside the perturbed hull and so no vertex
+//      of the SoS hull: no vertex is lost;
 //   2. Algorithm 3 line 1 and lines 4-5: the survivors sorted by x under the
 //      perturbation (a stable radix sort on the doubles' ordered bits, equal x
 //      in the SoS order of indices); v_l, v_r the first and the last;
@@ -62,6 +64,7 @@
 #include <cuda/atomic>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <new>
@@ -75,6 +78,7 @@
 #include "kernels_cuda/static_filter.cuh"
 #include "kernels_cpu/stage_times.hpp"
 #include "predicates/predicates.hpp"
+#include "reference/certify/ball_test.hpp"
 #include "reference/hull2/polygon.hpp"
 
 namespace flipflop::FF_KERNELS_NS {
@@ -140,21 +144,40 @@ struct BestInEachDirection {
   }
 };
 
-// A convex polygon of at most 8 input points, counter-clockwise.
-struct Octagon {
-  Index v[8] = {};
-  int m = 0;
+// An axis-parallel box whose four corners lie strictly inside the polygon
+// (checked with exact orient2d on the host): a point strictly inside the box
+// (four comparisons, exact) is strictly inside the polygon. Empty: lo > hi.
+struct InnerBox {
+  double lo[2] = {1.0, 1.0}, hi[2] = {0.0, 0.0};
+  FF_HD bool strictly_inside(const double* p) const {
+    return lo[0] < p[0] && p[0] < hi[0] && lo[1] < p[1] && p[1] < hi[1];
+  }
 };
 
-// Keep flag: point i is not strictly inside the polygon (a vertex of it is
-// kept: orient2d with a repeated index is 0).
+// Keep flag of the throw-away: point i is not proved strictly inside the
+// polygon `poly` (h >= 3 input points, convex and counter-clockwise under the
+// perturbation, checked on the host) — first by its inner box and its exactly
+// verified inner disk (comparisons, one floating-point test,
+// certify/ball_test.hpp), then
+// by the fan from poly[0]: a binary search for the wedge poly[0] poly[k]
+// poly[k+1] holding i and one edge test, O(log h) SoS orient2d calls. A
+// vertex of the polygon is kept (orient2d with a repeated index is 0).
 struct NotInside {
   Orient o;
-  Octagon poly;
+  InnerBox box;
+  certify::BallTest<2> disk;
+  const Index* poly;
+  int h;
   FF_HD bool operator()(Index i) const {
-    for (int k = 0; k < poly.m; ++k)
-      if (o(poly.v[k], poly.v[(k + 1) % poly.m], i) <= 0) return true;
-    return false;
+    if (box.strictly_inside(at(o.xy, i)) || disk.strictly_inside(at(o.xy, i))) return false;
+    if (o(poly[0], poly[1], i) <= 0 || o(poly[0], poly[h - 1], i) >= 0) return true;
+    int lo = 1, hi = h - 1;  // orient(v0, v_lo, i) > 0 > orient(v0, v_hi, i)
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      if (o(poly[0], poly[mid], i) > 0) lo = mid;
+      else hi = mid;
+    }
+    return o(poly[lo], poly[hi], i) <= 0;
   }
 };
 
@@ -237,19 +260,93 @@ struct SurvivesPass {  // lines 10-12: p_i goes when its three labels are still 
   }
 };
 
-// The polygon of the extreme points, checked exactly (host): consecutive
+// `ids` as a polygon for the throw-away, checked exactly (host): consecutive
 // repeats removed; empty unless it has >= 3 vertices and turns left at every
-// vertex under the perturbation.
-inline Octagon checked_polygon(const PointSet& ps, const Index* ids, int count) {
-  Octagon poly;
-  for (int k = 0; k < count; ++k)
-    if (poly.m == 0 || poly.v[poly.m - 1] != ids[k]) poly.v[poly.m++] = ids[k];
-  while (poly.m > 1 && poly.v[poly.m - 1] == poly.v[0]) --poly.m;
-  if (poly.m < 3) return {};
-  for (int k = 0; k < poly.m; ++k) {
-    const Index a = poly.v[k], b = poly.v[(k + 1) % poly.m], c = poly.v[(k + 2) % poly.m];
+// vertex under the perturbation (then it is convex and counter-clockwise).
+inline std::vector<Index> checked_polygon(const PointSet& ps, std::vector<Index> ids) {
+  std::vector<Index> poly;
+  for (Index v : ids)
+    if (poly.empty() || poly.back() != v) poly.push_back(v);
+  while (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
+  const std::size_t h = poly.size();
+  if (h < 3) return {};
+  for (std::size_t k = 0; k < h; ++k) {
+    const Index a = poly[k], b = poly[(k + 1) % h], c = poly[(k + 2) % h];
     if (a == c || pred::orient2d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}) <= 0) return {};
   }
+  return poly;
+}
+
+// The inner box of a polygon checked by checked_polygon: its bounding box
+// shrunk towards `centre` by the first factor t in 0.995, 0.98, 0.95, 0.9,
+// 0.8, 0.7 whose four corners are strictly inside every edge in exact
+// arithmetic; empty if none is (O(h) exact tests per candidate, on the host).
+inline InnerBox inner_box(const PointSet& ps, const std::vector<Index>& poly, const double* centre) {
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+  for (Index v : poly)
+    for (int j = 0; j < 2; ++j) lo[j] = std::min(lo[j], ps.point(v)[j]), hi[j] = std::max(hi[j], ps.point(v)[j]);
+  for (double t : {0.995, 0.98, 0.95, 0.9, 0.8, 0.7}) {
+    InnerBox b;
+    for (int j = 0; j < 2; ++j) {
+      b.lo[j] = centre[j] + t * (lo[j] - centre[j]);
+      b.hi[j] = centre[j] + t * (hi[j] - centre[j]);
+    }
+    if (!(b.lo[0] < b.hi[0] && b.lo[1] < b.hi[1])) continue;  // also NaN / Inf
+    const double corners[4][2] = {{b.lo[0], b.lo[1]}, {b.hi[0], b.lo[1]}, {b.hi[0], b.hi[1]}, {b.lo[0], b.hi[1]}};
+    bool inside = true;
+    for (std::size_t k = 0; k < poly.size() && inside; ++k)
+      for (const auto& c : corners)
+        if (pred::orient2d_exact(ps.point(poly[k]), ps.point(poly[(k + 1) % poly.size()]), c) <= 0) {
+          inside = false;
+          break;
+        }
+    if (inside) return b;
+  }
+  return {};
+}
+
+inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                      ref::Hull2Stats& st, const char* who);
+
+// The throw-away's polygon. Below kSampleFrom points: the extreme points in 8
+// directions (one reduction). From kSampleFrom points (Akl–Toussaint with a
+// sample): the SoS hull of a strided sample of s = min(2^17, max(n/64, 1024))
+// points, computed by this same algorithm — close to the whole hull, so that
+// almost every interior point is dropped on disks and rings too. The sample
+// keeps the input order, so its SoS hull under its own indices is the SoS
+// hull of the same input points under theirs (SoS depends on the order of the
+// indices only); it is checked again under the input's indices regardless.
+constexpr std::size_t kSampleFrom = std::size_t{1} << 15;
+
+inline std::vector<Index> throw_away_polygon(const PointSet& ps, const double* xy, const kernels::Hull2GpuOptions& opt,
+                                             const char* who) {
+  const std::size_t n = ps.size();
+  if (n >= kSampleFrom) {
+    const std::size_t s = std::min<std::size_t>(std::size_t{1} << 17, std::max<std::size_t>(n / 64, 1024));
+    const std::size_t stride = n / s;
+    PointSet sample;
+    sample.dim = 2;
+    sample.coords.resize(2 * s);
+    for (std::size_t k = 0; k < s; ++k) {
+      sample.coords[2 * k] = ps.point(k * stride)[0];
+      sample.coords[2 * k + 1] = ps.point(k * stride)[1];
+    }
+    kernels::Hull2GpuOptions o;
+    o.chunk = opt.chunk;
+    ref::Hull2Stats sst;
+    std::vector<Index> cycle = graham_sort(sample, o, sst, who);
+    for (Index& v : cycle) v = static_cast<Index>(v * stride);
+    std::vector<Index> poly = checked_polygon(ps, std::move(cycle));
+    if (!poly.empty()) return poly;
+  }
+  Extremes ext{};
+  thrust::counting_iterator<Index> first(0);
+  backend::run_step<kParallelFrom>(n, [&](auto policy) {
+    ext = thrust::transform_reduce(policy, first, first + n, AllDirections(), AllDirections()(0),
+                                   BestInEachDirection{xy});
+  });
+  std::vector<Index> poly = checked_polygon(ps, std::vector<Index>(ext.e, ext.e + 8));
+  if (poly.empty()) poly = checked_polygon(ps, {ext.e[0], ext.e[2], ext.e[4], ext.e[6]});
   return poly;
 }
 
@@ -259,10 +356,10 @@ inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2Gp
   const std::size_t chunk = std::max<std::size_t>(opt.chunk, 3);
   cpu::StageClock clock(opt.times);
   backend::Buffer<double> b_xy;
-  backend::Buffer<Index> b_surv, b_poly, b_poly2, b_label;
-  backend::Buffer<std::uint64_t> b_keys;
-  backend::Buffer<char> b_above;
-  backend::Buffer<std::size_t> b_kept;
+  backend::Scratch<Index> b_surv, b_poly, b_poly2, b_label;
+  backend::Scratch<std::uint64_t> b_keys;
+  backend::Scratch<char> b_above;
+  backend::Scratch<std::size_t> b_kept;
   const double* xy = nullptr;
   try {
     xy = backend::to_device(ps.coords.data(), ps.coords.size(), b_xy);
@@ -281,24 +378,22 @@ inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2Gp
   // 0. the static filter; 1. throw-away
   const pred::StaticFilter f = filter::static_filter<kParallelFrom>(xy, 2 * n);
   const Orient o{xy, f};
-  Octagon poly;
-  if (opt.throw_away) {
-    Extremes ext{};
-    step(n, [&](auto policy) {
-      ext = thrust::transform_reduce(policy, first, first + n, AllDirections(), AllDirections()(0),
-                                     BestInEachDirection{xy});
-    });
-    poly = checked_polygon(ps, ext.e, 8);
-    if (poly.m == 0) {
-      const Index axes[4] = {ext.e[0], ext.e[2], ext.e[4], ext.e[6]};
-      poly = checked_polygon(ps, axes, 4);
-    }
-  }
+  const std::vector<Index> poly = opt.throw_away ? throw_away_polygon(ps, xy, opt, who) : std::vector<Index>{};
   Index* surv = thrust::raw_pointer_cast(b_surv.data());
   std::size_t s = n;
-  if (poly.m > 0) {
+  if (!poly.empty()) {
+    backend::Buffer<Index> b_ring;
+    const Index* ring = backend::to_device(poly.data(), poly.size(), b_ring);
+    const certify::BallTest<2> disk = certify::inner_disk(ps, poly);
+    double centre[2] = {0.0, 0.0};  // the disk's centre, else the vertices' mean
+    for (int j = 0; j < 2; ++j) {
+      if (disk.limit > 0) centre[j] = disk.s[j];
+      else
+        for (Index v : poly) centre[j] += ps.point(v)[j] / static_cast<double>(poly.size());
+    }
+    const NotInside keep{o, inner_box(ps, poly, centre), disk, ring, static_cast<int>(poly.size())};
     step(n, [&](auto policy) {
-      s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, surv, NotInside{o, poly}) - surv);
+      s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, surv, keep) - surv);
     });
   } else {
     step(n, [&](auto policy) { thrust::sequence(policy, surv, surv + n); });

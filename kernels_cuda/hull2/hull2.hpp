@@ -28,7 +28,7 @@ namespace flipflop::kernels {
 
 struct Hull2GpuOptions {
   // Tuning; the result does not depend on them (the tests vary them):
-  bool throw_away = true;     // drop points inside the octagon of extreme points first
+  bool throw_away = true;     // drop points proved inside a polygon of input points first (hull2.cuh)
   std::size_t chunk = 256;    // vertices per chunk of the chunked flip-pop pass (>= 3)
   // when set, filled with the seconds of each stage: upload, throw-away, sort
   // by x, split, flip-pop, download (the transfers are the CUDA build's

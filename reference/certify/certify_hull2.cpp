@@ -223,4 +223,11 @@ Report hull2(const PointSet& ps, const std::vector<Index>& cycle, Level level, c
   return Report::pass();
 }
 
+BallTest<2> inner_disk(const PointSet& ps, const std::vector<Index>& ccw) {
+  if (ccw.size() < 3) return {};
+  std::vector<std::array<Index, 2>> edges(ccw.size());
+  for (std::size_t k = 0; k < ccw.size(); ++k) edges[k] = {ccw[k], ccw[(k + 1) % ccw.size()]};
+  return detail::InnerBall<2>(ps, edges, decltype(Speedups{}.for_range){}).test();  // sequential
+}
+
 }  // namespace flipflop::certify

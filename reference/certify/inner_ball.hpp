@@ -7,7 +7,8 @@
 // the perturbation (an infinitesimal perturbation keeps it inside) — and its
 // sector or cone need not be found (10^7 ball points: 97 % of them).
 //
-// Set-up: a centre c (the rounded mean of the facets' vertices), r2 =
+// Set-up: a centre c (the rounded mean of the facets' vertices or the middle
+// of their bounding box, whichever is farther from the facets), r2 =
 // (0.999999 * min over facets of the floating distance from c)^2, a double;
 // then, for every facet with outward normal n — D = 2, edge a -> b of a
 // counter-clockwise polygon: n = (b.y - a.y, a.x - b.x); D = 3, triangle
@@ -32,6 +33,7 @@
 #include <limits>
 #include <vector>
 
+#include "reference/certify/ball_test.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/point_set.hpp"
 
@@ -47,25 +49,44 @@ class InnerBall {
   // checks run through for_range (Speedups::for_range; may be empty).
   template <class Facet, class ForRange>
   InnerBall(const PointSet& ps, const std::vector<Facet>& facets, const ForRange& for_range) {
-    // the centre: the mean of the facets' vertices, rounded (any point works:
-    // the set-up verifies exactly that the ball is inside)
-    double sd[D] = {};
+    // the centre (any point works: the set-up verifies exactly that the ball
+    // is inside): of two candidates — the mean of the facets' vertices and
+    // the middle of their bounding box, rounded — the one farther from every
+    // facet in floating point. The mean leans towards where vertices are
+    // dense (a polygon sampled unevenly from a circle); the box middle fails
+    // on skewed hulls (a right triangle's lies on its hypotenuse).
+    double mean[D] = {}, lo[D], hi[D];
+    for (int j = 0; j < D; ++j) lo[j] = std::numeric_limits<double>::infinity(), hi[j] = -lo[j];
     const double weight = 1.0 / (static_cast<double>(D) * static_cast<double>(facets.size()));
     for (const Facet& f : facets)
       for (int k = 0; k < D; ++k)
-        for (int j = 0; j < D; ++j) sd[j] += ps.point(f[static_cast<std::size_t>(k)])[j] * weight;
-    for (int j = 0; j < D; ++j) s_[j] = sd[j];
-    double dmin = std::numeric_limits<double>::infinity();
-    for (const Facet& f : facets) {
-      double nn[D];
-      normal<double>(ps, f, nn);
-      double len2 = 0, dot = 0;
-      const double* a = ps.point(f[0]);
-      for (int j = 0; j < D; ++j) len2 += nn[j] * nn[j], dot += nn[j] * (sd[j] - a[j]);
-      const double len = std::sqrt(len2);
-      if (!(len > 0)) continue;
-      dmin = std::min(dmin, -dot / len);
-    }
+        for (int j = 0; j < D; ++j) {
+          const double x = ps.point(f[static_cast<std::size_t>(k)])[j];
+          mean[j] += x * weight;
+          lo[j] = std::min(lo[j], x), hi[j] = std::max(hi[j], x);
+        }
+    double box[D];
+    for (int j = 0; j < D; ++j) box[j] = lo[j] / 2 + hi[j] / 2;
+    // the smallest floating distance from c to a facet (inner side positive)
+    auto clearance = [&](const double* c) {
+      double dmin = std::numeric_limits<double>::infinity();
+      for (const Facet& f : facets) {
+        double nn[D];
+        normal<double>(ps, f, nn);
+        double len2 = 0, dot = 0;
+        const double* a = ps.point(f[0]);
+        for (int j = 0; j < D; ++j) len2 += nn[j] * nn[j], dot += nn[j] * (c[j] - a[j]);
+        const double len = std::sqrt(len2);
+        if (!(len > 0)) continue;
+        dmin = std::min(dmin, -dot / len);
+      }
+      return dmin;
+    };
+    const double dmean = clearance(mean), dbox = clearance(box);
+    const bool use_box = dbox > dmean;  // false on NaN
+    const double* sd = use_box ? box : mean;
+    const double dmin = use_box ? dbox : dmean;
+    for (int j = 0; j < D; ++j) test_.s[j] = sd[j];
     const double r = dmin * 0.999999;
     const double r2 = r * r;
     if (!(r > 0) || !std::isfinite(r2) || r2 < 0x1p-900) return;
@@ -82,17 +103,11 @@ class InnerBall {
       return Dot <= 0 || Dot * Dot < R2 * M;
     };
     if (smallest_failing(facets.size(), for_range, outside) < facets.size()) return;  // not verified: no ball
-    limit_ = r2 * (1 - 0x1p-40);
+    test_.limit = r2 * (1 - 0x1p-40);
   }
 
-  bool strictly_inside(const double* p) const {
-    double sum = 0x1p-990;
-    for (int j = 0; j < D; ++j) {
-      const double d = p[j] - s_[j];
-      sum += d * d;
-    }
-    return sum < limit_;
-  }
+  bool strictly_inside(const double* p) const { return test_.strictly_inside(p); }
+  const BallTest<D>& test() const { return test_; }
 
  private:
   // the outward normal of facet f (see the header), in T (double or mpq_class)
@@ -112,8 +127,7 @@ class InnerBall {
     }
   }
 
-  double s_[D] = {};
-  double limit_ = 0;  // 0: empty ball, no point is inside
+  BallTest<D> test_;  // centre and limit; limit 0: empty ball
 };
 
 }  // namespace flipflop::certify::detail
