@@ -10,7 +10,8 @@
 //          cgal:ch_graham_andrew
 //          flipflop:cuda-omp (kernels_cuda/hull2 in thrust's OpenMP build),
 //          flipflop:cuda and flipflop:cuda:no-transfers (the CUDA build, with
-//          and without the host-device copies; rows of a build with nvcc);
+//          and without the host-device copies; rows of a build with nvcc),
+//          and the same rows with :graham-insert (Algorithm 4);
 //   hull3  flipflop:cpu (kernels_cpu/hull3, multithreaded ffHull, all cores),
 //          flipflop:reference:ffhull, :splay (:twist-flip, quadratic, for
 //          n <= 20000); qhull (libqhull_r, Qt), cgal:convex_hull_3
@@ -70,12 +71,12 @@ struct Peer {
 // the upload and download, as the thesis reports GPU times). `run(backend,
 // times)` computes the canonical output and fills times when it is not null.
 template <class Output, class Run>
-void add_gpu_rows(std::vector<Peer<Output>>& rows, Run run) {
+void add_gpu_rows(std::vector<Peer<Output>>& rows, Run run, const std::string& suffix = "") {
   for (const std::string& b : kernels::gpu_backends_built()) {
-    rows.push_back({"flipflop:" + b, [run, b](const PointSet&) { return run(b, nullptr); }});
+    rows.push_back({"flipflop:" + b + suffix, [run, b](const PointSet&) { return run(b, nullptr); }});
     if (b != "cuda") continue;
     auto times = std::make_shared<cpu::StageTimes>();
-    rows.push_back({"flipflop:cuda:no-transfers",
+    rows.push_back({"flipflop:cuda" + suffix + ":no-transfers",
                     [run, times](const PointSet&) {
                       *times = {};
                       return run("cuda", times.get());
@@ -211,11 +212,15 @@ int bench_peers(const Args& a) {
         {"flipflop:cpu", [](const PointSet& p) { return cpu::hull2_graham_sort(p); }},
         {"flipflop:cpu:graham-insert", [](const PointSet& p) { return cpu::hull2_graham_insert(p); }}};
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-    add_gpu_rows(rows, [&](const std::string& b, cpu::StageTimes* t) {
-      kernels::Hull2GpuOptions o;
-      o.times = t;
-      return kernels::hull2_gpu(b, pts, o);
-    });
+    for (const char* algo : {"graham-sort", "graham-insert"})
+      add_gpu_rows(
+          rows,
+          [&pts, algo](const std::string& b, cpu::StageTimes* t) {
+            kernels::Hull2GpuOptions o;
+            o.times = t;
+            return kernels::hull2_gpu(b, pts, o, nullptr, algo);
+          },
+          std::string(algo) == "graham-insert" ? ":graham-insert" : "");
 #endif
     rows.insert(rows.end(),
                 {{"flipflop:reference:graham-sort", [](const PointSet& p) { return ref::hull2_graham_sort(p); }},

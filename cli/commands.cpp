@@ -96,7 +96,7 @@ namespace {
 // compute.
 std::vector<std::string> gpu_algorithms(const std::string& kind) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-  if (kind == "hull2") return {"graham-sort"};
+  if (kind == "hull2") return {"graham-sort", "graham-insert"};
 #else
   (void)kind;
 #endif
@@ -253,8 +253,9 @@ int run_compute(const ComputeArgs& a) {
       cycle = algo == "graham-insert" ? cpu::hull2_graham_insert(ps, o, &st) : cpu::hull2_graham_sort(ps, o, &st);
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
     } else if (is_gpu(backend)) {
-      // kernels_cuda/hull2: Graham-sorting with parallel flip-pop on thrust
-      cycle = kernels::hull2_gpu(backend, ps, {}, &st);
+      // kernels_cuda/hull2: Graham-sorting or -insertion with parallel
+      // flip-pop, on thrust
+      cycle = kernels::hull2_gpu(backend, ps, {}, &st, algo);
 #endif
     } else {
       cycle = ref::hull2(ps, algo, &st);

@@ -23,8 +23,9 @@
 // and flip-pop chunk chosen by the last bytes): it must return the answer
 // byte for byte, with its counters' lemmas (every point discarded or in the
 // chains' polygon, every flip removes one vertex), and reject the same inputs
-// with std::invalid_argument. The GPU kernel (kernels_cuda/hull2) in its
-// OpenMP build likewise, with and without its throw-away, chunks of 3..8.
+// with std::invalid_argument. The GPU kernel (kernels_cuda/hull2, Graham-
+// sorting and Graham-insertion) in its OpenMP build likewise, with and without
+// its throw-away, chunks of 3..8.
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
@@ -210,14 +211,15 @@ bool check_hull2_input(const std::uint8_t* data, std::size_t size) {
   }
 #ifdef FLIPFLOP_HAVE_KERNELS_OMP
   // the GPU kernel's OpenMP build, with and without the throw-away
-  for (bool throw_away : {true, false}) {
+  for (int run = 0; run < 4; ++run) {
+    const bool throw_away = run % 2 == 0, insert = run >= 2;
     kernels::Hull2GpuOptions o;
     o.throw_away = throw_away;
     o.chunk = 3 + r.byte() % 6;
     ref::Hull2Stats st;
     std::vector<Index> got;
     try {
-      got = kernels_omp::hull2_graham_sort(ps, o, &st);
+      got = insert ? kernels_omp::hull2_graham_insert(ps, o, &st) : kernels_omp::hull2_graham_sort(ps, o, &st);
     } catch (const std::exception& e) {
       fail(kTarget, std::string("cuda-omp threw: ") + e.what(), describe(ps));
     }

@@ -39,12 +39,19 @@ std::vector<std::string> gpu_backends_built() {
 bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "cuda-omp"; }
 
 std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt,
-                             ref::Hull2Stats* stats) {
+                             ref::Hull2Stats* stats, const std::string& algo) {
+  if (algo != "graham-sort" && algo != "graham-insert")
+    throw std::invalid_argument("the GPU 2D hull computes graham-sort and graham-insert, not '" + algo + "'");
+  const bool insert = algo == "graham-insert";
   return dispatch(
-      backend, [&] { return kernels_omp::hull2_graham_sort(ps, opt, stats); },
+      backend,
+      [&] {
+        return insert ? kernels_omp::hull2_graham_insert(ps, opt, stats) : kernels_omp::hull2_graham_sort(ps, opt, stats);
+      },
       [&] {
 #ifdef FLIPFLOP_HAVE_KERNELS_CUDA
-        return kernels_cuda::hull2_graham_sort(ps, opt, stats);
+        return insert ? kernels_cuda::hull2_graham_insert(ps, opt, stats)
+                      : kernels_cuda::hull2_graham_sort(ps, opt, stats);
 #else
         return std::vector<Index>{};
 #endif

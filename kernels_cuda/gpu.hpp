@@ -23,7 +23,8 @@ namespace flipflop::kernels {
 std::vector<std::string> gpu_backends_built();
 bool is_gpu_backend(const std::string& backend);
 
+// algo: "graham-sort" (Algorithm 3) or "graham-insert" (Algorithm 4)
 std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt = {},
-                             ref::Hull2Stats* stats = nullptr);
+                             ref::Hull2Stats* stats = nullptr, const std::string& algo = "graham-sort");
 
 }  // namespace flipflop::kernels

@@ -1,5 +1,6 @@
 // hull2_cuda_test.cpp — the CUDA build of the GPU 2D hull
-// (kernels_cuda::hull2_graham_sort) equals the reference ref::hull2_graham_sort
+// (kernels_cuda::hull2_graham_sort and hull2_graham_insert) equals the
+// reference (ref::hull2_graham_sort, ref::hull2_graham_insert)
 // byte for byte over every 2D generator family (degenerate ones included:
 // grids, circle lattices, collinear subsets, duplicates, huge and tiny
 // magnitudes), sizes 3..10^6, with the default options and with no throw-away
@@ -49,10 +50,18 @@ int main() {
       const std::string expect = outcome([&] { return ref::hull2_graham_sort(ps); });
       for (const kernels::Hull2GpuOptions& o : {kernels::Hull2GpuOptions{}, tiny}) {
         if (n > 50000 && !o.throw_away) continue;
-        const bool same = outcome([&] { return kernels_cuda::hull2_graham_sort(ps, o); }) == expect;
-        ++cases;
-        if (!same) std::printf("FAIL %s n=%zu throw_away=%d chunk=%zu\n", fam.c_str(), n, o.throw_away, o.chunk);
-        ok = same && ok;
+        for (bool insert : {false, true}) {
+          const std::string want = insert ? outcome([&] { return ref::hull2_graham_insert(ps); }) : expect;
+          const bool same = outcome([&] {
+                              return insert ? kernels_cuda::hull2_graham_insert(ps, o)
+                                            : kernels_cuda::hull2_graham_sort(ps, o);
+                            }) == want;
+          ++cases;
+          if (!same)
+            std::printf("FAIL %s n=%zu throw_away=%d chunk=%zu %s\n", fam.c_str(), n, o.throw_away, o.chunk,
+                        insert ? "graham-insert" : "graham-sort");
+          ok = same && ok;
+        }
       }
     }
   }

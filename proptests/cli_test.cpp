@@ -531,7 +531,7 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes; --backend cuda 
     std::vector<std::string> bad;  // option sets the GPU backends refuse
   };
   const std::vector<Job> jobs = {
-      {"hull2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo graham-insert", "--backend cuda-omp --threads 2"}},
+      {"hull2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo twist", "--backend cuda-omp --threads 2"}},
       {"hull2", t.file("random.xyz", random), {}}};
   for (const Job& j : jobs) {
     const fs::path expect = t.dir / "expect.txt", got = t.dir / "got.txt";

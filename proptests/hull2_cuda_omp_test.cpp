@@ -1,7 +1,9 @@
 // hull2_cuda_omp_test.cpp — the GPU 2D hull (kernels_cuda/hull2: throw-away,
-// Graham-sorting, chunked and labelled parallel flip-pop) built against
-// thrust's OpenMP backend (kernels_omp::hull2_graham_sort) against the exact
-// sequential reference ref::hull2_graham_sort: byte-identical canonical text
+// Graham-sorting or Graham-insertion, chunked and labelled parallel flip-pop)
+// built against thrust's OpenMP backend (kernels_omp::hull2_graham_sort,
+// hull2_graham_insert) against the exact sequential reference
+// (ref::hull2_graham_sort, and ref::hull2_graham_insert for the messages of
+// rejected input): byte-identical canonical text
 // for every input, degenerate ones included, with and without the throw-away
 // and with chunks of 3..256 vertices (many chunk borders, many labelled
 // passes); the same rejection (same message) of input that does not span the
@@ -15,7 +17,7 @@
 // Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
 // by prop_scaled): degenerate / random sets of 3..80 points 2000 / 4 = 500;
 // every generator family at 3..4000 points 2000 / 10 = 200; the deterministic
-// sweep: 11 families x 6 sizes x 2 seeds x 2 option sets.
+// sweep: 11 families x 6 sizes x 2 seeds x 2 option sets x 2 algorithms.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -39,12 +41,21 @@ namespace {
 using test::is_error;
 using test::outcome;
 
-std::string omp_text(const PointSet& ps, const kernels::Hull2GpuOptions& o, ref::Hull2Stats* st = nullptr) {
-  return outcome([&] { return kernels_omp::hull2_graham_sort(ps, o, st); });
+// Graham-sorting (Algorithm 3) and Graham-insertion (Algorithm 4), each
+// against the reference's run of the same algorithm (the same hull; on
+// rejected input the same message, which names the algorithm).
+enum class Algo { sort, insert };
+constexpr Algo kAlgos[] = {Algo::sort, Algo::insert};
+
+std::string omp_text(const PointSet& ps, const kernels::Hull2GpuOptions& o, ref::Hull2Stats* st = nullptr,
+                     Algo a = Algo::sort) {
+  return outcome([&] {
+    return a == Algo::sort ? kernels_omp::hull2_graham_sort(ps, o, st) : kernels_omp::hull2_graham_insert(ps, o, st);
+  });
 }
 
-std::string ref_text(const PointSet& ps) {
-  return outcome([&] { return ref::hull2_graham_sort(ps); });
+std::string ref_text(const PointSet& ps, Algo a = Algo::sort) {
+  return outcome([&] { return a == Algo::sort ? ref::hull2_graham_sort(ps) : ref::hull2_graham_insert(ps); });
 }
 
 rc::Gen<kernels::Hull2GpuOptions> any_options() {
@@ -56,16 +67,21 @@ rc::Gen<kernels::Hull2GpuOptions> any_options() {
   });
 }
 
-// kernels_omp == reference; counts consistent. Returns the reference text.
+// kernels_omp == reference for both algorithms; counts consistent. Returns
+// the reference text.
 std::string check_rc(const PointSet& ps, const kernels::Hull2GpuOptions& o) {
   const std::string expect = ref_text(ps);
-  ref::Hull2Stats st;
-  const std::string got = omp_text(ps, o, &st);
-  RC_ASSERT(got == expect);
-  if (!is_error(expect)) {
-    RC_ASSERT(st.discarded_early + st.polygon_vertices == ps.size());
-    RC_ASSERT(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
-    if (!o.throw_away) RC_ASSERT(st.discarded_early == 0u);
+  for (Algo a : kAlgos) {
+    ref::Hull2Stats st;
+    const std::string got = omp_text(ps, o, &st, a);
+    RC_ASSERT(got == ref_text(ps, a));
+    if (!is_error(expect)) {
+      RC_ASSERT(got == expect);
+      RC_ASSERT(st.discarded_early + st.polygon_vertices == ps.size());
+      RC_ASSERT(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+      if (a == Algo::insert) RC_ASSERT(st.polygon_vertices == st.insertions + 2);
+      if (!o.throw_away && a == Algo::sort) RC_ASSERT(st.discarded_early == 0u);
+    }
   }
   return expect;
 }
@@ -96,13 +112,14 @@ TEST_CASE("hull2 cuda-omp: deterministic sweep over the families, sizes and opti
   tiny.throw_away = false;
   tiny.chunk = 3;
   const test::SweepCounts sweep = test::family_sweep(
-      2, {3, 7, 30, 200, 2000, 50000}, 2, ref_text, [&](const PointSet& ps, const std::string& expect) {
-        for (const kernels::Hull2GpuOptions& o : {kernels::Hull2GpuOptions{}, tiny}) {
-          ref::Hull2Stats st;
-          REQUIRE(omp_text(ps, o, &st) == expect);
-          if (!is_error(expect)) REQUIRE(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
-          ++cases;
-        }
+      2, {3, 7, 30, 200, 2000, 50000}, 2, [](const PointSet& p) { return ref_text(p); }, [&](const PointSet& ps, const std::string& expect) {
+        for (const kernels::Hull2GpuOptions& o : {kernels::Hull2GpuOptions{}, tiny})
+          for (Algo a : kAlgos) {
+            ref::Hull2Stats st;
+            REQUIRE(omp_text(ps, o, &st, a) == (a == Algo::sort ? expect : ref_text(ps, a)));
+            if (!is_error(expect)) REQUIRE(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+            ++cases;
+          }
       });
   const std::size_t rejected = sweep.rejected;
   INFO("cases " << cases << ", rejected " << rejected);
@@ -119,8 +136,10 @@ TEST_CASE("hull2 cuda-omp: input that does not span the plane is rejected with t
     double x, y;
     std::istringstream in(pts);
     while (in >> x >> y) ps.coords.insert(ps.coords.end(), {x, y});
-    const std::string expect = ref_text(ps);
-    REQUIRE(is_error(expect));
-    REQUIRE(omp_text(ps, {}) == expect);
+    for (Algo a : kAlgos) {
+      const std::string expect = ref_text(ps, a);
+      REQUIRE(is_error(expect));
+      REQUIRE(omp_text(ps, {}, nullptr, a) == expect);
+    }
   }
 }

@@ -53,6 +53,11 @@
 #include <thrust/copy.h>
 #include <thrust/fill.h>
 #include <thrust/for_each.h>
+#include <thrust/functional.h>
+#include <thrust/iterator/zip_iterator.h>
+#include <thrust/scan.h>
+#include <thrust/transform_scan.h>
+#include <thrust/tuple.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/iterator/reverse_iterator.h>
 #include <thrust/reverse.h>
@@ -260,6 +265,107 @@ struct SurvivesPass {  // lines 10-12: p_i goes when its three labels are still 
   }
 };
 
+// ---- Algorithm 4 (Graham-insertion) -------------------------------------------
+// v_l and v_r of the survivors: the extremes in x under the perturbation.
+struct XRange {
+  Index lo, hi;
+};
+struct XRangeOf {
+  FF_HD XRange operator()(Index i) const { return {i, i}; }
+};
+struct WiderX {
+  const double* xy;
+  FF_HD XRange operator()(const XRange& a, const XRange& b) const {
+    XRange r;
+    r.lo = dev::compare_sos(b.lo, at(xy, b.lo), a.lo, at(xy, a.lo), 0) < 0 ? b.lo : a.lo;
+    r.hi = dev::compare_sos(b.hi, at(xy, b.hi), a.hi, at(xy, a.hi), 0) > 0 ? b.hi : a.hi;
+    return r;
+  }
+};
+struct NotEnd {
+  Index vl, vr;
+  FF_HD bool operator()(Index i) const { return i != vl && i != vr; }
+};
+// lines 4-6: P = <v_l, v_r>; below v_l v_r: edge 0 (v_l -> v_r), above: edge 1
+struct FirstEdge {
+  Orient o;
+  Index vl, vr;
+  FF_HD Index operator()(Index u) const { return o(vl, vr, u) < 0 ? 0 : 1; }
+};
+// line 9: each edge's point to insert — the farthest from the edge's line by
+// the rounded cross product (any associated point keeps the polygon x-monotone
+// per chain and the answer unchanged; the farthest drops the most points), as
+// one atomic maximum of (distance as float bits, complement of the index) per
+// edge: ties go to the smaller index, so the choice is deterministic.
+struct Bid {
+  const double* xy;
+  const Index* P;
+  std::size_t m;
+  const Index* pts;
+  const Index* eid;
+  unsigned long long* best;
+  FF_HD void operator()(std::size_t k) const {
+    const Index u = pts[k], e = eid[k];
+    const double *p = at(xy, P[e]), *q = at(xy, P[(e + 1) % m]), *x = at(xy, u);
+    double c = (q[0] - p[0]) * (x[1] - p[1]) - (q[1] - p[1]) * (x[0] - p[0]);
+    c = c < 0 ? -c : c;
+    float cf = static_cast<float>(c);
+    if (!(cf == cf)) cf = 0.0f;  // NaN (inf - inf): no preference
+    std::uint32_t bits;
+    std::memcpy(&bits, &cf, sizeof bits);
+    const unsigned long long key = (static_cast<unsigned long long>(bits) << 32) | (0xffffffffu - u);
+    cuda::atomic_ref<unsigned long long, cuda::thread_scope_device>(best[e]).fetch_max(key);
+  }
+};
+FF_HD inline Index bid_point(unsigned long long b) { return 0xffffffffu - static_cast<Index>(b & 0xffffffffu); }
+struct SlotsOf {  // vertices edge e contributes to the new polygon
+  FF_HD std::size_t operator()(unsigned long long b) const { return b ? 2 : 1; }
+};
+struct Splice {  // line 10: P' = ... p, r, q ...
+  const Index* P;
+  const unsigned long long* best;
+  const std::size_t* pos;
+  Index* P2;
+  FF_HD void operator()(std::size_t e) const {
+    P2[pos[e]] = P[e];
+    if (best[e]) P2[pos[e] + 1] = bid_point(best[e]);
+  }
+};
+// lines 12-17: the new edge of u (p -> r when u.x lies between p.x and r.x,
+// else r -> q, signs of the differences under the perturbation), kept when u
+// is beyond it, else dropped (inside the triangle p r q); inserted points go.
+// Writes the new edge id, or kDropped.
+constexpr Index kDropped = 0xffffffffu;
+struct Reassociate {
+  Orient o;
+  const Index* P;
+  std::size_t m;
+  const unsigned long long* best;
+  const std::size_t* pos;
+  const Index* P2;
+  std::size_t m2;
+  const Index* pts;
+  const Index* eid;
+  Index* eid2;
+  FF_HD void operator()(std::size_t k) const {
+    const Index u = pts[k], e = eid[k];
+    const Index r = bid_point(best[e]);
+    if (u == r) {
+      eid2[k] = kDropped;
+      return;
+    }
+    const Index p = P[e];
+    const int sp = dev::compare_sos(u, at(o.xy, u), p, at(o.xy, p), 0);
+    const int sr = dev::compare_sos(u, at(o.xy, u), r, at(o.xy, r), 0);
+    const std::size_t ne = sp * sr <= 0 ? pos[e] : pos[e] + 1;
+    const bool beyond = o(P2[ne], P2[(ne + 1) % m2], u) < 0;
+    eid2[k] = beyond ? static_cast<Index>(ne) : kDropped;
+  }
+};
+struct Kept {
+  FF_HD bool operator()(Index e) const { return e != kDropped; }
+};
+
 // `ids` as a polygon for the throw-away, checked exactly (host): consecutive
 // repeats removed; empty unless it has >= 3 vertices and turns left at every
 // vertex under the perturbation (then it is convex and counter-clockwise).
@@ -305,8 +411,8 @@ inline InnerBox inner_box(const PointSet& ps, const std::vector<Index>& poly, co
   return {};
 }
 
-inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
-                                      ref::Hull2Stats& st, const char* who);
+inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                    ref::Hull2Stats& st, const char* who, bool insert);
 
 // The throw-away's polygon. Below kSampleFrom points: the extreme points in 8
 // directions (one reduction). From kSampleFrom points (Akl–Toussaint with a
@@ -334,7 +440,7 @@ inline std::vector<Index> throw_away_polygon(const PointSet& ps, const double* x
     kernels::Hull2GpuOptions o;
     o.chunk = opt.chunk;
     ref::Hull2Stats sst;
-    std::vector<Index> cycle = graham_sort(sample, o, sst, who);
+    std::vector<Index> cycle = hull2_run(sample, o, sst, who, false);
     for (Index& v : cycle) v = static_cast<Index>(v * stride);
     std::vector<Index> poly = checked_polygon(ps, std::move(cycle));
     if (!poly.empty()) return poly;
@@ -350,24 +456,29 @@ inline std::vector<Index> throw_away_polygon(const PointSet& ps, const double* x
   return poly;
 }
 
-inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
-                                      ref::Hull2Stats& st, const char* who) {
+// The whole kernel: Graham-sorting (Algorithm 3) or, with `insert`,
+// Graham-insertion (Algorithm 4); then the same flip-pop.
+inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                    ref::Hull2Stats& st, const char* who, bool insert) {
   const std::size_t n = ps.size();
   const std::size_t chunk = std::max<std::size_t>(opt.chunk, 3);
   cpu::StageClock clock(opt.times);
   backend::Buffer<double> b_xy;
-  backend::Scratch<Index> b_surv, b_poly, b_poly2, b_label;
+  backend::Scratch<Index> b_surv, b_poly, b_poly2, b_label, b_eid, b_eid2, b_pts2;
   backend::Scratch<std::uint64_t> b_keys;
+  backend::Scratch<unsigned long long> b_best;
   backend::Scratch<char> b_above;
-  backend::Scratch<std::size_t> b_kept;
+  backend::Scratch<std::size_t> b_kept, b_pos;
   const double* xy = nullptr;
   try {
     xy = backend::to_device(ps.coords.data(), ps.coords.size(), b_xy);
     b_surv.resize(n), b_poly.resize(n), b_poly2.resize(n), b_keys.resize(n), b_above.resize(n);
     b_label.resize(n), b_kept.resize(n / chunk + 1);
+    if (insert) b_eid.resize(n), b_eid2.resize(n), b_pts2.resize(n), b_best.resize(n), b_pos.resize(n + 1);
   } catch (const std::bad_alloc&) {
     throw kernels::DeviceMemoryError(std::string(who) + ": " + std::to_string(n) +
-                                     " points do not fit in device memory (about 50 bytes per point)");
+                                     " points do not fit in device memory (about " +
+                                     std::string(insert ? "90" : "50") + " bytes per point)");
   }
   backend::sync();
   clock.mark("upload");
@@ -401,41 +512,102 @@ inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2Gp
   backend::sync();
   clock.mark("throw-away");
 
-  // 2. sort by x under the perturbation: equal x in the SoS order of indices
-  // (one rule for every pair, read off compare_sos once)
-  const double probe[2] = {0.0, 0.0};
-  const bool larger_index_first = pred::compare_sos({1, probe}, {0, probe}, 0) < 0;
-  std::uint64_t* keys = thrust::raw_pointer_cast(b_keys.data());
-  step(s, [&](auto policy) {
-    if (larger_index_first) thrust::reverse(policy, surv, surv + s);
-    thrust::transform(policy, surv, surv + s, keys, XKey{xy});
-    thrust::stable_sort_by_key(policy, keys, keys + s, surv);
-  });
-  backend::sync();
-  clock.mark("sort by x");
-
-  // 3. split; P = <v_l, S_b ascending, v_r, S_a descending>
-  const Index vl = b_surv[0], vr = b_surv[s - 1];
-  char* above = thrust::raw_pointer_cast(b_above.data());
+  // 2-3 (Algorithm 3) or Algorithm 4: the polygon P[0, m), P[0] = v_l
   Index* P = thrust::raw_pointer_cast(b_poly.data());
   Index* P2 = thrust::raw_pointer_cast(b_poly2.data());
-  std::size_t nb = 0, na = 0;
-  step(s, [&](auto policy) {
-    thrust::transform(policy, surv + 1, surv + s - 1, above + 1, Above{o, vl, vr});
-    nb = static_cast<std::size_t>(thrust::copy_if(policy, surv + 1, surv + s - 1, above + 1, P + 1, IsClear()) -
-                                  (P + 1));
-    using RevIdx = thrust::reverse_iterator<Index*>;
-    using RevChar = thrust::reverse_iterator<char*>;
-    na = static_cast<std::size_t>(thrust::copy_if(policy, RevIdx(surv + s - 1), RevIdx(surv + 1),
-                                                  RevChar(above + s - 1), P + 2 + nb, IsSet()) -
-                                  (P + 2 + nb));
-  });
-  b_poly[0] = vl;
-  b_poly[1 + nb] = vr;
-  std::size_t m = s;
-  if (nb + na + 2 != s) throw std::logic_error(std::string(who) + ": the split lost points");
-  backend::sync();
-  clock.mark("split");
+  Index vl = 0, vr = 0;
+  std::size_t m = 0;
+  const std::size_t polygon_from = s;  // the points the polygon is built from
+  std::size_t dropped_by_insertion = 0;
+  if (!insert) {
+    // 2. sort by x under the perturbation: equal x in the SoS order of indices
+    // (one rule for every pair, read off compare_sos once)
+    const double probe[2] = {0.0, 0.0};
+    const bool larger_index_first = pred::compare_sos({1, probe}, {0, probe}, 0) < 0;
+    std::uint64_t* keys = thrust::raw_pointer_cast(b_keys.data());
+    step(s, [&](auto policy) {
+      if (larger_index_first) thrust::reverse(policy, surv, surv + s);
+      thrust::transform(policy, surv, surv + s, keys, XKey{xy});
+      thrust::stable_sort_by_key(policy, keys, keys + s, surv);
+    });
+    backend::sync();
+    clock.mark("sort by x");
+
+    // 3. split; P = <v_l, S_b ascending, v_r, S_a descending>
+    vl = b_surv[0], vr = b_surv[s - 1];
+    char* above = thrust::raw_pointer_cast(b_above.data());
+    std::size_t nb = 0, na = 0;
+    step(s, [&](auto policy) {
+      thrust::transform(policy, surv + 1, surv + s - 1, above + 1, Above{o, vl, vr});
+      nb = static_cast<std::size_t>(thrust::copy_if(policy, surv + 1, surv + s - 1, above + 1, P + 1, IsClear()) -
+                                    (P + 1));
+      using RevIdx = thrust::reverse_iterator<Index*>;
+      using RevChar = thrust::reverse_iterator<char*>;
+      na = static_cast<std::size_t>(thrust::copy_if(policy, RevIdx(surv + s - 1), RevIdx(surv + 1),
+                                                    RevChar(above + s - 1), P + 2 + nb, IsSet()) -
+                                    (P + 2 + nb));
+    });
+    b_poly[0] = vl;
+    b_poly[1 + nb] = vr;
+    m = s;
+    if (nb + na + 2 != s) throw std::logic_error(std::string(who) + ": the split lost points");
+    backend::sync();
+    clock.mark("split");
+  } else {
+    // Algorithm 4 lines 1-18 on the survivors, then line 19 below
+    Index* pts = surv;
+    Index* pts2 = thrust::raw_pointer_cast(b_pts2.data());
+    Index* eid = thrust::raw_pointer_cast(b_eid.data());
+    Index* eid2 = thrust::raw_pointer_cast(b_eid2.data());
+    unsigned long long* best = thrust::raw_pointer_cast(b_best.data());
+    std::size_t* pos = thrust::raw_pointer_cast(b_pos.data());
+    XRange ends{};
+    step(s, [&](auto policy) {  // line 1
+      ends = thrust::transform_reduce(policy, surv, surv + s, XRangeOf(), XRangeOf()(b_surv[0]), WiderX{xy});
+    });
+    vl = ends.lo, vr = ends.hi;
+    std::size_t live = 0;
+    step(s, [&](auto policy) {  // lines 2-6
+      live = static_cast<std::size_t>(thrust::copy_if(policy, surv, surv + s, pts2, NotEnd{vl, vr}) - pts2);
+      thrust::transform(policy, pts2, pts2 + live, eid, FirstEdge{o, vl, vr});
+    });
+    std::swap(pts, pts2);
+    b_poly[0] = vl;
+    b_poly[1] = vr;
+    m = 2;
+    std::size_t insertions = 0, dropped = 0, ins_rounds = 0;
+    while (live > 0) {  // lines 7-18
+      std::size_t m2 = 0;
+      step(std::max(live, m), [&](auto policy) {
+        thrust::fill(policy, best, best + m + 1, 0ull);  // m + 1 <= s - live < n
+        thrust::for_each(policy, k0, k0 + live, Bid{xy, P, m, pts, eid, best});  // lines 8-9
+        thrust::transform_exclusive_scan(policy, best, best + m + 1, pos, SlotsOf(), std::size_t{0},
+                                         thrust::plus<std::size_t>());
+      });
+      m2 = b_pos[m];
+      std::size_t left = 0;
+      step(std::max(live, m), [&](auto policy) {
+        thrust::for_each(policy, k0, k0 + m, Splice{P, best, pos, P2});  // line 10
+        thrust::for_each(policy, k0, k0 + live, Reassociate{o, P, m, best, pos, P2, m2, pts, eid, eid2});
+        auto in = thrust::make_zip_iterator(thrust::make_tuple(pts, eid2));
+        auto out = thrust::make_zip_iterator(thrust::make_tuple(pts2, eid));
+        left = static_cast<std::size_t>(thrust::copy_if(policy, in, in + live, eid2, out, Kept()) - out);
+      });
+      insertions += m2 - m;
+      dropped += live - left - (m2 - m);
+      live = left;
+      std::swap(pts, pts2);
+      std::swap(P, P2);
+      m = m2;
+      ++ins_rounds;
+    }
+    st.insertions = insertions;
+    st.insertion_rounds = ins_rounds;
+    backend::sync();
+    clock.mark("insertion rounds");
+    dropped_by_insertion = dropped;
+  }
+  const std::size_t polygon_size = m;
 
   // 4. flip-pop rounds
   std::size_t* kept = thrust::raw_pointer_cast(b_kept.data());
@@ -473,9 +645,9 @@ inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2Gp
                cycle.begin());
   clock.mark("download");
   st.input_vertices = n;
-  st.discarded_early = n - s;
-  st.polygon_vertices = s;
-  st.flips_2_1 = s - m;
+  st.discarded_early = n - polygon_from + dropped_by_insertion;
+  st.polygon_vertices = polygon_size;
+  st.flips_2_1 = polygon_size - m;
   st.rounds = passes;
   st.hull_vertices = m;
   return cycle;
@@ -483,18 +655,20 @@ inline std::vector<Index> graham_sort(const PointSet& ps, const kernels::Hull2Gp
 
 }  // namespace hull2_detail
 
-std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
-                                     ref::Hull2Stats* stats) {
-  constexpr const char* who = "hull2 graham-sort";  // the reference's name (its messages)
+namespace hull2_detail {
+
+inline std::vector<Index> run(const PointSet& ps, const kernels::Hull2GpuOptions& opt, ref::Hull2Stats* stats,
+                              bool insert) {
+  // the reference's names of the algorithms (its messages)
+  const char* who = insert ? "hull2 graham-insert" : "hull2 graham-sort";
   if (ps.dim != 2 || ps.size() < 3) {
     ref::require_planar_input(ps, who);  // throws the reference's message
     throw std::invalid_argument(std::string(who) + ": at least 3 points in 2D are needed");
   }
-  if (ps.size() >= hull2_detail::kNoLabel / 2)
-    throw std::invalid_argument(std::string(who) + ": too many points for 32-bit indices");
+  if (ps.size() >= kNoLabel / 2) throw std::invalid_argument(std::string(who) + ": too many points for 32-bit indices");
   backend::require_device(who);
   ref::Hull2Stats st;
-  std::vector<Index> cycle = hull2_detail::graham_sort(ps, opt, st, who);
+  std::vector<Index> cycle = hull2_run(ps, opt, st, who, insert);
   // the cycle holds every extreme point of the input: collinear iff the input
   // is (the throw-away's SoS test drops points of collinear input too)
   if (!ref::cycle_spans_plane(ps, cycle)) {
@@ -503,6 +677,18 @@ std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2Gpu
   }
   if (stats) *stats = st;
   return ref::rotate_to_smallest(std::move(cycle));
+}
+
+}  // namespace hull2_detail
+
+std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                     ref::Hull2Stats* stats) {
+  return hull2_detail::run(ps, opt, stats, false);
+}
+
+std::vector<Index> hull2_graham_insert(const PointSet& ps, const kernels::Hull2GpuOptions& opt,
+                                       ref::Hull2Stats* stats) {
+  return hull2_detail::run(ps, opt, stats, true);
 }
 
 }  // namespace flipflop::FF_KERNELS_NS

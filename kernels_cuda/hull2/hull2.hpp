@@ -1,5 +1,6 @@
 // hull2.hpp — the GPU 2D convex hull: parallel Graham's scan ("Graham-
-// sorting", thesis §4.2 Algorithm 3) with parallel flip-pop (§4.1 Algorithm 2)
+// sorting", thesis §4.2 Algorithm 3, or "Graham-insertion", §4.3 Algorithm 4)
+// with parallel flip-pop (§4.1 Algorithm 2)
 // and the chunked local flipping of §4.2 (the shared-memory variant), written
 // once as thrust steps over __host__ __device__ functors (hull2.cuh):
 //
@@ -44,10 +45,17 @@ namespace flipflop::kernels_omp {
 // chunked and labelled passes), hull_vertices.
 std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt = {},
                                      ref::Hull2Stats* stats = nullptr);
+// The same hull by Graham-insertion (Algorithm 4) on the throw-away's
+// survivors; stats as above, plus insertions, insertion_rounds, and the points
+// dropped by the insertion rounds counted in discarded_early.
+std::vector<Index> hull2_graham_insert(const PointSet& ps, const kernels::Hull2GpuOptions& opt = {},
+                                       ref::Hull2Stats* stats = nullptr);
 }  // namespace flipflop::kernels_omp
 
 namespace flipflop::kernels_cuda {
 int device_count();
 std::vector<Index> hull2_graham_sort(const PointSet& ps, const kernels::Hull2GpuOptions& opt = {},
                                      ref::Hull2Stats* stats = nullptr);
+std::vector<Index> hull2_graham_insert(const PointSet& ps, const kernels::Hull2GpuOptions& opt = {},
+                                       ref::Hull2Stats* stats = nullptr);
 }  // namespace flipflop::kernels_cuda
