@@ -19,6 +19,8 @@
 //          parallel sort and output), flipflop:reference:ffrt and :lawson;
 //          cgal:delaunay_triangulation_2 (range insertion, spatially sorted),
 //          qhull (libqhull_r, d Qbb Qt)
+//          (dt2 and rt2: flipflop:cuda-omp, flipflop:cuda[:no-transfers],
+//          the GPU ffRT of kernels_cuda/rt2, as for hull2)
 //   rt2    flipflop:cpu, flipflop:reference:ffrt;
 //          cgal:regular_triangulation_2 (range insertion, spatially sorted)
 //
@@ -244,21 +246,18 @@ int bench_peers(const Args& a) {
     rows.push_back({"cgal:convex_hull_3", peers::cgal_hull3});
     return compare_peers<Tris>(a, pts, rows, "triangles");
   }
+  std::vector<Peer<Tris>> rows = {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }}};
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  add_gpu_rows(rows, [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::rt2_gpu(b, pts, nullptr, t); });
+#endif
+  rows.push_back({"flipflop:reference:ffrt", [](const PointSet& p) { return ref::rt2_ffrt(p); }});
   if (a.experiment == "dt2")
-    return compare_peers<Tris>(
-        a, pts,
-        {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }},
-         {"flipflop:reference:ffrt", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
-         {"flipflop:reference:lawson", [](const PointSet& p) { return ref::dt2_lawson(p); }},
-         {"cgal:delaunay_triangulation_2", peers::cgal_delaunay2},
-         {"qhull", peers::qhull_delaunay2}},
-        "triangles");
-  return compare_peers<Tris>(
-      a, pts,
-      {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }},
-       {"flipflop:reference:ffrt", [](const PointSet& p) { return ref::rt2_ffrt(p); }},
-       {"cgal:regular_triangulation_2", peers::cgal_regular2}},
-      "triangles");
+    rows.insert(rows.end(), {{"flipflop:reference:lawson", [](const PointSet& p) { return ref::dt2_lawson(p); }},
+                             {"cgal:delaunay_triangulation_2", peers::cgal_delaunay2},
+                             {"qhull", peers::qhull_delaunay2}});
+  else
+    rows.push_back({"cgal:regular_triangulation_2", peers::cgal_regular2});
+  return compare_peers<Tris>(a, pts, rows, "triangles");
 }
 
 }  // namespace flipflop::bench::detail

@@ -97,6 +97,7 @@ namespace {
 std::vector<std::string> gpu_algorithms(const std::string& kind) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
   if (kind == "hull2") return {"graham-sort", "graham-insert"};
+  if (kind == "rt2" || kind == "dt2") return {"ffrt"};
 #else
   (void)kind;
 #endif
@@ -263,6 +264,15 @@ int run_compute(const ComputeArgs& a) {
     counts = "2-1 flips " + std::to_string(st.flips_2_1) + ", flip-pop passes " + std::to_string(st.rounds) +
              ", points discarded early " + std::to_string(st.discarded_early) + ", insertions " +
              std::to_string(st.insertions) + ", twists " + std::to_string(st.twists);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  } else if ((a.kind == "rt2" || a.kind == "dt2") && is_gpu(backend)) {
+    // kernels_cuda/rt2: ffRT's insertion rounds and parallel flip-flop rounds
+    ref::Rt2Stats st;
+    tris = kernels::rt2_gpu(backend, ps, &st);
+    counts = "1-3 flips " + std::to_string(st.flips_1_3) + ", 2-2 flips " + std::to_string(st.flips_2_2) +
+             ", 3-1 flips " + std::to_string(st.flips_3_1) + ", discarded early " + std::to_string(st.discarded_early) +
+             ", insertion rounds " + std::to_string(st.rounds);
+#endif
   } else if ((a.kind == "rt2" || a.kind == "dt2") && backend == "cpu") {
     // kernels_cpu/rt2: BRIO order, incremental flipping, byte-identical to
     // the reference

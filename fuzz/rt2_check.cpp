@@ -12,7 +12,10 @@
 //   * otherwise rt2_ffrt with FlipFlopVariant::combined and ::v_first return
 //     the same canonical triangles, equal to brute::rt2 (the definition, for
 //     n <= 20), accepted by certify::rt2 at Level::canonical and Level::exact;
-//   * the cpu backend (same settings) returns the same triangles;
+//   * the cpu backend (same settings) returns the same triangles, and so does
+//     the GPU ffRT built against thrust's OpenMP backend (kernels_omp, when
+//     built: FLIPFLOP_HAVE_KERNELS_OMP), which also rejects what does not span
+//     the plane;
 //   * unweighted input (or all weights 0): dt2_lawson returns the same;
 //   * flip_flop (both variants) started from the answer returns it, and
 //     started from the Delaunay triangulation of the same points without
@@ -30,6 +33,9 @@
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+#include "kernels_cuda/rt2/rt2.hpp"
+#endif
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -109,6 +115,9 @@ bool check_rt2_input(const std::uint8_t* data, std::size_t size) {
     if (zero_weights) must_throw<std::invalid_argument>("dt2_lawson", ps, [&] { return ref::dt2_lawson(ps); });
     for (const cpu::Rt2Options& o : cpu_settings())
       must_throw<std::invalid_argument>("cpu::rt2", ps, [&] { return cpu::rt2(ps, o); });
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+    must_throw<std::invalid_argument>("kernels_omp::rt2_ffrt", ps, [&] { return kernels_omp::rt2_ffrt(ps); });
+#endif
     return true;
   }
 
@@ -121,6 +130,10 @@ bool check_rt2_input(const std::uint8_t* data, std::size_t size) {
   for (const cpu::Rt2Options& o : cpu_settings())
     expect_same("cpu::rt2 (" + std::to_string(o.threads) + " threads, brio_min " + std::to_string(o.brio_min) + ")", ps,
                 must_return("cpu::rt2", ps, [&] { return cpu::rt2(ps, o); }), answer);
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  expect_same("kernels_omp::rt2_ffrt", ps, must_return("kernels_omp::rt2_ffrt", ps, [&] { return kernels_omp::rt2_ffrt(ps); }),
+              answer);
+#endif
   for (auto level : {certify::Level::canonical, certify::Level::exact}) {
     const certify::Report rep = certify::rt2(ps, answer, level);
     if (!rep.ok)

@@ -58,4 +58,17 @@ std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, con
       });
 }
 
+std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats,
+                              cpu::StageTimes* times) {
+  return dispatch(
+      backend, [&] { return kernels_omp::rt2_ffrt(ps, stats, times); },
+      [&] {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+        return kernels_cuda::rt2_ffrt(ps, stats, times);
+#else
+        return std::vector<Triangle>{};
+#endif
+      });
+}
+
 }  // namespace flipflop::kernels

@@ -38,6 +38,15 @@
 #else
 #define FF_HD
 #endif
+// FF_DEVICE_NOINLINE: a function the device calls rather than inlines (the
+// exact stage of the predicates: rarely reached, large; inlined into every
+// kernel that calls a predicate it multiplies ptxas' work and the kernels'
+// code). Host code is unaffected.
+#if defined(__CUDA_ARCH__)
+#define FF_DEVICE_NOINLINE __noinline__
+#else
+#define FF_DEVICE_NOINLINE
+#endif
 
 namespace flipflop::pred {
 

@@ -56,9 +56,10 @@ FF_HD inline bool repeated_id(int k, const Id* ids) {
 }
 
 // Stages 4-5: exact sign (sos = false, may be 0) or SoS sign of det Λ with the
-// rows in the given order (the rows are sorted by id internally).
+// rows in the given order (the rows are sorted by id internally). Called, not
+// inlined, on the device (FF_DEVICE_NOINLINE).
 template <int K, class Id>
-FF_HD inline int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
+FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
                                      bool sos) {
   int order[K];
   const int parity = sort_rows_by_id(K, sos ? ids : static_cast<const Id*>(nullptr), order);

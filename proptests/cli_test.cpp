@@ -522,9 +522,13 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes; --backend cuda 
   std::string grid, random;  // a lattice (collinear hull points) and scattered points
   for (int x = 0; x < 60; ++x)
     for (int y = 0; y < 60; ++y) grid += std::to_string(x) + " " + std::to_string(y) + "\n";
+  std::string weighted;  // integer points with weights of three sizes (some points redundant)
   std::srand(7);
   for (int i = 0; i < 5000; ++i)
     random += std::to_string(std::rand() % 100000) + " " + std::to_string(std::rand() % 100000) + "\n";
+  for (int i = 0; i < 3000; ++i)
+    weighted += std::to_string(std::rand() % 1000) + " " + std::to_string(std::rand() % 1000) + " " +
+                std::to_string(std::rand() % 3 * 50) + "\n";
   struct Job {
     const char* kind;
     fs::path in;
@@ -532,7 +536,9 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes; --backend cuda 
   };
   const std::vector<Job> jobs = {
       {"hull2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo twist", "--backend cuda-omp --threads 2"}},
-      {"hull2", t.file("random.xyz", random), {}}};
+      {"hull2", t.file("random.xyz", random), {}},
+      {"dt2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo lawson", "--backend cuda --algo incremental"}},
+      {"rt2", t.file("weighted.xyz", weighted), {"--backend cuda-omp --threads 2"}}};
   for (const Job& j : jobs) {
     const fs::path expect = t.dir / "expect.txt", got = t.dir / "got.txt";
     REQUIRE(run(t, std::string(j.kind) + " " + j.in.string() + " --backend reference -o " + expect.string()).code == 0);

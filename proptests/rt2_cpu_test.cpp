@@ -18,7 +18,6 @@
 #include <rapidcheck/catch.h>
 
 #include <iostream>
-#include <set>
 #include <string>
 
 #include "gen/generate.hpp"
@@ -26,6 +25,7 @@
 #include "peers/peers.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/outcome.hpp"
+#include "proptests/support/rt2_outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -39,28 +39,15 @@ constexpr int kThreads[] = {1, 2, 8};
 
 using test::is_error;
 using test::outcome;
-
-// The rejection message without its "error: WHO: " prefix (the reference
-// names itself "rt2 (ffRT)", the kernel "rt2 (cpu)"; the problem must agree).
-std::string problem_of(const std::string& text) {
-  if (!is_error(text)) return text;
-  const std::size_t colon = text.find(": ", 7);
-  return colon == std::string::npos ? text : "error: " + text.substr(colon + 2);
-}
+using test::problem_of;
+using test::ref_text;
+using test::vertex_count;
 
 std::string cpu_text(const PointSet& ps, int threads, std::size_t brio_min = 256, ref::Rt2Stats* st = nullptr) {
   cpu::Rt2Options o;
   o.threads = threads;
   o.brio_min = brio_min;
   return problem_of(outcome([&] { return cpu::rt2(ps, o, st); }));
-}
-
-std::string ref_text(const PointSet& ps) { return problem_of(outcome([&] { return ref::rt2_ffrt(ps); })); }
-
-std::size_t vertex_count(const std::vector<Triangle>& tris) {
-  std::set<Index> v;
-  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
-  return v.size();
 }
 
 // cpu == reference at every thread count and two BRIO settings (one round;
@@ -120,15 +107,7 @@ TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and th
     for (std::size_t n : {3, 4, 9, 40, 300, 3000})
       for (std::uint64_t seed = 1; seed <= 2; ++seed)
         for (bool weighted : {false, true}) {
-          gen::Options o;
-          o.seed = seed;
-          PointSet ps = gen::generate(fam, n, o);
-          if (weighted) {
-            o.weighted = true;
-            o.wlo = 0;
-            o.whi = 1e-3 * test::squared_extent(ps);
-            ps = gen::generate(fam, n, o);
-          }
+          const PointSet ps = test::family_input(fam, n, seed, weighted, 1e-3);
           INFO(fam << " n=" << n << " seed=" << seed << (weighted ? " weighted" : ""));
           const std::string expect = check(ps, [](bool ok, int t, std::size_t brio) {
             INFO("threads " << t << ", brio_min " << brio);

@@ -158,21 +158,28 @@ inline std::vector<std::string> families(int dim) {
 // (family, n, seed) -> gen::generate. Weighted: weights uniform in
 // [0, f · extent^2] with f in {0, 1e-6, 1e-3, 0.1} (all zero, few, some, many
 // redundant points), drawn by gen::generate from its second engine.
+// The deterministic form: family `fam`, n points, `seed`; when weighted,
+// weights uniform in [0, f · extent^2].
+inline PointSet family_input(const std::string& fam, std::size_t n, std::uint64_t seed, bool weighted, double f) {
+  gen::Options o;
+  o.seed = seed;
+  PointSet ps = gen::generate(fam, n, o);
+  if (weighted) {
+    o.weighted = true;
+    o.wlo = 0;
+    o.whi = f * squared_extent(ps);
+    ps = gen::generate(fam, n, o);
+  }
+  return ps;
+}
+
 inline rc::Gen<PointSet> family_points(const std::vector<std::string>& fams, int nmin, int nmax, bool weighted) {
   return rc::gen::exec([=] {
     const std::string fam = *rc::gen::elementOf(fams);
     const int n = *point_count(nmin, nmax);
-    gen::Options o;
-    o.seed = *any_seed();
-    PointSet ps = gen::generate(fam, static_cast<std::size_t>(n), o);
-    if (weighted) {
-      const double f = *rc::gen::element(0.0, 1e-6, 1e-3, 0.1);
-      o.weighted = true;
-      o.wlo = 0;
-      o.whi = f * squared_extent(ps);
-      ps = gen::generate(fam, static_cast<std::size_t>(n), o);
-    }
-    return ps;
+    const std::uint64_t seed = *any_seed();
+    const double f = weighted ? *rc::gen::element(0.0, 1e-6, 1e-3, 0.1) : 0.0;
+    return family_input(fam, static_cast<std::size_t>(n), seed, weighted, f);
   });
 }
 inline rc::Gen<PointSet> family_points(int dim, int nmin, int nmax, bool weighted) {
