@@ -25,6 +25,7 @@
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/hull3_expect.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -46,9 +47,7 @@ std::string cpu_text(const PointSet& ps, int threads, ref::Hull3Stats* st = null
   return outcome([&] { return cpu::hull3_ffhull(ps, o, st); });
 }
 
-std::string ref_text(const PointSet& ps) {
-  return outcome([&] { return ref::hull3_ffhull(ps); });
-}
+std::string ref_text(const PointSet& ps) { return test::hull3_reference_text(ps); }
 
 // cpu == reference at every thread count; counts consistent (every point is
 // inserted, discarded early or one of the initial four). Returns the text.
@@ -89,24 +88,16 @@ TEST_CASE("hull3 cpu: every generator family up to 3000 points equals the refere
 
 TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu]") {
   std::size_t cases = 0, rejected = 0;
-  for (const std::string& fam : test::families(3))
-    for (std::size_t n : {4, 7, 30, 200, 2000, 20000})
-      for (std::uint64_t seed = 1; seed <= 2; ++seed) {
-        gen::Options o;
-        o.seed = seed;
-        const PointSet ps = gen::generate(fam, n, o);
-        INFO(fam << " n=" << n << " seed=" << seed);
-        const std::string expect = ref_text(ps);
-        if (is_error(expect)) {
-          ++rejected;
-          REQUIRE(!dimension_problem(ps).empty());
-        }
-        for (int t : kThreads) {
-          INFO("threads " << t);
-          REQUIRE(cpu_text(ps, t) == expect);
-          ++cases;
-        }
-      }
+  test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
+                              [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
+                                INFO(fam << " n=" << n << " seed=" << seed);
+                                const std::string expect = test::hull3_sweep_expect(ps, rejected);
+                                for (int t : kThreads) {
+                                  INFO("threads " << t);
+                                  REQUIRE(cpu_text(ps, t) == expect);
+                                  ++cases;
+                                }
+                              });
   std::cout << "hull3 cpu sweep: " << cases << " runs identical to the reference (" << rejected
             << " inputs rejected as flat by both)\n";
   REQUIRE(cases >= 13 * 6 * 2 * 3);
