@@ -79,6 +79,8 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
@@ -101,8 +103,9 @@ constexpr uint32_t kNone = ~uint32_t{0};
 // OpenMP build: below this many items a step runs on one thread (backend.cuh).
 constexpr std::size_t kParallelFrom = std::size_t{1} << 12;
 
-template <class T>
-T* raw(backend::Buffer<T>& b) {
+// The raw pointer to a buffer's elements (std::vector or device_vector).
+template <class V>
+auto raw(V& b) {
   return thrust::raw_pointer_cast(b.data());
 }
 
@@ -149,12 +152,20 @@ struct Geo {
 
   FF_HD const double* P(Index i) const { return xyz + 3 * static_cast<std::size_t>(i); }
   // orient3d(a, b, c, d) under SoS: > 0 when d is on the inner side of
-  // (a, b, c) counter-clockwise seen from outside (predicates.hpp)
+  // (a, b, c) counter-clockwise seen from outside (predicates.hpp). The
+  // per-input static filter inline first (the first stage of the staged
+  // predicate, which decides nearly every call), then the whole staged path.
   FF_HD int orient(Index a, Index b, Index c, Index d) const {
-    return dev::orient3d(&filter, a, P(a), b, P(b), c, P(c), d, P(d));
+    const double* p[4] = {P(a), P(b), P(c), P(d)};
+    if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
+    return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], d, p[3]);
   }
   // KernelPoint::side(a, b, c) = orient3d(a, b, c, s) (kernel_point.hpp)
-  FF_HD int side(Index a, Index b, Index c) const { return dev::orient3d(&filter, a, P(a), b, P(b), c, P(c), n, s); }
+  FF_HD int side(Index a, Index b, Index c) const {
+    const double* p[4] = {P(a), P(b), P(c), s};
+    if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
+    return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], n, s);
+  }
   // p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
   FF_HD bool in_cone(Index a, Index b, Index c, Index p) const {
     const int o = side(a, b, c);
@@ -762,45 +773,80 @@ static_assert(sizeof(Tri) == sizeof(Triangle), "Tri and Triangle must be three p
 
 // ---- the whole computation ------------------------------------------------------
 
+// The buffers of the steps: allocated once and not initialised (every step
+// writes before it reads; the few with initial values are filled in
+// parallel), so that in the OpenMP build the unused tail of a buffer sized
+// for the worst case is never touched; on the device a plain device_vector.
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+template <class T>
+struct DefaultInit : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInit<U>;
+  };
+  DefaultInit() = default;
+  template <class U>
+  DefaultInit(const DefaultInit<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+template <class T>
+using Scratch = std::vector<T, DefaultInit<T>>;
+#else
+template <class T>
+using Scratch = thrust::device_vector<T>;
+#endif
+
 // Every buffer of the computation, sized from n once (§6.4.1 grows its arrays;
-// here the bound 2n - 4 on the triangle slots is allocated up front).
+// here the bounds are allocated up front): at most max_tri = 2n - 4 triangle
+// slots (every insertion adds two), at most n - 4 triangles split in a round
+// (each has a point), at most 3 max_tri / 2 edges.
 struct Buffers {
   backend::Buffer<double> coords;
   // points under construction
-  backend::Buffer<Index> pid;
-  backend::Buffer<uint32_t> ptri;
-  backend::Buffer<double> pkey;
-  backend::Buffer<uint8_t> drop;
+  Scratch<Index> pid;
+  Scratch<uint32_t> ptri;
+  Scratch<double> pkey;
+  Scratch<uint8_t> drop;
   // the surface: 3 entries per slot
-  backend::Buffer<Index> tv;
-  backend::Buffer<uint32_t> tn;
-  backend::Buffer<uint8_t> alive;
-  // construction rounds, per split triangle
-  backend::Buffer<uint32_t> seg_tri, rank;
-  backend::Buffer<Best> far;
-  backend::Buffer<Index> old_v;
-  backend::Buffer<uint32_t> old_nb;
-  backend::Buffer<uint8_t> old_pos;
+  Scratch<Index> tv;
+  Scratch<uint32_t> tn;
+  Scratch<uint8_t> alive;
+  // construction rounds: per slot its rank in the round; per split triangle
+  Scratch<uint32_t> rank, seg_tri;
+  Scratch<Best> far;
+  Scratch<Index> old_v;
+  Scratch<uint32_t> old_nb;
+  Scratch<uint8_t> old_pos;
   // flip-flop: per slot, per vertex, per candidate edge
-  backend::Buffer<uint32_t> claim, partner, stamp_t;
-  backend::Buffer<uint32_t> deg, labelled, stamp_v;
-  backend::Buffer<uint32_t> cand, ops, op_tri;
-  backend::Buffer<uint8_t> action, won;
-  backend::Buffer<Index> inner;
+  Scratch<uint32_t> claim, partner, stamp_t;
+  Scratch<uint32_t> deg, labelled, stamp_v;
+  Scratch<uint32_t> cand, ops, op_tri;
+  Scratch<uint8_t> action, won;
+  Scratch<Index> inner;
 
-  Buffers(const PointSet& ps, std::size_t max_tri) {
-    const std::size_t n = ps.size();
+  Buffers(std::size_t n, std::size_t max_tri) {
     pid.resize(n), ptri.resize(n), pkey.resize(n), drop.resize(n);
     tv.resize(3 * max_tri), tn.resize(3 * max_tri), alive.resize(max_tri);
-    seg_tri.resize(max_tri), rank.resize(max_tri, kNone), far.resize(max_tri);
-    old_v.resize(3 * max_tri), old_nb.resize(3 * max_tri), old_pos.resize(3 * max_tri);
-    claim.resize(max_tri, kNone), partner.resize(max_tri), stamp_t.resize(max_tri, 0);
-    deg.resize(n, 0), labelled.resize(n, 0), stamp_v.resize(n, 0);
-    // candidates: one directed half per edge, at most 3 max_tri / 2 edges;
-    // ops also lists the live slots at the output
+    rank.resize(max_tri), seg_tri.resize(n), far.resize(n);
+    old_v.resize(3 * n), old_nb.resize(3 * n), old_pos.resize(3 * n);
+    claim.resize(max_tri), partner.resize(max_tri), stamp_t.resize(max_tri);
+    deg.resize(n), labelled.resize(n), stamp_v.resize(n);
+    // candidates: one directed half per edge; ops also lists the live slots
+    // at the output
     const std::size_t max_edges = 3 * max_tri / 2;
-    cand.resize(max_edges), ops.resize(max_tri > max_edges ? max_tri : max_edges), op_tri.resize(3 * max_edges);
+    cand.resize(max_edges), ops.resize(max_edges), op_tri.resize(3 * max_edges);
     action.resize(max_edges), won.resize(max_edges), inner.resize(max_edges);
+    fill_n(raw(rank), max_tri, kNone);
+    fill_n(raw(deg), n, uint32_t{0});
+    fill_n(raw(labelled), n, uint32_t{0});
+    fill_n(raw(stamp_v), n, uint32_t{0});
   }
 };
 
@@ -873,6 +919,8 @@ class Hull3 {
   void flip_flop() {
     const std::size_t T = T_;
     fill_n(raw(B_.alive), T, uint8_t{1});
+    fill_n(raw(B_.claim), T, kNone);
+    fill_n(raw(B_.stamp_t), T, uint32_t{0});
     for_n(3 * T, CountDegree{raw(B_.tv), raw(B_.deg)});  // line 1: labels are all 0 ("unknown")
     Index* tv = raw(B_.tv);
     uint32_t* tn = raw(B_.tn);
@@ -993,7 +1041,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
   if (n >= (std::size_t{1} << 29))
     throw std::invalid_argument("hull3 (kernels): too many points for 32-bit triangle and edge ids");
   const std::size_t max_tri = 2 * n;
-  Buffers B(ps, max_tri);
+  Buffers B(n, max_tri);
   const double* xyz = backend::to_device(ps.coords.data(), ps.coords.size(), B.coords);
   clock.mark("upload");
   const std::array<Index, 4> tet = initial_tetrahedron(ps, xyz);
