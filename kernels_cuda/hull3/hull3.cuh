@@ -76,6 +76,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -1032,6 +1033,18 @@ std::array<Index, 4> initial_tetrahedron(const PointSet& ps, const double* xyz) 
   return {a, b, c, d};
 }
 
+// Runs f, turning a failed allocation of device memory (std::bad_alloc, from
+// which thrust's bad_alloc derives: the buffers, or the temporary storage of
+// a sort or reduction) into the kernels' DeviceMemoryError.
+template <class F>
+auto on_device(std::size_t n, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    throw kernels::DeviceMemoryError("hull3: " + std::to_string(n) + " points do not fit in device memory");
+  }
+}
+
 std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::StageClock& clock) {
   const std::size_t n = ps.size();
   if (ps.dim != 3 || n < 4) {
@@ -1040,35 +1053,40 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
   }
   if (n >= (std::size_t{1} << 29))
     throw std::invalid_argument("hull3 (kernels): too many points for 32-bit triangle and edge ids");
-  const std::size_t max_tri = 2 * n;
-  Buffers B(n, max_tri);
-  const double* xyz = backend::to_device(ps.coords.data(), ps.coords.size(), B.coords);
+  std::unique_ptr<Buffers> B;
+  const double* xyz = on_device(n, [&] {
+    B = std::make_unique<Buffers>(n, 2 * n);
+    return backend::to_device(ps.coords.data(), ps.coords.size(), B->coords);
+  });
   clock.mark("upload");
-  const std::array<Index, 4> tet = initial_tetrahedron(ps, xyz);
+  const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(ps, xyz); });  // line 1
   // line 4: the rounded centroid, when strictly inside the tetrahedron exactly
   std::array<double, 3> s{};
   if (!cpu::rounded_centroid(ps, tet, s)) {
     // §6.4.2: the exact centroid's predicates (GMP) run on the host only, so
     // does this rare case: the exact reference, whose answer is the one
+    B.reset();
     clock.mark("tetrahedron");
     std::vector<Triangle> out = ref::hull3_ffhull(ps, &st);
     clock.mark("reference (exact kernel point, host)");
     return out;
   }
-  Hull3 h(ps, xyz, tet, s, B, st);
-  clock.mark("tetrahedron");
-  h.construct();
-  clock.mark("construction");
-  h.flip_flop();
-  clock.mark("flip-flop");
-  backend::Buffer<Tri> tris;
-  const std::size_t F = h.output(tris);
-  clock.mark("output");
-  const std::vector<Tri> host = backend::to_host(tris, F);
-  std::vector<Triangle> out(F);
-  if (F) std::memcpy(out.data(), host.data(), F * sizeof(Tri));
-  clock.mark("download");
-  return out;
+  return on_device(n, [&] {
+    Hull3 h(ps, xyz, tet, s, *B, st);
+    clock.mark("tetrahedron");
+    h.construct();  // lines 2-14
+    clock.mark("construction");
+    h.flip_flop();  // line 15
+    clock.mark("flip-flop");
+    backend::Buffer<Tri> tris;
+    const std::size_t F = h.output(tris);
+    clock.mark("output");
+    const std::vector<Tri> host = backend::to_host(tris, F);
+    std::vector<Triangle> out(F);
+    if (F) std::memcpy(out.data(), host.data(), F * sizeof(Tri));
+    clock.mark("download");
+    return out;
+  });
 }
 
 }  // namespace hull3_detail
@@ -1076,13 +1094,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
 std::vector<Triangle> hull3_ffhull(const PointSet& ps, ref::Hull3Stats* stats, cpu::StageTimes* times) {
   ref::Hull3Stats st;
   cpu::StageClock clock(times);
-  std::vector<Triangle> out;
-  try {
-    out = hull3_detail::compute(ps, st, clock);
-  } catch (const std::bad_alloc&) {  // thrust's bad_alloc derives from it
-    throw kernels::DeviceMemoryError("hull3: " + std::to_string(ps.size()) +
-                                     " points do not fit in device memory");
-  }
+  std::vector<Triangle> out = hull3_detail::compute(ps, st, clock);
   if (stats) *stats = st;
   return out;
 }
