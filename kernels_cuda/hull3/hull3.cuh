@@ -12,7 +12,9 @@
 // triangles, each containing the indices of its three vertices and the
 // indices of the triangles sharing its three edges"). Atomics are
 // cuda::atomic_ref. Every buffer is allocated once, sized from n (at most
-// 2n - 4 triangle slots: every insertion adds two), before the first step.
+// 2n - 4 triangle slots: every insertion adds two), before the first step;
+// thrust's temporary storage (scans, sorts, reductions) comes from a caching
+// allocator (TempStorage), so later rounds reuse the first rounds' blocks.
 // Every decision is an exact SoS predicate run on the device
 // (device_predicates.cuh: orient3d with the per-input static filter, the
 // exact expansion stage and SoS; no heap, no recursion).
@@ -71,11 +73,15 @@
 #endif
 
 #include <cuda/atomic>
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+#include <cuda_runtime_api.h>
+#endif
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -124,12 +130,81 @@ void fill_n(T* p, std::size_t n, T value) {
   backend::run_step<kParallelFrom>(n, [&](auto policy) { thrust::fill_n(policy, p, n, value); });
 }
 
+// The temporary storage of the steps that need some (scans, sorts,
+// reductions), allocated by thrust through this allocator: a freed block is
+// kept and handed out again, so the rounds reuse the first rounds' storage
+// instead of allocating (cudaMalloc / cudaFree on the device) every round.
+class TempStorage {
+ public:
+  using value_type = char;
+  TempStorage() = default;
+  TempStorage(const TempStorage&) = delete;
+  TempStorage& operator=(const TempStorage&) = delete;
+  ~TempStorage() {
+    for (auto& [bytes, p] : free_) release(p);
+    for (auto& [p, bytes] : used_) release(p);
+  }
+  char* allocate(std::ptrdiff_t bytes) {
+    char* p;
+    const auto it = free_.lower_bound(bytes);
+    if (it != free_.end()) {
+      bytes = it->first;
+      p = it->second;
+      free_.erase(it);
+    } else {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+      void* q = nullptr;
+      if (cudaMalloc(&q, static_cast<std::size_t>(bytes)) != cudaSuccess) {
+        cudaGetLastError();  // clear the error: the caller reports it
+        throw std::bad_alloc();
+      }
+      p = static_cast<char*>(q);
+#else
+      p = new char[static_cast<std::size_t>(bytes)];
+#endif
+    }
+    used_.emplace(p, bytes);
+    return p;
+  }
+  void deallocate(char* p, std::size_t) {
+    const auto it = used_.find(p);
+    free_.emplace(it->second, p);
+    used_.erase(it);
+  }
+
+ private:
+  static void release(char* p) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+    cudaFree(p);
+#else
+    delete[] p;
+#endif
+  }
+  std::multimap<std::ptrdiff_t, char*> free_;
+  std::map<char*, std::ptrdiff_t> used_;
+};
+
+// backend::run_step for the steps that allocate: their temporary storage
+// from `temp`.
+template <class Step>
+void run_with(TempStorage& temp, std::size_t n, Step&& step) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  if (n < kParallelFrom)
+    step(thrust::seq);
+  else
+    step(thrust::omp::par(temp));
+#else
+  (void)n;
+  step(thrust::cuda::par(temp));
+#endif
+}
+
 // The indices i in [0, n) with pred(i), in order, written to out; their count.
 template <class Pred>
-std::size_t select(std::size_t n, uint32_t* out, const Pred& pred) {
+std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& pred) {
   if (n == 0) return 0;
   std::size_t m = 0;
-  backend::run_step<kParallelFrom>(n, [&](auto policy) {
+  run_with(temp, n, [&](auto policy) {
     m = static_cast<std::size_t>(thrust::copy_if(policy, thrust::counting_iterator<uint32_t>(0),
                                                  thrust::counting_iterator<uint32_t>(static_cast<uint32_t>(n)),
                                                  out, pred) -
@@ -228,9 +303,9 @@ struct TetKey {
   }
 };
 
-Index argmax(std::size_t n, const TetKey& key) {
+Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
   Best b{-HUGE_VAL, kNone};
-  backend::run_step<kParallelFrom>(n, [&](auto policy) {
+  run_with(temp, n, [&](auto policy) {
     b = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
                                  thrust::counting_iterator<std::size_t>(n), key, b, BestOf());
   });
@@ -809,6 +884,7 @@ using Scratch = thrust::device_vector<T>;
 // slots (every insertion adds two), at most n - 4 triangles split in a round
 // (each has a point), at most 3 max_tri / 2 edges.
 struct Buffers {
+  TempStorage temp;  // the steps' temporary storage, reused
   backend::Buffer<double> coords;
   // points under construction
   Scratch<Index> pid;
@@ -882,7 +958,7 @@ class Hull3 {
     double* pkey = raw(B_.pkey);
     uint8_t* drop = raw(B_.drop);
     // lines 2, 5, 14 (round 0)
-    std::size_t m = select(n_, pid, NotTetrahedron{a, b, c, d});
+    std::size_t m = select(B_.temp, n_, pid, NotTetrahedron{a, b, c, d});
     for_n(m, AssociateRound0{g_, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
     std::size_t kept = compact(m);
     st_.discarded_early += m - kept;
@@ -891,7 +967,7 @@ class Hull3 {
     while (m > 0) {
       ++st_.rounds;
       std::size_t K = 0;
-      backend::run_step<kParallelFrom>(m, [&](auto policy) {
+      run_with(B_.temp, m, [&](auto policy) {
         thrust::sort_by_key(policy, ptri, ptri + m, thrust::make_zip_iterator(thrust::make_tuple(pid, pkey)));
         // line 8: per triangle the furthest point (keyed arg-max reduction)
         const auto values = thrust::make_transform_iterator(
@@ -929,10 +1005,10 @@ class Hull3 {
     uint32_t* ops = raw(B_.ops);
     bool all = true;  // line 2: every edge
     for (uint32_t round = 1;; ++round) {
-      const std::size_t C = select(3 * T, cand,
+      const std::size_t C = select(B_.temp, 3 * T, cand,
                                    IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all});
       for_n(C, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled), cand, raw(B_.action), raw(B_.inner)});
-      const std::size_t M = select(C, ops, HasAction{raw(B_.action)});
+      const std::size_t M = select(B_.temp, C, ops, HasAction{raw(B_.action)});
       if (M == 0) {
         if (all) break;  // a round over every edge decided nothing: the end
         all = true;
@@ -954,7 +1030,7 @@ class Hull3 {
     }
     // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left
     std::size_t reflex = 0, labelled = 0;
-    backend::run_step<kParallelFrom>(3 * T, [&](auto policy) {
+    run_with(B_.temp, 3 * T, [&](auto policy) {
       reflex = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
                                         thrust::counting_iterator<std::size_t>(3 * T),
                                         ReflexEdge{g_, tv, tn, raw(B_.alive)}, std::size_t{0},
@@ -973,9 +1049,9 @@ class Hull3 {
   // device; returns their number (in B_.ops as slots, then as Tri in `out`).
   std::size_t output(backend::Buffer<Tri>& out) {
     uint32_t* slots = raw(B_.ops);
-    const std::size_t F = select(T_, slots, IsAlive{raw(B_.alive)});
+    const std::size_t F = select(B_.temp, T_, slots, IsAlive{raw(B_.alive)});
     out.resize(F);
-    backend::run_step<kParallelFrom>(F, [&](auto policy) {
+    run_with(B_.temp, F, [&](auto policy) {
       thrust::transform(policy, slots, slots + F, raw(out), CanonicalTri{raw(B_.tv)});
       thrust::sort(policy, raw(out), raw(out) + F, TriLess());
     });
@@ -987,7 +1063,7 @@ class Hull3 {
   std::size_t compact(std::size_t m) {
     if (m == 0) return 0;
     std::size_t kept = 0;
-    backend::run_step<kParallelFrom>(m, [&](auto policy) {
+    run_with(B_.temp, m, [&](auto policy) {
       const auto first = thrust::make_zip_iterator(thrust::make_tuple(raw(B_.pid), raw(B_.ptri), raw(B_.pkey)));
       kept = static_cast<std::size_t>(thrust::remove_if(policy, first, first + m, raw(B_.drop), IsSet()) - first);
     });
@@ -996,7 +1072,7 @@ class Hull3 {
   std::size_t count(std::size_t M, uint8_t code) {
     std::size_t c = 0;
     uint8_t* won = raw(B_.won);
-    backend::run_step<kParallelFrom>(M, [&](auto policy) { c = thrust::count(policy, won, won + M, code); });
+    run_with(B_.temp, M, [&](auto policy) { c = thrust::count(policy, won, won + M, code); });
     return c;
   }
 
@@ -1009,23 +1085,23 @@ class Hull3 {
 };
 
 // Line 1 by reductions; exactly independent, else the reference's rule.
-std::array<Index, 4> initial_tetrahedron(const PointSet& ps, const double* xyz) {
+std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz) {
   const std::size_t n = ps.size();
   TetKey key{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const Index a = argmax(n, key);
+  const Index a = argmax(temp, n, key);
   key.mode = 1;
-  const Index b = argmax(n, key);
+  const Index b = argmax(temp, n, key);
   const double *A = ps.point(a), *Bp = ps.point(b);
   for (int j = 0; j < 3; ++j) key.A[j] = A[j], key.u[j] = Bp[j] - A[j];
   key.mode = 2;
-  const Index c = argmax(n, key);
+  const Index c = argmax(temp, n, key);
   const double* Cp = ps.point(c);
   const double v[3] = {Cp[0] - A[0], Cp[1] - A[1], Cp[2] - A[2]};
   key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
   key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
   key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
   key.mode = 3;
-  const Index d = argmax(n, key);
+  const Index d = argmax(temp, n, key);
   const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
   if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
   // (a, b, c) counter-clockwise seen from outside: d on its inner side
@@ -1059,7 +1135,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
     return backend::to_device(ps.coords.data(), ps.coords.size(), B->coords);
   });
   clock.mark("upload");
-  const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(ps, xyz); });  // line 1
+  const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(B->temp, ps, xyz); });  // line 1
   // line 4: the rounded centroid, when strictly inside the tetrahedron exactly
   std::array<double, 3> s{};
   if (!cpu::rounded_centroid(ps, tet, s)) {
