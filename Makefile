@@ -7,7 +7,7 @@ PKGS  := cmake g++ make clang libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev l
          libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev python3-meshio python3-numpy \
          python3-venv python3-pip python3-scipy python3-pytest python3-hypothesis
 
-.PHONY: all deps configure build demo test python sanitize asan tsan clean
+.PHONY: all deps configure build demo test python sanitize asan tsan clean cuda
 
 all: build
 
@@ -29,6 +29,13 @@ build: configure
 
 demo: build
 	$(BUILD)/flipflop demo
+
+# cuda: the CUDA algorithm kernels (kernels_cuda/hull2, hull3, rt2) built with
+#       nvcc for sm_90 even without a GPU (a compile check; minutes per file),
+#       with their device tests (skipped without a device)
+cuda: configure
+	cmake -S . -B $(BUILD) -DFLIPFLOP_CUDA_ALGORITHMS=ON > /dev/null
+	cmake --build $(BUILD) -j $(JOBS)
 
 test: build python
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -69,7 +76,7 @@ asan: deps
 #       the Archer OMPT tool (libarcher.so, loaded by OMP_TOOL_LIBRARIES).
 TSAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test \
-              hull2_cuda_omp_test rt2_cuda_omp_test
+              hull2_cuda_omp_test rt2_cuda_omp_test hull3_cuda_omp_test
 ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
 
 tsan: deps
@@ -81,7 +88,7 @@ tsan: deps
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)
 	cd build-tsan && OMP_TOOL_LIBRARIES=$(ARCHER) ARCHER_OPTIONS=verbose=1 \
 	  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/.ci/tsan.supp \
-	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp|rt2 cuda-omp|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: the parallel certifier)'
+	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull[23] cuda-omp|rt2 cuda-omp|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: the parallel certifier)'
 
 sanitize: asan tsan
 

@@ -19,8 +19,8 @@
 //          parallel sort and output), flipflop:reference:ffrt and :lawson;
 //          cgal:delaunay_triangulation_2 (range insertion, spatially sorted),
 //          qhull (libqhull_r, d Qbb Qt)
-//          (dt2 and rt2: flipflop:cuda-omp, flipflop:cuda[:no-transfers],
-//          the GPU ffRT of kernels_cuda/rt2, as for hull2)
+//          (hull3, dt2 and rt2: flipflop:cuda-omp, flipflop:cuda[:no-transfers],
+//          the GPU ffHull and ffRT of kernels_cuda/hull3 and rt2, as for hull2)
 //   rt2    flipflop:cpu, flipflop:reference:ffrt;
 //          cgal:regular_triangulation_2 (range insertion, spatially sorted)
 //
@@ -235,10 +235,13 @@ int bench_peers(const Args& a) {
     return compare_peers<Cycle>(a, pts, rows, "vertices");
   }
   if (a.experiment == "hull3") {
-    std::vector<Peer<Tris>> rows = {
-        {"flipflop:cpu", [](const PointSet& p) { return cpu::hull3_ffhull(p); }},
-        {"flipflop:reference:ffhull", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
-        {"flipflop:reference:splay", [](const PointSet& p) { return ref::hull3(p, "splay"); }}};
+    std::vector<Peer<Tris>> rows = {{"flipflop:cpu", [](const PointSet& p) { return cpu::hull3_ffhull(p); }}};
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    add_gpu_rows(rows,
+                 [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::hull3_gpu(b, pts, nullptr, t); });
+#endif
+    rows.insert(rows.end(), {{"flipflop:reference:ffhull", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
+                             {"flipflop:reference:splay", [](const PointSet& p) { return ref::hull3(p, "splay"); }}});
     // twist-flip's twisting stage is a bubble sort (thesis Thm 8.1): O(n^2)
     if (pts.size() <= 20000)
       rows.push_back({"flipflop:reference:twist-flip", [](const PointSet& p) { return ref::hull3(p, "twist-flip"); }});

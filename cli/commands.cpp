@@ -98,6 +98,7 @@ std::vector<std::string> gpu_algorithms(const std::string& kind) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
   if (kind == "hull2") return {"graham-sort", "graham-insert"};
   if (kind == "rt2" || kind == "dt2") return {"ffrt"};
+  if (kind == "hull3") return {"ffhull"};
 #else
   (void)kind;
 #endif
@@ -295,6 +296,13 @@ int run_compute(const ComputeArgs& a) {
              " (D-criterion flips among them " + std::to_string(st.flops) + "), 1-3 flips " +
              std::to_string(st.flips_1_3) + ", labelled redundant " + std::to_string(st.labelled_redundant) + ", discarded early " +
              std::to_string(st.discarded_early) + ", rounds " + std::to_string(st.rounds);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  } else if (a.kind == "hull3" && is_gpu(backend)) {
+    // kernels_cuda/hull3: ffHull's construction rounds and parallel flip-flop rounds
+    ref::Hull3Stats st;
+    tris = kernels::hull3_gpu(backend, ps, &st);
+    counts = hull3_counts(st);
+#endif
   } else if (a.kind == "hull3" && backend == "cpu") {
     // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference
     ref::Hull3Stats st;

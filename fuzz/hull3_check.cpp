@@ -28,7 +28,9 @@
 //     points and merged facets is a property test: proptests/strict_*.)
 // The multithreaded ffHull of kernels_cpu/hull3 (the cpu backend) is run at
 // 1 and 2 threads and must equal the reference byte for byte (triangle for
-// triangle), with ffHull's counters' lemmas, and reject the same inputs.
+// triangle), with ffHull's counters' lemmas, and reject the same inputs; so
+// must the data-parallel ffHull of kernels_cuda/hull3 in its OpenMP build
+// (kernels_omp, FLIPFLOP_HAVE_KERNELS_OMP).
 // When the build has the by-name entry point (reference/hull3/hull3.hpp,
 // part flipflop_hull3; FLIPFLOP_FUZZ_HULL3_BY_NAME) the algorithms are run
 // through ref::hull3(ps, name), whose list must be exactly these three.
@@ -38,11 +40,15 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fuzz/checks.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+#include "kernels_cuda/hull3/hull3.hpp"
+#endif
 #include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -161,11 +167,20 @@ std::vector<std::pair<std::string, std::function<Tris(const PointSet&, ref::Hull
   return out;
 }
 
-// The cpu backend at `threads` threads.
-Tris cpu_hull(const PointSet& ps, int threads, ref::Hull3Stats* st) {
-  cpu::Hull3Options o;
-  o.threads = threads;
-  return cpu::hull3_ffhull(ps, o, st);
+// The parallel backends that must equal the reference: the cpu backend at
+// 1 and 2 threads, and kernels_omp when built.
+std::vector<std::pair<std::string, std::function<Tris(const PointSet&, ref::Hull3Stats*)>>> backends() {
+  std::vector<std::pair<std::string, std::function<Tris(const PointSet&, ref::Hull3Stats*)>>> out;
+  for (int threads : {1, 2})
+    out.emplace_back("cpu (" + std::to_string(threads) + " threads)", [threads](const PointSet& ps, ref::Hull3Stats* st) {
+      cpu::Hull3Options o;
+      o.threads = threads;
+      return cpu::hull3_ffhull(ps, o, st);
+    });
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  out.emplace_back("kernels_omp", [](const PointSet& ps, ref::Hull3Stats* st) { return kernels_omp::hull3_ffhull(ps, st); });
+#endif
+  return out;
 }
 
 }  // namespace
@@ -186,13 +201,13 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
         fail(kTarget, name + " threw the wrong exception on lower-dimensional input: " + e.what(), describe(ps));
       }
     }
-    for (int threads : {1, 2}) {
+    for (const auto& [name, run] : backends()) {
       try {
-        const Tris t = cpu_hull(ps, threads, nullptr);
-        fail(kTarget, "cpu returned a hull of lower-dimensional input", describe(ps) + describe(t));
+        const Tris t = run(ps, nullptr);
+        fail(kTarget, name + " returned a hull of lower-dimensional input", describe(ps) + describe(t));
       } catch (const std::invalid_argument&) {
       } catch (const std::exception& e) {
-        fail(kTarget, std::string("cpu threw the wrong exception on lower-dimensional input: ") + e.what(), describe(ps));
+        fail(kTarget, name + " threw the wrong exception on lower-dimensional input: " + e.what(), describe(ps));
       }
     }
     return true;
@@ -214,17 +229,16 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
     first = false;
     check_counts(ps, name, st, vertex_count(answer));
   }
-  for (int threads : {1, 2}) {
+  for (const auto& [name, run] : backends()) {
     Tris got;
     ref::Hull3Stats st;
     try {
-      got = cpu_hull(ps, threads, &st);
+      got = run(ps, &st);
     } catch (const std::exception& e) {
-      fail(kTarget, std::string("cpu threw: ") + e.what(), describe(ps));
+      fail(kTarget, name + " threw: " + e.what(), describe(ps));
     }
     if (got != answer)
-      fail(kTarget, "cpu (" + std::to_string(threads) + " threads) differs from ffhull",
-           describe(ps) + "cpu " + describe(got) + "\nffhull " + describe(answer));
+      fail(kTarget, name + " differs from ffhull", describe(ps) + name + " " + describe(got) + "\nffhull " + describe(answer));
     check_counts(ps, "ffhull", st, vertex_count(answer));
   }
   if (ps.size() <= kMaxBrute && brute::hull3(ps) != answer)

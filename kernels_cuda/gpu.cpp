@@ -10,8 +10,8 @@ namespace {
 
 #ifndef FLIPFLOP_HAVE_KERNELS_CUDA
 [[noreturn]] void no_cuda_build() {
-  throw NoDeviceError("--backend cuda: this flipflop was built without nvcc (no CUDA kernels); "
-                      "use --backend cuda-omp or cpu");
+  throw NoDeviceError("--backend cuda: this flipflop was built without the CUDA algorithm kernels (no nvcc, or "
+                      "no GPU at configure time: -DFLIPFLOP_CUDA_ALGORITHMS=ON); use --backend cuda-omp or cpu");
 }
 #endif
 
@@ -54,6 +54,19 @@ std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, con
                       : kernels_cuda::hull2_graham_sort(ps, opt, stats);
 #else
         return std::vector<Index>{};
+#endif
+      });
+}
+
+std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, ref::Hull3Stats* stats,
+                                cpu::StageTimes* times) {
+  return dispatch(
+      backend, [&] { return kernels_omp::hull3_ffhull(ps, stats, times); },
+      [&] {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+        return kernels_cuda::hull3_ffhull(ps, stats, times);
+#else
+        return std::vector<Triangle>{};
 #endif
       });
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "kernels_cuda/hull2/hull2.hpp"
+#include "kernels_cuda/hull3/hull3.hpp"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
 #include "reference/hull2/polygon.hpp"
@@ -27,6 +28,10 @@ bool is_gpu_backend(const std::string& backend);
 // algo: "graham-sort" (Algorithm 3) or "graham-insert" (Algorithm 4)
 std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt = {},
                              ref::Hull2Stats* stats = nullptr, const std::string& algo = "graham-sort");
+
+// ffHull (§6.4): the 3D convex hull
+std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, ref::Hull3Stats* stats = nullptr,
+                                cpu::StageTimes* times = nullptr);
 
 // ffRT (§5.3): the regular triangulation of ps (Delaunay when unweighted)
 std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats = nullptr,

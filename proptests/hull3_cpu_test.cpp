@@ -25,7 +25,7 @@
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
-#include "proptests/support/family_sweep.hpp"
+#include "proptests/support/hull3_expect.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -47,9 +47,7 @@ std::string cpu_text(const PointSet& ps, int threads, ref::Hull3Stats* st = null
   return outcome([&] { return cpu::hull3_ffhull(ps, o, st); });
 }
 
-std::string ref_text(const PointSet& ps) {
-  return outcome([&] { return ref::hull3_ffhull(ps); });
-}
+std::string ref_text(const PointSet& ps) { return test::hull3_reference_text(ps); }
 
 // cpu == reference at every thread count; counts consistent (every point is
 // inserted, discarded early or one of the initial four). Returns the text.
@@ -89,17 +87,17 @@ TEST_CASE("hull3 cpu: every generator family up to 3000 points equals the refere
 }
 
 TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu]") {
-  std::size_t cases = 0;
-  const test::SweepCounts sweep = test::family_sweep(
-      3, {4, 7, 30, 200, 2000, 20000}, 2, [](const PointSet& ps) { return ref_text(ps); },
-      [&](const PointSet& ps, const std::string& expect) {
-        for (int t : kThreads) {
-          INFO("threads " << t);
-          REQUIRE(cpu_text(ps, t) == expect);
-          ++cases;
-        }
-      });
-  const std::size_t rejected = sweep.rejected;
+  std::size_t cases = 0, rejected = 0;
+  test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
+                              [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
+                                INFO(fam << " n=" << n << " seed=" << seed);
+                                const std::string expect = test::hull3_sweep_expect(ps, rejected);
+                                for (int t : kThreads) {
+                                  INFO("threads " << t);
+                                  REQUIRE(cpu_text(ps, t) == expect);
+                                  ++cases;
+                                }
+                              });
   std::cout << "hull3 cpu sweep: " << cases << " runs identical to the reference (" << rejected
             << " inputs rejected as flat by both)\n";
   REQUIRE(cases >= 13 * 6 * 2 * 3);

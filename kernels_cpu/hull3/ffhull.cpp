@@ -2,6 +2,7 @@
 // §6.4.1) on oneTBB; what is parallel and why the answer is the reference's
 // is documented in ffhull.hpp.
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/hull3/rounded_centroid.hpp"
 
 #include <array>
 #include <cmath>
@@ -601,13 +602,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   const std::array<Index, 4> tet = initial_tetrahedron(ps);  // line 1
   // line 4: the kernel point
   std::array<double, 3> s{};
-  for (int j = 0; j < 3; ++j)
-    s[j] = ((ps.point(tet[0])[j] + ps.point(tet[1])[j]) + (ps.point(tet[2])[j] + ps.point(tet[3])[j])) * 0.25;
-  const Triangle faces[4] = {{tet[0], tet[1], tet[2]}, {tet[0], tet[2], tet[3]}, {tet[0], tet[3], tet[1]},
-                             {tet[1], tet[3], tet[2]}};
-  bool inside = std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]);
-  for (const Triangle& F : faces)
-    inside = inside && pred::orient3d_exact(ps.point(F[0]), ps.point(F[1]), ps.point(F[2]), s.data()) > 0;
+  const bool inside = rounded_centroid(ps, tet, s);
   const StaticFilter f =
       parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
                              inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});

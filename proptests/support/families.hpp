@@ -47,6 +47,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <iomanip>
 #include <ostream>
 #include <random>
@@ -153,6 +154,20 @@ inline std::vector<std::string> families(int dim) {
   for (const std::string& d : gen::distributions())
     if (gen::dimension_of(d) == dim) out.push_back(d);
   return out;
+}
+
+// The deterministic sweeps of the kernel tests: f(family, n, seed, points) for
+// gen::generate(family, n, seed) over every family of the dimension, every
+// size and the seeds 1..seeds.
+template <class F>
+void for_each_family_input(int dim, std::initializer_list<std::size_t> sizes, std::uint64_t seeds, F&& f) {
+  for (const std::string& fam : families(dim))
+    for (std::size_t n : sizes)
+      for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+        gen::Options o;
+        o.seed = seed;
+        f(fam, n, seed, gen::generate(fam, n, o));
+      }
 }
 
 // (family, n, seed) -> gen::generate. Weighted: weights uniform in

@@ -1,0 +1,1179 @@
+// hull3.cuh — the one source of the data-parallel ffHull (hull3.hpp explains
+// the task). Included by hull3_omp.cpp (thrust's OpenMP backend, host
+// compiler) and hull3_cuda.cu (nvcc), each defining FF_KERNELS_NS to the
+// namespace it implements; helpers live in FF_KERNELS_NS::hull3_detail.
+//
+// Every step is a thrust primitive (for_each over an index range,
+// transform_reduce, copy_if, sort_by_key, reduce_by_key, remove_if, count,
+// sort) over a __host__ __device__ functor reading flat arrays (structure of
+// arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
+// counter-clockwise seen from outside) and tn[3t + k] (the slot across its
+// edge tv[3t + k] -> tv[3t + (k + 1) % 3]), as in §6.4.1 ("an array of
+// triangles, each containing the indices of its three vertices and the
+// indices of the triangles sharing its three edges"). Atomics are
+// cuda::atomic_ref. Every buffer is allocated once, sized from n (at most
+// 2n - 4 triangle slots: every insertion adds two), before the first step;
+// thrust's temporary storage (scans, sorts, reductions) comes from a caching
+// allocator (TempStorage), so later rounds reuse the first rounds' blocks.
+// Every decision is an exact SoS predicate run on the device
+// (device_predicates.cuh: orient3d with the per-input static filter, the
+// exact expansion stage and SoS; no heap, no recursion).
+//
+// Stages:
+//  * Algorithm 7 line 1: four approximately extreme points by arg-max
+//    reductions (double keys, ties: the smaller index), accepted when exactly
+//    affinely independent (host: four points); else the reference's rule,
+//    which also rejects input that does not span R^3.
+//  * line 4: the kernel point s, the centroid rounded to doubles, SoS index n
+//    (after all inputs), used when it is strictly inside the tetrahedron
+//    exactly (four exact orient3d on the host). Otherwise — an almost flat
+//    tetrahedron, §6.4.2's trap — the exact dyadic centroid would be needed,
+//    whose predicates (pred::mixed_sign, GMP) do not run on the device: that
+//    rare case runs the exact reference ref::hull3_ffhull on the host.
+//  * lines 5-14 in rounds (§6.4.1, "four major GPU kernels"): round 0
+//    associates every point with a face of the tetrahedron; every round sorts
+//    the points by triangle (sort_by_key), takes per triangle the furthest
+//    point by a keyed reduction (reduce_by_key over the rounded orient(p, t),
+//    §6.4.1's "second technique"; any point beyond t in its cone is correct,
+//    kernels_cpu/hull3/ffhull.hpp), splits every such triangle 1-3 (its own
+//    slot and slots T + 2k, T + 2k + 1 for its rank k among the round's
+//    triangles: disjoint writes), repairs the adjacency in a separate pass
+//    (§6.4.1: "a separate kernel is necessary here"), re-associates every
+//    point with one of the three new cones (line 13) and drops it when it is
+//    beneath the new triangle (line 14, "first technique": s is beneath every
+//    triangle), then compacts the points (remove_if).
+//  * line 15, flip-flop (Algorithm 6) in rounds (see "flip-flop" below).
+//  * output: the live triangles rotated and sorted on the device (the
+//    canonical order of reference/canonical.hpp), then downloaded.
+#pragma once
+
+#ifndef FF_KERNELS_NS
+#error "define FF_KERNELS_NS (kernels_omp or kernels_cuda) before including hull3.cuh"
+#endif
+
+#include <thrust/copy.h>
+#include <thrust/count.h>
+#include <thrust/device_vector.h>
+#include <thrust/execution_policy.h>
+#include <thrust/fill.h>
+#include <thrust/for_each.h>
+#include <thrust/functional.h>
+#include <thrust/iterator/counting_iterator.h>
+#include <thrust/iterator/transform_iterator.h>
+#include <thrust/iterator/zip_iterator.h>
+#include <thrust/reduce.h>
+#include <thrust/remove.h>
+#include <thrust/sort.h>
+#include <thrust/system/system_error.h>
+#include <thrust/transform.h>
+#include <thrust/transform_reduce.h>
+#include <thrust/tuple.h>
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+#include <thrust/system/omp/execution_policy.h>
+#endif
+
+#include <cuda/atomic>
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+#include <cuda_runtime_api.h>
+#endif
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "kernels_cpu/hull3/rounded_centroid.hpp"
+#include "kernels_cpu/stage_times.hpp"
+#include "kernels_cuda/backend.cuh"
+#include "kernels_cuda/device_predicates.cuh"
+#include "kernels_cuda/hull3/hull3.hpp"
+#include "kernels_cuda/kernel_errors.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
+#include "reference/hull3/ffhull.hpp"
+
+namespace flipflop::FF_KERNELS_NS {
+
+namespace hull3_detail {
+
+using std::uint32_t;
+using std::uint8_t;
+constexpr uint32_t kNone = ~uint32_t{0};
+// OpenMP build: below this many items a step runs on one thread (backend.cuh).
+constexpr std::size_t kParallelFrom = std::size_t{1} << 12;
+
+// The raw pointer to a buffer's elements (std::vector or device_vector).
+template <class V>
+auto raw(V& b) {
+  return thrust::raw_pointer_cast(b.data());
+}
+
+// f(i) for i in [0, n), one thread per item.
+template <class F>
+void for_n(std::size_t n, const F& f) {
+  if (n == 0) return;
+  backend::run_step<kParallelFrom>(
+      n, [&](auto policy) { thrust::for_each_n(policy, thrust::counting_iterator<std::size_t>(0), n, f); });
+}
+
+template <class T>
+void fill_n(T* p, std::size_t n, T value) {
+  if (n == 0) return;
+  backend::run_step<kParallelFrom>(n, [&](auto policy) { thrust::fill_n(policy, p, n, value); });
+}
+
+// The temporary storage of the steps that need some (scans, sorts,
+// reductions), allocated by thrust through this allocator: a freed block is
+// kept and handed out again, so the rounds reuse the first rounds' storage
+// instead of allocating (cudaMalloc / cudaFree on the device) every round.
+class TempStorage {
+ public:
+  using value_type = char;
+  TempStorage() = default;
+  TempStorage(const TempStorage&) = delete;
+  TempStorage& operator=(const TempStorage&) = delete;
+  ~TempStorage() {
+    for (auto& [bytes, p] : free_) release(p);
+    for (auto& [p, bytes] : used_) release(p);
+  }
+  char* allocate(std::ptrdiff_t bytes) {
+    char* p;
+    const auto it = free_.lower_bound(bytes);
+    if (it != free_.end()) {
+      bytes = it->first;
+      p = it->second;
+      free_.erase(it);
+    } else {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+      void* q = nullptr;
+      if (cudaMalloc(&q, static_cast<std::size_t>(bytes)) != cudaSuccess) {
+        cudaGetLastError();  // clear the error: the caller reports it
+        throw std::bad_alloc();
+      }
+      p = static_cast<char*>(q);
+#else
+      p = new char[static_cast<std::size_t>(bytes)];
+#endif
+    }
+    used_.emplace(p, bytes);
+    return p;
+  }
+  void deallocate(char* p, std::size_t) {
+    const auto it = used_.find(p);
+    free_.emplace(it->second, p);
+    used_.erase(it);
+  }
+
+ private:
+  static void release(char* p) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+    cudaFree(p);
+#else
+    delete[] p;
+#endif
+  }
+  std::multimap<std::ptrdiff_t, char*> free_;
+  std::map<char*, std::ptrdiff_t> used_;
+};
+
+// backend::run_step for the steps that allocate: their temporary storage
+// from `temp`.
+template <class Step>
+void run_with(TempStorage& temp, std::size_t n, Step&& step) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  if (n < kParallelFrom)
+    step(thrust::seq);
+  else
+    step(thrust::omp::par(temp));
+#else
+  (void)n;
+  step(thrust::cuda::par(temp));
+#endif
+}
+
+// The indices i in [0, n) with pred(i), in order, written to out; their count.
+template <class Pred>
+std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& pred) {
+  if (n == 0) return 0;
+  std::size_t m = 0;
+  run_with(temp, n, [&](auto policy) {
+    m = static_cast<std::size_t>(thrust::copy_if(policy, thrust::counting_iterator<uint32_t>(0),
+                                                 thrust::counting_iterator<uint32_t>(static_cast<uint32_t>(n)),
+                                                 out, pred) -
+                                 out);
+  });
+  return m;
+}
+
+template <class T>
+using Atomic = cuda::atomic_ref<T, cuda::thread_scope_device>;
+
+FF_HD inline uint32_t next3(uint32_t k) { return k == 2 ? 0 : k + 1; }
+FF_HD inline uint32_t prev3(uint32_t k) { return k == 0 ? 2 : k - 1; }
+
+// ---- geometry: input points and the kernel point ---------------------------------
+struct Geo {
+  const double* xyz;        // 3 per point
+  pred::StaticFilter filter;  // per input, the kernel point's coordinates included
+  double s[3];              // the kernel point (double)
+  uint32_t n;               // its SoS index: after every input
+
+  FF_HD const double* P(Index i) const { return xyz + 3 * static_cast<std::size_t>(i); }
+  // orient3d(a, b, c, d) under SoS: > 0 when d is on the inner side of
+  // (a, b, c) counter-clockwise seen from outside (predicates.hpp). The
+  // per-input static filter inline first (the first stage of the staged
+  // predicate, which decides nearly every call), then the whole staged path.
+  FF_HD int orient(Index a, Index b, Index c, Index d) const {
+    const double* p[4] = {P(a), P(b), P(c), P(d)};
+    if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
+    return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], d, p[3]);
+  }
+  // KernelPoint::side(a, b, c) = orient3d(a, b, c, s) (kernel_point.hpp)
+  FF_HD int side(Index a, Index b, Index c) const {
+    const double* p[4] = {P(a), P(b), P(c), s};
+    if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
+    return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], n, s);
+  }
+  // p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
+  FF_HD bool in_cone(Index a, Index b, Index c, Index p) const {
+    const int o = side(a, b, c);
+    return side(a, b, p) == o && side(b, c, p) == o && side(c, a, p) == o;
+  }
+  // p beyond the triangle t (orient3d(t0, t1, t2, p) < 0, never 0 under SoS);
+  // key: the rounded (p - t0) · ((t1 - t0) × (t2 - t0)), > 0 beyond, the
+  // volume |orient(p, t)| of §6.4.1's furthest point (NaN: -inf)
+  FF_HD bool beyond(const Index* t, Index p, double& key) const {
+    const double *o = P(t[0]), *b = P(t[1]), *c = P(t[2]), *q = P(p);
+    const double bx = b[0] - o[0], by = b[1] - o[1], bz = b[2] - o[2];
+    const double cx = c[0] - o[0], cy = c[1] - o[1], cz = c[2] - o[2];
+    const double k = (q[0] - o[0]) * (by * cz - bz * cy) + (q[1] - o[1]) * (bz * cx - bx * cz) +
+                     (q[2] - o[2]) * (bx * cy - by * cx);
+    key = k == k ? k : -HUGE_VAL;
+    return orient(t[0], t[1], t[2], p) < 0;
+  }
+};
+
+// ---- arg-max reductions -----------------------------------------------------------
+struct Best {
+  double key;
+  Index id;
+};
+// the larger key; ties: the smaller index (a total order: keys are never NaN)
+struct BestOf {
+  FF_HD Best operator()(const Best& x, const Best& y) const {
+    if (x.key > y.key) return x;
+    if (y.key > x.key) return y;
+    return x.id < y.id ? x : y;
+  }
+};
+struct MakeBest {
+  FF_HD Best operator()(const thrust::tuple<double, Index>& t) const { return {thrust::get<0>(t), thrust::get<1>(t)}; }
+};
+
+// Line 1's keys (kernels_cpu/hull3/ffhull.cpp's approximations): mode 0: -x,
+// 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|.
+struct TetKey {
+  const double* xyz;
+  int mode;
+  double A[3], u[3], N[3];
+  FF_HD Best operator()(std::size_t i) const {
+    const double* p = xyz + 3 * i;
+    double k;
+    if (mode == 0) {
+      k = -p[0];
+    } else if (mode == 1) {
+      k = p[0];
+    } else if (mode == 2) {
+      const double w0 = p[0] - A[0], w1 = p[1] - A[1], w2 = p[2] - A[2];
+      const double x = u[1] * w2 - u[2] * w1, y = u[2] * w0 - u[0] * w2, z = u[0] * w1 - u[1] * w0;
+      k = x * x + y * y + z * z;
+    } else {
+      k = N[0] * (p[0] - A[0]) + N[1] * (p[1] - A[1]) + N[2] * (p[2] - A[2]);
+      k = k < 0 ? -k : k;
+    }
+    return {k == k ? k : -HUGE_VAL, static_cast<Index>(i)};
+  }
+};
+
+Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
+  Best b{-HUGE_VAL, kNone};
+  run_with(temp, n, [&](auto policy) {
+    b = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
+                                 thrust::counting_iterator<std::size_t>(n), key, b, BestOf());
+  });
+  return b.id;
+}
+
+// ---- construction (Algorithm 7 lines 2-14) ---------------------------------------
+
+// Where a point of the construction goes: point i (index p) associated with
+// triangle t, dropped when beneath it (line 14), with its distance key.
+struct PointSlots {
+  uint32_t* ptri;
+  double* pkey;
+  uint8_t* drop;
+  FF_HD void associate(const Geo& g, const Index* tv, std::size_t i, Index p, uint32_t t) const {
+    double key;
+    drop[i] = !g.beyond(tv + 3 * t, p, key);
+    ptri[i] = t;
+    pkey[i] = key;
+  }
+};
+
+struct NotTetrahedron {
+  Index a, b, c, d;
+  FF_HD bool operator()(uint32_t p) const { return p != a && p != b && p != c && p != d; }
+};
+
+// Line 5 (round 0): point i to the cone of a face of the tetrahedron, faces
+// 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c). The faces around d are the 1-3
+// split of (a, c, b) by d seen from s, so line 13's rule picks the wedge
+// around the line sd; within the wedge of face (x, y, d) the point is in that
+// face's cone when it is on d's side of the plane (s, x, y), else in the cone
+// of (a, b, c). Line 14: dropped when beneath its face.
+struct AssociateRound0 {
+  Geo g;
+  const Index* tv;
+  Index a, b, c, d;
+  const Index* pid;
+  PointSlots out;
+  FF_HD void operator()(std::size_t i) const {
+    const Index p = pid[i];
+    uint32_t t;
+    if (g.side(d, a, p) > 0) {
+      if (g.side(d, c, p) < 0) t = g.side(a, c, p) > 0 ? 1 : 0;  // wedge (a, c, d)
+      else t = g.side(c, b, p) > 0 ? 3 : 0;                       // wedge (c, b, d)
+    } else {
+      if (g.side(d, b, p) > 0) t = g.side(b, a, p) > 0 ? 2 : 0;  // wedge (b, a, d)
+      else t = g.side(c, b, p) > 0 ? 3 : 0;                       // wedge (c, b, d)
+    }
+    out.associate(g, tv, i, p, t);
+  }
+};
+
+// Line 9, first pass: the round's triangles read their old state (vertices,
+// neighbours, and the position of the shared edge in each neighbour) and
+// publish their rank k.
+struct SplitRead {
+  const Index* tv;
+  const uint32_t* tn;
+  const uint32_t* seg_tri;
+  uint32_t* rank;
+  Index* old_v;
+  uint32_t* old_nb;
+  uint8_t* old_pos;
+  FF_HD void operator()(std::size_t k) const {
+    const uint32_t t = seg_tri[k];
+    rank[t] = static_cast<uint32_t>(k);
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t m = tn[3 * t + e];
+      old_v[3 * k + e] = tv[3 * t + e];
+      old_nb[3 * k + e] = m;
+      uint8_t j = 0;
+      while (j < 2 && tn[3 * m + j] != t) ++j;
+      old_pos[3 * k + e] = j;
+    }
+  }
+};
+
+// Line 9, second pass: triangle t = (ta, tb, tc) of rank k split by its
+// furthest point v into t = (ta, tb, v), T + 2k = (tb, tc, v),
+// T + 2k + 1 = (tc, ta, v); old edge e lives on in child e at position 0.
+// Writes only the three children's slots: their vertices and inner adjacency.
+struct SplitWrite {
+  Index* tv;
+  uint32_t* tn;
+  const uint32_t* seg_tri;
+  const Best* far;
+  const Index* old_v;
+  uint32_t T;
+  FF_HD void operator()(std::size_t k) const {
+    const uint32_t t = seg_tri[k], n1 = T + 2 * static_cast<uint32_t>(k), n2 = n1 + 1;
+    const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2], v = far[k].id;
+    tv[3 * t + 2] = v;
+    tv[3 * n1] = tb, tv[3 * n1 + 1] = tc, tv[3 * n1 + 2] = v;
+    tv[3 * n2] = tc, tv[3 * n2 + 1] = ta, tv[3 * n2 + 2] = v;
+    tn[3 * t + 1] = n1, tn[3 * t + 2] = n2;    // b->v | v->b, v->a | a->v
+    tn[3 * n1 + 1] = n2, tn[3 * n1 + 2] = t;   // c->v | v->c, v->b | b->v
+    tn[3 * n2 + 1] = t, tn[3 * n2 + 2] = n1;   // a->v | v->a, v->c | c->v
+  }
+};
+
+// Line 9, third pass (§6.4.1's adjacency kernel): the outer edges. A
+// neighbour m split in the same round has the shared edge in its child j at
+// position 0; an unsplit neighbour's entry for the edge is written by this
+// thread only.
+struct SplitOuter {
+  uint32_t* tn;
+  const uint32_t* seg_tri;
+  const uint32_t* rank;
+  const uint32_t* old_nb;
+  const uint8_t* old_pos;
+  uint32_t T;
+  FF_HD void operator()(std::size_t k) const {
+    const uint32_t t = seg_tri[k], n1 = T + 2 * static_cast<uint32_t>(k);
+    const uint32_t child[3] = {t, n1, n1 + 1};
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t m = old_nb[3 * k + e];
+      const uint32_t j = old_pos[3 * k + e];
+      if (rank[m] != kNone) {
+        tn[3 * child[e]] = j == 0 ? m : T + 2 * rank[m] + (j - 1);
+      } else {
+        tn[3 * child[e]] = m;
+        tn[3 * m + j] = child[e];
+      }
+    }
+  }
+};
+
+// Lines 10-14: point i of a split triangle to one of the three new cones
+// (line 13: the cone of abc is split by the planes (s, v, a), (s, v, b),
+// (s, v, c), as in reference/hull3/ffhull.cpp), dropped when it is the
+// inserted point (line 10) or beneath its new triangle (line 14).
+struct Reassociate {
+  Geo g;
+  const Index* tv;
+  const uint32_t* rank;
+  const Best* far;
+  const Index* old_v;
+  uint32_t T;
+  const Index* pid;
+  PointSlots out;
+  FF_HD void operator()(std::size_t i) const {
+    const Index p = pid[i];
+    const uint32_t t = out.ptri[i], k = rank[t];
+    const Index v = far[k].id;
+    if (p == v) {
+      out.drop[i] = 1;
+      return;
+    }
+    const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
+    uint32_t ch;
+    if (g.side(v, ta, p) > 0) ch = g.side(v, tb, p) < 0 ? 0 : 1;
+    else ch = g.side(v, tc, p) > 0 ? 2 : 1;
+    const uint32_t u = ch == 0 ? t : T + 2 * k + (ch - 1);
+    out.associate(g, tv, i, p, u);
+  }
+};
+
+struct ResetRank {
+  const uint32_t* seg_tri;
+  uint32_t* rank;
+  FF_HD void operator()(std::size_t k) const { rank[seg_tri[k]] = kNone; }
+};
+
+struct IsSet {
+  FF_HD bool operator()(uint8_t f) const { return f != 0; }
+};
+
+// ---- flip-flop (Algorithm 6) in parallel rounds -----------------------------------
+// A round (§6.4.1, "a checking kernel and a flipping kernel"):
+//  1. candidates: the edges (one directed half each, the one with the
+//     smaller tail) of triangles changed in the previous round, or incident
+//     to a vertex labelled in it (the Q of lines 9, 13, 15, 19 — a superset);
+//     the first round, and a last round that confirms the end, take all;
+//  2. check (lines 5-19): decide() below, ff3::decide of
+//     reference/hull3/flip_flop_3d.cpp on the state at the start of the round;
+//  3. claim: a flip labels the triangles of its induced subcomplex T_e (2-2:
+//     the two triangles of e; 3-1: the three around the removed vertex) with
+//     its edge's id by atomic minimum (§3.3.1, §6.4.1);
+//  4. flip where every label is still the flip's own (the smallest id always
+//     wins: at least one flip per round); labels of non-extreme vertices
+//     (line 18) are set by every deciding thread;
+//  5. repair the adjacency across the flips' outer edges in a separate pass.
+// Why the result is the reference's: the flips of a round touch disjoint
+// triangles, so they are applied in some order, each on a state where its
+// edge has the same link and its decision (lines 5-15) is unchanged — the
+// decision reads the two triangles, the labels of a, b, c, d (set only after
+// the round's flips, in step 4) and the degrees of a and b, which matter only
+// for a 3-1 flip (lines 6-7), whose whole star is claimed. A label is a fact
+// (Lemma 6.5: the vertex lies inside the tetrahedron of s and three vertices
+// of the star-shaped polyhedron, hence is non-extreme) and stays true after
+// any flip. So every round extends a valid sequential run of the free
+// execution order (§3.2); Theorem 6.12 gives termination and the SoS hull.
+// The end is confirmed by a round over all edges that decides nothing, and
+// then checked as the reference does (no reflex edge, no labelled vertex).
+
+enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel };
+
+struct IsCandidate {
+  const Index* tv;
+  const uint32_t* tn;
+  const uint8_t* alive;
+  const uint32_t* stamp_t;
+  const uint32_t* stamp_v;
+  uint32_t prev;  // the previous round
+  bool all;
+  FF_HD bool operator()(uint32_t e) const {
+    const uint32_t t = e / 3, k = e % 3;
+    if (!alive[t]) return false;
+    const Index u = tv[e], w = tv[3 * t + next3(k)];
+    if (!(u < w)) return false;
+    return all || stamp_t[t] == prev || stamp_t[tn[e]] == prev || stamp_v[u] == prev || stamp_v[w] == prev;
+  }
+};
+
+// The edge e = 3t + k, a = tv[e] -> b: triangles t = (a, b, c) and
+// t2 = (b, a, d), the edge at position j of t2.
+struct Quad {
+  uint32_t t, k, t2, j;
+  Index a, b, c, d;
+};
+
+FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
+  Quad q;
+  q.t = e / 3, q.k = e % 3;
+  q.a = tv[e], q.b = tv[3 * q.t + next3(q.k)], q.c = tv[3 * q.t + prev3(q.k)];
+  q.t2 = tn[e];
+  q.j = 0;
+  while (q.j < 2 && tv[3 * q.t2 + q.j] != q.b) ++q.j;
+  q.d = tv[3 * q.t2 + prev3(q.j)];
+  return q;
+}
+
+// Lines 5-19 for the edge e: the action and the vertex it concerns
+// (ff3::decide, line by line).
+struct Decide {
+  Geo g;
+  const Index* tv;
+  const uint32_t* tn;
+  const uint32_t* deg;
+  const uint32_t* labelled;
+  const uint32_t* cand;
+  uint8_t* action;
+  Index* inner;
+  FF_HD bool s_in_tetrahedron(const Quad& q, int o) const {
+    return g.side(q.a, q.b, q.c) == o && -g.side(q.a, q.b, q.d) == o && g.side(q.a, q.c, q.d) == o &&
+           -g.side(q.b, q.c, q.d) == o;
+  }
+  FF_HD void operator()(std::size_t i) const {
+    const Quad q = quad_of(tv, tn, cand[i]);
+    action[i] = kNoAction;
+    Index x = kNone;  // line 5: the labelled vertex of smallest index
+    const Index vs[4] = {q.a, q.b, q.c, q.d};
+    for (int r = 0; r < 4; ++r)
+      if (labelled[vs[r]] && vs[r] < x) x = vs[r];
+    const int o = g.orient(q.a, q.b, q.c, q.d);
+    const bool reflex = o < 0;  // §6.1: d beyond abc (s is beneath every triangle)
+    if (!reflex && x == kNone) return;
+    // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
+    int a_in = -1;
+    Index in31 = kNone;
+    if (deg[q.a] == 3) {
+      a_in = g.in_cone(q.b, q.c, q.d, q.a);
+      if (a_in) in31 = q.a;
+    }
+    if (in31 == kNone && deg[q.b] == 3 && g.in_cone(q.a, q.c, q.d, q.b)) in31 = q.b;
+    if (in31 != kNone) {  // line 8
+      inner[i] = in31;
+      if (labelled[in31]) action[i] = kFlip31D;
+      else if (reflex) action[i] = kFlip31V;
+      return;
+    }
+    // line 11: C_s(T_e) convex
+    if (a_in < 0) a_in = g.in_cone(q.b, q.c, q.d, q.a);
+    const bool b_in = !a_in && g.in_cone(q.a, q.c, q.d, q.b);
+    if (!a_in && !b_in) {
+      if (x == kNone) {
+        if (reflex) action[i] = kFlip22V;  // lines 12-13
+      } else if ((x == q.a || x == q.b) && !s_in_tetrahedron(q, o)) {
+        action[i] = kFlip22D;  // lines 14-15
+      }
+      return;
+    }
+    // lines 16-18: label the inner endpoint (Lemma 6.5)
+    const Index in = a_in ? q.a : q.b;
+    if (!labelled[in] && reflex) {
+      action[i] = kLabel;
+      inner[i] = in;
+    }
+  }
+};
+
+struct HasAction {
+  const uint8_t* action;
+  FF_HD bool operator()(uint32_t i) const { return action[i] != kNoAction; }
+};
+
+// The triangles of T_e for the decision of candidate i (kNone-padded).
+struct ClaimTriangles {
+  const Index* tv;
+  const uint32_t* tn;
+  const uint32_t* cand;
+  const uint8_t* action;
+  const Index* inner;
+  FF_HD void operator()(uint32_t i, uint32_t out[3]) const {
+    out[0] = out[1] = out[2] = kNone;
+    const uint8_t act = action[i];
+    if (act == kLabel) return;
+    const Quad q = quad_of(tv, tn, cand[i]);
+    out[0] = q.t, out[1] = q.t2;
+    if (act == kFlip31V || act == kFlip31D)  // the third triangle around the removed vertex
+      out[2] = tn[3 * q.t + (inner[i] == q.a ? prev3(q.k) : next3(q.k))];
+  }
+};
+
+// Step 3: the atomic-minimum claims; op r's triangles are kept in
+// op_tri[3r..3r+2] (the edge id names other triangles once flipped).
+struct Claim {
+  ClaimTriangles tris;
+  const uint32_t* ops;
+  uint32_t* claim;
+  uint32_t* op_tri;
+  FF_HD void operator()(std::size_t r) const {
+    const uint32_t i = ops[r];
+    uint32_t* t = op_tri + 3 * r;
+    tris(i, t);
+    for (int j = 0; j < 3; ++j)
+      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).fetch_min(tris.cand[i], cuda::memory_order_relaxed);
+  }
+};
+
+// Step 4's test: won[r] = 1 when every claim of op r holds (labels: always).
+struct Won {
+  const uint32_t* cand;
+  const uint32_t* ops;
+  const uint32_t* op_tri;
+  const uint32_t* claim;
+  uint8_t* won;
+  FF_HD void operator()(std::size_t r) const {
+    const uint32_t* t = op_tri + 3 * r;
+    uint8_t ok = 1;
+    for (int j = 0; j < 3; ++j)
+      if (t[j] != kNone && claim[t[j]] != cand[ops[r]]) ok = 0;
+    won[r] = ok;
+  }
+};
+
+// The codes of applied operations (for the counters).
+enum : uint8_t { kLost = 0, kDid22 = 1, kDid31 = 2, kNewLabel = 3, kOldLabel = 4 };
+
+// Step 4: the winning flips rewrite their own triangle slots (vertices, inner
+// adjacency; the outer entries keep the *old* neighbour ids for step 5) and
+// publish, per slot, that it changed this round (stamp_t) and which live slot
+// of the same flip may hold an edge it had (partner); degrees by atomics.
+// Labels (line 18) by atomic exchange; the vertex's edges are stamped (line 19).
+struct Apply {
+  ClaimTriangles tris;
+  const uint32_t* ops;
+  const uint32_t* op_tri;
+  Index* tv;
+  uint32_t* tn;
+  uint8_t* alive;
+  uint32_t* partner;
+  uint32_t* stamp_t;
+  uint32_t* stamp_v;
+  uint32_t* deg;
+  uint32_t* labelled;
+  uint8_t* won;
+  uint32_t round;
+  FF_HD void operator()(std::size_t r) const {
+    if (!won[r]) return;
+    const uint32_t i = ops[r];
+    const uint8_t act = tris.action[i];
+    if (act == kLabel) {
+      const Index x = tris.inner[i];
+      won[r] = Atomic<uint32_t>(labelled[x]).exchange(1u, cuda::memory_order_relaxed) ? kOldLabel : kNewLabel;
+      Atomic<uint32_t>(stamp_v[x]).store(round, cuda::memory_order_relaxed);
+      return;
+    }
+    const Quad q = quad_of(tv, tn, tris.cand[i]);
+    if (act == kFlip22V || act == kFlip22D) {
+      // lines 13 / 15: (a, b, c), (b, a, d) -> (a, d, c), (d, b, c)
+      const uint32_t n_bc = tn[3 * q.t + next3(q.k)], n_ca = tn[3 * q.t + prev3(q.k)];
+      const uint32_t n_ad = tn[3 * q.t2 + next3(q.j)], n_db = tn[3 * q.t2 + prev3(q.j)];
+      Index* A = tv + 3 * q.t;
+      Index* B = tv + 3 * q.t2;
+      A[0] = q.a, A[1] = q.d, A[2] = q.c;
+      B[0] = q.d, B[1] = q.b, B[2] = q.c;
+      uint32_t* nA = tn + 3 * q.t;
+      uint32_t* nB = tn + 3 * q.t2;
+      nA[0] = n_ad, nA[1] = q.t2, nA[2] = n_ca;
+      nB[0] = n_db, nB[1] = n_bc, nB[2] = q.t;
+      partner[q.t] = q.t2, partner[q.t2] = q.t;
+      stamp_t[q.t] = round, stamp_t[q.t2] = round;
+      Atomic<uint32_t>(deg[q.a]).fetch_sub(1u, cuda::memory_order_relaxed);
+      Atomic<uint32_t>(deg[q.b]).fetch_sub(1u, cuda::memory_order_relaxed);
+      Atomic<uint32_t>(deg[q.c]).fetch_add(1u, cuda::memory_order_relaxed);
+      Atomic<uint32_t>(deg[q.d]).fetch_add(1u, cuda::memory_order_relaxed);
+      won[r] = kDid22;
+      return;
+    }
+    // line 9: the 3-1 flip of x; each triangle (x, u, w) of its star gives the
+    // link edge u -> w with its outer neighbour; the link triangle replaces
+    // the star in slot t, the other two slots die
+    const Index x = tris.inner[i];
+    const uint32_t* star = op_tri + 3 * r;
+    Index u[3], w[3];
+    uint32_t o[3];
+    for (int s = 0; s < 3; ++s) {
+      const uint32_t t = star[s];
+      uint32_t px = 0;
+      while (px < 2 && tv[3 * t + px] != x) ++px;
+      u[s] = tv[3 * t + next3(px)], w[s] = tv[3 * t + prev3(px)];
+      o[s] = tn[3 * t + next3(px)];
+    }
+    const int s1 = u[1] == w[0] ? 1 : 2, s2 = 3 - s1;  // the link cycle u0 -> w0 = u[s1] -> w[s1] = u[s2]
+    const uint32_t t = star[0];
+    tv[3 * t] = u[0], tv[3 * t + 1] = w[0], tv[3 * t + 2] = w[s1];
+    tn[3 * t] = o[0], tn[3 * t + 1] = o[s1], tn[3 * t + 2] = o[s2];
+    for (int s = 0; s < 3; ++s) {
+      partner[star[s]] = t;
+      stamp_t[star[s]] = round;
+      if (s > 0) alive[star[s]] = 0;
+    }
+    deg[x] = 0;  // x is in no live triangle: no other thread touches its degree
+    Atomic<uint32_t>(deg[u[0]]).fetch_sub(1u, cuda::memory_order_relaxed);
+    Atomic<uint32_t>(deg[w[0]]).fetch_sub(1u, cuda::memory_order_relaxed);
+    Atomic<uint32_t>(deg[w[s1]]).fetch_sub(1u, cuda::memory_order_relaxed);
+    won[r] = kDid31;
+  }
+};
+
+// Step 5: for each new triangle of a winning flip, each outer edge x -> y
+// (its entry still holds the old neighbour m): an unchanged m gets its entry
+// for y -> x set to the new triangle (only this thread writes it); a changed
+// m (stamp_t == round) holds y -> x in m itself, when m is still alive and
+// has it, else in partner[m] — the flips of a round keep their outer edges
+// in their own live slots. Reads only vertices, alive and partner, which
+// step 5 does not write.
+struct Repair {
+  const uint32_t* cand;
+  const uint8_t* action;
+  const uint32_t* ops;
+  const uint8_t* won;
+  const Index* tv;
+  uint32_t* tn;
+  const uint8_t* alive;
+  const uint32_t* partner;
+  const uint32_t* stamp_t;
+  uint32_t round;
+  FF_HD int find(uint32_t m, Index y, Index x) const {  // the position of y -> x in m, or -1
+    for (uint32_t j = 0; j < 3; ++j)
+      if (tv[3 * m + j] == y && tv[3 * m + next3(j)] == x) return static_cast<int>(j);
+    return -1;
+  }
+  FF_HD void link(uint32_t s, uint32_t q) const {
+    const Index x = tv[3 * s + q], y = tv[3 * s + next3(q)];
+    const uint32_t m = tn[3 * s + q];
+    if (stamp_t[m] != round) {
+      const int j = find(m, y, x);
+      if (j >= 0) tn[3 * m + j] = s;
+      return;
+    }
+    if (alive[m] && find(m, y, x) >= 0) return;  // tn[3s + q] = m already
+    tn[3 * s + q] = partner[m];
+  }
+  FF_HD void operator()(std::size_t r) const {
+    if (won[r] != kDid22 && won[r] != kDid31) return;
+    const uint32_t e = cand[ops[r]];
+    const uint32_t t = e / 3;
+    if (won[r] == kDid31) {
+      for (uint32_t q = 0; q < 3; ++q) link(t, q);
+      return;
+    }
+    const uint32_t t2 = partner[t];
+    link(t, 0), link(t, 2);    // (a, d, c): a -> d, c -> a
+    link(t2, 0), link(t2, 1);  // (d, b, c): d -> b, b -> c
+  }
+};
+
+struct ResetClaims {
+  const uint32_t* op_tri;
+  uint32_t* claim;
+  FF_HD void operator()(std::size_t r) const {
+    const uint32_t* t = op_tri + 3 * r;
+    for (int j = 0; j < 3; ++j)
+      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).store(kNone, cuda::memory_order_relaxed);
+  }
+};
+
+struct CountDegree {
+  const Index* tv;
+  uint32_t* deg;
+  FF_HD void operator()(std::size_t i) const { Atomic<uint32_t>(deg[tv[i]]).fetch_add(1u, cuda::memory_order_relaxed); }
+};
+
+// The end state (ff3::final_problem): 1 per reflex edge / per labelled vertex left.
+struct ReflexEdge {
+  Geo g;
+  const Index* tv;
+  const uint32_t* tn;
+  const uint8_t* alive;
+  FF_HD std::size_t operator()(std::size_t e) const {
+    const uint32_t t = static_cast<uint32_t>(e / 3), k = static_cast<uint32_t>(e % 3);
+    if (!alive[t] || !(tv[e] < tv[3 * t + next3(k)])) return 0;
+    const Quad q = quad_of(tv, tn, static_cast<uint32_t>(e));
+    return g.orient(q.a, q.b, q.c, q.d) < 0 ? 1 : 0;
+  }
+};
+struct LabelledVertex {
+  const uint32_t* deg;
+  const uint32_t* labelled;
+  FF_HD std::size_t operator()(std::size_t v) const { return deg[v] != 0 && labelled[v] != 0 ? 1 : 0; }
+};
+
+// ---- output ---------------------------------------------------------------------
+struct Tri {
+  Index v[3];
+};
+struct IsAlive {
+  const uint8_t* alive;
+  FF_HD bool operator()(uint32_t t) const { return alive[t] != 0; }
+};
+// canonical_rotation: an even permutation bringing the smallest index first
+struct CanonicalTri {
+  const Index* tv;
+  FF_HD Tri operator()(uint32_t t) const {
+    const Index* p = tv + 3 * t;
+    const uint32_t m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
+    return {{p[m], p[next3(m)], p[prev3(m)]}};
+  }
+};
+struct TriLess {
+  FF_HD bool operator()(const Tri& x, const Tri& y) const {
+    if (x.v[0] != y.v[0]) return x.v[0] < y.v[0];
+    if (x.v[1] != y.v[1]) return x.v[1] < y.v[1];
+    return x.v[2] < y.v[2];
+  }
+};
+static_assert(sizeof(Tri) == sizeof(Triangle), "Tri and Triangle must be three packed ids");
+
+// ---- the whole computation ------------------------------------------------------
+
+// The buffers of the steps: allocated once and not initialised (every step
+// writes before it reads; the few with initial values are filled in
+// parallel), so that in the OpenMP build the unused tail of a buffer sized
+// for the worst case is never touched; on the device a plain device_vector.
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+template <class T>
+struct DefaultInit : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInit<U>;
+  };
+  DefaultInit() = default;
+  template <class U>
+  DefaultInit(const DefaultInit<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+template <class T>
+using Scratch = std::vector<T, DefaultInit<T>>;
+#else
+template <class T>
+using Scratch = thrust::device_vector<T>;
+#endif
+
+// Every buffer of the computation, sized from n once (§6.4.1 grows its arrays;
+// here the bounds are allocated up front): at most max_tri = 2n - 4 triangle
+// slots (every insertion adds two), at most n - 4 triangles split in a round
+// (each has a point), at most 3 max_tri / 2 edges.
+struct Buffers {
+  TempStorage temp;  // the steps' temporary storage, reused
+  backend::Buffer<double> coords;
+  // points under construction
+  Scratch<Index> pid;
+  Scratch<uint32_t> ptri;
+  Scratch<double> pkey;
+  Scratch<uint8_t> drop;
+  // the surface: 3 entries per slot
+  Scratch<Index> tv;
+  Scratch<uint32_t> tn;
+  Scratch<uint8_t> alive;
+  // construction rounds: per slot its rank in the round; per split triangle
+  Scratch<uint32_t> rank, seg_tri;
+  Scratch<Best> far;
+  Scratch<Index> old_v;
+  Scratch<uint32_t> old_nb;
+  Scratch<uint8_t> old_pos;
+  // flip-flop: per slot, per vertex, per candidate edge
+  Scratch<uint32_t> claim, partner, stamp_t;
+  Scratch<uint32_t> deg, labelled, stamp_v;
+  Scratch<uint32_t> cand, ops, op_tri;
+  Scratch<uint8_t> action, won;
+  Scratch<Index> inner;
+
+  Buffers(std::size_t n, std::size_t max_tri) {
+    pid.resize(n), ptri.resize(n), pkey.resize(n), drop.resize(n);
+    tv.resize(3 * max_tri), tn.resize(3 * max_tri), alive.resize(max_tri);
+    rank.resize(max_tri), seg_tri.resize(n), far.resize(n);
+    old_v.resize(3 * n), old_nb.resize(3 * n), old_pos.resize(3 * n);
+    claim.resize(max_tri), partner.resize(max_tri), stamp_t.resize(max_tri);
+    deg.resize(n), labelled.resize(n), stamp_v.resize(n);
+    // candidates: one directed half per edge; ops also lists the live slots
+    // at the output
+    const std::size_t max_edges = 3 * max_tri / 2;
+    cand.resize(max_edges), ops.resize(max_edges), op_tri.resize(3 * max_edges);
+    action.resize(max_edges), won.resize(max_edges), inner.resize(max_edges);
+    fill_n(raw(rank), max_tri, kNone);
+    fill_n(raw(deg), n, uint32_t{0});
+    fill_n(raw(labelled), n, uint32_t{0});
+    fill_n(raw(stamp_v), n, uint32_t{0});
+  }
+};
+
+class Hull3 {
+ public:
+  // xyz: the coordinates where the steps read them (backend::to_device)
+  Hull3(const PointSet& ps, const double* xyz, const std::array<Index, 4>& tet, const std::array<double, 3>& s,
+        Buffers& B, ref::Hull3Stats& st)
+      : n_(ps.size()), tet_(tet), B_(B), st_(st) {
+    g_.xyz = xyz;
+    g_.filter = pred::StaticFilter::for_points(ps.coords.data(), n_, 3, nullptr, s.data(), 3);
+    for (int j = 0; j < 3; ++j) g_.s[j] = s[j];
+    g_.n = static_cast<uint32_t>(n_);
+  }
+
+  void construct() {
+    const Index a = tet_[0], b = tet_[1], c = tet_[2], d = tet_[3];
+    // line 3: the tetrahedron, faces 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c)
+    const Index faces[12] = {a, b, c, a, c, d, a, d, b, b, d, c};
+    uint32_t adj[12];
+    for (uint32_t t = 0; t < 4; ++t)
+      for (uint32_t k = 0; k < 3; ++k)
+        for (uint32_t r = 0; r < 4; ++r)
+          for (uint32_t j = 0; j < 3; ++j)
+            if (faces[3 * r + j] == faces[3 * t + next3(k)] && faces[3 * r + next3(j)] == faces[3 * t + k])
+              adj[3 * t + k] = r;
+    thrust::copy(faces, faces + 12, B_.tv.begin());
+    thrust::copy(adj, adj + 12, B_.tn.begin());
+    T_ = 4;
+    Index* pid = raw(B_.pid);
+    uint32_t* ptri = raw(B_.ptri);
+    double* pkey = raw(B_.pkey);
+    uint8_t* drop = raw(B_.drop);
+    // lines 2, 5, 14 (round 0)
+    std::size_t m = select(B_.temp, n_, pid, NotTetrahedron{a, b, c, d});
+    for_n(m, AssociateRound0{g_, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
+    std::size_t kept = compact(m);
+    st_.discarded_early += m - kept;
+    m = kept;
+    // lines 6-14 in rounds: every triangle with points is split at once
+    while (m > 0) {
+      ++st_.rounds;
+      std::size_t K = 0;
+      run_with(B_.temp, m, [&](auto policy) {
+        thrust::sort_by_key(policy, ptri, ptri + m, thrust::make_zip_iterator(thrust::make_tuple(pid, pkey)));
+        // line 8: per triangle the furthest point (keyed arg-max reduction)
+        const auto values = thrust::make_transform_iterator(
+            thrust::make_zip_iterator(thrust::make_tuple(pkey, pid)), MakeBest());
+        K = static_cast<std::size_t>(thrust::reduce_by_key(policy, ptri, ptri + m, values, raw(B_.seg_tri),
+                                                           raw(B_.far), thrust::equal_to<uint32_t>(), BestOf())
+                                         .first -
+                                     raw(B_.seg_tri));
+      });
+      const uint32_t T = T_;
+      for_n(K, SplitRead{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_v), raw(B_.old_nb),
+                         raw(B_.old_pos)});
+      for_n(K, SplitWrite{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.far), raw(B_.old_v), T});
+      for_n(K, SplitOuter{raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_nb), raw(B_.old_pos), T});
+      for_n(m, Reassociate{g_, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid, {ptri, pkey, drop}});
+      for_n(K, ResetRank{raw(B_.seg_tri), raw(B_.rank)});
+      T_ += 2 * static_cast<uint32_t>(K);
+      kept = compact(m);
+      st_.insertions += K;
+      st_.discarded_early += m - kept - K;  // the K inserted points are not discarded
+      m = kept;
+    }
+    st_.flips_1_3 = st_.insertions;
+  }
+
+  void flip_flop() {
+    const std::size_t T = T_;
+    fill_n(raw(B_.alive), T, uint8_t{1});
+    fill_n(raw(B_.claim), T, kNone);
+    fill_n(raw(B_.stamp_t), T, uint32_t{0});
+    for_n(3 * T, CountDegree{raw(B_.tv), raw(B_.deg)});  // line 1: labels are all 0 ("unknown")
+    Index* tv = raw(B_.tv);
+    uint32_t* tn = raw(B_.tn);
+    uint32_t* cand = raw(B_.cand);
+    uint32_t* ops = raw(B_.ops);
+    bool all = true;  // line 2: every edge
+    for (uint32_t round = 1;; ++round) {
+      const std::size_t C = select(B_.temp, 3 * T, cand,
+                                   IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all});
+      for_n(C, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled), cand, raw(B_.action), raw(B_.inner)});
+      const std::size_t M = select(B_.temp, C, ops, HasAction{raw(B_.action)});
+      if (M == 0) {
+        if (all) break;  // a round over every edge decided nothing: the end
+        all = true;
+        continue;
+      }
+      all = false;
+      ++st_.rounds;
+      const ClaimTriangles tris{tv, tn, cand, raw(B_.action), raw(B_.inner)};
+      for_n(M, Claim{tris, ops, raw(B_.claim), raw(B_.op_tri)});
+      for_n(M, Won{cand, ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)});
+      for_n(M, Apply{tris, ops, raw(B_.op_tri), tv, tn, raw(B_.alive), raw(B_.partner), raw(B_.stamp_t), raw(B_.stamp_v),
+                     raw(B_.deg), raw(B_.labelled), raw(B_.won), round});
+      for_n(M, Repair{cand, raw(B_.action), ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
+                      raw(B_.stamp_t), round});
+      for_n(M, ResetClaims{raw(B_.op_tri), raw(B_.claim)});
+      st_.flips_2_2 += count(M, kDid22);
+      st_.flips_3_1 += count(M, kDid31);
+      st_.labelled_non_extreme += count(M, kNewLabel);
+    }
+    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left
+    std::size_t reflex = 0, labelled = 0;
+    run_with(B_.temp, 3 * T, [&](auto policy) {
+      reflex = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
+                                        thrust::counting_iterator<std::size_t>(3 * T),
+                                        ReflexEdge{g_, tv, tn, raw(B_.alive)}, std::size_t{0},
+                                        thrust::plus<std::size_t>());
+      labelled = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
+                                          thrust::counting_iterator<std::size_t>(n_),
+                                          LabelledVertex{raw(B_.deg), raw(B_.labelled)}, std::size_t{0},
+                                          thrust::plus<std::size_t>());
+    });
+    if (reflex || labelled)
+      throw std::logic_error("hull3 (kernels): flip-flop ended with " + std::to_string(reflex) + " reflex edges and " +
+                             std::to_string(labelled) + " non-extreme vertices");
+  }
+
+  // The live triangles in canonical order (reference/canonical.hpp), on the
+  // device; returns their number (in B_.ops as slots, then as Tri in `out`).
+  std::size_t output(backend::Buffer<Tri>& out) {
+    uint32_t* slots = raw(B_.ops);
+    const std::size_t F = select(B_.temp, T_, slots, IsAlive{raw(B_.alive)});
+    out.resize(F);
+    run_with(B_.temp, F, [&](auto policy) {
+      thrust::transform(policy, slots, slots + F, raw(out), CanonicalTri{raw(B_.tv)});
+      thrust::sort(policy, raw(out), raw(out) + F, TriLess());
+    });
+    return F;
+  }
+
+ private:
+  // Drops the points with drop[i] set (stable); returns how many are kept.
+  std::size_t compact(std::size_t m) {
+    if (m == 0) return 0;
+    std::size_t kept = 0;
+    run_with(B_.temp, m, [&](auto policy) {
+      const auto first = thrust::make_zip_iterator(thrust::make_tuple(raw(B_.pid), raw(B_.ptri), raw(B_.pkey)));
+      kept = static_cast<std::size_t>(thrust::remove_if(policy, first, first + m, raw(B_.drop), IsSet()) - first);
+    });
+    return kept;
+  }
+  std::size_t count(std::size_t M, uint8_t code) {
+    std::size_t c = 0;
+    uint8_t* won = raw(B_.won);
+    run_with(B_.temp, M, [&](auto policy) { c = thrust::count(policy, won, won + M, code); });
+    return c;
+  }
+
+  std::size_t n_;
+  std::array<Index, 4> tet_;
+  Buffers& B_;
+  ref::Hull3Stats& st_;
+  Geo g_{};
+  uint32_t T_ = 0;
+};
+
+// Line 1 by reductions; exactly independent, else the reference's rule.
+std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz) {
+  const std::size_t n = ps.size();
+  TetKey key{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  const Index a = argmax(temp, n, key);
+  key.mode = 1;
+  const Index b = argmax(temp, n, key);
+  const double *A = ps.point(a), *Bp = ps.point(b);
+  for (int j = 0; j < 3; ++j) key.A[j] = A[j], key.u[j] = Bp[j] - A[j];
+  key.mode = 2;
+  const Index c = argmax(temp, n, key);
+  const double* Cp = ps.point(c);
+  const double v[3] = {Cp[0] - A[0], Cp[1] - A[1], Cp[2] - A[2]};
+  key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
+  key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
+  key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
+  key.mode = 3;
+  const Index d = argmax(temp, n, key);
+  const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
+  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+  // (a, b, c) counter-clockwise seen from outside: d on its inner side
+  if (o < 0) return {a, c, b, d};
+  return {a, b, c, d};
+}
+
+// Runs f, turning a failed allocation of device memory (std::bad_alloc, from
+// which thrust's bad_alloc derives: the buffers, or the temporary storage of
+// a sort or reduction) into the kernels' DeviceMemoryError.
+template <class F>
+auto on_device(std::size_t n, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    throw kernels::DeviceMemoryError("hull3: " + std::to_string(n) + " points do not fit in device memory");
+  }
+}
+
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::StageClock& clock) {
+  const std::size_t n = ps.size();
+  if (ps.dim != 3 || n < 4) {
+    ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
+    throw std::logic_error("hull3 (kernels): the reference accepted input of fewer than 4 points");
+  }
+  if (n >= (std::size_t{1} << 29))
+    throw std::invalid_argument("hull3 (kernels): too many points for 32-bit triangle and edge ids");
+  std::unique_ptr<Buffers> B;
+  const double* xyz = on_device(n, [&] {
+    B = std::make_unique<Buffers>(n, 2 * n);
+    return backend::to_device(ps.coords.data(), ps.coords.size(), B->coords);
+  });
+  clock.mark("upload");
+  const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(B->temp, ps, xyz); });  // line 1
+  // line 4: the rounded centroid, when strictly inside the tetrahedron exactly
+  std::array<double, 3> s{};
+  if (!cpu::rounded_centroid(ps, tet, s)) {
+    // §6.4.2: the exact centroid's predicates (GMP) run on the host only, so
+    // does this rare case: the exact reference, whose answer is the one
+    B.reset();
+    clock.mark("tetrahedron");
+    std::vector<Triangle> out = ref::hull3_ffhull(ps, &st);
+    clock.mark("reference (exact kernel point, host)");
+    return out;
+  }
+  return on_device(n, [&] {
+    Hull3 h(ps, xyz, tet, s, *B, st);
+    clock.mark("tetrahedron");
+    h.construct();  // lines 2-14
+    clock.mark("construction");
+    h.flip_flop();  // line 15
+    clock.mark("flip-flop");
+    backend::Buffer<Tri> tris;
+    const std::size_t F = h.output(tris);
+    clock.mark("output");
+    const std::vector<Tri> host = backend::to_host(tris, F);
+    std::vector<Triangle> out(F);
+    if (F) std::memcpy(out.data(), host.data(), F * sizeof(Tri));
+    clock.mark("download");
+    return out;
+  });
+}
+
+}  // namespace hull3_detail
+
+std::vector<Triangle> hull3_ffhull(const PointSet& ps, ref::Hull3Stats* stats, cpu::StageTimes* times) {
+  backend::require_device("hull3 ffhull");
+  ref::Hull3Stats st;
+  cpu::StageClock clock(times);
+  std::vector<Triangle> out = hull3_detail::compute(ps, st, clock);
+  if (stats) *stats = st;
+  return out;
+}
+
+}  // namespace flipflop::FF_KERNELS_NS

@@ -1,0 +1,174 @@
+// hull3_cuda_omp_test.cpp — the data-parallel ffHull of kernels_cuda/hull3
+// (hull3.cuh), built against thrust's OpenMP backend (kernels_omp), against
+// the exact sequential reference ref::hull3_ffhull: byte-identical canonical
+// text for every input, degenerate inputs included, the same rejection (same
+// message) of input that does not span R^3, and ffHull's counters' lemmas.
+//
+// Oracle: ref::hull3_ffhull (itself tested against brute force and CGAL in
+// ffhull_reference_test.cpp); certify::hull3 at Level::canonical on the
+// large inputs.
+//
+// Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
+// by prop_scaled): degenerate / random sets of 4..60 points 2000 / 4 = 500;
+// every generator family at 4..3000 points 2000 / 20 = 100; the deterministic
+// sweep: every 3D family x 6 sizes (4..20000) x 2 seeds; five large inputs of
+// 10^4..10^5 points.
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+
+#include <algorithm>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "gen/generate.hpp"
+#include "kernels_cuda/hull3/hull3.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/hull3_expect.hpp"
+#include "proptests/support/outcome.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/dimension.hpp"
+#include "reference/hull3/ffhull.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+using test::is_error;
+using test::outcome;
+
+std::string omp_text(const PointSet& ps, ref::Hull3Stats* st = nullptr, cpu::StageTimes* times = nullptr) {
+  return outcome([&] { return kernels_omp::hull3_ffhull(ps, st, times); });
+}
+
+std::string ref_text(const PointSet& ps) { return test::hull3_reference_text(ps); }
+
+std::size_t vertex_count(const std::vector<Triangle>& tris) {
+  std::set<Index> v;
+  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
+  return v.size();
+}
+
+// ffHull's counters (fuzz/hull3_check.cpp): every point but the tetrahedron
+// is inserted or discarded early; every 3-1 flip removes an inserted vertex;
+// only removed vertices are labelled.
+bool counts_ok(const PointSet& ps, const ref::Hull3Stats& st, std::size_t V) {
+  return st.insertions == st.flips_1_3 && 4 + st.insertions + st.discarded_early == ps.size() &&
+         4 + st.insertions == V + st.flips_3_1 && st.labelled_non_extreme <= st.flips_3_1;
+}
+
+// kernels_omp == reference, counters consistent. Returns the text.
+std::string check_rc(const PointSet& ps) {
+  const std::string expect = ref_text(ps);
+  ref::Hull3Stats st;
+  const std::string got = omp_text(ps, &st);
+  RC_ASSERT(got == expect);
+  if (!is_error(expect)) RC_ASSERT(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+  return expect;
+}
+
+bool has_stage(const cpu::StageTimes& t, const std::string& name) {
+  return std::any_of(t.stages.begin(), t.stages.end(), [&](const auto& s) { return s.first == name; });
+}
+
+}  // namespace
+
+TEST_CASE("hull3 cuda-omp: degenerate and random small sets equal the reference (shrinking)",
+          "[hull3_cuda_omp]") {
+  test::prop_scaled("degenerate sets of 4..60 points: kernels_omp == reference byte for byte", 4, [] {
+    const PointSet ps = *test::degenerate_points(3, 4, 60, false);
+    check_rc(ps);
+  });
+}
+
+TEST_CASE("hull3 cuda-omp: every generator family up to 3000 points equals the reference (shrinking)",
+          "[hull3_cuda_omp]") {
+  test::prop_scaled("family sets of 4..3000 points (grid3, sphere-lattice, coplanar3, duplicates3, huge3, "
+                    "tiny3, jitter3, ...): kernels_omp == reference",
+                    20, [] {
+                      const PointSet ps = *test::thinned(test::family_points(3, 4, 3000, false));
+                      check_rc(ps);
+                    });
+}
+
+TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[hull3_cuda_omp]") {
+  std::size_t cases = 0, rejected = 0;
+  const std::vector<std::string> fams = test::families(3);
+  test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
+                              [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
+                                INFO(fam << " n=" << n << " seed=" << seed);
+                                const std::string expect = test::hull3_sweep_expect(ps, rejected);
+                                ref::Hull3Stats st;
+                                REQUIRE(omp_text(ps, &st) == expect);
+                                if (!is_error(expect))
+                                  REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+                                ++cases;
+                              });
+  std::cout << "hull3 kernels_omp sweep: " << cases << " runs identical to the reference (" << rejected
+            << " inputs rejected as flat by both)\n";
+  REQUIRE(cases == fams.size() * 6 * 2);
+  REQUIRE(fams.size() >= 13);
+}
+
+TEST_CASE("hull3 cuda-omp: large ball, sphere, box and lattice inputs equal the reference, certified",
+          "[hull3_cuda_omp]") {
+  const std::pair<const char*, std::size_t> inputs[] = {
+      {"ball", 100000}, {"sphere", 100000}, {"box", 30000}, {"sphere-lattice", 30000}, {"grid3", 10000}};
+  for (const auto& [fam, n] : inputs) {
+    gen::Options o;
+    o.seed = 11;
+    const PointSet ps = gen::generate(fam, n, o);
+    INFO(fam << " n=" << n);
+    const auto expect = ref::hull3_ffhull(ps);
+    ref::Hull3Stats st;
+    cpu::StageTimes times;
+    REQUIRE(kernels_omp::hull3_ffhull(ps, &st, &times) == expect);
+    REQUIRE(counts_ok(ps, st, vertex_count(expect)));
+    for (const char* stage : {"upload", "tetrahedron", "construction", "flip-flop", "output", "download"})
+      REQUIRE(has_stage(times, stage));
+    REQUIRE(certify::hull3(ps, expect, certify::Level::canonical).ok);
+  }
+}
+
+// An almost flat initial tetrahedron: the fourth point 2^-1074 above the
+// plane z = 0, so the rounded centroid (z = 2^-1076 -> 0) lies on the face
+// plane, not strictly inside — the exact-kernel path (hull3.cuh, line 4).
+TEST_CASE("hull3 cuda-omp: an almost flat tetrahedron takes the exact kernel point", "[hull3_cuda_omp]") {
+  PointSet ps;
+  ps.dim = 3;
+  const double tiny = 4.9406564584124654e-324;
+  ps.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.25, 0.25, tiny, 0.5, 0.25, 0, 0.2, 0.2, tiny, 1, 1, 0};
+  cpu::StageTimes times;
+  ref::Hull3Stats st;
+  REQUIRE(omp_text(ps, &st, &times) == ref_text(ps));
+  REQUIRE(!is_error(ref_text(ps)));
+  REQUIRE(has_stage(times, "reference (exact kernel point, host)"));
+  REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+}
+
+TEST_CASE("hull3 cuda-omp: input that does not span R^3 is rejected like the reference", "[hull3_cuda_omp]") {
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0};  // coplanar
+  REQUIRE(is_error(omp_text(ps)));
+  REQUIRE(omp_text(ps) == ref_text(ps));
+  ps.coords = {1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3};  // one point, five times
+  REQUIRE(is_error(omp_text(ps)));
+  REQUIRE(omp_text(ps) == ref_text(ps));
+  ps.coords = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3};  // collinear
+  REQUIRE(omp_text(ps) == ref_text(ps));
+  ps.coords.resize(9);  // three points
+  REQUIRE(is_error(omp_text(ps)));
+  REQUIRE(omp_text(ps) == ref_text(ps));
+  PointSet flat2;
+  flat2.dim = 2;
+  flat2.coords = {0, 0, 1, 0, 0, 1, 1, 1};
+  REQUIRE(is_error(omp_text(flat2)));
+  REQUIRE(omp_text(flat2) == ref_text(flat2));
+}
+
+#endif
