@@ -852,32 +852,8 @@ static_assert(sizeof(Tri) == sizeof(Triangle), "Tri and Triangle must be three p
 // The buffers of the steps: allocated once and not initialised (every step
 // writes before it reads; the few with initial values are filled in
 // parallel), so that in the OpenMP build the unused tail of a buffer sized
-// for the worst case is never touched; on the device a plain device_vector.
-#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-template <class T>
-struct DefaultInit : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = DefaultInit<U>;
-  };
-  DefaultInit() = default;
-  template <class U>
-  DefaultInit(const DefaultInit<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... A>
-  void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-template <class T>
-using Scratch = std::vector<T, DefaultInit<T>>;
-#else
-template <class T>
-using Scratch = thrust::device_vector<T>;
-#endif
+// for the worst case is never touched (backend::Scratch).
+using backend::Scratch;
 
 // Every buffer of the computation, sized from n once (§6.4.1 grows its arrays;
 // here the bounds are allocated up front): at most max_tri = 2n - 4 triangle
