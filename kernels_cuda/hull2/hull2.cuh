@@ -309,8 +309,9 @@ struct Bid {
     const double *p = at(xy, P[e]), *q = at(xy, P[(e + 1) % m]), *x = at(xy, u);
     double c = (q[0] - p[0]) * (x[1] - p[1]) - (q[1] - p[1]) * (x[0] - p[0]);
     c = c < 0 ? -c : c;
-    float cf = static_cast<float>(c);
-    if (!(cf == cf)) cf = 0.0f;  // NaN (inf - inf): no preference
+    // as a float, clamped (a cast beyond the float range is undefined); NaN
+    // (inf - inf): no preference
+    const float cf = !(c == c) ? 0.0f : c < 3.0e38 ? static_cast<float>(c) : 3.0e38f;
     std::uint32_t bits;
     std::memcpy(&bits, &cf, sizeof bits);
     const unsigned long long key = (static_cast<unsigned long long>(bits) << 32) | (0xffffffffu - u);
