@@ -81,17 +81,19 @@ Reps representatives(const double* values, std::size_t m) {
   return r;
 }
 
-// The static filter of m coordinate values and nw weights (weights may be
-// null): the filter StaticFilter::for_points gives on the whole arrays.
+// The static filter of m coordinate values (device memory in the CUDA build),
+// nw weights (weights may be null) and extra_count further coordinate values
+// on the host (e.g. a kernel point's): the filter StaticFilter::for_points
+// gives on the whole arrays.
 template <std::size_t ParallelFrom>
 pred::StaticFilter static_filter(const double* coords, std::size_t m, const double* weights = nullptr,
-                                 std::size_t nw = 0) {
+                                 std::size_t nw = 0, const double* extra = nullptr, std::size_t extra_count = 0) {
   const Reps c = representatives<ParallelFrom>(coords, m);
   const double cv[3] = {c.big, c.low, c.bad};
-  if (!weights) return pred::StaticFilter::for_points(cv, 3, 1);
+  if (!weights) return pred::StaticFilter::for_points(cv, 3, 1, nullptr, extra, extra_count);
   const Reps w = representatives<ParallelFrom>(weights, nw);
   const double wv[3] = {w.big, w.low, w.bad};
-  return pred::StaticFilter::for_points(cv, 3, 1, wv);
+  return pred::StaticFilter::for_points(cv, 3, 1, wv, extra, extra_count);
 }
 
 }  // namespace flipflop::FF_KERNELS_NS::filter

@@ -93,6 +93,7 @@
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
 #include "kernels_cpu/stage_times.hpp"
 #include "kernels_cuda/backend.cuh"
+#include "kernels_cuda/static_filter.cuh"
 #include "kernels_cuda/device_predicates.cuh"
 #include "kernels_cuda/hull3/hull3.hpp"
 #include "kernels_cuda/kernel_errors.hpp"
@@ -910,7 +911,9 @@ class Hull3 {
         Buffers& B, ref::Hull3Stats& st)
       : n_(ps.size()), tet_(tet), B_(B), st_(st) {
     g_.xyz = xyz;
-    g_.filter = pred::StaticFilter::for_points(ps.coords.data(), n_, 3, nullptr, s.data(), 3);
+    // the per-input filter over the coordinates where they are (one reduction)
+    // and the kernel point's
+    g_.filter = filter::static_filter<kParallelFrom>(xyz, 3 * n_, nullptr, 0, s.data(), 3);
     for (int j = 0; j < 3; ++j) g_.s[j] = s[j];
     g_.n = static_cast<uint32_t>(n_);
   }
