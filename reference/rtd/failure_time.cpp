@@ -181,7 +181,8 @@ bool filter_motion(const MovingModel& mm, RidgeMotion& m) {
       D[s] = acc;
     }
   const int orient_c1 = pred::sign_if_certain(D[full & ~(1u << (k - 1))]);
-  if (orient_c1 == 0 || pred::sign_if_certain(D[full & ~(1u << (k - 2))]) == 0) return false;
+  if (orient_c1 == 0 || (!m.point_event && pred::sign_if_certain(D[full & ~(1u << (k - 2))]) == 0))
+    return false;
   ErrDouble a0, a1, dd;
   for (int r = 0; r < k; ++r) {
     const ErrDouble minor = D[full & ~(1u << r)];
@@ -234,7 +235,7 @@ void RidgeMotion::ensure_exact() const {
   std::array<mpz_class, kMaxRidgeRows> minor;
   maximal_minors(k, X.data(), minor.data());
   const int orient_c1 = sgn(minor[static_cast<std::size_t>(d) + 1]);
-  if (orient_c1 == 0 || sgn(minor[static_cast<std::size_t>(d)]) == 0)
+  if (orient_c1 == 0 || (!point_event && sgn(minor[static_cast<std::size_t>(d)]) == 0))
     throw std::invalid_argument(
         "instant flip: a simplex has zero volume (points not in general position in R^" +
         std::to_string(d) + ", thesis §9.2)");
@@ -265,11 +266,25 @@ void RidgeMotion::ensure_exact() const {
   exact = true;
 }
 
+namespace {
+RidgeMotion make_motion(const MovingModel& mm, const Index* ridge, Index a, Index b, bool point_event);
+}  // namespace
+
 RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Index b) {
+  return make_motion(mm, ridge, a, b, false);
+}
+
+RidgeMotion point_motion(const MovingModel& mm, const Index* simplex, Index p) {
+  return make_motion(mm, simplex, simplex[mm.dim()], p, true);
+}
+
+namespace {
+RidgeMotion make_motion(const MovingModel& mm, const Index* ridge, Index a, Index b, bool point_event) {
   const int d = mm.dim();
   const int k = d + 2;
   RidgeMotion m;
   m.d = d;
+  m.point_event = point_event;
   m.model = &mm;
   for (int i = 0; i < d; ++i) m.pts[static_cast<std::size_t>(i)] = ridge[i];
   m.pts[static_cast<std::size_t>(d)] = a;
@@ -289,6 +304,7 @@ RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Ind
   }
   return m;
 }
+}  // namespace
 
 int coefficient_sign(const RidgeMotion& m, int r) {
   m.ensure_exact();

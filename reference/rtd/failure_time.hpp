@@ -82,6 +82,19 @@
 // Precondition (the thesis' general position in R^d, §9.2): both simplices of
 // a ridge have non-zero volume (M_{d+1} != 0 and M_d != 0); ridge_motion()
 // throws std::invalid_argument otherwise. Weights may be degenerate.
+//
+// ============================================================================
+// Insertion events: a redundant point below its simplex (beyond the thesis)
+// ============================================================================
+// A point p that is not a vertex lies in a real simplex C = (c_0, ..., c_d)
+// (positive). Its lifted point passes below the lifted hyperplane of C when
+// the same determinant (Eq. 9.1) with S = (c_0, ..., c_{d-1}, a = c_d, b = p)
+// turns from positive (p above C: "convex") to negative: it is a RidgeMotion
+// whose "second simplex" (c_0, ..., c_{d-1}, p) is not a simplex of T, so
+// its volume M_d may vanish (point_motion() accepts that; only C must have
+// non-zero volume). Everything above — the failure time, the perturbation
+// (c_F(p) = |M_{d+1}| != 0 for b = p), compare_times() — applies unchanged,
+// so insertion events and ridge failures are ordered exactly in one queue.
 #pragma once
 
 #include <gmpxx.h>
@@ -162,6 +175,7 @@ struct RidgeMotion {
   mutable std::array<mpz_class, kMaxRidgeRows> c;  // c_F(pts[r])·2^-E
   mutable long hexp = 0;                           // H
   mutable int dir = 2;                             // direction(), 2: not yet known
+  bool point_event = false;  // S = (C, p) of a tracked point p: M_d may be 0
 
   int rows() const { return d + 2; }
   Index link_a() const { return pts[static_cast<std::size_t>(d)]; }
@@ -175,6 +189,12 @@ struct RidgeMotion {
 
 // S_F for the ridge `ridge` (d indices) with link vertices a (C1 = F + a) and b.
 RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Index b);
+
+// S = (simplex[0..d-1], a = simplex[d], b = p) for a point p that is not a
+// vertex, in the real simplex `simplex` (d+1 indices, positively oriented):
+// its lifted point lies above C's lifted hyperplane iff the sign is positive
+// ("convex"); it enters when that fails (header comment, insertion events).
+RidgeMotion point_motion(const MovingModel& mm, const Index* simplex, Index p);
 
 // Sign of Orient^{d+1}(S*_F, t) for t = 0 or 1 under the perturbation: +1
 // convex, -1 reflex; never 0.
