@@ -44,22 +44,26 @@ MovingModel::MovingModel(const PointSet& ps, const std::vector<double>& w,
     throw std::invalid_argument("moving model: " + std::to_string(n_) + " points but " +
                                 std::to_string(w.size()) + " weights W and " +
                                 std::to_string(u.size()) + " weights U");
-  x_.resize(n_ * static_cast<std::size_t>(d_));
-  h0_.resize(n_);
-  h1_.resize(n_);
-  for (std::size_t p = 0; p < n_; ++p) {
+  for (std::size_t p = 0; p < n_; ++p)
     if (!std::isfinite(w[p]) || !std::isfinite(u[p]))
       throw std::invalid_argument("moving model: weight of point " + std::to_string(p) +
                                   " is not finite");
-    Dyadic sq;  // |p|^2, exactly
-    for (int j = 0; j < d_; ++j) {
-      Dyadic& x = x_[p * static_cast<std::size_t>(d_) + static_cast<std::size_t>(j)];
-      x = pred::exact::to_dyadic(ps.point(p)[j]);
-      sq = pred::exact::add(sq, pred::exact::mul(x, x));
-    }
-    h0_[p] = pred::exact::sub(sq, pred::exact::to_dyadic(w[p]));
-    h1_[p] = pred::exact::sub(sq, pred::exact::to_dyadic(u[p]));
+  made_.assign(n_, 0);
+}
+
+const MovingModel::Exact& MovingModel::exact(std::size_t p) const {
+  if (made_[p] != 0) return exact_[made_[p] - 1];
+  Exact& e = exact_.emplace_back();
+  made_[p] = static_cast<std::uint32_t>(exact_.size());
+  Dyadic sq;  // |p|^2, exactly
+  for (int j = 0; j < d_; ++j) {
+    Dyadic& x = e.x[static_cast<std::size_t>(j)];
+    x = pred::exact::to_dyadic(ps_->point(p)[j]);
+    sq = pred::exact::add(sq, pred::exact::mul(x, x));
   }
+  e.h0 = pred::exact::sub(sq, pred::exact::to_dyadic(w_[p]));
+  e.h1 = pred::exact::sub(sq, pred::exact::to_dyadic(u_[p]));
+  return e;
 }
 
 namespace {

@@ -101,6 +101,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -124,7 +126,10 @@ struct PerturbationOrder {
 };
 
 // The points with their heights at t = 0 (weights W) and t = 1 (weights U),
-// as exact dyadics.
+// as exact dyadics. A point's dyadics are made the first time the exact stage
+// asks for them (most runs need few: the filtered stage reads the doubles),
+// so building a model costs O(n) double checks, not O(n) GMP numbers; the
+// references returned stay valid for the model's lifetime.
 class MovingModel {
  public:
   // ps.dim = d in 1..5 (lifted determinants need d+2 <= 7 rows); w and u hold
@@ -137,15 +142,22 @@ class MovingModel {
   const std::vector<double>& w() const { return w_; }
   const std::vector<double>& u() const { return u_; }
 
-  const pred::exact::Dyadic& coord(std::size_t p, int j) const { return x_[p * static_cast<std::size_t>(d_) + static_cast<std::size_t>(j)]; }
-  const pred::exact::Dyadic& height(std::size_t p, int t) const { return t == 0 ? h0_[p] : h1_[p]; }
+  const pred::exact::Dyadic& coord(std::size_t p, int j) const { return exact(p).x[static_cast<std::size_t>(j)]; }
+  const pred::exact::Dyadic& height(std::size_t p, int t) const { return t == 0 ? exact(p).h0 : exact(p).h1; }
 
  private:
+  struct Exact {  // one point: coordinates, heights |p|^2 - w_p and |p|^2 - u_p
+    std::array<pred::exact::Dyadic, 5> x;
+    pred::exact::Dyadic h0, h1;
+  };
+  const Exact& exact(std::size_t p) const;
+
   const PointSet* ps_;
   int d_;
   std::size_t n_;
   std::vector<double> w_, u_;
-  std::vector<pred::exact::Dyadic> x_, h0_, h1_;
+  mutable std::vector<std::uint32_t> made_;  // per point: 1 + its index in exact_, 0 when not made
+  mutable std::deque<Exact> exact_;          // deque: references stay valid as it grows
 };
 
 constexpr int kMaxRidgeRows = 7;  // d + 2 for d <= 5

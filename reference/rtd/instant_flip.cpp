@@ -7,6 +7,7 @@
 #include <string>
 
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/checked.hpp"
 #include "reference/rtd/bistellar_flip.hpp"
 
@@ -86,15 +87,17 @@ RidgeMotion point_motion_in(const MovingModel& mm, const rtd::TriangulationD& T,
 // Exact unperturbed sign at t = 1 of the event determinant of S (d+2 real
 // points, C1 = the first d+1, positive): -1 when S is strictly convex there
 // (b strictly above the lifted C1), so that no perturbation can make it fail
-// in (0, 1); the pred::power_d_exact filters decide this without GMP.
-int sign_at_u(const rtd::TriangulationD& T, const std::vector<double>& u, const Index* S) {
+// in (0, 1). The per-input static filter of U (predicates/static_filter.hpp)
+// decides almost every call; the staged filters and exact arithmetic the rest.
+int sign_at_u(const pred::StaticFilter& f, const rtd::TriangulationD& T, const std::vector<double>& u,
+              const Index* S) {
   const double* x[rtd::kMaxDim + 2];
   double w[rtd::kMaxDim + 2];
   for (int i = 0; i < T.d + 2; ++i) {
     x[i] = T.ps->point(S[i]);
     w[i] = u[S[i]];
   }
-  return pred::power_d_exact(T.d, x, w);  // > 0: b strictly below (reflex)
+  return pred::lambda_sign(&f, T.d + 2, nullptr, x, w);  // > 0: b strictly below (reflex)
 }
 
 std::uint64_t mix(std::uint64_t x) {  // splitmix64
@@ -147,12 +150,13 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
   // strictly convex at t = 1 cannot fail in (0, 1) and is skipped.
   const auto d2 = static_cast<std::size_t>(T.d) + 2;
   const bool need_u = !options.check_start || trace != nullptr;
-  for (rtd::RidgeD r : rtd::ridges(T)) {
-    if (!rtd::interior(T, r)) continue;  // boundary ridges: convex by default
+  const pred::StaticFilter filter_u =
+      need_u ? pred::StaticFilter::for_points(T.ps->coords.data(), T.n, T.d, u.data()) : pred::StaticFilter();
+  auto scan_ridge = [&](rtd::RidgeD r) {
     if (need_u) {
       const rtd::PointTuple S = rtd::points(T, r);
-      if (sign_at_u(T, u, S.data()) < 0) {
-        if (!options.check_start) continue;
+      if (sign_at_u(filter_u, T, u, S.data()) < 0) {
+        if (!options.check_start) return;
       } else {
         note(r.s);  // may be flat at t = 1: the caller's verification looks at it
       }
@@ -166,6 +170,16 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
           ridge_text(m) + (exact_sign(m, 0) == 0 ? " is flat" : " is reflex") +
           "; see find_perturbation_order, thesis Algorithm 15)");
     if (fails_in_unit_interval(m, order)) push_ridge(std::move(m), r);
+  };
+  for (std::int32_t s = 0; s < static_cast<std::int32_t>(T.slots()); ++s) {
+    if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
+    for (int i = 0; i <= T.d; ++i) {
+      const std::int32_t t = T.neighbor(s, i);
+      // each interior ridge once, from its smaller slot; boundary ridges
+      // (a virtual side) are convex by default
+      if (t < s || rtd::is_virtual_simplex(T, t)) continue;
+      scan_ridge(rtd::RidgeD{s, i});
+    }
   }
   for (Index p = 0; p < T.n; ++p) {
     if (!B.is_tracked(p)) continue;
@@ -174,7 +188,7 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
       Index S[rtd::kMaxDim + 2];
       for (int i = 0; i <= T.d; ++i) S[i] = T.vertex(s, i);
       S[d2 - 1] = p;
-      if (sign_at_u(T, u, S) < 0) {
+      if (sign_at_u(filter_u, T, u, S) < 0) {
         if (!options.check_start) continue;
       } else {
         note(s);
@@ -194,6 +208,7 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
   // boundary ridges (lines 10-12) enter the queue.
   std::vector<Index> moved;
   auto after_flip = [&](const Entry& e, const rtd::FlipResult& fr) {
+    (void)e;  // the current time, for the checked build's Lemma 9.10 checks
     if (fr.removed != rtd::kNoVertex) moved.push_back(fr.removed);
     rtd::redistribute(T, B, moved, fr.created);
     st.moved_points += moved.size();
