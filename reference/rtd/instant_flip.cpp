@@ -7,6 +7,7 @@
 #include <string>
 
 #include "predicates/predicates.hpp"
+#include "predicates/fast.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/checked.hpp"
 #include "reference/rtd/bistellar_flip.hpp"
@@ -89,6 +90,12 @@ RidgeMotion point_motion_in(const MovingModel& mm, const rtd::TriangulationD& T,
 // (b strictly above the lifted C1), so that no perturbation can make it fail
 // in (0, 1). The per-input static filter of U (predicates/static_filter.hpp)
 // decides almost every call; the staged filters and exact arithmetic the rest.
+template <int K>
+int filtered_sign(const pred::StaticFilter& f, const double* const* x, const double* w) {
+  if (const int s = pred::static_sign<K>(f, x, w)) return s;
+  return pred::semi_static_sign<K>(x, w);
+}
+
 int sign_at_u(const pred::StaticFilter& f, const rtd::TriangulationD& T, const std::vector<double>& u,
               const Index* S) {
   const double* x[rtd::kMaxDim + 2];
@@ -97,7 +104,16 @@ int sign_at_u(const pred::StaticFilter& f, const rtd::TriangulationD& T, const s
     x[i] = T.ps->point(S[i]);
     w[i] = u[S[i]];
   }
-  return pred::lambda_sign(&f, T.d + 2, nullptr, x, w);  // > 0: b strictly below (reflex)
+  // > 0: b strictly below (reflex); the static and semi-static filters
+  // inline (predicates/fast.hpp), the out-of-line stages for the rest
+  int s = 0;
+  switch (T.d) {
+    case 2: s = filtered_sign<4>(f, x, w); break;
+    case 3: s = filtered_sign<5>(f, x, w); break;
+    case 4: s = filtered_sign<6>(f, x, w); break;
+    default: s = filtered_sign<7>(f, x, w); break;
+  }
+  return s != 0 ? s : pred::lambda_sign(&f, T.d + 2, nullptr, x, w);
 }
 
 std::uint64_t mix(std::uint64_t x) {  // splitmix64
