@@ -24,7 +24,9 @@ const char* kUsage =
     "                      [--thickness T] [--weights LO,HI] [--hull-points H]\n"
     "                      [--run PREFIX,...]  (rows whose name starts with a prefix, any case) [--csv]\n"
     "       flipflop bench hull2|hull3|rt2|dt2 --stages --dist NAME --n N [...]  (time by stage of flipflop:cpu:\n"
-    "                      read .xyz/.npy, the kernel's stages, certify, write)\n";
+    "                      read .xyz/.npy, the kernel's stages, certify, write)\n"
+    "       flipflop bench instant-flip --dim d --n N [--step S] [--reps R] [--seed S] [--run P,...] [--csv]\n"
+    "                      (RT(S+W) -> RT(S+U) in place, U = max(0, W + delta), against fresh builds)\n";
 
 unsigned long long to_count(const std::string& opt, const std::string& s) {
   char* end = nullptr;
@@ -43,7 +45,7 @@ double to_double(const std::string& opt, const std::string& s) {
 }
 
 Args parse(int argc, char** argv) {
-  if (argc < 2) throw Usage("missing experiment (predicates, hull2, hull3, dt2, rt2)");
+  if (argc < 2) throw Usage("missing experiment (predicates, hull2, hull3, dt2, rt2, instant-flip)");
   Args a;
   a.experiment = argv[1];
   bool have_n = false;
@@ -75,6 +77,11 @@ Args parse(int argc, char** argv) {
         start = comma + 1;
       }
       if (a.run.empty()) throw Usage("--run expects comma-separated row name prefixes");
+    } else if (opt == "--dim") {
+      a.dim = static_cast<int>(to_count(opt, val));
+    } else if (opt == "--step") {
+      a.step = to_double(opt, val);
+      if (!(a.step >= 0)) throw Usage("--step must be non-negative");
     } else if (opt == "--hull-points") {
       a.hull_points = static_cast<std::size_t>(to_count(opt, val));
     } else if (opt == "--weights") {
@@ -92,9 +99,14 @@ Args parse(int argc, char** argv) {
     if (a.n == 0) throw Usage("--n must be positive");
     return a;
   }
+  if (a.experiment == "instant-flip") {
+    if (a.dim < 2 || a.dim > 5) throw Usage("instant-flip needs --dim d (2..5)");
+    if (!have_n || a.n < static_cast<std::size_t>(a.dim) + 1) throw Usage("instant-flip needs --n N (at least d+1)");
+    return a;
+  }
   if (a.experiment != "hull2" && a.experiment != "hull3" && a.experiment != "dt2" &&
       a.experiment != "rt2")
-    throw Usage("unknown experiment '" + a.experiment + "' (predicates, hull2, hull3, dt2, rt2)");
+    throw Usage("unknown experiment '" + a.experiment + "' (predicates, hull2, hull3, dt2, rt2, instant-flip)");
   if (a.dist.empty()) throw Usage(a.experiment + " needs --dist NAME");
   if (!have_n || a.n == 0) throw Usage(a.experiment + " needs --n N (positive)");
   if (a.experiment == "rt2" && !a.weighted) {
@@ -118,6 +130,7 @@ int run(int argc, char** argv) {
   try {
     Args a = parse(argc, argv);
     if (a.experiment == "predicates") return detail::bench_predicates(a);
+    if (a.experiment == "instant-flip") return detail::bench_instant_flip(a);
     if (a.stages) return detail::bench_stages(a);
     return detail::bench_peers(a);
   } catch (const Usage& e) {

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/compare.hpp"
 #include "bench/timing.hpp"
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
@@ -56,15 +57,6 @@
 namespace flipflop::bench::detail {
 
 namespace {
-
-template <class Output>
-struct Peer {
-  std::string name;
-  std::function<Output(const PointSet&)> run;
-  // when set, the row's time of a run is what it returns after the run (a
-  // GPU kernel's time without the host-device transfers), not the wall time
-  std::function<double()> self_time = {};
-};
 
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
 // The rows of the GPU backends built here (kernels::gpu_backends_built):
@@ -92,93 +84,6 @@ void add_gpu_rows(std::vector<Peer<Output>>& rows, Run run, const std::string& s
   }
 }
 #endif
-
-struct Row {
-  std::string name;
-  std::vector<double> times;
-  std::string error;  // non-empty when the peer failed
-  std::size_t size = 0;
-};
-
-// --run: the row's name starts with one of the prefixes (case-insensitive).
-bool chosen(const Args& a, const std::string& name) {
-  if (a.run.empty()) return true;
-  for (const std::string& p : a.run)
-    if (p.size() <= name.size() &&
-        std::equal(p.begin(), p.end(), name.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); }))
-      return true;
-  return false;
-}
-
-template <class Output>
-int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Output>>& all_peers,
-                  const char* size_label) {
-  std::vector<Peer<Output>> peers;
-  for (const Peer<Output>& p : all_peers)
-    if (chosen(a, p.name)) peers.push_back(p);
-  if (peers.empty()) throw Usage("--run matches no row");
-  std::vector<Row> rows;
-  std::vector<Output> outputs;
-  std::vector<std::string> output_names;
-  for (const Peer<Output>& p : peers) {
-    Row row{p.name, {}, {}, 0};
-    Output out;
-    try {
-      for (int r = 0; r < a.reps; ++r) {
-        const double wall = seconds([&] { out = p.run(pts); });
-        row.times.push_back(p.self_time ? p.self_time() : wall);
-      }
-      row.size = out.size();
-      outputs.push_back(std::move(out));
-      output_names.push_back(p.name);
-    } catch (const std::exception& e) {
-      row.error = e.what();
-      row.times.clear();
-    }
-    rows.push_back(std::move(row));
-  }
-  double fastest = 0;
-  for (const Row& r : rows)
-    if (r.error.empty() && (fastest == 0 || median(r.times) < fastest)) fastest = median(r.times);
-
-  if (a.csv) {  // DESIGN.md "Benchmarks": identical = the first successful row's canonical output
-    std::printf("name,median_s,min_s,max_s,size,identical\n");
-    std::size_t k = 0;
-    for (const Row& r : rows) {
-      if (!r.error.empty()) {
-        std::printf("%s,,,,,failed\n", r.name.c_str());
-        continue;
-      }
-      const auto [lo, hi] = std::minmax_element(r.times.begin(), r.times.end());
-      std::printf("%s,%.6f,%.6f,%.6f,%zu,%d\n", r.name.c_str(), median(r.times), *lo, *hi, r.size,
-                  outputs[k] == outputs[0] ? 1 : 0);
-      ++k;
-    }
-    return 0;
-  }
-  std::printf("%-34s %12s %12s %12s %12s %10s\n", "peer", "median s", "min s", "max s",
-              size_label, "/fastest");
-  for (const Row& r : rows) {
-    if (!r.error.empty()) {
-      std::printf("%-34s failed: %s\n", r.name.c_str(), r.error.c_str());
-      continue;
-    }
-    const auto [lo, hi] = std::minmax_element(r.times.begin(), r.times.end());
-    std::printf("%-34s %12.4f %12.4f %12.4f %12zu %10.2f\n", r.name.c_str(), median(r.times), *lo,
-                *hi, r.size, median(r.times) / fastest);
-  }
-  if (outputs.size() >= 2) {
-    std::string differing;
-    for (std::size_t i = 1; i < outputs.size(); ++i)
-      if (outputs[i] != outputs[0]) differing += " " + output_names[i];
-    if (differing.empty())
-      std::printf("canonical outputs identical across %zu peers\n", outputs.size());
-    else
-      std::printf("canonical outputs differ from %s's:%s\n", output_names[0].c_str(),
-                  differing.c_str());
-  }
-  return 0;
-}
 
 }  // namespace
 
@@ -259,7 +164,7 @@ int bench_peers(const Args& a) {
                              {"cgal:delaunay_triangulation_2", peers::cgal_delaunay2},
                              {"qhull", peers::qhull_delaunay2}});
   else
-    rows.push_back({"cgal:regular_triangulation_2", peers::cgal_regular2});
+    rows.push_back({"cgal:regular_triangulation_2", [](const PointSet& p) { return peers::cgal_regular2(p); }});
   return compare_peers<Tris>(a, pts, rows, "triangles");
 }
 

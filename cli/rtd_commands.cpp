@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <string_view>
 
 #include "cli/commands.hpp"
@@ -14,6 +15,7 @@
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/perturbation_order.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -86,13 +88,6 @@ void certify_or_throw(const PointSet& ps, const std::vector<std::vector<Index>>&
   if (!r.ok) throw InternalError(what + " failed certification: " + r.message());
 }
 
-std::vector<Index> non_vertices(const ref::rtd::TriangulationD& T) {
-  std::vector<Index> out;
-  for (Index p = 0; p < T.n; ++p)
-    if (!T.is_vertex(p)) out.push_back(p);
-  return out;
-}
-
 }  // namespace
 
 int run_rtd(const RtdArgs& a) {
@@ -141,60 +136,53 @@ int run_instant_flip(const InstantFlipArgs& a) {
   }
   check_spans(pts, a.points);
 
-  // RT(S ⊕ W), then a perturbation order under which it is strongly regular.
+  // RT(S ⊕ W) with its redundant points tracked, then in place to U.
   const auto t0 = Clock::now();
-  ref::RtdStats build_stats;
-  ref::rtd::TriangulationD T =
-      with_input_errors(a.points, [&] { return ref::build_rtd(pw, &build_stats); });
+  ref::DynamicRegularTriangulation rt =
+      with_input_errors(a.from, [&] { return ref::DynamicRegularTriangulation(pts, pw.weights); });
   const double t_build = seconds_since(t0);
-  const auto t1 = Clock::now();
-  const std::vector<std::vector<Index>> start = ref::rtd::real_simplices(T);
-  ref::PerturbationOrderResult po = with_input_errors(
-      a.from, [&] { return ref::find_perturbation_order(pts, pw.weights, start); });
-  if (!po.order)
-    throw UsageError(a.from + ": RT(S+W) admits no perturbation order for the instant flip: " +
-                     po.reason);
-  const double t_order = seconds_since(t1);
+  const std::vector<std::vector<Index>> start = rt.simplices();
   const ref::MovingModel mm(pts, pw.weights, pu.weights);
-  if (a.timeline)
-    std::cerr << "instant-flip: start, RT(S+W)\n"
-              << ref::format_timeline(ref::build_timeline(mm, start, *po.order));
+  std::optional<ref::PerturbationOrder> order;  // for the time lines only
+  if (a.timeline) {
+    ref::PerturbationOrderResult po = with_input_errors(
+        a.from, [&] { return ref::find_perturbation_order(pts, pw.weights, start); });
+    order = po.order ? *po.order : ref::PerturbationOrder::identity(pts.size());
+    std::cerr << "instant-flip: start, RT(S+W)"
+              << (po.order ? "" : " (no perturbation order: " + po.reason + "; index order shown)") << "\n"
+              << ref::format_timeline(ref::build_timeline(mm, start, *order));
+  }
 
-  // Algorithm 14.
+  // Algorithm 14 with insertions (dynamic_rt.hpp).
   const auto t2 = Clock::now();
-  ref::InstantFlipOptions opt;
-  opt.order = *po.order;
-  const ref::InstantFlipStats st =
-      with_input_errors(a.to, [&] { return ref::instant_flip(T, pw.weights, pu.weights, opt); });
+  const ref::WeightUpdateStats st = with_input_errors(a.to, [&] { return rt.set_weights(pu.weights); });
   const double t_flip = seconds_since(t2);
-  const std::vector<Index> back = ref::reappearing_points(T, pu.weights);
-  if (!back.empty())
-    throw UsageError(a.to + ": " + std::to_string(back.size()) +
-                     " point(s) redundant under W are not redundant under U (" +
-                     index_list(back, 10).substr(1) +
-                     "): the instant flip inserts no vertices (thesis §9.2); `flipflop rtd` computes RT(S+U) directly");
-  const std::vector<std::vector<Index>> result = ref::rtd::real_simplices(T);
+  const std::vector<std::vector<Index>> result = rt.simplices();
   const auto t3 = Clock::now();
   certify_or_throw(pu, result, "the instant-flip result");
   const double t_certify = seconds_since(t3);
   if (a.timeline)
     std::cerr << "instant-flip: final, RT(S+U)\n"
-              << ref::format_timeline(ref::build_timeline(mm, result, *po.order));
-  write_result(a.out, fmt, pu, result, non_vertices(T), a.ascii);
-  report_redundant("instant-flip", non_vertices(T));
+              << ref::format_timeline(ref::build_timeline(mm, result, *order));
+  const std::vector<Index> redundant = rt.redundant();
+  write_result(a.out, fmt, pu, result, redundant, a.ascii);
+  report_redundant("instant-flip", redundant);
   if (a.stats) {
+    const ref::InstantFlipStats& is = st.instant;
     std::cerr << "instant-flip: " << pts.size() << " points in R^" << a.dim << ", "
               << start.size() << " -> " << result.size() << " simplices; flips";
-    for (int k = 2; k <= a.dim + 1; ++k)
-      std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
-    std::cerr << " (" << st.total_flips() << " in all, " << st.removed_vertices
-              << " vertices removed); queue: " << st.initial_ridges << " ridges examined, "
-              << st.pushes << " pushes, " << st.pops << " pops, " << st.stale << " stale, "
-              << st.deferred << " deferred, max " << st.max_queue << "; perturbation order: "
-              << (po.flat_ridges == 0 ? "index order (no flat ridge)"
-                                      : std::to_string(po.flat_ridges) + " flat ridges")
-              << "; build " << t_build << " s, order " << t_order << " s, instant flip " << t_flip
-              << " s, certify " << t_certify << " s\n";
+    for (int k = 1; k <= a.dim + 1; ++k)
+      std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips(k);
+    std::cerr << " (" << st.total_flips() << " in all, " << is.inserted_vertices + st.repair_flips[1]
+              << " vertices inserted, " << is.removed_vertices + st.repair_removed
+              << " removed); queue: " << is.initial_ridges << " ridges and " << is.initial_points
+              << " points examined, " << is.pushes << " pushes, " << is.pops << " pops, " << is.stale
+              << " stale, " << is.deferred << " deferred, max " << is.max_queue
+              << "; SoS check after it: " << st.checked_ridges << " ridges, " << st.checked_points
+              << " points, " << (st.total_flips() - is.total_flips()) << " flips"
+              << (st.rebuilt ? "; rebuilt by RT+1 (" + st.rebuild_reason + ")" : std::string())
+              << "; build " << t_build << " s, instant flip " << t_flip << " s, certify " << t_certify
+              << " s\n";
   }
   return 0;
 }

@@ -11,13 +11,14 @@
 //                        [--stats] [--timeline]
 //       POINTS: d coordinates per line; W.xyz, U.xyz: the same points, in
 //       the same order, bit for bit, with their weight as a last column.
-//       Builds RT(S ⊕ W) (rt_incremental.hpp), finds a perturbation order
-//       (Algorithm 15; the index order whenever it is valid), runs the
-//       monotonic instant flip (Algorithm 14) to U and writes the canonical
-//       simplex list of RT(S ⊕ U) after certifying it. --timeline prints the
-//       time lines (§9.3) of the start and the final triangulation on stderr.
-//       A point redundant under W that is not redundant under U is an error:
-//       the instant flip inserts no vertices (thesis §9.2).
+//       Builds RT(S ⊕ W) (rt_incremental.hpp) and updates it in place to
+//       RT(S ⊕ U) by the monotonic instant flip with insertions (Algorithm 14
+//       extended, ref::DynamicRegularTriangulation: any W and U; points
+//       redundant under W may become vertices and vice versa), then writes
+//       the canonical simplex list of RT(S ⊕ U) after certifying it — byte
+//       for byte what `flipflop rtd` writes for U. --timeline prints the time
+//       lines (§9.3) of the start and the final triangulation on stderr
+//       (under the perturbation order of Algorithm 15 when one exists).
 //
 // OUT empty or "-" writes to standard output. Errors: UsageError (bad usage
 // or input, one line, exit 2), InternalError (a result that failed its

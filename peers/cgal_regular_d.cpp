@@ -27,6 +27,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -40,7 +41,7 @@ namespace {
 
 
 template <int D>
-std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>* redundant) {
+std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>* redundant, double* build_seconds) {
   using K = CGAL::Epick_d<CGAL::Dimension_tag<D>>;
   using Traits = CGAL::Regular_triangulation_traits_adapter<K>;
   using Vb = CGAL::Triangulation_vertex<Traits, Index>;
@@ -50,6 +51,7 @@ std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>
   using Point = typename K::Point_d;
   using WPoint = typename K::Weighted_point_d;
 
+  const auto t0 = std::chrono::steady_clock::now();
   RT rt(D);
   typename RT::Vertex_handle hint;
   for (std::size_t i = 0; i < ps.size(); ++i) {
@@ -61,6 +63,8 @@ std::vector<std::vector<Index>> regular_d(const PointSet& ps, std::vector<Index>
       hint = v;
     }
   }
+  if (build_seconds)
+    *build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (rt.current_dimension() < D)
     throw std::runtime_error("cgal_regular_d: the regular triangulation is lower-dimensional");
   auto ori = K().orientation_d_object();
@@ -125,11 +129,13 @@ int cgal_orientation_d(const PointSet& ps, const std::vector<Index>& tuple) {
   return with_dimension(ps.dim, "cgal_orientation_d", [&](auto D) { return orientation_d<D()>(ps, tuple); });
 }
 
-std::vector<std::vector<Index>> cgal_regular_d(const PointSet& ps, std::vector<Index>* redundant) {
-  return with_dimension(ps.dim, "cgal_regular_d", [&](auto D) { return regular_d<D()>(ps, redundant); });
+std::vector<std::vector<Index>> cgal_regular_d(const PointSet& ps, std::vector<Index>* redundant,
+                                               double* build_seconds) {
+  return with_dimension(ps.dim, "cgal_regular_d", [&](auto D) { return regular_d<D()>(ps, redundant, build_seconds); });
 }
 
-std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<Index>* redundant) {
+std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<Index>* redundant,
+                                               double* build_seconds) {
   if (ps.dim != 3)
     throw std::invalid_argument("cgal_regular_3: expected 3D points, got " + std::to_string(ps.dim) + "D");
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -143,7 +149,10 @@ std::vector<std::vector<Index>> cgal_regular_3(const PointSet& ps, std::vector<I
     const double* x = ps.point(i);
     input.emplace_back(RT::Weighted_point(K::Point_3(x[0], x[1], x[2]), ps.weight(i)), static_cast<Index>(i));
   }
+  const auto t0 = std::chrono::steady_clock::now();
   RT rt(input.begin(), input.end());
+  if (build_seconds)
+    *build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (rt.dimension() < 3)
     throw std::runtime_error("cgal_regular_3: the regular triangulation is lower-dimensional");
   // the volume sign of (0, e1, e2, e3) is +1; ask CGAL for its own

@@ -24,10 +24,14 @@ namespace flipflop::peers {
 
 // CGAL::Regular_triangulation (dD, Epick_d with a fixed dimension tag for
 // d = 2..5), points inserted in index order.
-std::vector<std::vector<Index>> cgal_regular_d(const PointSet& weighted, std::vector<Index>* redundant = nullptr);
+std::vector<std::vector<Index>> cgal_regular_d(const PointSet& weighted, std::vector<Index>* redundant = nullptr,
+                                               double* build_seconds = nullptr);
 
-// CGAL::Regular_triangulation_3 (Epick), ps.dim == 3.
-std::vector<std::vector<Index>> cgal_regular_3(const PointSet& weighted, std::vector<Index>* redundant = nullptr);
+// CGAL::Regular_triangulation_3 (Epick), ps.dim == 3, spatially sorted range
+// insertion. build_seconds (optional): the construction alone, without
+// copying the input and sorting the output.
+std::vector<std::vector<Index>> cgal_regular_3(const PointSet& weighted, std::vector<Index>* redundant = nullptr,
+                                               double* build_seconds = nullptr);
 
 // CGAL's Orientation_d (Epick_d, d = 2..5) of the points `tuple` in that
 // order: +1, 0 or -1 (POSITIVE, COPLANAR, NEGATIVE), exact.

@@ -8,6 +8,7 @@
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -54,7 +55,7 @@ std::vector<Triangle> cgal_delaunay2(const PointSet& pts) {
   return finite_triangles(dt);
 }
 
-std::vector<Triangle> cgal_regular2(const PointSet& weighted) {
+std::vector<Triangle> cgal_regular2(const PointSet& weighted, double* build_seconds) {
   require_dim(weighted, "cgal_regular2");
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<
       Index, K, CGAL::Regular_triangulation_vertex_base_2<K>>;
@@ -70,7 +71,10 @@ std::vector<Triangle> cgal_regular2(const PointSet& weighted) {
                            weighted.weight(i)),
         static_cast<Index>(i));
   }
+  const auto t0 = std::chrono::steady_clock::now();
   RT rt(input.begin(), input.end());
+  if (build_seconds)
+    *build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (rt.dimension() < 2)
     throw std::runtime_error(
         "cgal_regular2: the regular triangulation is lower-dimensional (its non-redundant "

@@ -66,6 +66,8 @@ std::vector<Triangle> cgal_delaunay2(const PointSet& pts);
 // CGAL's Weighted_point weight is the squared radius, the same w as in
 // flipflop's power distance |x - p|^2 - w (predicates.hpp, power2d).
 // Redundant (hidden) points are not vertices. Finite faces only.
-std::vector<Triangle> cgal_regular2(const PointSet& weighted);
+// build_seconds (optional): the construction alone (CGAL's spatially sorted
+// range insertion), without copying the input and sorting the output.
+std::vector<Triangle> cgal_regular2(const PointSet& weighted, double* build_seconds = nullptr);
 
 }  // namespace flipflop::peers

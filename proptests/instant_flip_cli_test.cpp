@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -59,6 +60,20 @@ std::string slurp(const std::string& p) {
   return s.str();
 }
 
+// POINTS, W and U files of an instant-flip run in tmp: p.xyz, w.xyz, u.xyz.
+struct FlipFiles {
+  std::string p, fw, fu;
+};
+template <class Tmp>
+FlipFiles write_flip_files(const Tmp& tmp, const PointSet& pts, const std::vector<double>& w,
+                           const std::vector<double>& u) {
+  FlipFiles f{tmp.path("p.xyz"), tmp.path("w.xyz"), tmp.path("u.xyz")};
+  write_xyz(f.p, pts, nullptr);
+  write_xyz(f.fw, pts, &w);
+  write_xyz(f.fu, pts, &u);
+  return f;
+}
+
 // Reads back what the writer wrote (the files hold %.17g: exact round trip).
 PointSet read_back(const std::string& path, int d) { return io::read_points(path, d, true); }
 
@@ -93,11 +108,8 @@ TEST_CASE("cli instant-flip: RT(S+U) from RT(S+W), and --timeline", "[instant_fl
     const std::size_t n = d == 2 ? 60 : (d == 3 ? 35 : 18);
     const PointSet pts = random_points(d, n, rng);
     const std::vector<double> w(n, 0.0), u = random_weights(n, 0.02, rng);
-    const std::string p = tmp.path("p.xyz"), fw = tmp.path("w.xyz"), fu = tmp.path("u.xyz"),
-                      out = tmp.path("out.txt");
-    write_xyz(p, pts, nullptr);
-    write_xyz(fw, pts, &w);
-    write_xyz(fu, pts, &u);
+    const auto [p, fw, fu] = write_flip_files(tmp, pts, w, u);
+    const std::string out = tmp.path("out.txt");
     cli::InstantFlipArgs a;
     a.points = p;
     a.from = fw;
@@ -177,21 +189,51 @@ TEST_CASE("cli rtd / instant-flip: bad input is one UsageError", "[instant_flip]
   write_xyz(tmp.path("fewer.xyz"), fewer, &u_fewer);
   expect_usage(iflip, cli::InstantFlipArgs{p, fw, tmp.path("fewer.xyz"), out, 3, false, false}, "19 points");
   expect_usage(iflip, cli::InstantFlipArgs{p, "", fu, out, 3, false, false}, "--from");
-  // a point redundant under W comes back under U: out of the instant flip's scope
-  std::size_t mid = 0;  // the point nearest the centre: not a hull vertex
-  double best = 1e300;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    double s = 0;
-    for (int j = 0; j < 3; ++j) s += (pts.point(i)[j] - 0.5) * (pts.point(i)[j] - 0.5);
-    if (s < best) best = s, mid = i;
-  }
-  std::vector<double> heavy = w;
-  heavy[mid] = -1.0;  // redundant under W (lifted far up) ...
-  std::vector<double> light = w;
-  light[mid] = 1.0;   // ... and a vertex under U (lifted far down)
-  write_xyz(tmp.path("heavy.xyz"), pts, &heavy);
-  write_xyz(tmp.path("light.xyz"), pts, &light);
-  expect_usage(iflip, cli::InstantFlipArgs{p, tmp.path("heavy.xyz"), tmp.path("light.xyz"), out, 3, false, false},
-               "inserts no vertices");
   REQUIRE(cli::run_instant_flip(cli::InstantFlipArgs{p, fw, fu, out, 3, false, false}) == 0);
+}
+
+TEST_CASE("cli instant-flip: a point redundant under W comes back under U", "[instant_flip][cli]") {
+  // The extended Algorithm 14 inserts it: the output equals `flipflop rtd` on
+  // U byte for byte, in d = 2..4, and with W and U drawn independently.
+  TempDir tmp;
+  for (int d = 2; d <= 4; ++d) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(70 + d));
+    const std::size_t n = d == 2 ? 80 : (d == 3 ? 40 : 20);
+    const PointSet pts = random_points(d, n, rng);
+    std::size_t mid = 0;  // the point nearest the centre: not a hull vertex
+    double best = 1e300;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      double s = 0;
+      for (int j = 0; j < d; ++j) s += (pts.point(i)[j] - 0.5) * (pts.point(i)[j] - 0.5);
+      if (s < best) best = s, mid = i;
+    }
+    for (int independent = 0; independent < 2; ++independent) {
+      std::vector<double> w = random_weights(n, 0.02, rng), u = random_weights(n, 0.02, rng);
+      if (!independent) {
+        w[mid] = -1.0;  // redundant under W (lifted far up) ...
+        u[mid] = 1.0;   // ... and a vertex under U (lifted far down)
+      }
+      const auto [p, fw, fu] = write_flip_files(tmp, pts, w, u);
+      const std::string out = tmp.path("out.txt"), direct = tmp.path("direct.txt");
+      if (!independent) {
+        const ref::Rtd before = ref::rtd_incremental(read_back(fw, d));
+        REQUIRE(std::binary_search(before.redundant.begin(), before.redundant.end(), static_cast<Index>(mid)));
+      }
+      REQUIRE(cli::run_instant_flip(cli::InstantFlipArgs{p, fw, fu, out, d, true, false}) == 0);
+      cli::RtdArgs r;
+      r.in = fu;
+      r.out = direct;
+      r.dim = d;
+      REQUIRE(cli::run_rtd(r) == 0);
+      CHECK(slurp(out) == slurp(direct));
+      const PointSet pu = read_back(fu, d);
+      const std::vector<std::vector<Index>> got = parse_simplices(slurp(out), d);
+      CHECK(certify::rtd(pu, got).ok);
+      if (!independent) {
+        bool mid_is_vertex = false;
+        for (const auto& t : got) mid_is_vertex |= std::find(t.begin(), t.end(), static_cast<Index>(mid)) != t.end();
+        CHECK(mid_is_vertex);
+      }
+    }
+  }
 }

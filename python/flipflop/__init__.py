@@ -257,9 +257,9 @@ def certify(kind: str, points, simplices, weights=None, canonical: bool = False,
 
 def instant_flip(points, w_from, w_to):
     """RT(S + w_from) -> RT(S + w_to) by the monotonic instant flip (thesis
-    §9.2, Algorithm 14), exact and certified. Returns (simplices, flips).
-    A point redundant under w_from that is not redundant under w_to raises
-    ValueError (this instant flip inserts no vertices)."""
+    §9.2, Algorithm 14, with insertion events: any w_from and w_to; points
+    may enter and leave), exact and certified; the simplices equal
+    Delaunay(points, w_to)'s. Returns (simplices, flips)."""
     a = _points(points, (2, 3, 4, 5), "instant_flip")
     w = _weights(w_from, a.shape[0], "instant_flip")
     u = _weights(w_to, a.shape[0], "instant_flip")

@@ -45,8 +45,8 @@
 #include "reference/rt2/strict_rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
-#include "reference/rtd/perturbation_order.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 #include "reference/rtd/triangulation_d.hpp"
 
@@ -421,8 +421,9 @@ std::pair<nb::ndarray<nb::numpy, double>, std::optional<nb::ndarray<nb::numpy, d
   return {pts, w};
 }
 
-// RT(S ⊕ W) -> RT(S ⊕ U) by the monotonic instant flip (thesis §9.2,
-// Algorithm 14), as `flipflop instant-flip`: (simplices, total flips).
+// RT(S ⊕ W) -> RT(S ⊕ U) by the monotonic instant flip with insertions
+// (thesis §9.2, Algorithm 14 extended; ref::DynamicRegularTriangulation), as
+// `flipflop instant-flip`: (simplices, total flips), for any W and U.
 std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector& w, const Vector& u) {
   const PointSet pw = point_set(p, w), pu = point_set(p, u);
   PointSet pts = point_set(p, std::nullopt);
@@ -431,19 +432,9 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
   {
     nb::gil_scoped_release nogil;
     require_spanning(pts);
-    ref::rtd::TriangulationD T = ref::build_rtd(pw);
-    const auto start = ref::rtd::real_simplices(T);
-    ref::PerturbationOrderResult po = ref::find_perturbation_order(pts, pw.weights, start);
-    if (!po.order) throw std::invalid_argument("RT(S+W) admits no perturbation order for the instant flip: " + po.reason);
-    ref::InstantFlipOptions opt;
-    opt.order = *po.order;
-    flips = ref::instant_flip(T, pw.weights, pu.weights, opt).total_flips();
-    const std::vector<Index> back = ref::reappearing_points(T, pu.weights);
-    if (!back.empty())
-      throw std::invalid_argument(std::to_string(back.size()) +
-                                  " point(s) redundant under W are not redundant under U: the instant flip inserts "
-                                  "no vertices (thesis §9.2); compute Delaunay(points, U) directly");
-    result = ref::rtd::real_simplices(T);
+    ref::DynamicRegularTriangulation rt(pts, pw.weights);
+    flips = rt.set_weights(pu.weights).total_flips();
+    result = rt.simplices();
     check_certified(certify::rtd(pu, result), "instant flip");
   }
   return {cells_array(result, static_cast<std::size_t>(p.shape(1) + 1)), flips};

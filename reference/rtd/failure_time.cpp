@@ -44,22 +44,26 @@ MovingModel::MovingModel(const PointSet& ps, const std::vector<double>& w,
     throw std::invalid_argument("moving model: " + std::to_string(n_) + " points but " +
                                 std::to_string(w.size()) + " weights W and " +
                                 std::to_string(u.size()) + " weights U");
-  x_.resize(n_ * static_cast<std::size_t>(d_));
-  h0_.resize(n_);
-  h1_.resize(n_);
-  for (std::size_t p = 0; p < n_; ++p) {
+  for (std::size_t p = 0; p < n_; ++p)
     if (!std::isfinite(w[p]) || !std::isfinite(u[p]))
       throw std::invalid_argument("moving model: weight of point " + std::to_string(p) +
                                   " is not finite");
-    Dyadic sq;  // |p|^2, exactly
-    for (int j = 0; j < d_; ++j) {
-      Dyadic& x = x_[p * static_cast<std::size_t>(d_) + static_cast<std::size_t>(j)];
-      x = pred::exact::to_dyadic(ps.point(p)[j]);
-      sq = pred::exact::add(sq, pred::exact::mul(x, x));
-    }
-    h0_[p] = pred::exact::sub(sq, pred::exact::to_dyadic(w[p]));
-    h1_[p] = pred::exact::sub(sq, pred::exact::to_dyadic(u[p]));
+  made_.assign(n_, 0);
+}
+
+const MovingModel::Exact& MovingModel::exact(std::size_t p) const {
+  if (made_[p] != 0) return exact_[made_[p] - 1];
+  Exact& e = exact_.emplace_back();
+  made_[p] = static_cast<std::uint32_t>(exact_.size());
+  Dyadic sq;  // |p|^2, exactly
+  for (int j = 0; j < d_; ++j) {
+    Dyadic& x = e.x[static_cast<std::size_t>(j)];
+    x = pred::exact::to_dyadic(ps_->point(p)[j]);
+    sq = pred::exact::add(sq, pred::exact::mul(x, x));
   }
+  e.h0 = pred::exact::sub(sq, pred::exact::to_dyadic(w_[p]));
+  e.h1 = pred::exact::sub(sq, pred::exact::to_dyadic(u_[p]));
+  return e;
 }
 
 namespace {
@@ -181,7 +185,8 @@ bool filter_motion(const MovingModel& mm, RidgeMotion& m) {
       D[s] = acc;
     }
   const int orient_c1 = pred::sign_if_certain(D[full & ~(1u << (k - 1))]);
-  if (orient_c1 == 0 || pred::sign_if_certain(D[full & ~(1u << (k - 2))]) == 0) return false;
+  if (orient_c1 == 0 || (!m.point_event && pred::sign_if_certain(D[full & ~(1u << (k - 2))]) == 0))
+    return false;
   ErrDouble a0, a1, dd;
   for (int r = 0; r < k; ++r) {
     const ErrDouble minor = D[full & ~(1u << r)];
@@ -234,7 +239,7 @@ void RidgeMotion::ensure_exact() const {
   std::array<mpz_class, kMaxRidgeRows> minor;
   maximal_minors(k, X.data(), minor.data());
   const int orient_c1 = sgn(minor[static_cast<std::size_t>(d) + 1]);
-  if (orient_c1 == 0 || sgn(minor[static_cast<std::size_t>(d)]) == 0)
+  if (orient_c1 == 0 || (!point_event && sgn(minor[static_cast<std::size_t>(d)]) == 0))
     throw std::invalid_argument(
         "instant flip: a simplex has zero volume (points not in general position in R^" +
         std::to_string(d) + ", thesis §9.2)");
@@ -265,11 +270,25 @@ void RidgeMotion::ensure_exact() const {
   exact = true;
 }
 
+namespace {
+RidgeMotion make_motion(const MovingModel& mm, const Index* ridge, Index a, Index b, bool point_event);
+}  // namespace
+
 RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Index b) {
+  return make_motion(mm, ridge, a, b, false);
+}
+
+RidgeMotion point_motion(const MovingModel& mm, const Index* simplex, Index p) {
+  return make_motion(mm, simplex, simplex[mm.dim()], p, true);
+}
+
+namespace {
+RidgeMotion make_motion(const MovingModel& mm, const Index* ridge, Index a, Index b, bool point_event) {
   const int d = mm.dim();
   const int k = d + 2;
   RidgeMotion m;
   m.d = d;
+  m.point_event = point_event;
   m.model = &mm;
   for (int i = 0; i < d; ++i) m.pts[static_cast<std::size_t>(i)] = ridge[i];
   m.pts[static_cast<std::size_t>(d)] = a;
@@ -289,6 +308,7 @@ RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Ind
   }
   return m;
 }
+}  // namespace
 
 int coefficient_sign(const RidgeMotion& m, int r) {
   m.ensure_exact();

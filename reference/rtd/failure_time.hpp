@@ -82,12 +82,27 @@
 // Precondition (the thesis' general position in R^d, §9.2): both simplices of
 // a ridge have non-zero volume (M_{d+1} != 0 and M_d != 0); ridge_motion()
 // throws std::invalid_argument otherwise. Weights may be degenerate.
+//
+// ============================================================================
+// Insertion events: a redundant point below its simplex (beyond the thesis)
+// ============================================================================
+// A point p that is not a vertex lies in a real simplex C = (c_0, ..., c_d)
+// (positive). Its lifted point passes below the lifted hyperplane of C when
+// the same determinant (Eq. 9.1) with S = (c_0, ..., c_{d-1}, a = c_d, b = p)
+// turns from positive (p above C: "convex") to negative: it is a RidgeMotion
+// whose "second simplex" (c_0, ..., c_{d-1}, p) is not a simplex of T, so
+// its volume M_d may vanish (point_motion() accepts that; only C must have
+// non-zero volume). Everything above — the failure time, the perturbation
+// (c_F(p) = |M_{d+1}| != 0 for b = p), compare_times() — applies unchanged,
+// so insertion events and ridge failures are ordered exactly in one queue.
 #pragma once
 
 #include <gmpxx.h>
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -111,7 +126,10 @@ struct PerturbationOrder {
 };
 
 // The points with their heights at t = 0 (weights W) and t = 1 (weights U),
-// as exact dyadics.
+// as exact dyadics. A point's dyadics are made the first time the exact stage
+// asks for them (most runs need few: the filtered stage reads the doubles),
+// so building a model costs O(n) double checks, not O(n) GMP numbers; the
+// references returned stay valid for the model's lifetime.
 class MovingModel {
  public:
   // ps.dim = d in 1..5 (lifted determinants need d+2 <= 7 rows); w and u hold
@@ -124,15 +142,22 @@ class MovingModel {
   const std::vector<double>& w() const { return w_; }
   const std::vector<double>& u() const { return u_; }
 
-  const pred::exact::Dyadic& coord(std::size_t p, int j) const { return x_[p * static_cast<std::size_t>(d_) + static_cast<std::size_t>(j)]; }
-  const pred::exact::Dyadic& height(std::size_t p, int t) const { return t == 0 ? h0_[p] : h1_[p]; }
+  const pred::exact::Dyadic& coord(std::size_t p, int j) const { return exact(p).x[static_cast<std::size_t>(j)]; }
+  const pred::exact::Dyadic& height(std::size_t p, int t) const { return t == 0 ? exact(p).h0 : exact(p).h1; }
 
  private:
+  struct Exact {  // one point: coordinates, heights |p|^2 - w_p and |p|^2 - u_p
+    std::array<pred::exact::Dyadic, 5> x;
+    pred::exact::Dyadic h0, h1;
+  };
+  const Exact& exact(std::size_t p) const;
+
   const PointSet* ps_;
   int d_;
   std::size_t n_;
   std::vector<double> w_, u_;
-  std::vector<pred::exact::Dyadic> x_, h0_, h1_;
+  mutable std::vector<std::uint32_t> made_;  // per point: 1 + its index in exact_, 0 when not made
+  mutable std::deque<Exact> exact_;          // deque: references stay valid as it grows
 };
 
 constexpr int kMaxRidgeRows = 7;  // d + 2 for d <= 5
@@ -162,6 +187,7 @@ struct RidgeMotion {
   mutable std::array<mpz_class, kMaxRidgeRows> c;  // c_F(pts[r])·2^-E
   mutable long hexp = 0;                           // H
   mutable int dir = 2;                             // direction(), 2: not yet known
+  bool point_event = false;  // S = (C, p) of a tracked point p: M_d may be 0
 
   int rows() const { return d + 2; }
   Index link_a() const { return pts[static_cast<std::size_t>(d)]; }
@@ -175,6 +201,12 @@ struct RidgeMotion {
 
 // S_F for the ridge `ridge` (d indices) with link vertices a (C1 = F + a) and b.
 RidgeMotion ridge_motion(const MovingModel& mm, const Index* ridge, Index a, Index b);
+
+// S = (simplex[0..d-1], a = simplex[d], b = p) for a point p that is not a
+// vertex, in the real simplex `simplex` (d+1 indices, positively oriented):
+// its lifted point lies above C's lifted hyperplane iff the sign is positive
+// ("convex"); it enters when that fails (header comment, insertion events).
+RidgeMotion point_motion(const MovingModel& mm, const Index* simplex, Index p);
 
 // Sign of Orient^{d+1}(S*_F, t) for t = 0 or 1 under the perturbation: +1
 // convex, -1 reflex; never 0.

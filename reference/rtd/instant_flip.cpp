@@ -1,4 +1,5 @@
-// instant_flip.cpp — thesis §9.2.1, Algorithm 14 (see the header).
+// instant_flip.cpp — thesis §9.2.1, Algorithm 14, with insertion events for
+// the redundant points (see the header).
 #include "reference/rtd/instant_flip.hpp"
 
 #include <algorithm>
@@ -6,6 +7,8 @@
 #include <string>
 
 #include "predicates/predicates.hpp"
+#include "predicates/fast.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/checked.hpp"
 #include "reference/rtd/bistellar_flip.hpp"
 
@@ -13,11 +16,13 @@ namespace flipflop::ref {
 
 namespace {
 
-// A queue entry: the ridge as remembered in T and its moving-model data.
+// A queue entry: a ridge as remembered in T, or a tracked point with the
+// simplex containing it (ref.s, ref.gen), and its moving-model data.
 struct Entry {
   RidgeMotion motion;
   rtd::RidgeRef ref;
-  std::uint64_t seq = 0;  // push order: the last tie-break (same flip)
+  Index point = rtd::kNoVertex;  // insertion event: the point (= motion.link_b())
+  std::uint64_t seq = 0;         // the last tie-break (push order or drawn from tie_seed)
 };
 
 // Binary min-heap of entry ids, ordered by failure time (compare_times).
@@ -76,6 +81,48 @@ std::string ridge_text(const RidgeMotion& m) {
   return s + "} with link {" + std::to_string(m.link_a()) + " " + std::to_string(m.link_b()) + "}";
 }
 
+RidgeMotion point_motion_in(const MovingModel& mm, const rtd::TriangulationD& T, std::int32_t s, Index p) {
+  return point_motion(mm, T.tuple(s), p);
+}
+
+// Exact unperturbed sign at t = 1 of the event determinant of S (d+2 real
+// points, C1 = the first d+1, positive): -1 when S is strictly convex there
+// (b strictly above the lifted C1), so that no perturbation can make it fail
+// in (0, 1). The per-input static filter of U (predicates/static_filter.hpp)
+// decides almost every call; the staged filters and exact arithmetic the rest.
+template <int K>
+int filtered_sign(const pred::StaticFilter& f, const double* const* x, const double* w) {
+  if (const int s = pred::static_sign<K>(f, x, w)) return s;
+  return pred::semi_static_sign<K>(x, w);
+}
+
+int sign_at_u(const pred::StaticFilter& f, const rtd::TriangulationD& T, const std::vector<double>& u,
+              const Index* S) {
+  const double* x[rtd::kMaxDim + 2];
+  double w[rtd::kMaxDim + 2];
+  for (int i = 0; i < T.d + 2; ++i) {
+    x[i] = T.ps->point(S[i]);
+    w[i] = u[S[i]];
+  }
+  // > 0: b strictly below (reflex); the static and semi-static filters
+  // inline (predicates/fast.hpp), the out-of-line stages for the rest
+  int s = 0;
+  switch (T.d) {
+    case 2: s = filtered_sign<4>(f, x, w); break;
+    case 3: s = filtered_sign<5>(f, x, w); break;
+    case 4: s = filtered_sign<6>(f, x, w); break;
+    default: s = filtered_sign<7>(f, x, w); break;
+  }
+  return s != 0 ? s : pred::lambda_sign(&f, T.d + 2, nullptr, x, w);
+}
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
 }  // namespace
 
 InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>& w,
@@ -88,61 +135,163 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
     throw std::invalid_argument("instant flip: the perturbation order has " +
                                 std::to_string(order.size()) + " points, the input " +
                                 std::to_string(mm.size()));
+  rtd::PointBuckets own;
+  if (options.points == nullptr) own = rtd::track_all(T);
+  rtd::PointBuckets& B = options.points ? *options.points : own;
+  InstantFlipTrace* trace = options.trace;
+  auto note = [&](std::int32_t s) {
+    if (!trace) return;
+    trace->slots.push_back(s);
+    trace->gens.push_back(T.gen[static_cast<std::size_t>(s)]);
+  };
   InstantFlipStats st;
   FailureQueue q(order);
   std::uint64_t seq = 0;
-  auto push = [&](RidgeMotion m, rtd::RidgeD r) {
-    q.push(Entry{std::move(m), rtd::remember(T, r), seq++});
+  auto next_seq = [&] { return options.tie_seed ? mix(options.tie_seed ^ mix(seq++)) : seq++; };
+  auto push = [&](RidgeMotion m, rtd::RidgeRef ref, Index point) {
+    q.push(Entry{std::move(m), ref, point, next_seq()});
     ++st.pushes;
     st.max_queue = std::max<std::uint64_t>(st.max_queue, q.size());
   };
+  auto push_ridge = [&](RidgeMotion m, rtd::RidgeD r) { push(std::move(m), rtd::remember(T, r), rtd::kNoVertex); };
+  auto push_point = [&](RidgeMotion m, std::int32_t s, Index p) {
+    rtd::RidgeRef ref;
+    ref.s = s;
+    ref.gen = T.gen[static_cast<std::size_t>(s)];
+    push(std::move(m), ref, p);
+  };
 
-  // Lines 1-5 (and the precondition: every interior ridge convex at t = 0).
-  for (rtd::RidgeD r : rtd::ridges(T)) {
-    if (!rtd::interior(T, r)) continue;  // boundary ridges: convex by default
+  // Lines 1-5 (and the precondition: every interior ridge convex and every
+  // tracked point above its simplex at t = 0). Without check_start, what is
+  // strictly convex at t = 1 cannot fail in (0, 1) and is skipped.
+  const auto d2 = static_cast<std::size_t>(T.d) + 2;
+  const bool need_u = !options.check_start || trace != nullptr;
+  const pred::StaticFilter filter_u =
+      need_u ? pred::StaticFilter::for_points(T.ps->coords.data(), T.n, T.d, u.data()) : pred::StaticFilter();
+  auto scan_ridge = [&](rtd::RidgeD r) {
+    if (need_u) {
+      const rtd::PointTuple S = rtd::points(T, r);
+      if (sign_at_u(filter_u, T, u, S.data()) < 0) {
+        if (!options.check_start) return;
+      } else {
+        note(r.s);  // may be flat at t = 1: the caller's verification looks at it
+      }
+    }
     RidgeMotion m = motion_of(mm, T, r);
     ++st.initial_ridges;
-    if (perturbed_sign(m, 0, order) < 0)
+    if (options.check_start && perturbed_sign(m, 0, order) < 0)
       throw std::invalid_argument(
           "instant flip: the start triangulation is not strongly regular for W under the "
           "perturbation order (ridge " +
           ridge_text(m) + (exact_sign(m, 0) == 0 ? " is flat" : " is reflex") +
           "; see find_perturbation_order, thesis Algorithm 15)");
-    if (fails_in_unit_interval(m, order)) push(std::move(m), r);
+    if (fails_in_unit_interval(m, order)) push_ridge(std::move(m), r);
+  };
+  for (std::int32_t s = 0; s < static_cast<std::int32_t>(T.slots()); ++s) {
+    if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
+    for (int i = 0; i <= T.d; ++i) {
+      const std::int32_t t = T.neighbor(s, i);
+      // each interior ridge once, from its smaller slot; boundary ridges
+      // (a virtual side) are convex by default
+      if (t < s || rtd::is_virtual_simplex(T, t)) continue;
+      scan_ridge(rtd::RidgeD{s, i});
+    }
+  }
+  for (Index p = 0; p < T.n; ++p) {
+    if (!B.is_tracked(p)) continue;
+    const std::int32_t s = B.slot_of(p);
+    if (need_u) {
+      Index S[rtd::kMaxDim + 2];
+      for (int i = 0; i <= T.d; ++i) S[i] = T.vertex(s, i);
+      S[d2 - 1] = p;
+      if (sign_at_u(filter_u, T, u, S) < 0) {
+        if (!options.check_start) continue;
+      } else {
+        note(s);
+      }
+    }
+    RidgeMotion m = point_motion_in(mm, T, s, p);
+    ++st.initial_points;
+    if (options.check_start && perturbed_sign(m, 0, order) < 0)
+      throw std::invalid_argument("instant flip: point " + std::to_string(p) +
+                                  " is not a vertex but lies below the lifted simplex containing it "
+                                  "at t = 0 under the perturbation order (T is not RT(S+W))");
+    if (fails_in_unit_interval(m, order)) push_point(std::move(m), s, p);
   }
 
-  // Lines 6-12.
-  std::vector<Entry> deferred;  // unflippable minima waiting for simultaneous events
-  while (!q.empty()) {
-    Entry e = q.pop();
-    ++st.pops;
-    const rtd::RidgeD r = rtd::recall(T, e.ref);
-    if (!r.valid()) {  // line 8: no longer in T with the same link
-      ++st.stale;
-      continue;
+  // After a flip: the points of the destroyed simplices (`moved`, plus a
+  // removed vertex) go to the created ones; their events and those of the
+  // boundary ridges (lines 10-12) enter the queue.
+  std::vector<Index> moved;
+  auto after_flip = [&](const Entry& e, const rtd::FlipResult& fr) {
+    (void)e;  // the current time, for the checked build's Lemma 9.10 checks
+    if (fr.removed != rtd::kNoVertex) moved.push_back(fr.removed);
+    rtd::redistribute(T, B, moved, fr.created);
+    st.moved_points += moved.size();
+    for (Index p : moved) {
+      const std::int32_t s = B.slot_of(p);
+      RidgeMotion m = point_motion_in(mm, T, s, p);
+      if (fails_in_unit_interval(m, order)) {
+        FF_CHECK(compare_times(e.motion, m, order) <= 0,
+                 "instant flip: a tracked point enters before the current time (Lemma 9.4)");
+        push_point(std::move(m), s, p);
+      }
     }
-    if (!deferred.empty() && compare_times(deferred.front().motion, e.motion, order) != 0)
-      throw std::logic_error("instant flip: ridge " + ridge_text(deferred.front().motion) +
-                             " fails first but is unflippable (degenerate coordinates, "
-                             "thesis §9.2.2)");
-    const rtd::FlipShape shape = rtd::flip_shape(T, r);
-    if (!shape.flippable) {
-      ++st.deferred;
-      deferred.push_back(std::move(e));
-      continue;
-    }
-    const rtd::FlipResult fr = rtd::flip(T, shape);  // line 9
-    ++st.flips[fr.k];
-    if (fr.removed != rtd::kNoVertex) ++st.removed_vertices;
-    if (options.on_flip) options.on_flip(T, InstantFlipEvent{&e.motion, fr.k, fr.removed});
+    moved.clear();
+    for (std::int32_t c : fr.created) note(c);
     for (rtd::RidgeD g : fr.boundary) {  // lines 10-12
       if (!rtd::interior(T, g)) continue;
       RidgeMotion m = motion_of(mm, T, g);
       if (fails_in_unit_interval(m, order)) {
         FF_CHECK(compare_times(e.motion, m, order) <= 0,
                  "instant flip: a new ridge fails before the current time (Lemma 9.10)");
-        push(std::move(m), g);
+        push_ridge(std::move(m), g);
       }
+    }
+  };
+
+  // Lines 6-12.
+  std::vector<Entry> deferred;  // unflippable minima waiting for simultaneous events
+  while (!q.empty()) {
+    Entry e = q.pop();
+    ++st.pops;
+    if (e.point != rtd::kNoVertex) {
+      // An insertion event: valid while p is tracked in the same simplex.
+      const std::int32_t s = e.ref.s;
+      if (!T.alive[static_cast<std::size_t>(s)] || T.gen[static_cast<std::size_t>(s)] != e.ref.gen ||
+          B.slot_of(e.point) != s) {
+        ++st.stale;
+        continue;
+      }
+      rtd::remove_point(B, e.point);
+      rtd::take_points(B, s, moved);
+      const rtd::FlipResult fr = rtd::insert_in_simplex(T, s, e.point);  // the 1-(d+1) flip
+      ++st.flips[1];
+      ++st.inserted_vertices;
+      if (options.on_flip) options.on_flip(T, InstantFlipEvent{&e.motion, 1, rtd::kNoVertex, e.point});
+      after_flip(e, fr);
+    } else {
+      const rtd::RidgeD r = rtd::recall(T, e.ref);
+      if (!r.valid()) {  // line 8: no longer in T with the same link
+        ++st.stale;
+        continue;
+      }
+      if (!deferred.empty() && compare_times(deferred.front().motion, e.motion, order) != 0)
+        throw std::logic_error("instant flip: ridge " + ridge_text(deferred.front().motion) +
+                               " fails first but is unflippable (degenerate coordinates, "
+                               "thesis §9.2.2)");
+      const rtd::FlipShape shape = rtd::flip_shape(T, r);
+      if (!shape.flippable) {
+        ++st.deferred;
+        deferred.push_back(std::move(e));
+        continue;
+      }
+      for (int j = 0; j < shape.nu; ++j) rtd::take_points(B, shape.cur[static_cast<std::size_t>(j)], moved);
+      const rtd::FlipResult fr = rtd::flip(T, shape);  // line 9
+      ++st.flips[fr.k];
+      if (fr.removed != rtd::kNoVertex) ++st.removed_vertices;
+      if (options.on_flip) options.on_flip(T, InstantFlipEvent{&e.motion, fr.k, fr.removed, rtd::kNoVertex});
+      after_flip(e, fr);
     }
     for (Entry& x : deferred) q.push(std::move(x));  // retry after this event
     deferred.clear();
