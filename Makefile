@@ -55,13 +55,15 @@ python: build
 
 # ---- sanitizers (run by .ci/run) ---------------------------------------------
 # asan: AddressSanitizer + UndefinedBehaviorSanitizer build of the whole test
-#       suite (fewer RapidCheck cases per property: the sanitizers multiply run
-#       time; the Release suite runs the full count).
+#       suite but the test cases tagged [long] (the deterministic sweeps and the
+#       large inputs, FLIPFLOP_LONG_TESTS=OFF), with fewer RapidCheck cases per
+#       property: the sanitizers multiply run time; the Release suite (make
+#       test) runs the [long] cases and the full count.
 SAN_CASES ?= 300
 ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-recover=null
 
 asan: deps
-	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) \
+	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
 	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
 	  { cat build-asan.configure.log; exit 1; }
@@ -74,6 +76,7 @@ asan: deps
 #       since Debian's libtbb is not instrumented) and the thrust/OpenMP kernels
 #       built against LLVM's libomp, whose synchronisation TSan learns through
 #       the Archer OMPT tool (libarcher.so, loaded by OMP_TOOL_LIBRARIES).
+#       The [long] cases stay in: their large inputs reach the parallel paths.
 TSAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test \
               hull2_cuda_omp_test
@@ -81,7 +84,7 @@ ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/
 
 tsan: deps
 	@test -n "$(ARCHER)" || { echo "tsan: libarcher.so (libomp-14-dev) not found"; exit 1; }
-	@CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON \
+	@CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON -DFLIPFLOP_LONG_TESTS=ON \
 	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan.configure.log 2>&1 || \
 	  { cat build-tsan.configure.log; exit 1; }

@@ -114,7 +114,7 @@ std::vector<Case> outputs(const PointSet& ps) {
 
 }  // namespace
 
-TEST_CASE("rt2 cpu certify: the parallel certifier gives the sequential verdict and message", "[certify][rt2]") {
+TEST_CASE("rt2 cpu certify: the parallel certifier gives the sequential verdict and message", "[certify][rt2][long]") {
   struct Input {
     const char* dist;
     std::size_t n;

@@ -129,7 +129,7 @@ TEST_CASE("hull2 cpu: every generator family up to 4000 points equals the refere
                     });
 }
 
-TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread counts and options", "[hull2_cpu]") {
+TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread counts and options", "[hull2_cpu][long]") {
   std::size_t cases = 0;
   cpu::Hull2Options forced;  // throw-away on every input, a small sample, tiny chunks
   forced.throw_away_from = 0;
@@ -151,7 +151,7 @@ TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread count
   REQUIRE(cases >= 11 * 6 * 2 * 3 * 2 * 2);
 }
 
-TEST_CASE("hull2 cpu: large inputs of every family equal the reference, certified", "[hull2_cpu]") {
+TEST_CASE("hull2 cpu: large inputs of every family equal the reference, certified", "[hull2_cpu][long]") {
   for (const std::string& fam : test::families(2)) {
     gen::Options g;
     g.seed = 11;

@@ -106,7 +106,7 @@ TEST_CASE("hull2 cuda-omp: every generator family up to 4000 points equals the r
   });
 }
 
-TEST_CASE("hull2 cuda-omp: deterministic sweep over the families, sizes and options", "[hull2_cuda_omp]") {
+TEST_CASE("hull2 cuda-omp: deterministic sweep over the families, sizes and options", "[hull2_cuda_omp][long]") {
   std::size_t cases = 0;
   kernels::Hull2GpuOptions tiny;  // no throw-away, chunks of 3: the most passes
   tiny.throw_away = false;

@@ -86,7 +86,7 @@ TEST_CASE("hull3 cpu: every generator family up to 3000 points equals the refere
                     });
 }
 
-TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu]") {
+TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu][long]") {
   std::size_t cases = 0, rejected = 0;
   test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
                               [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
@@ -103,7 +103,7 @@ TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread co
   REQUIRE(cases >= 13 * 6 * 2 * 3);
 }
 
-TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, certified", "[hull3_cpu]") {
+TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, certified", "[hull3_cpu][long]") {
   for (const char* fam : {"ball", "sphere", "box", "cball", "sphere-lattice", "grid3"}) {
     gen::Options o;
     o.seed = 11;
@@ -140,7 +140,7 @@ TEST_CASE("hull3 cpu: input that does not span R^3 is rejected like the referenc
 // input without some extreme points (those points lie outside it; many other
 // points may too, the smallest must be named), and a facet's vertex swapped
 // for an interior point.
-TEST_CASE("hull3 cpu: the parallel certifier gives the sequential verdict and message", "[hull3_cpu]") {
+TEST_CASE("hull3 cpu: the parallel certifier gives the sequential verdict and message", "[hull3_cpu][long]") {
   std::size_t rejected = 0, runs = 0;
   for (const char* fam : {"ball", "sphere", "cube", "grid3", "sphere-lattice"})
     for (std::uint64_t seed : {1, 2}) {

@@ -95,7 +95,7 @@ TEST_CASE("hull3 cuda-omp: every generator family up to 3000 points equals the r
                     });
 }
 
-TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[hull3_cuda_omp]") {
+TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[hull3_cuda_omp][long]") {
   std::size_t cases = 0, rejected = 0;
   const std::vector<std::string> fams = test::families(3);
   test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
@@ -115,7 +115,7 @@ TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[h
 }
 
 TEST_CASE("hull3 cuda-omp: large ball, sphere, box and lattice inputs equal the reference, certified",
-          "[hull3_cuda_omp]") {
+          "[hull3_cuda_omp][long]") {
   const std::pair<const char*, std::size_t> inputs[] = {
       {"ball", 100000}, {"sphere", 100000}, {"box", 30000}, {"sphere-lattice", 30000}, {"grid3", 10000}};
   for (const auto& [fam, n] : inputs) {

@@ -94,7 +94,7 @@ TEST_CASE("kernels: 2D classification equals the sequential GMP loop", "[kernels
   for (kt::Family fam : kFamilies) property<2>(fam);
 }
 
-TEST_CASE("kernels: large inputs (many threads, many blocks)", "[kernels]") {
+TEST_CASE("kernels: large inputs (many threads, many blocks)", "[kernels][long]") {
   // Sizes on both sides of the OpenMP grain size 2^14 of classify.cuh (below
   // it thrust runs sequentially), and one well above.
   for (std::size_t n : {std::size_t{16383}, std::size_t{16384}, std::size_t{100000}})

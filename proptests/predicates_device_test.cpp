@@ -56,7 +56,7 @@ TEST_CASE("device predicates (OpenMP): equal GMP on every family", "[kernels][pr
 // Batches above the OpenMP grain size (1024 calls, predicates_device.cuh): the
 // parallel path. Each case costs thousands of GMP and exact-stage calls: a
 // hundredth of the configured cases, one family drawn per case.
-TEST_CASE("device predicates (OpenMP): large batches (parallel)", "[kernels][predicates]") {
+TEST_CASE("device predicates (OpenMP): large batches (parallel)", "[kernels][predicates][long]") {
   for (BatchShape shape : device_shapes()) {
     BatchTally t;
     prop_scaled(batch_name(shape) + ", large", 100, [&] {

@@ -100,7 +100,7 @@ TEST_CASE("rt2 cpu: every generator family up to 2000 points equals the referenc
                       });
 }
 
-TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and thread counts", "[rt2_cpu]") {
+TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and thread counts", "[rt2_cpu][long]") {
   std::size_t cases = 0, rejected = 0, families = 0;
   for (const std::string& fam : test::families(2)) {
     ++families;
@@ -125,7 +125,7 @@ TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and th
   REQUIRE(families >= 8);
 }
 
-TEST_CASE("rt2 cpu: 20000-point inputs in the three weight ranges of §5.4 equal the reference, certified", "[rt2_cpu]") {
+TEST_CASE("rt2 cpu: 20000-point inputs in the three weight ranges of §5.4 equal the reference, certified", "[rt2_cpu][long]") {
   // weights in [0, w] of a unit square: about 99 %, 20-30 % and 1 % of the
   // points non-redundant (measured by the counts below), and unweighted
   struct Case {

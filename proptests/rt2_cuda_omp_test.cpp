@@ -103,7 +103,7 @@ TEST_CASE("rt2 cuda-omp: deterministic sweep over the families, sizes and weight
 }
 
 TEST_CASE("rt2 cuda-omp: 20000 points in the three weight ranges of §5.4 and 10^5 points equal the reference",
-          "[rt2_cuda_omp]") {
+          "[rt2_cuda_omp][long]") {
   // weights in [0, w] of a unit square: about 99 %, 20-30 % and 1 % of the
   // points non-redundant, and unweighted; degenerate families unweighted
   struct Case {

@@ -469,7 +469,7 @@ TEST_CASE("rt2: invalid inputs are rejected with a reason", "[rt2]") {
   REQUIRE_THROWS_AS(ref::flip_flop(zig, ell), std::invalid_argument);
 }
 
-TEST_CASE("rt2: 10^5 points with the weight ranges of thesis section 5.4 are certified", "[rt2][large]") {
+TEST_CASE("rt2: 10^5 points with the weight ranges of thesis section 5.4 are certified", "[rt2][large][long]") {
   for (double whi : {1e-2, 1e-5, 2e-7}) {
     const PointSet ps = family("square", 100000, 1, true, whi);
     Rt2Stats st;
