@@ -60,7 +60,13 @@ python: build
 #       property: the sanitizers multiply run time; the Release suite (make
 #       test) runs the [long] cases and the full count.
 SAN_CASES ?= 300
-ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-recover=null
+# Compile time dominates this stage in CI; measured on one test file (g++ 12,
+# -O1, ASan + UBSan): 58 s with -g, 37 s with -g1 (line tables: reports keep
+# file:line), 28 s with -g1 and without UBSan's `vptr` check (dynamic-type
+# checks on polymorphic objects: mostly CGAL's and Boost's; flipflop has one
+# interface, ref::KernelPoint, whose misuse after destruction ASan reports).
+# Every other UBSan check stays on.
+ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fsanitize-recover=null
 
 asan: deps
 	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
@@ -77,7 +83,7 @@ asan: deps
 #       built against LLVM's libomp, whose synchronisation TSan learns through
 #       the Archer OMPT tool (libarcher.so, loaded by OMP_TOOL_LIBRARIES).
 #       The [long] cases stay in: their large inputs reach the parallel paths.
-TSAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
+TSAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test \
               hull2_cuda_omp_test
 ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
@@ -91,7 +97,7 @@ tsan: deps
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)
 	cd build-tsan && OMP_TOOL_LIBRARIES=$(ARCHER) ARCHER_OPTIONS=verbose=1 \
 	  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/.ci/tsan.supp \
-	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|input|deterministic)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: the parallel certifier)'
+	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|input|deterministic)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: many missing points)'
 
 sanitize: asan tsan
 
