@@ -59,7 +59,7 @@ python: build
 #       large inputs, FLIPFLOP_LONG_TESTS=OFF), with fewer RapidCheck cases per
 #       property: the sanitizers multiply run time; the Release suite (make
 #       test) runs the [long] cases and the full count.
-SAN_CASES ?= 300
+SAN_CASES ?= 150
 # Compile time dominates this stage in CI; measured on one test file (g++ 12,
 # -O1, ASan + UBSan): 58 s with -g, 37 s with -g1 (line tables: reports keep
 # file:line), 28 s with -g1 and without UBSan's `vptr` check (dynamic-type
