@@ -102,8 +102,8 @@ bool DynamicRegularTriangulation::repair(WeightUpdateStats& st, const InstantFli
     std::int32_t s;
     std::uint32_t gen;
   };
-  std::deque<SlotRef> todo;
-  for (std::size_t i = 0; i < trace.slots.size(); ++i) todo.push_back({trace.slots[i], trace.gens[i]});
+  std::deque<SlotRef> to_check;
+  for (std::size_t i = 0; i < trace.slots.size(); ++i) to_check.push_back({trace.slots[i], trace.gens[i]});
   std::vector<rtd::RidgeRef> stuck;
   std::vector<Index> moved;
   auto live = [&](SlotRef r) {
@@ -116,7 +116,7 @@ bool DynamicRegularTriangulation::repair(WeightUpdateStats& st, const InstantFli
     }
     rtd::redistribute(T, B_, moved, fr.created);
     moved.clear();
-    for (std::int32_t c : fr.created) todo.push_back({c, T.gen[static_cast<std::size_t>(c)]});
+    for (std::int32_t c : fr.created) to_check.push_back({c, T.gen[static_cast<std::size_t>(c)]});
     ++st.repair_flips[fr.k];
   };
   // Flips ridge r when locally non-regular and flippable; true when flipped.
@@ -134,9 +134,9 @@ bool DynamicRegularTriangulation::repair(WeightUpdateStats& st, const InstantFli
   };
   std::vector<Index> pts;
   for (;;) {
-    while (!todo.empty()) {
-      const SlotRef sr = todo.front();
-      todo.pop_front();
+    while (!to_check.empty()) {
+      const SlotRef sr = to_check.front();
+      to_check.pop_front();
       if (!live(sr) || rtd::is_virtual_simplex(T, sr.s)) continue;
       const std::int32_t s = sr.s;
       // its points: one strictly below the lifted simplex is inserted
@@ -183,8 +183,8 @@ bool DynamicRegularTriangulation::repair(WeightUpdateStats& st, const InstantFli
         stuck.push_back(ref);
       }
     }
-    if (!pending && todo.empty()) return true;
-    if (!progress && todo.empty()) return false;
+    if (!pending && to_check.empty()) return true;
+    if (!progress && to_check.empty()) return false;
   }
 }
 
