@@ -5,19 +5,10 @@
 # near 10 s (the extreme-magnitude rows in 5-7 points dominate; sanitizer
 # builds run it too): the timings are not the point here.
 #   cmake -DFLIPFLOP=<path to flipflop> -P check_predicates_csv.cmake
-execute_process(COMMAND ${FLIPFLOP} bench predicates --n 200 --reps 1 --csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "flipflop bench predicates failed (${rc}): ${err}")
-endif()
-string(REGEX REPLACE "\n$" "" out "${out}")
-string(REPLACE "\n" ";" lines "${out}")
-list(GET lines 0 header)
-set(want "predicate,input,flipflop_ns,static_ns,dynamic_ns,expansion_ns,cgal_epick_ns,gmp_ns,static_decides,dynamic_decides")
-if(NOT header STREQUAL want)
-  message(FATAL_ERROR "header is '${header}', expected '${want}'")
-endif()
-list(REMOVE_AT lines 0)
+include(${CMAKE_CURRENT_LIST_DIR}/bench_csv.cmake)
+flipflop_bench_rows(lines
+  "predicate,input,flipflop_ns,static_ns,dynamic_ns,expansion_ns,cgal_epick_ns,gmp_ns,static_decides,dynamic_decides"
+  predicates --n 200 --reps 1 --csv)
 list(LENGTH lines n)
 if(NOT n EQUAL 36)
   message(FATAL_ERROR "expected 36 rows (9 predicates x 4 inputs), got ${n}")

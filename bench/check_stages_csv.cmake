@@ -4,27 +4,17 @@
 # the benchmark: a failure exits non-zero and fails this test). Small inputs,
 # one run: the timings are not the point here.
 #   cmake -DFLIPFLOP=<path to flipflop> -P check_stages_csv.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/bench_csv.cmake)
 foreach(job "hull3;ball;read .xyz;read .npy;compute: initial tetrahedron and static filter;compute: construction rounds;compute: flip-flop;compute: canonical output;certify;write;total (.npy)"
             "hull2;disk;read .xyz;read .npy;compute: throw-away;compute: sort by x;compute: split and flip-pop;compute: output;certify;write;total (.npy)")
   list(GET job 0 kind)
   list(GET job 1 dist)
   list(SUBLIST job 2 -1 stages)
-  execute_process(COMMAND ${FLIPFLOP} bench ${kind} --stages --dist ${dist} --n 20000 --reps 1 --csv
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "flipflop bench ${kind} --stages failed (${rc}): ${err}")
-  endif()
-  string(REGEX REPLACE "\n$" "" out "${out}")
-  string(REPLACE "\n" ";" lines "${out}")
-  list(GET lines 0 header)
-  if(NOT header STREQUAL "stage,median_s,min_s,max_s,size")
-    message(FATAL_ERROR "${kind}: header is '${header}'")
-  endif()
-  list(REMOVE_AT lines 0)
+  flipflop_bench_rows(lines "stage,median_s,min_s,max_s,size" ${kind} --stages --dist ${dist} --n 20000 --reps 1 --csv)
   list(LENGTH lines n)
   list(LENGTH stages want)
   if(NOT n EQUAL want)
-    message(FATAL_ERROR "${kind}: expected ${want} stages, got ${n}: ${out}")
+    message(FATAL_ERROR "${kind}: expected ${want} stages, got ${n}: ${lines}")
   endif()
   set(i 0)
   foreach(s IN LISTS stages)
