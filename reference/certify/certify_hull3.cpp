@@ -193,11 +193,14 @@ class DirectionTable {
  private:
   std::size_t cell(const double* p) const {
     const double v[3] = {p[0] - s_[0], p[1] - s_[1], p[2] - s_[2]};
+    // a centroid of points near ±1.8e308 overflows; inf - inf is NaN: any
+    // non-finite difference takes cell 0 (a hint only)
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return 0;
     int a = 0;
     for (int j = 1; j < 3; ++j)
       if (std::abs(v[j]) > std::abs(v[a])) a = j;
     const double m = std::abs(v[a]);
-    if (!(m > 0) || !std::isfinite(m)) return 0;
+    if (!(m > 0)) return 0;
     const int face = 2 * a + (v[a] < 0 ? 1 : 0);
     auto coord = [&](double x) {
       const int c = static_cast<int>((x / m + 1) * 0.5 * kSide);
