@@ -58,7 +58,14 @@ python: build
 #       suite but the test cases tagged [long] (the deterministic sweeps and the
 #       large inputs, FLIPFLOP_LONG_TESTS=OFF), with fewer RapidCheck cases per
 #       property: the sanitizers multiply run time; the Release suite (make
-#       test) runs the [long] cases and the full count.
+#       test) runs the [long] cases and the full count. Not built here (CI
+#       time; measured: 2040 s of compilation on 2 cores before these cuts):
+#       the thrust/OpenMP kernels and their tests (the fuzz stage runs them
+#       under clang's ASan + UBSan, make tsan under TSan, make test in full),
+#       the corpus replays (the fuzz stage replays the corpus first), the
+#       example; the CGAL/Qhull peer wrappers and Catch2's main are compiled
+#       uninstrumented (FLIPFLOP_SANITIZE_THIRD_PARTY=OFF, 330 s of compile),
+#       the test drivers at -O0 (FLIPFLOP_TESTS_O0; the libraries at -O1).
 SAN_CASES ?= 150
 # Compile time dominates this stage in CI; measured on one test file (g++ 12,
 # -O1, ASan + UBSan): 58 s with -g, 37 s with -g1 (line tables: reports keep
@@ -70,6 +77,8 @@ ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-
 
 asan: deps
 	@cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
+	  -DFLIPFLOP_OMP_KERNELS=OFF -DFLIPFLOP_EXAMPLES=OFF -DFLIPFLOP_FUZZ_REPLAYS=OFF -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF \
+	  -DFLIPFLOP_TESTS_O0=ON \
 	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
 	  { cat build-asan.configure.log; exit 1; }
