@@ -141,36 +141,40 @@ FF_HD inline void differences(const double* const* p, const double* w, double* t
   }
 }
 
-// det T by Laplace expansion over column subsets, plain doubles (same
-// operation structure as det_by_minors<N>; explicit for N = 2, 3).
+// det_plain<N> split at its last level, for many determinants that share
+// rows 0..N-2 and differ in row N-1 (the instant flip's scan: one simplex, its
+// neighbours' opposite vertices). top_minors<N> computes, for every column j,
+// the minor of rows 0..N-2 on the columns other than j (levels 2..N-1 of the
+// Laplace expansion over column subsets), and with_last_row<N> the last level
+// against a row: the same products and sums in the same order as det_plain<N>
+// (explicit for N = 3, 4, a loop beyond; row r of a subset's expansion in
+// ascending column order, alternating signs from (r + position) parity), so
+// the value is bit-for-bit det_plain<N>'s (tested: predicates_stages_test) and
+// every bound derived for det_plain holds for it. N >= 2.
 template <int N>
-FF_HD inline double det_plain(const double* t) {
-  if constexpr (N == 1) {
-    return t[0];
-  } else if constexpr (N == 2) {
-    return t[0] * t[3] - t[1] * t[2];
-  } else if constexpr (N == 3) {
-    const double m01 = t[0] * t[4] - t[1] * t[3];
-    const double m02 = t[0] * t[5] - t[2] * t[3];
-    const double m12 = t[1] * t[5] - t[2] * t[4];
-    return t[6] * m12 - t[7] * m02 + t[8] * m01;
-  } else if constexpr (N == 4) {
-    // the loop below unrolled: the same products and sums in the same order
-    // (level 2 on rows 0-1, level 3 on rows 0-2, then row 3), so the rounding
-    // depth of (1) is unchanged
+FF_HD inline void top_minors(const double* t, double* minor) {
+  static_assert(N >= 2 && N <= 8, "top_minors: 2 <= N <= 8");
+  if constexpr (N == 2) {
+    minor[0] = t[1];
+    minor[1] = t[0];
+  } else if constexpr (N == 3) {  // det_plain<3>'s m12, m02, m01
+    minor[0] = t[1] * t[5] - t[2] * t[4];
+    minor[1] = t[0] * t[5] - t[2] * t[3];
+    minor[2] = t[0] * t[4] - t[1] * t[3];
+  } else if constexpr (N == 4) {  // det_plain<4>'s d123, d023, d013, d012
     const double m01 = t[0] * t[5] - t[1] * t[4], m02 = t[0] * t[6] - t[2] * t[4];
     const double m03 = t[0] * t[7] - t[3] * t[4], m12 = t[1] * t[6] - t[2] * t[5];
     const double m13 = t[1] * t[7] - t[3] * t[5], m23 = t[2] * t[7] - t[3] * t[6];
-    const double d012 = t[8] * m12 - t[9] * m02 + t[10] * m01;
-    const double d013 = t[8] * m13 - t[9] * m03 + t[11] * m01;
-    const double d023 = t[8] * m23 - t[10] * m03 + t[11] * m02;
-    const double d123 = t[9] * m23 - t[10] * m13 + t[11] * m12;
-    return -(t[12] * d123) + t[13] * d023 - t[14] * d013 + t[15] * d012;
+    minor[0] = t[9] * m23 - t[10] * m13 + t[11] * m12;
+    minor[1] = t[8] * m23 - t[10] * m03 + t[11] * m02;
+    minor[2] = t[8] * m13 - t[9] * m03 + t[11] * m01;
+    minor[3] = t[8] * m12 - t[9] * m02 + t[10] * m01;
   } else {
     constexpr int kSubsets = 1 << N;
+    constexpr int kFull = kSubsets - 1;
     double d[kSubsets];
     for (int j = 0; j < N; ++j) d[1 << j] = t[j];
-    for (int r = 2; r <= N; ++r) {
+    for (int r = 2; r <= N - 1; ++r) {
       for (int s = 1; s < kSubsets; ++s) {
         if (popcount_small(static_cast<unsigned>(s)) != r) continue;
         double acc = 0.0;
@@ -191,7 +195,34 @@ FF_HD inline double det_plain(const double* t) {
         d[s] = acc;
       }
     }
-    return d[kSubsets - 1];
+    for (int j = 0; j < N; ++j) minor[j] = d[kFull & ~(1 << j)];
+  }
+}
+template <int N>
+FF_HD inline double with_last_row(const double* minor, const double* last) {
+  double acc = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const double term = last[j] * minor[j];
+    const bool negative = ((N - 1 + j) & 1) != 0;
+    acc = (j == 0) ? (negative ? -term : term) : (negative ? acc - term : acc + term);
+  }
+  return acc;
+}
+
+// det T by Laplace expansion over column subsets, plain doubles (same
+// operation structure as det_by_minors<N>; explicit for N = 2; for N >= 3 the
+// levels of top_minors<N> and the last row by with_last_row<N>).
+template <int N>
+FF_HD inline double det_plain(const double* t) {
+  if constexpr (N == 1) {
+    return t[0];
+  } else if constexpr (N == 2) {
+    return t[0] * t[3] - t[1] * t[2];
+  } else {
+    // the Laplace levels over column subsets; the last one against row N-1
+    double minor[N];
+    top_minors<N>(t, minor);
+    return with_last_row<N>(minor, t + (N - 1) * N);
   }
 }
 

@@ -835,3 +835,59 @@ TEST_CASE("stages: a weakened static filter errs, the true one does not", "[pred
     CHECK(worst_ratio < 1.0);
   }
 }
+
+// (f) det_plain<N> split at its last level (top_minors + with_last_row: the
+// instant flip's per-simplex scan evaluates one simplex's minors against the
+// rows of its neighbours' opposite vertices): on small integer entries every
+// product and sum is exact, so both must equal the exact determinant (int64
+// cofactor expansion, an independent evaluation) — for a fixed top and several
+// last rows, as the scan uses them. The rounding bound of the split evaluation
+// is det_plain's: the static-filter properties (a), (e) exercise it.
+std::int64_t exact_det(const std::vector<std::int64_t>& a, int n) {
+  if (n == 1) return a[0];
+  std::int64_t det = 0;
+  for (int c = 0; c < n; ++c) {  // expansion along row 0
+    std::vector<std::int64_t> sub;
+    for (int r = 1; r < n; ++r)
+      for (int j = 0; j < n; ++j)
+        if (j != c) sub.push_back(a[static_cast<std::size_t>(r * n + j)]);
+    const std::int64_t m = a[static_cast<std::size_t>(c)] * exact_det(sub, n - 1);
+    det += (c % 2 == 0) ? m : -m;
+  }
+  return det;
+}
+
+template <int N>
+void check_split_det() {
+  rc::prop("N = " + std::to_string(N), [] {
+    // |det| <= N! 16^N < 2^48 for N <= 7: every intermediate is exact
+    auto entry = [] { return *rc::gen::inRange(-16, 17); };
+    std::vector<std::int64_t> a(N * N);
+    double t[N * N];
+    for (int i = 0; i < N * N; ++i) t[i] = static_cast<double>(a[static_cast<std::size_t>(i)] = entry());
+    if (*rc::gen::arbitrary<bool>())  // a singular matrix: the last row repeats row 0
+      for (int j = 0; j < N; ++j) t[(N - 1) * N + j] = static_cast<double>(a[static_cast<std::size_t>((N - 1) * N + j)] = a[static_cast<std::size_t>(j)]);
+    double minor[N];
+    pred::filter_detail::top_minors<N>(t, minor);
+    for (int row = 0; row < 4; ++row) {
+      if (row > 0)
+        for (int j = 0; j < N; ++j) t[(N - 1) * N + j] = static_cast<double>(a[static_cast<std::size_t>((N - 1) * N + j)] = entry());
+      const std::int64_t exact = exact_det(a, N);
+      const double split = pred::filter_detail::with_last_row<N>(minor, t + (N - 1) * N);
+      const double whole = pred::filter_detail::det_plain<N>(t);
+      RC_LOG() << "last row " << row << ": exact " << exact << ", split " << split << ", det_plain " << whole << "\n";
+      RC_ASSERT(split == static_cast<double>(exact));
+      RC_ASSERT(whole == static_cast<double>(exact));
+    }
+  });
+}
+
+TEST_CASE("stages: det_plain and its split at the last row equal the exact determinant on exact inputs",
+          "[predicates][stages]") {
+  check_split_det<2>();
+  check_split_det<3>();
+  check_split_det<4>();
+  check_split_det<5>();
+  check_split_det<6>();
+  check_split_det<7>();
+}

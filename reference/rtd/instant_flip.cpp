@@ -116,6 +116,75 @@ int sign_at_u(const pred::StaticFilter& f, const rtd::TriangulationD& T, const s
   return s != 0 ? s : pred::lambda_sign(&f, T.d + 2, nullptr, x, w);
 }
 
+// Lines 3-5, the filter part, one simplex at a time. For the interior ridges
+// of real slot s seen from s (neighbour t > s, real), the static filter of U
+// on the determinant of S' = (s_1..s_d, b, s_0), b the vertex of t not in s:
+// rows 0..d-1 (s_r - s_0, lifted) are the simplex's, only the last row is
+// b's, so the minors of rows 0..d-1 are computed once per simplex and each
+// ridge costs one row (top_minors / with_last_row: det_plain's operations in
+// det_plain's order, so StaticFilter's bound for d+2 lifted points holds).
+// S' is S_F = (f_1..f_d, a, b) up to an even permutation of C1's tuple and
+// the cyclic shift of s_0 to the end, d+1 transpositions: det S_F =
+// (-1)^(d+1) det S'. Returns the facets i whose ridge is NOT proven strictly
+// convex at t = 1 (sign < 0): only those can fail in (0, 1) and go to
+// scan_ridge, which decides them exactly — the same ridges, in the same order,
+// as scanning every ridge.
+void lifted_row(const double* x, double w, const double* x0, double w0, int d, double* row) {
+  double lift = 0.0;
+  for (int j = 0; j < d; ++j) {
+    const double e = x[j] - x0[j];
+    row[j] = e;
+    lift = (j == 0) ? e * e : lift + e * e;
+  }
+  row[d] = lift - (w - w0);
+}
+
+template <int D>
+unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
+                          std::int32_t s) {
+  constexpr int N = D + 1;
+  const PointSet& ps = *T.ps;
+  const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
+  const double* x0 = ps.point(v[0]);
+  const double w0 = u[v[0]];
+  double t[N * N];
+  for (int r = 0; r < D; ++r) lifted_row(ps.point(v[r + 1]), u[v[r + 1]], x0, w0, D, t + r * N);
+  double minor[N];
+  pred::filter_detail::top_minors<N>(t, minor);
+  unsigned uncertain = 0;
+  for (int i = 0; i <= D; ++i) {
+    const std::int32_t n = T.neighbor(s, i);
+    if (n < s) continue;
+    const Index* vn = T.verts.data() + static_cast<std::size_t>(n) * N;
+    Index b = rtd::kNoVertex;
+    bool virtual_side = false;
+    for (int k = 0; k < N; ++k) {
+      const Index x = vn[k];
+      virtual_side |= x == T.n;
+      bool shared = false;
+      for (int m = 0; m < N; ++m) shared |= x == v[m];
+      if (!shared) b = x;
+    }
+    if (virtual_side) continue;  // a boundary ridge: convex by default
+    double last[N];
+    lifted_row(ps.point(b), u[b], x0, w0, D, last);
+    const double det = pred::filter_detail::with_last_row<N>(minor, last);
+    const double det_sf = (D % 2 == 1) ? det : -det;
+    if (!(-det_sf > bound)) uncertain |= 1u << i;
+  }
+  return uncertain;
+}
+
+unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
+                          std::int32_t s) {
+  switch (T.d) {
+    case 2: return uncertain_facets<2>(bound, T, u, s);
+    case 3: return uncertain_facets<3>(bound, T, u, s);
+    case 4: return uncertain_facets<4>(bound, T, u, s);
+    default: return uncertain_facets<5>(bound, T, u, s);
+  }
+}
+
 std::uint64_t mix(std::uint64_t x) {  // splitmix64
   x += 0x9e3779b97f4a7c15ull;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -187,9 +256,16 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
           "; see find_perturbation_order, thesis Algorithm 15)");
     if (fails_in_unit_interval(m, order)) push_ridge(std::move(m), r);
   };
+  // with check_start every ridge is examined; without, the static filter of U
+  // proves most ridges strictly convex at t = 1 a simplex at a time
+  const bool skip_convex = need_u && !options.check_start;
+  const double bound_u = filter_u.bound(T.d + 2, true);
   for (std::int32_t s = 0; s < static_cast<std::int32_t>(T.slots()); ++s) {
     if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
+    const unsigned uncertain = skip_convex ? uncertain_facets(bound_u, T, u, s) : ~0u;
+    if (uncertain == 0) continue;
     for (int i = 0; i <= T.d; ++i) {
+      if (!((uncertain >> i) & 1u)) continue;
       const std::int32_t t = T.neighbor(s, i);
       // each interior ridge once, from its smaller slot; boundary ridges
       // (a virtual side) are convex by default
