@@ -139,21 +139,26 @@ void lifted_row(const double* x, double w, const double* x0, double w0, int d, d
   row[d] = lift - (w - w0);
 }
 
+// The scan is bound by memory: per ridge the neighbour's vertex tuple and the
+// opposite vertex's point, per simplex its d+1 points, at random places.
+// `xu` holds each point's coordinates and weight u together (one load where
+// there were two), and the loop prefetches kAhead slots ahead: their
+// neighbours' tuples and their own points.
 template <int D>
-unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
-                          std::int32_t s) {
+unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const double* xu, std::int32_t s) {
   constexpr int N = D + 1;
-  const PointSet& ps = *T.ps;
   const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
-  const double* x0 = ps.point(v[0]);
-  const double w0 = u[v[0]];
+  const double* x0 = xu + static_cast<std::size_t>(v[0]) * N;
   double t[N * N];
-  for (int r = 0; r < D; ++r) lifted_row(ps.point(v[r + 1]), u[v[r + 1]], x0, w0, D, t + r * N);
+  for (int r = 0; r < D; ++r) {
+    const double* x = xu + static_cast<std::size_t>(v[r + 1]) * N;
+    lifted_row(x, x[D], x0, x0[D], D, t + r * N);
+  }
   double minor[N];
   pred::filter_detail::top_minors<N>(t, minor);
   unsigned uncertain = 0;
   for (int i = 0; i <= D; ++i) {
-    const std::int32_t n = T.neighbor(s, i);
+    const std::int32_t n = T.nbrs[static_cast<std::size_t>(s) * N + static_cast<std::size_t>(i)];
     if (n < s) continue;
     const Index* vn = T.verts.data() + static_cast<std::size_t>(n) * N;
     Index b = rtd::kNoVertex;
@@ -167,7 +172,8 @@ unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std:
     }
     if (virtual_side) continue;  // a boundary ridge: convex by default
     double last[N];
-    lifted_row(ps.point(b), u[b], x0, w0, D, last);
+    const double* xb = xu + static_cast<std::size_t>(b) * N;
+    lifted_row(xb, xb[D], x0, x0[D], D, last);
     const double det = pred::filter_detail::with_last_row<N>(minor, last);
     const double det_sf = (D % 2 == 1) ? det : -det;
     if (!(-det_sf > bound)) uncertain |= 1u << i;
@@ -175,13 +181,52 @@ unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std:
   return uncertain;
 }
 
-unsigned uncertain_facets(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
-                          std::int32_t s) {
+constexpr std::int32_t kAhead = 8;
+
+template <int D>
+void prefetch_slot(const rtd::TriangulationD& T, const double* xu, std::int32_t s) {
+  constexpr int N = D + 1;
+  if (s >= static_cast<std::int32_t>(T.slots())) return;
+  const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
+  for (int i = 0; i < N; ++i) {
+    const std::int32_t n = T.nbrs[static_cast<std::size_t>(s) * N + static_cast<std::size_t>(i)];
+    if (n > s) __builtin_prefetch(T.verts.data() + static_cast<std::size_t>(n) * N);
+    if (v[i] < T.n) __builtin_prefetch(xu + static_cast<std::size_t>(v[i]) * N);
+  }
+}
+
+// The uncertain facets of every real slot (0 for dead and virtual slots).
+template <int D>
+void uncertain_all(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
+                   std::vector<std::uint8_t>& out) {
+  constexpr int N = D + 1;
+  const PointSet& ps = *T.ps;
+  std::vector<double> xu(static_cast<std::size_t>(T.n) * N);
+  for (Index p = 0; p < T.n; ++p) {
+    double* x = xu.data() + static_cast<std::size_t>(p) * N;
+    for (int j = 0; j < D; ++j) x[j] = ps.point(p)[j];
+    x[D] = u[p];
+  }
+  const auto slots = static_cast<std::int32_t>(T.slots());
+  out.assign(static_cast<std::size_t>(slots), 0);
+  for (std::int32_t s = 0; s < slots; ++s) {
+    prefetch_slot<D>(T, xu.data(), s + kAhead);
+    if (!T.alive[static_cast<std::size_t>(s)]) continue;
+    const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
+    bool virtual_slot = false;
+    for (int i = 0; i < N; ++i) virtual_slot |= v[i] == T.n;
+    if (virtual_slot) continue;
+    out[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(uncertain_facets<D>(bound, T, xu.data(), s));
+  }
+}
+
+void uncertain_all(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
+                   std::vector<std::uint8_t>& out) {
   switch (T.d) {
-    case 2: return uncertain_facets<2>(bound, T, u, s);
-    case 3: return uncertain_facets<3>(bound, T, u, s);
-    case 4: return uncertain_facets<4>(bound, T, u, s);
-    default: return uncertain_facets<5>(bound, T, u, s);
+    case 2: return uncertain_all<2>(bound, T, u, out);
+    case 3: return uncertain_all<3>(bound, T, u, out);
+    case 4: return uncertain_all<4>(bound, T, u, out);
+    default: return uncertain_all<5>(bound, T, u, out);
   }
 }
 
@@ -259,11 +304,12 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
   // with check_start every ridge is examined; without, the static filter of U
   // proves most ridges strictly convex at t = 1 a simplex at a time
   const bool skip_convex = need_u && !options.check_start;
-  const double bound_u = filter_u.bound(T.d + 2, true);
+  std::vector<std::uint8_t> uncertain_of;
+  if (skip_convex) uncertain_all(filter_u.bound(T.d + 2, true), T, u, uncertain_of);
   for (std::int32_t s = 0; s < static_cast<std::int32_t>(T.slots()); ++s) {
-    if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
-    const unsigned uncertain = skip_convex ? uncertain_facets(bound_u, T, u, s) : ~0u;
+    const unsigned uncertain = skip_convex ? uncertain_of[static_cast<std::size_t>(s)] : ~0u;
     if (uncertain == 0) continue;
+    if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
     for (int i = 0; i <= T.d; ++i) {
       if (!((uncertain >> i) & 1u)) continue;
       const std::int32_t t = T.neighbor(s, i);
@@ -317,6 +363,16 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
     for (std::int32_t c : fr.created) note(c);
     for (rtd::RidgeD g : fr.boundary) {  // lines 10-12
       if (!rtd::interior(T, g)) continue;
+      // Strictly convex at t = 1 (exact sign): it cannot fail in (now, 1).
+      // Its determinant is affine in t plus a constant perturbation, negative
+      // just after the current time (T is regular then, Lemma 9.10) and at
+      // t = 1, hence on the whole interval — fails_in_unit_interval would say
+      // no; the static filter of U decides this for most new ridges at a
+      // fraction of the moving model's cost.
+      if (need_u) {
+        const rtd::PointTuple S = rtd::points(T, g);
+        if (sign_at_u(filter_u, T, u, S.data()) < 0) continue;
+      }
       RidgeMotion m = motion_of(mm, T, g);
       if (fails_in_unit_interval(m, order)) {
         FF_CHECK(compare_times(e.motion, m, order) <= 0,
