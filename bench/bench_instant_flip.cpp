@@ -7,7 +7,8 @@
 // W uniform in [0, ½h²] with h = n^(-1/d) (the spacing of the points: a few
 // per cent redundant), U = max(0, W + δ), δ uniform in [-s, s]·½h² — the
 // step of an optimal-transport iteration. Rows:
-//   flipflop:instant-flip        DynamicRegularTriangulation::set_weights(U)
+//   flipflop:instant-flip        DynamicRegularTriangulation::set_weights(U), its
+//                                scan on all cores (kernels_cpu/rtd/instant_flip.hpp)
 //                                on RT(S ⊕ W) built before the timing (each
 //                                run is restored by an untimed set_weights(W))
 //   flipflop:reference:rt+1      a fresh RT+1 build of S ⊕ U (build_rtd)
@@ -27,6 +28,7 @@
 #include "bench/timing.hpp"
 #include "peers/cgal_regular_d.hpp"
 #include "peers/peers.hpp"
+#include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
@@ -66,9 +68,9 @@ int bench_instant_flip(const Args& a) {
   std::vector<Peer<Simplices>> rows = {
       {"flipflop:instant-flip",
        [&](const PointSet&) {
-         t_instant = seconds([&] { last = rt.set_weights(g.pu.weights); });
+         t_instant = seconds([&] { last = cpu::set_weights(rt, g.pu.weights, 0); });
          Simplices out = rt.simplices();
-         rt.set_weights(g.pw.weights);  // back to the start for the next run
+         cpu::set_weights(rt, g.pw.weights, 0);  // back to the start for the next run
          return out;
        },
        [&] { return t_instant; }},

@@ -4,7 +4,7 @@
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
 //   flipflop rtd IN --dim d [-o OUT] [--stats]
-//   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline]
+//   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
 //   flipflop bench ...
@@ -100,6 +100,8 @@ int main(int argc, char** argv) {
   iflip->add_flag("--ascii", f.ascii, ".ply and .stl output in ASCII (default binary)");
   iflip->add_flag("--stats", f.stats, "print flips by type and queue operations to standard error");
   iflip->add_flag("--timeline", f.timeline, "print the time lines (§9.3) of the start and the result to standard error");
+  iflip->add_option("--threads", f.threads, "worker threads of the parallel ridge scan (default: all cores; same output)")
+      ->check(CLI::Range(0, 1024));
 
   // ---- certify ---------------------------------------------------------------
   CertifyArgs v;

@@ -15,6 +15,7 @@
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
+#include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/perturbation_order.hpp"
@@ -155,7 +156,7 @@ int run_instant_flip(const InstantFlipArgs& a) {
 
   // Algorithm 14 with insertions (dynamic_rt.hpp).
   const auto t2 = Clock::now();
-  const ref::WeightUpdateStats st = with_input_errors(a.to, [&] { return rt.set_weights(pu.weights); });
+  const ref::WeightUpdateStats st = with_input_errors(a.to, [&] { return cpu::set_weights(rt, pu.weights, a.threads); });
   const double t_flip = seconds_since(t2);
   const std::vector<std::vector<Index>> result = rt.simplices();
   const auto t3 = Clock::now();

@@ -41,6 +41,7 @@ struct InstantFlipArgs {
   int dim = 0;  // 2..5
   bool stats = false, timeline = false;
   bool ascii = false;  // .ply/.stl output in ASCII
+  int threads = 0;     // workers of the parallel scan (0: all cores)
 };
 
 int run_rtd(const RtdArgs& a);

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <random>
 
+#include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -111,4 +112,40 @@ TEST_CASE("dynamic RT: bad weights change nothing", "[instant_flip][dynamic]") {
   CHECK_THROWS_AS(rt.set_weights(nan), std::invalid_argument);
   CHECK(rt.simplices() == before);
   CHECK(rt.weights() == w);
+}
+
+TEST_CASE("dynamic RT: the scan on oneTBB (kernels_cpu) updates exactly as the sequential one at 1 2 and 8 threads",
+          "[instant_flip][dynamic]") {
+  // Large enough for many pieces of kChunk slots; random-walk steps (few
+  // failing ridges) and one independent draw (many) per dimension.
+  for (int d = 2; d <= 4; ++d) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(70 + d));
+    const std::size_t n = d == 2 ? 6000 : (d == 3 ? 1500 : 400);  // 2 or more pieces in d = 2, 3
+    const PointSet pts = random_points(d, n, rng);
+    const double h2 = 0.5 * std::pow(static_cast<double>(n), -2.0 / d);
+    std::vector<double> u = random_weights(n, h2, rng);
+    ref::DynamicRegularTriangulation seq(pts, u);
+    std::vector<ref::DynamicRegularTriangulation> par;
+    for (int k = 0; k < 3; ++k) par.emplace_back(pts, u);
+    std::uniform_real_distribution<double> step(-0.05 * h2, 0.05 * h2);
+    for (int k = 0; k < 4; ++k) {
+      if (k == 3) {
+        u = random_weights(n, h2, rng);
+      } else {
+        for (double& x : u) x = std::max(0.0, x + step(rng));
+      }
+      const ref::WeightUpdateStats s = seq.set_weights(u);
+      const int threads[3] = {1, 2, 8};
+      for (int t = 0; t < 3; ++t) {
+        const ref::WeightUpdateStats p = cpu::set_weights(par[static_cast<std::size_t>(t)], u, threads[t]);
+        INFO("d " << d << " step " << k << " threads " << threads[t]);
+        REQUIRE(par[static_cast<std::size_t>(t)].simplices() == seq.simplices());
+        CHECK(p.instant.total_flips() == s.instant.total_flips());
+        CHECK(p.instant.initial_ridges == s.instant.initial_ridges);
+        CHECK(p.instant.pushes == s.instant.pushes);
+        CHECK(p.rebuilt == s.rebuilt);
+      }
+      if (k == 0 || k == 3) REQUIRE(seq.simplices() == ref::rtd_incremental(with_weights(pts, u)).simplices);
+    }
+  }
 }

@@ -45,6 +45,7 @@
 #include "reference/rt2/strict_rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
+#include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -433,7 +434,7 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
     nb::gil_scoped_release nogil;
     require_spanning(pts);
     ref::DynamicRegularTriangulation rt(pts, pw.weights);
-    flips = rt.set_weights(pu.weights).total_flips();
+    flips = cpu::set_weights(rt, pu.weights, 0).total_flips();
     result = rt.simplices();
     check_certified(certify::rtd(pu, result), "instant flip");
   }

@@ -68,6 +68,7 @@ struct WeightUpdateStats {
 struct WeightUpdateOptions {
   PerturbationOrder order;    // the instant flip's perturbation order; empty: the index order
   std::uint64_t tie_seed = 0;  // InstantFlipOptions::tie_seed
+  decltype(InstantFlipOptions::for_range) for_range;  // InstantFlipOptions::for_range
 };
 
 class DynamicRegularTriangulation {

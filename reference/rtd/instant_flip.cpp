@@ -195,38 +195,53 @@ void prefetch_slot(const rtd::TriangulationD& T, const double* xu, std::int32_t 
   }
 }
 
-// The uncertain facets of every real slot (0 for dead and virtual slots).
+using ForRange = decltype(InstantFlipOptions::for_range);
+
+// The uncertain facets of every real slot (0 for dead and virtual slots);
+// every slot's entry depends on nothing else, so the pieces of for_range may
+// run in any order and concurrently.
 template <int D>
 void uncertain_all(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
-                   std::vector<std::uint8_t>& out) {
+                   const ForRange& for_range, std::vector<std::uint8_t>& out) {
   constexpr int N = D + 1;
   const PointSet& ps = *T.ps;
   std::vector<double> xu(static_cast<std::size_t>(T.n) * N);
-  for (Index p = 0; p < T.n; ++p) {
-    double* x = xu.data() + static_cast<std::size_t>(p) * N;
-    for (int j = 0; j < D; ++j) x[j] = ps.point(p)[j];
-    x[D] = u[p];
-  }
   const auto slots = static_cast<std::int32_t>(T.slots());
   out.assign(static_cast<std::size_t>(slots), 0);
-  for (std::int32_t s = 0; s < slots; ++s) {
-    prefetch_slot<D>(T, xu.data(), s + kAhead);
-    if (!T.alive[static_cast<std::size_t>(s)]) continue;
-    const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
-    bool virtual_slot = false;
-    for (int i = 0; i < N; ++i) virtual_slot |= v[i] == T.n;
-    if (virtual_slot) continue;
-    out[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(uncertain_facets<D>(bound, T, xu.data(), s));
+  auto pack = [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t p = lo; p < hi; ++p) {
+      double* x = xu.data() + p * N;
+      for (int j = 0; j < D; ++j) x[j] = ps.point(p)[j];
+      x[D] = u[p];
+    }
+  };
+  auto scan = [&](std::size_t lo, std::size_t hi) {
+    for (auto s = static_cast<std::int32_t>(lo); s < static_cast<std::int32_t>(hi); ++s) {
+      prefetch_slot<D>(T, xu.data(), std::min(s + kAhead, static_cast<std::int32_t>(hi)));
+      if (!T.alive[static_cast<std::size_t>(s)]) continue;
+      const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
+      bool virtual_slot = false;
+      for (int i = 0; i < N; ++i) virtual_slot |= v[i] == T.n;
+      if (virtual_slot) continue;
+      out[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(uncertain_facets<D>(bound, T, xu.data(), s));
+    }
+  };
+  if (for_range) {
+    for_range(T.n, pack);
+    for_range(static_cast<std::size_t>(slots), scan);
+  } else {
+    pack(0, T.n);
+    scan(0, static_cast<std::size_t>(slots));
   }
 }
 
 void uncertain_all(double bound, const rtd::TriangulationD& T, const std::vector<double>& u,
-                   std::vector<std::uint8_t>& out) {
+                   const ForRange& for_range, std::vector<std::uint8_t>& out) {
   switch (T.d) {
-    case 2: return uncertain_all<2>(bound, T, u, out);
-    case 3: return uncertain_all<3>(bound, T, u, out);
-    case 4: return uncertain_all<4>(bound, T, u, out);
-    default: return uncertain_all<5>(bound, T, u, out);
+    case 2: return uncertain_all<2>(bound, T, u, for_range, out);
+    case 3: return uncertain_all<3>(bound, T, u, for_range, out);
+    case 4: return uncertain_all<4>(bound, T, u, for_range, out);
+    default: return uncertain_all<5>(bound, T, u, for_range, out);
   }
 }
 
@@ -305,7 +320,7 @@ InstantFlipStats instant_flip(rtd::TriangulationD& T, const std::vector<double>&
   // proves most ridges strictly convex at t = 1 a simplex at a time
   const bool skip_convex = need_u && !options.check_start;
   std::vector<std::uint8_t> uncertain_of;
-  if (skip_convex) uncertain_all(filter_u.bound(T.d + 2, true), T, u, uncertain_of);
+  if (skip_convex) uncertain_all(filter_u.bound(T.d + 2, true), T, u, options.for_range, uncertain_of);
   for (std::int32_t s = 0; s < static_cast<std::int32_t>(T.slots()); ++s) {
     const unsigned uncertain = skip_convex ? uncertain_of[static_cast<std::size_t>(s)] : ~0u;
     if (uncertain == 0) continue;

@@ -153,6 +153,12 @@ struct InstantFlipOptions {
   std::uint64_t tie_seed = 0;
   // Filled when not null (see InstantFlipTrace).
   InstantFlipTrace* trace = nullptr;
+  // Runs body(lo, hi) over pieces covering [0, n) (the pieces in any order,
+  // concurrently or not); empty: sequentially. Used for the filter part of
+  // lines 3-5 without check_start (one result per slot, independent of the
+  // split: the answer does not depend on it); kernels_cpu/rtd/instant_flip.hpp
+  // passes oneTBB's parallel_for.
+  std::function<void(std::size_t n, const std::function<void(std::size_t lo, std::size_t hi)>& body)> for_range;
 };
 
 // Algorithm 14 with insertions on T (in place): T = RT(S ⊕ W) on input,
