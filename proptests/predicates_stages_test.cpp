@@ -840,21 +840,27 @@ TEST_CASE("stages: a weakened static filter errs, the true one does not", "[pred
 // instant flip's per-simplex scan evaluates one simplex's minors against the
 // rows of its neighbours' opposite vertices): on small integer entries every
 // product and sum is exact, so both must equal the exact determinant (int64
-// cofactor expansion, an independent evaluation) — for a fixed top and several
+// Bareiss elimination, an independent evaluation) — for a fixed top and several
 // last rows, as the scan uses them. The rounding bound of the split evaluation
 // is det_plain's: the static-filter properties (a), (e) exercise it.
-std::int64_t exact_det(const std::vector<std::int64_t>& a, int n) {
-  if (n == 1) return a[0];
-  std::int64_t det = 0;
-  for (int c = 0; c < n; ++c) {  // expansion along row 0
-    std::vector<std::int64_t> sub;
-    for (int r = 1; r < n; ++r)
-      for (int j = 0; j < n; ++j)
-        if (j != c) sub.push_back(a[static_cast<std::size_t>(r * n + j)]);
-    const std::int64_t m = a[static_cast<std::size_t>(c)] * exact_det(sub, n - 1);
-    det += (c % 2 == 0) ? m : -m;
+std::int64_t exact_det(std::vector<std::int64_t> a, int n) {
+  // Bareiss' fraction-free elimination: every intermediate is a minor of a,
+  // |minor| <= N! 16^N < 2^48, and every division is exact
+  std::int64_t sign = 1, prev = 1;
+  auto at = [&](int r, int c) -> std::int64_t& { return a[static_cast<std::size_t>(r * n + c)]; };
+  for (int k = 0; k < n - 1; ++k) {
+    if (at(k, k) == 0) {
+      int r = k + 1;
+      while (r < n && at(r, k) == 0) ++r;
+      if (r == n) return 0;
+      for (int c = 0; c < n; ++c) std::swap(at(k, c), at(r, c));
+      sign = -sign;
+    }
+    for (int i = k + 1; i < n; ++i)
+      for (int j = k + 1; j < n; ++j) at(i, j) = (at(i, j) * at(k, k) - at(i, k) * at(k, j)) / prev;
+    prev = at(k, k);
   }
-  return det;
+  return sign * at(n - 1, n - 1);
 }
 
 template <int N>
