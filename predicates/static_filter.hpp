@@ -146,11 +146,12 @@ FF_HD inline void differences(const double* const* p, const double* w, double* t
 // neighbours' opposite vertices). top_minors<N> computes, for every column j,
 // the minor of rows 0..N-2 on the columns other than j (levels 2..N-1 of the
 // Laplace expansion over column subsets), and with_last_row<N> the last level
-// against a row: the same products and sums in the same order as det_plain<N>
-// (explicit for N = 3, 4, a loop beyond; row r of a subset's expansion in
-// ascending column order, alternating signs from (r + position) parity), so
-// the value is bit-for-bit det_plain<N>'s (tested: predicates_stages_test) and
-// every bound derived for det_plain holds for it. N >= 2.
+// against a row (explicit for N = 3, 4, a loop beyond; row r of a subset's
+// expansion in ascending column order, alternating signs from (r + position)
+// parity). det_plain<N> is exactly this composition for N >= 3 (and the same
+// roundings for N = 2), so every bound derived for det_plain holds for a
+// split evaluation; predicates_stages_test checks both against the exact
+// determinant. N >= 2.
 template <int N>
 FF_HD inline void top_minors(const double* t, double* minor) {
   static_assert(N >= 2 && N <= 8, "top_minors: 2 <= N <= 8");

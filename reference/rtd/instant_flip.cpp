@@ -218,11 +218,7 @@ void uncertain_all(double bound, const rtd::TriangulationD& T, const std::vector
   auto scan = [&](std::size_t lo, std::size_t hi) {
     for (auto s = static_cast<std::int32_t>(lo); s < static_cast<std::int32_t>(hi); ++s) {
       prefetch_slot<D>(T, xu.data(), std::min(s + kAhead, static_cast<std::int32_t>(hi)));
-      if (!T.alive[static_cast<std::size_t>(s)]) continue;
-      const Index* v = T.verts.data() + static_cast<std::size_t>(s) * N;
-      bool virtual_slot = false;
-      for (int i = 0; i < N; ++i) virtual_slot |= v[i] == T.n;
-      if (virtual_slot) continue;
+      if (!T.alive[static_cast<std::size_t>(s)] || rtd::is_virtual_simplex(T, s)) continue;
       out[static_cast<std::size_t>(s)] = static_cast<std::uint8_t>(uncertain_facets<D>(bound, T, xu.data(), s));
     }
   };
