@@ -12,8 +12,12 @@
 //                           initial tetrahedron, construction rounds,
 //                           flip-flop; BRIO sort, insertion, output; the
 //                           canonical output);
-//   certify                 cpu::certify_hull2 / cpu::certify_hull3 /
-//                           cpu::certify_rt2 at the canonical level (must pass);
+//   certify                 cpu::certify_hull2 / cpu::certify_hull3_witnessed
+//                           (with the kernel's witness) / cpu::certify_rt2 at
+//                           the canonical level (must pass); for hull3 also
+//                           the witness-free cpu::certify_hull3 on the same
+//                           output (what `flipflop certify hull3` runs; a
+//                           peer row, not in the total);
 //   write                   the index text to a temporary file.
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
@@ -64,6 +68,8 @@ struct TempDir {
 
 }  // namespace
 
+constexpr const char* kWitnessFree = "certify without witness (not in the total)";
+
 int bench_stages(const Args& a) {
   const bool h3 = a.experiment == "hull3", tri = a.experiment == "rt2" || a.experiment == "dt2";
   const PointSet pts = generated_input(a);
@@ -94,6 +100,7 @@ int bench_stages(const Args& a) {
     cpu::StageTimes st;
     std::vector<Index> cycle;
     std::vector<Triangle> tris;
+    cpu::Hull3Witness witness;
     if (tri) {
       cpu::Rt2Options o;
       o.times = &st;
@@ -102,6 +109,7 @@ int bench_stages(const Args& a) {
     } else if (h3) {
       cpu::Hull3Options o;
       o.times = &st;
+      o.witness = &witness;
       t = seconds([&] { tris = cpu::hull3_ffhull(in, o); });
       size = tris.size();
     } else {
@@ -115,12 +123,16 @@ int bench_stages(const Args& a) {
     certify::Report rep;
     t = seconds([&] {
       rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical)
-            : h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
+            : h3 ? cpu::certify_hull3_witnessed(in, tris, certify::Level::canonical, witness)
                  : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });
     if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
     add("certify", t);
     total += t;
+    if (h3) {
+      add(kWitnessFree, seconds([&] { rep = cpu::certify_hull3(in, tris, certify::Level::canonical); }));
+      if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
+    }
     t = seconds([&] {
       io::write_file(out, [&](std::ostream& os) { h3 || tri ? io::write_triangles(os, tris) : io::write_hull2(os, cycle); });
     });
@@ -142,7 +154,7 @@ int bench_stages(const Args& a) {
   std::printf("%-46s %12s %12s %12s %8s\n", "stage", "median s", "min s", "max s", "share");
   for (const std::string& name : order) {
     const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
-    const bool in_total = name != "read .xyz" && name.rfind("compute: ", 0) != 0;
+    const bool in_total = name != "read .xyz" && name != kWitnessFree && name.rfind("compute: ", 0) != 0;
     std::printf("%-46s %12.4f %12.4f %12.4f", name.c_str(), median(times[name]), *lo, *hi);
     if (name.rfind("compute: ", 0) == 0 || in_total) std::printf(" %7.1f%%", 100.0 * median(times[name]) / total);
     std::printf("\n");

@@ -244,6 +244,7 @@ int run_compute(const ComputeArgs& a) {
   const auto t0 = Clock::now();
   std::vector<Index> cycle;
   std::vector<Triangle> tris;
+  cpu::Hull3Witness hull3_witness;  // filled by the cpu hull3 kernel for its certifier
   std::string counts;
   if (a.kind == "hull2" && algo != "brute") {
     // kernels_cpu/hull2: throw-away and parallel Graham-sorting, byte-identical
@@ -304,10 +305,12 @@ int run_compute(const ComputeArgs& a) {
     counts = hull3_counts(st);
 #endif
   } else if (a.kind == "hull3" && backend == "cpu") {
-    // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference
+    // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference,
+    // with the witness its certifier checks
     ref::Hull3Stats st;
     cpu::Hull3Options o;
     o.threads = a.threads;
+    o.witness = &hull3_witness;
     tris = cpu::hull3_ffhull(ps, o, &st);
     counts = hull3_counts(st);
   } else if (a.kind == "hull3" && algo != "brute") {
@@ -328,6 +331,8 @@ int run_compute(const ComputeArgs& a) {
   certify::Report r = a.kind == "hull2" && parallel_certifier
                           ? cpu::certify_hull2(ps, cycle, certify::Level::canonical, a.threads)
                       : a.kind == "hull2" ? certify::hull2(ps, cycle, certify::Level::canonical)
+                      : a.kind == "hull3" && backend == "cpu"
+                          ? cpu::certify_hull3_witnessed(ps, tris, certify::Level::canonical, hull3_witness, a.threads)
                       : a.kind == "hull3" && parallel_certifier
                           ? cpu::certify_hull3(ps, tris, certify::Level::canonical, a.threads)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)

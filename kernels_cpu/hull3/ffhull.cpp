@@ -4,11 +4,13 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,6 +21,9 @@
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/canonical.hpp"
+#include "reference/certify/certify_detail.hpp"
+#include "reference/certify/certify_hull3_surface.hpp"
+#include "reference/certify/inner_ball.hpp"
 #include "reference/checked.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/hull3/flip_flop_3d.hpp"
@@ -561,9 +566,76 @@ class FlipFlop {
   ref::Hull3Stats& stats_;
 };
 
+// The canonical output (canonical.hpp: each triangle rotated, the list
+// sorted) of the alive slots of P, and rank[slot] its index there.
+std::vector<Triangle> canonical_with_ranks(const ref::poly::Polyhedron3& P, std::vector<std::uint32_t>& rank) {
+  std::vector<std::pair<Triangle, std::uint32_t>> rows;
+  for (std::uint32_t t = 0; t < P.tri.size(); ++t)
+    if (P.alive[t]) rows.push_back({canonical_rotation(P.tri[t]), t});
+  par_sort(rows, [](const auto& x, const auto& y) { return x.first < y.first; });  // the triangles are distinct
+  std::vector<Triangle> out(rows.size());
+  rank.assign(P.tri.size(), kNone);
+  for (std::size_t i = 0; i < rows.size(); ++i) out[i] = rows[i].first, rank[rows[i].second] = static_cast<std::uint32_t>(i);
+  return out;
+}
+
+// The witness (ffhull.hpp, hull3_witness.hpp) of the final hull P with
+// canonical output `out` (rank: slot -> index in out); s_approx: the kernel
+// point rounded (a hint only).
+template <class Kernel>
+void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedron3& P,
+                  const std::vector<Triangle>& out, const std::vector<std::uint32_t>& rank,
+                  const std::array<Index, 4>& tet, const double* s_approx, Hull3Witness& w) {
+  const std::size_t n = ps.size();
+  w.tet = tet;
+  w.facets = out;
+  w.facet.assign(n, kNoFacet);
+  std::size_t vertices = 0;
+  for (Index p = 0; p < n; ++p) vertices += P.deg[p] > 0;
+  w.ball = worth_inner_ball(n - vertices, out.size());
+  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
+      [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, kChunk, body); };
+  const certify::detail::InnerBall<3> ball =
+      w.ball ? certify::detail::InnerBall<3>(ps, out, for_range) : certify::detail::InnerBall<3>();
+  const std::size_t cap = 4 * P.tri.size() + 100;
+  std::vector<std::uint32_t> slot_of(out.size());
+  for (std::uint32_t t = 0; t < P.tri.size(); ++t)
+    if (rank[t] != kNone) slot_of[rank[t]] = t;
+  // about one cell per facet (a finer table leaves most cells empty, and an
+  // empty cell's hint is the previous row's: longer walks)
+  const int side = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(out.size()) / 6)), 64, 1024);
+  const certify::detail::DirectionTable table(ps, out, s_approx, side);
+  // p outside the cone of slot t across edge k: orient3d(s, a, b, p) > 0,
+  // i.e. orient3d(a, b, p, s) = s.side(a, b, p) < 0
+  const auto across = [&](std::uint32_t t, int k, Index p) {
+    return s.side(P.tri[t][k], P.tri[t][(k + 1) % 3], p) < 0;
+  };
+  const auto locate = [&](Index p) -> std::uint32_t {
+    std::uint32_t cur = slot_of[table.hint(ps.point(p))];
+    certify::detail::XorShift rng;  // the certifier's remembering stochastic walk
+    rng.s ^= static_cast<std::uint64_t>(p) * 0xD1B54A32D192ED03ull;
+    for (std::size_t steps = 0; steps < cap; ++steps) {
+      int cand[3], nc = 0;
+      for (int k = 0; k < 3; ++k)
+        if (across(cur, k, p)) cand[nc++] = k;
+      if (nc == 0) return cur;
+      cur = P.adj[cur][cand[nc == 1 ? 0 : rng.next() % static_cast<std::uint32_t>(nc)]];
+    }
+    for (std::uint32_t t = 0; t < P.tri.size(); ++t)  // the walk did not settle: every facet
+      if (P.alive[t] && !across(t, 0, p) && !across(t, 1, p) && !across(t, 2, p)) return t;
+    throw std::logic_error("hull3 (cpu): no facet's cone contains point " + std::to_string(p));
+  };
+  par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t p = lo; p < hi; ++p)
+      if (P.deg[p] == 0 && !ball.strictly_inside(ps.point(static_cast<Index>(p))))
+        w.facet[p] = rank[locate(static_cast<Index>(p))];
+  });
+}
+
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
-                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock) {
+                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
+                                       const double* s_approx, Hull3Witness* witness) {
   const Mesh M = construct(ps, f, s, sd, tet, st);
   clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
@@ -589,12 +661,17 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
   FlipFlop(state, f, st).run();
   clock.mark("flip-flop");
-  std::vector<Triangle> out = canonical_triangles(ref::poly::triangles(state.P));
+  std::vector<std::uint32_t> rank;
+  std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
   clock.mark("canonical output");
+  if (witness) {
+    make_witness(ps, s, state.P, out, rank, tet, s_approx, *witness);
+    clock.mark("witness");
+  }
   return out;
 }
 
-std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock) {
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock, Hull3Witness* witness) {
   if (ps.dim != 3 || ps.size() < 4 || ps.size() >= kNone / 2) {
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
     throw std::invalid_argument("hull3 (cpu): too many points for 32-bit indices");
@@ -607,10 +684,10 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
       parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
                              inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
   clock.mark("initial tetrahedron and static filter");
-  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock);
+  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock);
+  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock, s.data(), witness);
 }
 
 }  // namespace
@@ -620,7 +697,7 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, 
   std::vector<Triangle> out;
   if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
   StageClock clock(opt.times);
-  with_threads(opt.threads, [&] { out = compute(ps, st, clock); });
+  with_threads(opt.threads, [&] { out = compute(ps, st, clock, opt.witness); });
   if (stats) *stats = st;
   return out;
 }

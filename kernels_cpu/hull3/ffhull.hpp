@@ -52,12 +52,31 @@
 // otherwise (almost flat tetrahedra, §6.4.2's trap) the reference's exact
 // RationalKernel. Either is strictly inside the perturbed tetrahedron.
 //
+// The witness (Hull3Options::witness): the certifier's interior point s is
+// the kernel point itself — the witness hands over the initial tetrahedron,
+// and the certifier rounds its centroid by the same rule — so the cones of
+// the final hull from s are the kernel's. After flip-flop every non-vertex
+// is located by a stochastic visibility walk over the final hull's cones
+// (exact SoS orient3d with s, in parallel over the points) started at the
+// facet a cube map of directions from s gives (certify_hull3_surface.hpp's
+// DirectionTable with about one cell per facet: 2.1 steps per point on 10^6
+// points of a 1e-4 sphere shell). Starting instead from the triangle each
+// point was last associated with in the construction rounds (where it was
+// inserted, or whose cone it was in when removed early) was measured worse:
+// 33 steps per point on that shell (most points are removed while the
+// surface is still coarse, and flip-flop reshapes it), 6.6 on the 10^6 ball.
+// Points strictly inside the inner ball the certifier will verify
+// (inner_ball.hpp, when it pays: hull3_witness.hpp) need no facet. The point
+// lies beneath the facet found because the hull contains it; the certifier
+// checks both.
+//
 // Input that does not span R^3 is rejected with the reference's
 // std::invalid_argument (dimension_problem(ps)).
 #pragma once
 
 #include <vector>
 
+#include "kernels_cpu/hull3/hull3_witness.hpp"
 #include "reference/hull3/hull3_stats.hpp"
 #include "kernels_cpu/stage_times.hpp"
 #include "reference/point_set.hpp"
@@ -69,6 +88,10 @@ struct Hull3Options {
   // when set, filled with the seconds of each stage: initial tetrahedron and
   // static filter, construction rounds, flip-flop, canonical output
   StageTimes* times = nullptr;
+  // when set, filled with the witness for cpu::certify_hull3_witnessed
+  // (hull3_witness.hpp): s's tetrahedron, the output, and per point a facet
+  // whose cone from s contains it and beneath which it lies (stage "witness")
+  Hull3Witness* witness = nullptr;
 };
 
 // The canonical SoS convex hull (identical to ref::hull3_ffhull(ps)). stats,

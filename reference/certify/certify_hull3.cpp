@@ -32,6 +32,11 @@
 // which is all the conditions below need. Structural predicates (those involving s) are
 // perturbed at both levels; geometric conditions are exact (>= 0) at the exact
 // level and perturbed and strict at the canonical level.
+// The conditions up to convex-edge are detail::hull3_surface
+// (certify_hull3_surface.hpp), shared with the witness-checked certifier of
+// the multithreaded kernel (kernels_cpu/hull3/certify_hull3.hpp), which takes
+// s's four points from the witness and replaces point-inside's walk by a
+// check of the facet the witness names.
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -45,6 +50,7 @@
 #include "predicates/static_filter.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_detail.hpp"
+#include "reference/certify/certify_hull3_surface.hpp"
 #include "reference/certify/inner_ball.hpp"
 #include "reference/dimension.hpp"
 
@@ -54,40 +60,6 @@ namespace {
 
 using detail::edge_str;
 using detail::tri_str;
-
-struct Hull3Checker {
-  const PointSet& ps;
-  bool canonical;
-  pred::RationalPoint s;
-  pred::PointId s_id = 0;
-  bool s_is_double = false;  // s = sd (a double point), else the rational s
-  double sd[3] = {0, 0, 0};
-  pred::StaticFilter f;  // over the input (and sd)
-
-  const double* P(Index i) const { return ps.point(i); }
-  pred::MixedRow row(Index i) const { return {i, P(i), nullptr}; }
-  pred::MixedRow srow() const { return {s_id, nullptr, &s}; }
-  pred::Pt pt(Index i) const { return {i, P(i)}; }
-
-  // orient3d(a, b, c, s) under the perturbation
-  int facet_vs_s(const Triangle& t) const {
-    if (s_is_double) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), {s_id, sd});
-    pred::MixedRow r[4] = {row(t[0]), row(t[1]), row(t[2]), srow()};
-    return pred::mixed_sign(4, r, true);
-  }
-  // orient3d(s, a, b, p) under the perturbation: > 0 when p is across the
-  // plane (s, a, b) from the third vertex of a facet (a, b, c) facing away from s
-  int side(Index a, Index b, Index p) const {
-    if (s_is_double) return pred::orient3d(f, {s_id, sd}, pt(a), pt(b), pt(p));
-    pred::MixedRow r[4] = {srow(), row(a), row(b), row(p)};
-    return pred::mixed_sign(4, r, true);
-  }
-  // geometric orientation of p against facet (a, b, c): > 0 inner side
-  int facet_vs_point(const Triangle& t, Index p) const {
-    if (canonical) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), pt(p));
-    return pred::orient3d_exact(P(t[0]), P(t[1]), P(t[2]), P(p));
-  }
-};
 
 // The rounded centroid of the tetrahedron (tp), when it is strictly inside it
 // exactly: each vertex replaced by it, the orientation keeps its sign.
@@ -174,52 +146,16 @@ bool pick_tetrahedron(const PointSet& ps, const std::vector<Index>& verts, Index
   return true;
 }
 
-// Where a walk over the cones from s starts: the directions from s are cut
-// into the cells of a cube map (6 faces of kSide x kSide); each cell holds a
-// facet whose centroid direction falls into it (empty cells: the previous
-// filled cell's). Floating point throughout — the table is a hint, never a
-// decision: the exact walk from any facet reaches the right cone, a good
-// start only makes it short (10^7 ball points: about one step).
-class DirectionTable {
- public:
-  static constexpr int kSide = 64;
-  DirectionTable(const PointSet& ps, const std::vector<Triangle>& tris, const double* sd,
-                 const pred::RationalPoint& s) {
-    for (int j = 0; j < 3; ++j) s_[j] = sd ? sd[j] : s.approx[j].v;
-    cell_ = detail::start_cells(6 * kSide * kSide, ps, tris, 1, [&](const double* c) { return cell(c); });
-  }
-  std::size_t hint(const double* p) const { return cell_[cell(p)]; }
-
- private:
-  std::size_t cell(const double* p) const {
-    const double v[3] = {p[0] - s_[0], p[1] - s_[1], p[2] - s_[2]};
-    // a centroid of points near ±1.8e308 overflows; inf - inf is NaN: any
-    // non-finite difference takes cell 0 (a hint only)
-    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) return 0;
-    int a = 0;
-    for (int j = 1; j < 3; ++j)
-      if (std::abs(v[j]) > std::abs(v[a])) a = j;
-    const double m = std::abs(v[a]);
-    if (!(m > 0)) return 0;
-    const int face = 2 * a + (v[a] < 0 ? 1 : 0);
-    auto coord = [&](double x) {
-      const int c = static_cast<int>((x / m + 1) * 0.5 * kSide);
-      return std::clamp(c, 0, kSide - 1);
-    };
-    const int u = coord(v[(a + 1) % 3]), w = coord(v[(a + 2) % 3]);
-    return static_cast<std::size_t>((face * kSide + u) * kSide + w);
-  }
-  double s_[3];
-  std::vector<std::uint32_t> cell_;
-};
-
 }  // namespace
 
 Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level) {
   return hull3(ps, tris, level, Speedups{});
 }
 
-Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups) {
+namespace detail {
+
+Report hull3_surface(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups,
+                     const std::array<Index, 4>* given_tet, Hull3Surface& ck) {
   if (ps.dim != 3) return Report::fail("input-dimension", "hull3 needs 3D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
@@ -246,7 +182,8 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
                                                    " (inconsistent orientation or more than two triangles on an edge)");
   }
   detail::UnionFind uf(tris.size());
-  const std::vector<std::array<std::uint32_t, 3>> across = detail::neighbours(tris, links, uf, speedups.for_range);
+  ck.across = detail::neighbours(tris, links, uf, speedups.for_range);
+  const std::vector<std::array<std::uint32_t, 3>>& across = ck.across;
   if (const std::size_t bad = detail::smallest_failing(tris.size(), speedups.for_range,
                                                        [&](std::size_t t) {
                                                          return across[t][0] == detail::kNoTriangle ||
@@ -259,7 +196,8 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
                                               tri_str(tris[bad]) + " has no opposite triangle (the surface has a hole)");
   }
   std::vector<Index> verts;
-  std::vector<char> is_vertex(n, 0);
+  std::vector<char>& is_vertex = ck.is_vertex;
+  is_vertex.assign(n, 0);
   std::vector<Index> cyc;
   for (Index v = 0; v < n; ++v) {
     if (links.degree(v) == 0) continue;
@@ -284,12 +222,16 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
                                                     ", a sphere has 2");
 
   // ---- interior point ---------------------------------------------------------
+  ck.vertices = verts.size();
   Index tet[4];
-  if (!pick_tetrahedron(ps, verts, tet))
+  if (given_tet) std::copy(given_tet->begin(), given_tet->end(), tet);
+  else if (!pick_tetrahedron(ps, verts, tet))
     return Report::fail("interior-point", "all vertices of the surface are coplanar, the hull of the input is not");
   const double* tp[4] = {ps.point(tet[0]), ps.point(tet[1]), ps.point(tet[2]), ps.point(tet[3])};
-  Hull3Checker ck{ps, canonical, pred::RationalPoint::centroid(tp, 4, 3), static_cast<pred::PointId>(n), false,
-                  {0, 0, 0}, pred::StaticFilter{}};
+  ck.ps = &ps;
+  ck.canonical = canonical;
+  ck.s = pred::RationalPoint::centroid(tp, 4, 3);
+  ck.s_id = static_cast<pred::PointId>(n);
   ck.s_is_double = rounded_centroid_inside(tp, ck.sd);
   if (speedups.make_filter)
     ck.f = speedups.make_filter(ck.s_is_double ? std::vector<double>(ck.sd, ck.sd + 3) : std::vector<double>{});
@@ -350,13 +292,28 @@ Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level,
     }
   }
 
+  return Report::pass();
+}
+
+}  // namespace detail
+
+Report hull3(const PointSet& ps, const std::vector<Triangle>& tris, Level level, const Speedups& speedups) {
+  detail::Hull3Surface ck;
+  if (Report r = detail::hull3_surface(ps, tris, level, speedups, nullptr, ck); !r.ok) return r;
+  const std::size_t n = ps.size();
+  const bool canonical = level == Level::canonical;
+  const std::vector<char>& is_vertex = ck.is_vertex;
+  const auto& across = ck.across;
+
   // ---- every point inside ------------------------------------------------------
   // Each point is located by a stochastic visibility walk over the cones from
   // s (perturbed, so no ties), started at the facet a direction table gives
   // for the direction from s (a hint only: any start reaches the one cone
   // that contains the point), then checked against that facet. The points
   // are taken in index order, so the first failing point is the smallest.
-  const DirectionTable table(ps, tris, ck.s_is_double ? ck.sd : nullptr, ck.s);
+  const double s_approx[3] = {ck.s_is_double ? ck.sd[0] : ck.s.approx[0].v, ck.s_is_double ? ck.sd[1] : ck.s.approx[1].v,
+                              ck.s_is_double ? ck.sd[2] : ck.s.approx[2].v};
+  const detail::DirectionTable table(ps, tris, s_approx);
   std::size_t candidates = 0;
   for (Index p = 0; p < n; ++p) candidates += !is_vertex[p];
   // worth its exact set-up (one GMP test per facet) when points outnumber facets

@@ -1,0 +1,317 @@
+// hull3_witness_test.cpp — the witness of the multithreaded ffHull
+// (kernels_cpu/hull3/hull3_witness.hpp) and the witness-checked certifier
+// (cpu::certify_hull3_witnessed, kernels_cpu/hull3/certify_hull3.hpp).
+//
+// Acceptance: on every 3D generator family (degenerate ones included) and on
+// the degenerate mixers, at 1, 2 and 8 threads, the kernel's output with its
+// witness is certified at both levels, the witness-free certifier
+// (certify::hull3, the independent oracle: it locates every point by its own
+// walk) agrees, and the witness does not depend on the thread count.
+//
+// Rejection, each with its named condition: a facet whose cone does not
+// contain the point (witness-cone), a facet index out of range and a
+// non-vertex without a facet (witness-facet), a hull vertex dropped from the
+// output with the facet whose cone holds it named (point-inside: it is above
+// that facet; certify::hull3 names the same condition), a non-convex edge
+// (convex-edge), a bad interior point (repeated, out of range, coplanar:
+// witness-interior-point), an output that is not the witnessed facet set
+// (witness-output) and a witness of the wrong size (witness-size).
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gen/generate.hpp"
+#include "kernels_cpu/hull3/certify_hull3.hpp"
+#include "kernels_cpu/hull3/ffhull.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "reference/canonical.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/certify/certify_hull3_surface.hpp"
+#include "reference/dimension.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+constexpr int kThreads[] = {1, 2, 8};
+
+struct Witnessed {
+  std::vector<Triangle> tris;
+  cpu::Hull3Witness w;
+};
+
+Witnessed run(const PointSet& ps, int threads) {
+  Witnessed r;
+  cpu::Hull3Options o;
+  o.threads = threads;
+  o.witness = &r.w;
+  r.tris = cpu::hull3_ffhull(ps, o);
+  return r;
+}
+
+// The kernel's output and witness at every thread count: the output is the
+// one without a witness, the witness the same, both levels certified, and
+// certify::hull3 agrees. False (nothing checked) for input that does not span
+// R^3.
+template <class Check>
+bool check_accepts(const PointSet& ps, const Check& check) {
+  if (!dimension_problem(ps).empty()) return false;
+  const std::vector<Triangle> plain = cpu::hull3_ffhull(ps);
+  const Witnessed first = run(ps, 1);
+  for (int t : kThreads) {
+    const Witnessed r = t == 1 ? first : run(ps, t);
+    check(r.tris == plain);
+    check(r.w.facets == r.tris);
+    check(r.w.tet == first.w.tet && r.w.facet == first.w.facet && r.w.ball == first.w.ball);
+    for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
+      const certify::Report rep = cpu::certify_hull3_witnessed(ps, r.tris, level, r.w, t);
+      if (!rep.ok) std::cerr << "rejected: " << rep.message() << "\n";
+      check(rep.ok);
+    }
+  }
+  check(certify::hull3(ps, plain, certify::Level::canonical).ok);
+  return true;
+}
+
+void rc_accepts(const PointSet& ps) {
+  check_accepts(ps, [](bool ok) { RC_ASSERT(ok); });
+}
+
+certify::Report witnessed(const PointSet& ps, const std::vector<Triangle>& tris, const cpu::Hull3Witness& w,
+                          certify::Level level = certify::Level::canonical) {
+  return cpu::certify_hull3_witnessed(ps, tris, level, w, 2);
+}
+
+// the first non-vertex that the witness gives a facet
+Index witnessed_point(const cpu::Hull3Witness& w) {
+  Index p = 0;
+  while (w.facet[p] == cpu::kNoFacet) ++p;
+  return p;
+}
+
+PointSet generated(const char* fam, std::size_t n, std::uint64_t seed) {
+  gen::Options o;
+  o.seed = seed;
+  return gen::generate(fam, n, o);
+}
+
+}  // namespace
+
+TEST_CASE("hull3 witness: degenerate and random small sets are certified with the witness at 1, 2, 8 threads "
+          "(shrinking)",
+          "[hull3_witness]") {
+  test::prop_scaled("degenerate sets of 4..60 points: witnessed certifier accepts, agrees with certify::hull3", 4,
+                    [] { rc_accepts(*test::degenerate_points(3, 4, 60, false)); });
+}
+
+TEST_CASE("hull3 witness: every generator family up to 3000 points is certified with the witness (shrinking)",
+          "[hull3_witness]") {
+  test::prop_scaled("family sets of 4..3000 points: witnessed certifier accepts at 1, 2, 8 threads", 20,
+                    [] { rc_accepts(*test::thinned(test::family_points(3, 4, 3000, false))); });
+}
+
+TEST_CASE("hull3 witness: deterministic sweep over the families, sizes and thread counts", "[hull3_witness][long]") {
+  std::size_t cases = 0, balls = 0;
+  test::for_each_family_input(3, {4, 30, 3000}, 2,
+                              [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
+                                INFO(fam << " n=" << n << " seed=" << seed);
+                                if (check_accepts(ps, [](bool ok) { REQUIRE(ok); })) ++cases;
+                                if (dimension_problem(ps).empty()) balls += run(ps, 2).w.ball;
+                              });
+  std::cout << "hull3 witness sweep: " << cases << " inputs certified with their witness at 1, 2, 8 threads ("
+            << balls << " with the inner ball)\n";
+  REQUIRE(cases >= 13 * 3);
+  REQUIRE(balls > 0);
+}
+
+TEST_CASE("hull3 witness: a wrong facet for a point is rejected", "[hull3_witness]") {
+  const PointSet ps = generated("ball", 2000, 3);
+  const Witnessed r = run(ps, 2);
+  REQUIRE(witnessed(ps, r.tris, r.w).ok);
+  const Index p = witnessed_point(r.w);
+  SECTION("a facet whose cone does not contain the point") {
+    // under the perturbation the cones from s do not overlap: any other facet
+    cpu::Hull3Witness w = r.w;
+    w.facet[p] = (w.facet[p] + 1) % static_cast<std::uint32_t>(r.tris.size());
+    const certify::Report rep = witnessed(ps, r.tris, w);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "witness-cone");
+    REQUIRE(rep.detail.find("point " + std::to_string(p) + " ") == 0);
+  }
+  SECTION("a facet index out of range") {
+    cpu::Hull3Witness w = r.w;
+    w.facet[p] = static_cast<std::uint32_t>(r.tris.size());
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-facet");
+  }
+  SECTION("no facet for a non-vertex (no inner ball)") {
+    cpu::Hull3Witness w = r.w;
+    REQUIRE(!w.ball);
+    w.facet[p] = cpu::kNoFacet;
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-facet");
+  }
+  SECTION("no facet for a non-vertex outside the inner ball") {
+    const PointSet big = generated("ball", 20000, 3);
+    Witnessed b = run(big, 2);
+    REQUIRE(b.w.ball);
+    REQUIRE(witnessed(big, b.tris, b.w).ok);
+    const Index q = witnessed_point(b.w);  // not strictly inside the ball, or it would have no facet
+    b.w.facet[q] = cpu::kNoFacet;
+    REQUIRE(witnessed(big, b.tris, b.w).condition == "witness-facet");
+  }
+}
+
+// The hull of the input without one of its vertices v, indices mapped back:
+// a convex, star-shaped surface that v lies above. The witness of that hull
+// (the kernel's, on the rest, mapped back) names for v the facet whose cone
+// from s contains it (found with the certifier's own predicate); the
+// certifier must find v above it.
+TEST_CASE("hull3 witness: a point declared inside that is outside (a hull vertex dropped) is rejected",
+          "[hull3_witness]") {
+  for (const char* fam : {"ball", "sphere", "cube", "grid3"}) {
+    INFO(fam);
+    const PointSet ps = generated(fam, 3000, 5);
+    const std::vector<Triangle> hull = cpu::hull3_ffhull(ps);
+    const Index v = hull[hull.size() / 2][1];
+    std::vector<bool> keep(ps.size(), true);
+    keep[v] = false;
+    const PointSet rest = test::subset(ps, keep);
+    std::vector<Index> back;
+    for (Index i = 0; i < ps.size(); ++i)
+      if (keep[i]) back.push_back(i);
+    const Witnessed r = run(rest, 2);
+    cpu::Hull3Witness w;
+    for (Triangle t : r.tris) {
+      for (Index& x : t) x = back[x];
+      w.facets.push_back(t);
+    }
+    w.facets = canonical_triangles(w.facets);  // v < others may reorder; the map keeps the rotation
+    std::vector<std::uint32_t> index_of(r.tris.size());
+    for (std::size_t i = 0; i < r.tris.size(); ++i) {
+      Triangle t = r.tris[i];
+      for (Index& x : t) x = back[x];
+      index_of[i] = static_cast<std::uint32_t>(
+          std::lower_bound(w.facets.begin(), w.facets.end(), canonical_rotation(t)) - w.facets.begin());
+    }
+    for (int k = 0; k < 4; ++k) w.tet[k] = back[r.w.tet[k]];
+    w.facet.assign(ps.size(), cpu::kNoFacet);
+    for (Index i = 0; i < rest.size(); ++i)
+      if (r.w.facet[i] != cpu::kNoFacet) w.facet[back[i]] = index_of[r.w.facet[i]];
+    // the facet of the smaller hull whose cone from s holds a point (by the
+    // certifier's own predicate, over all facets)
+    certify::detail::Hull3Surface ck;
+    certify::Speedups none;
+    REQUIRE(certify::detail::hull3_surface(ps, w.facets, certify::Level::canonical, none, &w.tet, ck).ok);
+    const auto cone_of = [&](Index p) {
+      std::uint32_t f = 0;
+      while (f < w.facets.size() && (ck.side(w.facets[f][0], w.facets[f][1], p) > 0 ||
+                                     ck.side(w.facets[f][1], w.facets[f][2], p) > 0 ||
+                                     ck.side(w.facets[f][2], w.facets[f][0], p) > 0))
+        ++f;
+      return f;
+    };
+    // the rest's points inside its inner ball: a facet each (the ball the
+    // certifier builds from the mapped facets need not be the same)
+    w.ball = false;
+    for (Index i = 0; i < ps.size(); ++i)
+      if (i != v && !ck.is_vertex[i] && w.facet[i] == cpu::kNoFacet) w.facet[i] = cone_of(i);
+    const std::uint32_t f = cone_of(v);
+    REQUIRE(f < w.facets.size());
+    w.facet[v] = f;
+    // only v is outside: every other point keeps its (mapped) witness
+    const certify::Report rep = witnessed(ps, w.facets, w);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "point-inside");
+    REQUIRE(rep.detail.find("point " + std::to_string(v) + " ") == 0);
+    REQUIRE(certify::hull3(ps, w.facets, certify::Level::canonical).condition == "point-inside");
+    // without a facet for v: no facet named
+    w.facet[v] = cpu::kNoFacet;
+    REQUIRE(witnessed(ps, w.facets, w).condition == "witness-facet");
+  }
+}
+
+TEST_CASE("hull3 witness: a non-convex edge is rejected", "[hull3_witness]") {
+  const PointSet ps = generated("ball", 2000, 7);
+  const Witnessed r = run(ps, 2);
+  // a 2-2 flip of an edge of the hull: (a, b, c), (b, a, d) -> (a, d, c),
+  // (d, b, c); the new edge (c, d) is reflex
+  std::vector<Triangle> tris = r.tris;
+  const Triangle t1 = tris[0];
+  const Index a = t1[0], b = t1[1], c = t1[2];
+  std::size_t j = 0;
+  Index d = 0;
+  for (; j < tris.size(); ++j) {
+    const Triangle& t = tris[j];
+    bool found = false;
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == b && t[(k + 1) % 3] == a) d = t[(k + 2) % 3], found = true;
+    if (found) break;
+  }
+  REQUIRE(j < tris.size());
+  tris[0] = {a, d, c};
+  tris[j] = {d, b, c};
+  tris = canonical_triangles(tris);
+  cpu::Hull3Witness w = r.w;
+  w.facets = tris;
+  const certify::Report rep = witnessed(ps, tris, w);
+  INFO(rep.message());
+  REQUIRE(rep.condition == "convex-edge");
+  REQUIRE(certify::hull3(ps, tris, certify::Level::canonical).condition == "convex-edge");
+}
+
+TEST_CASE("hull3 witness: a bad interior point is rejected", "[hull3_witness]") {
+  const PointSet ps = generated("grid3", 2000, 1);
+  const Witnessed r = run(ps, 2);
+  REQUIRE(witnessed(ps, r.tris, r.w).ok);
+  cpu::Hull3Witness w = r.w;
+  SECTION("a repeated point") {
+    w.tet[3] = w.tet[0];
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-interior-point");
+  }
+  SECTION("an index out of range") {
+    w.tet[2] = static_cast<Index>(ps.size());
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-interior-point");
+  }
+  SECTION("four coplanar points") {
+    // four grid points of one z
+    std::vector<Index> plane;
+    for (Index i = 0; i < ps.size() && plane.size() < 4; ++i)
+      if (ps.point(i)[2] == ps.point(0)[2]) plane.push_back(i);
+    REQUIRE(plane.size() == 4);
+    std::copy(plane.begin(), plane.end(), w.tet.begin());
+    const certify::Report rep = witnessed(ps, r.tris, w);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "witness-interior-point");
+    REQUIRE(rep.detail.find("flat") != std::string::npos);
+  }
+}
+
+TEST_CASE("hull3 witness: an output that is not the witnessed facet set is rejected", "[hull3_witness]") {
+  const PointSet ps = generated("sphere", 2000, 2);
+  const Witnessed r = run(ps, 2);
+  REQUIRE(witnessed(ps, r.tris, r.w).ok);
+  SECTION("a facet changed") {
+    std::vector<Triangle> tris = r.tris;
+    std::swap(tris[1][1], tris[1][2]);
+    REQUIRE(witnessed(ps, tris, r.w).condition == "witness-output");
+  }
+  SECTION("a facet missing") {
+    std::vector<Triangle> tris = r.tris;
+    tris.pop_back();
+    REQUIRE(witnessed(ps, tris, r.w).condition == "witness-output");
+  }
+  SECTION("a witness of the wrong size") {
+    cpu::Hull3Witness w = r.w;
+    w.facet.pop_back();
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-size");
+  }
+  SECTION("at the exact level too") {
+    std::vector<Triangle> tris = r.tris;
+    std::swap(tris[0], tris[1]);
+    REQUIRE(witnessed(ps, tris, r.w, certify::Level::exact).condition == "witness-output");
+  }
+}
