@@ -28,7 +28,8 @@
 //                    for the 3D hull: ffHull, star splaying and twist-flip
 //                    (reference/hull3, when the test links them) and
 //                    brute::hull3 (n <= 12); CGAL certified at Level::exact
-//                    and equal on input in general position.
+//                    and equal on input in general position; the cpu
+//                    kernel's witness passes cpu::certify_hull3_witnessed.
 //   hull3_counts     (d) ffHull's, twist-flip's and star splaying's counters,
 //                    and flip-flop in random orders from several star-shaped
 //                    polyhedra (see the check).
@@ -142,6 +143,7 @@
 #include "reference/hull3/twist_flip.hpp"
 // the multithreaded hulls (kernels_cpu/hull2, kernels_cpu/hull3, linked through flipflop_all)
 #include "kernels_cpu/hull2/hull2.hpp"
+#include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
 #endif
@@ -826,6 +828,17 @@ inline Outcome hull3_canonical(const PointSet& ps, const Params&) {
     FF_EXPECT(t == first, a.name << " differs from " << algos.front().name << ": " << one_line(t) << " vs "
                                  << one_line(first));
   }
+#ifdef FLIPFLOP_TEST_HAVE_HULL3
+  {  // the cpu kernel's witness passes the witnessed certifier (kernels_cpu/hull3/certify_hull3.hpp)
+    cpu::Hull3Witness w;
+    cpu::Hull3Options o;
+    o.threads = 2;
+    o.witness = &w;
+    const auto hw = cpu::hull3_ffhull(ps, o);
+    const certify::Report rw = cpu::certify_hull3_witnessed(ps, hw, certify::Level::canonical, w, 2);
+    FF_EXPECT(rw.ok, "cpu: the witnessed certifier rejects the kernel's output: " << rw.message());
+  }
+#endif
   const auto cgal = peers::cgal_hull3(ps);
   const certify::Report rc = certify::hull3(ps, cgal, certify::Level::exact);
   FF_EXPECT(rc.ok, "CGAL's 3D hull not certified exact: " << rc.message());
