@@ -73,9 +73,9 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
       if (f == kNoFacet) {
         if (ball.strictly_inside(ps.point(p))) return Report::pass();
         return Report::fail("witness-facet", "point " + std::to_string(p) +
-                                                 " is not a vertex, and the witness names no facet for it " +
-                                                 (w.ball ? "and it is not strictly inside the verified inner ball"
-                                                         : "(no inner ball)"));
+                                                 " is not a vertex, the witness names no facet for it, and " +
+                                                 (w.ball ? "it is not strictly inside the verified inner ball"
+                                                         : "the witness asks for no inner ball"));
       }
       if (f >= tris.size())
         return Report::fail("witness-facet", "the witness names facet " + std::to_string(f) + " for point " +
