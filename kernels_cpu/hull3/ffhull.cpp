@@ -585,7 +585,7 @@ std::vector<Triangle> canonical_with_ranks(const ref::poly::Polyhedron3& P, std:
 template <class Kernel>
 void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedron3& P,
                   const std::vector<Triangle>& out, const std::vector<std::uint32_t>& rank,
-                  const std::array<Index, 4>& tet, const double* s_approx, Hull3Witness& w) {
+                  const std::array<Index, 4>& tet, const double* s_approx, Hull3Witness& w, StageClock& clock) {
   const std::size_t n = ps.size();
   w.tet = tet;
   w.facets = out;
@@ -597,6 +597,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
       [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, kChunk, body); };
   const certify::detail::InnerBall<3> ball =
       w.ball ? certify::detail::InnerBall<3>(ps, out, for_range) : certify::detail::InnerBall<3>();
+  clock.mark("witness: inner ball");
   const std::size_t cap = 4 * P.tri.size() + 100;
   std::vector<std::uint32_t> slot_of(out.size());
   for (std::uint32_t t = 0; t < P.tri.size(); ++t)
@@ -630,6 +631,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
       if (P.deg[p] == 0 && !ball.strictly_inside(ps.point(static_cast<Index>(p))))
         w.facet[p] = rank[locate(static_cast<Index>(p))];
   });
+  clock.mark("witness: walks");
 }
 
 template <class Kernel>
@@ -665,8 +667,7 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
   clock.mark("canonical output");
   if (witness) {
-    make_witness(ps, s, state.P, out, rank, tet, s_approx, *witness);
-    clock.mark("witness");
+    make_witness(ps, s, state.P, out, rank, tet, s_approx, *witness, clock);
   }
   return out;
 }

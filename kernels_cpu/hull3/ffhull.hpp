@@ -90,7 +90,8 @@ struct Hull3Options {
   StageTimes* times = nullptr;
   // when set, filled with the witness for cpu::certify_hull3_witnessed
   // (hull3_witness.hpp): s's tetrahedron, the output, and per point a facet
-  // whose cone from s contains it and beneath which it lies (stage "witness")
+  // whose cone from s contains it and beneath which it lies (stages "witness:
+  // inner ball", "witness: walks")
   Hull3Witness* witness = nullptr;
 };
 
