@@ -15,7 +15,8 @@
 // (a, b, c') counter-clockwise seen from outside: n = (b - a) x (c' - a) —
 // and w = c - a, exactly (GMP rationals): -n.w > 0 and (n.w)^2 >= r2 |n|^2,
 // i.e. the facet's line or plane is at distance >= sqrt(r2) on the outer side
-// (zero-length / zero-area facets bound nothing and are skipped); any failure
+// (zero-length / zero-area facets bound nothing and are skipped), each first
+// through a floating-point filter with a proven error bound; any failure
 // leaves the ball empty. These checks suffice only because the caller has
 // certified that the facets bound a convex region (then it is the
 // intersection of their inner half-spaces). The per-point test |p - c|^2 < r2
@@ -33,6 +34,7 @@
 #include <limits>
 #include <vector>
 
+#include "predicates/err_double.hpp"
 #include "reference/certify/ball_test.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/point_set.hpp"
@@ -90,23 +92,45 @@ class InnerBall {
     const double r = dmin * 0.999999;
     const double r2 = r * r;
     if (!(r > 0) || !std::isfinite(r2) || r2 < 0x1p-900) return;
-    const mpq_class R2(r2);
-    mpq_class S[D];
-    for (int j = 0; j < D; ++j) S[j] = mpq_class(sd[j]);
     auto outside = [&](std::size_t i) {
-      const Facet& f = facets[i];
-      mpq_class N[D];
-      normal<mpq_class>(ps, f, N);
-      mpq_class M = 0, Dot = 0;
-      for (int j = 0; j < D; ++j) M += N[j] * N[j], Dot -= N[j] * (S[j] - mpq_class(ps.point(f[0])[j]));
-      if (M == 0) return false;
-      return Dot <= 0 || Dot * Dot < R2 * M;
+      return !clears_filtered(ps, facets[i], sd, r2) && !clears_exact(ps, facets[i], sd, r2);
     };
     if (smallest_failing(facets.size(), for_range, outside) < facets.size()) return;  // not verified: no ball
     test_.limit = r2 * (1 - 0x1p-40);
   }
 
   bool strictly_inside(const double* p) const { return test_.strictly_inside(p); }
+
+  // Whether facet f (outward normal n, vertex a, w = c - a) bounds nothing or
+  // keeps the ball of centre c and squared radius r2 on its inner side:
+  // n = 0, or -n.w > 0 and (n.w)^2 >= r2 |n|^2 — exactly, in rationals.
+  template <class Facet>
+  static bool clears_exact(const PointSet& ps, const Facet& f, const double* c, double r2) {
+    mpq_class N[D];
+    normal<mpq_class>(ps, f, N);
+    mpq_class M = 0, Dot = 0;
+    for (int j = 0; j < D; ++j) M += N[j] * N[j], Dot -= N[j] * (mpq_class(c[j]) - mpq_class(ps.point(f[0])[j]));
+    if (M == 0) return true;
+    return Dot > 0 && Dot * Dot >= mpq_class(r2) * M;
+  }
+
+  // The filter before clears_exact: true only when floating point with a
+  // running error bound (pred::ErrDouble; every input — coordinates, c, r2 —
+  // is an exact double, so the bound covers every rounding, underflow and
+  // overflow, and an infinite or NaN value is never certain) proves |n|^2 > 0,
+  // -n.w > 0 and (n.w)^2 - r2 |n|^2 > 0, hence clears_exact. With r =
+  // 0.999999 dmin every facet clears the ball by a relative 1e-6, far above
+  // the bound, so the rationals are left to degenerate facets.
+  template <class Facet>
+  static bool clears_filtered(const PointSet& ps, const Facet& f, const double* c, double r2) {
+    pred::ErrDouble N[D];
+    normal<pred::ErrDouble>(ps, f, N);
+    pred::ErrDouble M(0.0), Dot(0.0);
+    const double* a = ps.point(f[0]);
+    for (int j = 0; j < D; ++j) M = M + N[j] * N[j], Dot = Dot - N[j] * (pred::ErrDouble(c[j]) - pred::ErrDouble(a[j]));
+    return pred::sign_if_certain(M) > 0 && pred::sign_if_certain(Dot) > 0 &&
+           pred::sign_if_certain(Dot * Dot - pred::ErrDouble(r2) * M) > 0;
+  }
   const BallTest<D>& test() const { return test_; }
 
  private:
