@@ -13,7 +13,8 @@
 //                           flip-flop; BRIO sort, insertion, output; the
 //                           canonical output);
 //   certify                 cpu::certify_hull2 / cpu::certify_hull3 /
-//                           cpu::certify_rt2 at the canonical level (must pass);
+//                           cpu::certify_rt2 (rt2|dt2: from the kernel's
+//                           witness) at the canonical level (must pass);
 //   write                   the index text to a temporary file.
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
@@ -94,10 +95,11 @@ int bench_stages(const Args& a) {
     cpu::StageTimes st;
     std::vector<Index> cycle;
     std::vector<Triangle> tris;
+    cpu::Rt2Witness witness;  // rt2|dt2: certified from the kernel's witness, as `flipflop rt2|dt2` does
     if (tri) {
       cpu::Rt2Options o;
       o.times = &st;
-      t = seconds([&] { tris = cpu::rt2(in, o); });
+      t = seconds([&] { tris = cpu::rt2(in, o, nullptr, &witness); });
       size = tris.size();
     } else if (h3) {
       cpu::Hull3Options o;
@@ -114,7 +116,7 @@ int bench_stages(const Args& a) {
     for (const auto& [name, s] : st.stages) add("compute: " + name, s);
     certify::Report rep;
     t = seconds([&] {
-      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical)
+      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical, witness)
             : h3 ? cpu::certify_hull3(in, tris, certify::Level::canonical)
                  : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });
