@@ -56,7 +56,8 @@
 #include <string>
 
 #include "kernels_cpu/parallel.hpp"
-#include "predicates/fast.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/dimension.hpp"
 
@@ -88,18 +89,23 @@ struct Witnessed {
   pred::Pt pt(std::uint32_t k) const { return {w.pts[k].id, w.pts[k].xy}; }
   pred::WPt wpt(std::uint32_t k) const { return {w.pts[k].id, w.pts[k].xy, w.pts[k].w}; }
   const std::uint32_t* corners(std::size_t t) const { return &w.tv[3 * t]; }
+  // The predicates as in the kernel: the per-call semi-static filter first
+  // (the points of a triangle and its neighbours are much closer to each
+  // other than the input's extent, so the per-input static bound rarely
+  // decides), then the staged exact path with SoS (predicates.hpp).
   int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
-    return pred::fast::orient2d(f, pt(a), pt(b), pt(c));
+    const double* p[3] = {w.pts[a].xy, w.pts[b].xy, w.pts[c].xy};
+    if (const int s = pred::semi_static_sign<3>(p, nullptr)) return s;
+    return pred::orient2d(f, pt(a), pt(b), pt(c));
   }
   // > 0 when d's lifted point is strictly below the lifted plane of the
   // counter-clockwise (a, b, c); perturbed at the canonical level, exact at
   // the exact level
   int power(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
-    if (canonical) return pred::fast::power2d(f, wpt(a), wpt(b), wpt(c), wpt(d));
     const double* p[4] = {w.pts[a].xy, w.pts[b].xy, w.pts[c].xy, w.pts[d].xy};
     const double wt[4] = {w.pts[a].w, w.pts[b].w, w.pts[c].w, w.pts[d].w};
-    if (const int s = pred::static_sign<4>(f, p, wt)) return s;
     if (const int s = pred::semi_static_sign<4>(p, wt)) return s;
+    if (canonical) return pred::power2d(f, wpt(a), wpt(b), wpt(c), wpt(d));
     return pred::power2d_exact(wpt(a), wpt(b), wpt(c), wpt(d));
   }
   bool irregular(int s) const { return canonical ? s >= 0 : s > 0; }
@@ -209,27 +215,82 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
                                                 ", " + std::to_string(w.tv[3 * t + 2]) + " of " + std::to_string(n) +
                                                 " points and the virtual vertex");
 
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               const std::uint32_t* c = W.corners(t);
-                                               return W.real(t) && W.orient(c[0], c[1], c[2]) <= 0;
-                                             });
-      t < slots)
-    return Report::fail("triangle-orientation", "triangle " + W.tri(t) + " is clockwise");
-
-  // neighbour-links: the edge from corner i + 1 to i + 2 of t is, in its twin
-  // f, the edge from corner f + 2 to f + 1 (reversed)
+  // The per-triangle conditions in one pass over fixed chunks of slots (each
+  // slot's points are read once: the passes are memory-bound), each
+  // recording its smallest failing slot; a slot failing one condition is not
+  // tested for the later ones, so a condition's smallest failing slot is exact
+  // whenever no earlier condition failed anywhere — the first condition
+  // reported is the sequential scan's. The same pass counts the real
+  // triangles, collects the hull edges and gathers the triangles in canonical
+  // form (input indices rotated to the smallest), bucketed by that index for
+  // the output check at the end.
+  //   triangle-orientation, neighbour-links (the edge from corner i + 1 to
+  //   i + 2 of t is, in its twin f, the edge from corner f + 2 to f + 1),
+  //   vertex-fan (each corner is a vertex), locally-regular (Thm 2.2: each
+  //   interior edge once, from its half-edge e smaller than its twin f; d =
+  //   the corner of f's triangle opposite f).
+  enum { kOrient, kLinks, kCorners, kRegular, kSlotConditions };
+  std::atomic<std::size_t> first_bad[kSlotConditions];
+  for (auto& x : first_bad) x.store(slots);
+  auto record = [&](int cond, std::size_t t) {
+    std::size_t cur = first_bad[cond].load(std::memory_order_relaxed);
+    while (t < cur && !first_bad[cond].compare_exchange_weak(cur, t)) {
+    }
+  };
   auto bad_link = [&](std::size_t t, int i) {
     const std::uint32_t e = static_cast<std::uint32_t>(3 * t) + static_cast<std::uint32_t>(i), f = w.tn[e];
     if (f >= 3 * slots || !W.used(f / 3)) return true;
     if (!W.real(f / 3)) return false;  // a hull edge
     return w.tn[f] != e || w.tv[nx(f)] != w.tv[pv(e)] || w.tv[pv(f)] != w.tv[nx(e)];
   };
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               return W.real(t) && (bad_link(t, 0) || bad_link(t, 1) || bad_link(t, 2));
-                                             });
-      t < slots) {
+  auto irregular_edge = [&](std::size_t t, int i) {
+    const std::uint32_t e = static_cast<std::uint32_t>(3 * t) + static_cast<std::uint32_t>(i), f = w.tn[e];
+    if (f < e || !W.real(f / 3)) return false;
+    const std::uint32_t* c = W.corners(t);
+    return W.irregular(W.power(c[0], c[1], c[2], w.tv[f]));
+  };
+  auto canonical_ids = [&](std::size_t t) {
+    Triangle x = W.ids(t);
+    std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+    return x;
+  };
+  // buckets of the output check: at most 4097 ranges of 2^shift indices
+  int shift = 0;
+  while ((n >> shift) > 4096) ++shift;
+  const std::size_t B = (n >> shift) + 1;
+  auto bucket = [&](Index m) { return static_cast<std::size_t>(m >> shift); };
+  const std::size_t per = std::max<std::size_t>(kChunk, (slots + 63) / 64), chunks = (slots + per - 1) / per;
+  std::vector<std::size_t> pos(chunks * B, 0);  // pos[c * B + b]: counts, then write positions
+  std::vector<std::vector<Triangle>> part(chunks);
+  std::vector<std::vector<std::uint32_t>> hull_part(chunks);
+  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t ch = lo; ch < hi; ++ch)
+      for (std::size_t t = ch * per; t < std::min(slots, (ch + 1) * per); ++t) {
+        if (!W.real(t)) continue;
+        const std::uint32_t* c = W.corners(t);
+        if (W.orient(c[0], c[1], c[2]) <= 0) {
+          record(kOrient, t);
+          continue;
+        }
+        if (bad_link(t, 0) || bad_link(t, 1) || bad_link(t, 2)) {
+          record(kLinks, t);
+          continue;
+        }
+        if (!(W.vertex(c[0]) && W.vertex(c[1]) && W.vertex(c[2]))) {
+          record(kCorners, t);
+          continue;
+        }
+        if (irregular_edge(t, 0) || irregular_edge(t, 1) || irregular_edge(t, 2)) record(kRegular, t);
+        for (std::uint32_t i = 0; i < 3; ++i)
+          if (!W.real(w.tn[3 * t + i] / 3)) hull_part[ch].push_back(static_cast<std::uint32_t>(3 * t) + i);
+        const Triangle x = canonical_ids(t);
+        part[ch].push_back(x);
+        ++pos[ch * B + bucket(x[0])];
+      }
+  });
+  if (const std::size_t t = first_bad[kOrient].load(); t < slots)
+    return Report::fail("triangle-orientation", "triangle " + W.tri(t) + " is clockwise");
+  if (const std::size_t t = first_bad[kLinks].load(); t < slots) {
     int i = 0;
     while (!bad_link(t, i)) ++i;
     const std::uint32_t* c = W.corners(t);
@@ -238,52 +299,65 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
                                                " of triangle " + W.tri(t) +
                                                " is not linked to the same edge, reversed, of a triangle linked back");
   }
-
-  // vertex-fan: corners are vertices; one fan per vertex holding all of its
-  // corners (the fans' sizes add up to the number of corners)
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               const std::uint32_t* c = W.corners(t);
-                                               return W.real(t) && !(W.vertex(c[0]) && W.vertex(c[1]) && W.vertex(c[2]));
-                                             });
-      t < slots) {
+  if (const std::size_t t = first_bad[kCorners].load(); t < slots) {
     const std::uint32_t* c = W.corners(t);
     const std::uint32_t k = W.vertex(c[0]) ? (W.vertex(c[1]) ? c[2] : c[1]) : c[0];
     return Report::fail("vertex-fan", W.point(k) + " is a corner of triangle " + W.tri(t) +
                                           " but its witness triangle does not have it as a corner");
   }
-  std::atomic<std::size_t> corners{0}, fans{0};
-  if (const std::size_t k = smallest_failing(n, for_range,
-                                             [&](std::size_t k) {
-                                               const std::uint32_t v = static_cast<std::uint32_t>(k);
-                                               if (!W.vertex(v)) return false;
-                                               bool closed = false;
-                                               const std::size_t c = W.fan(v, closed);
-                                               fans.fetch_add(c, std::memory_order_relaxed);
-                                               return c == 0;
-                                             });
-      k < n)
+  std::size_t real_triangles = 0;
+  for (const auto& x : part) real_triangles += x.size();
+
+  // The per-point conditions in one pass: vertex-fan (one fan per vertex,
+  // the fans' sizes adding up to the number of corners) and, for the other
+  // points, missing-point-witness and missing-point-redundant (in their
+  // witness triangle under SoS, redundant there), reported in that order
+  // after the hull's conditions and local regularity.
+  std::atomic<std::size_t> fans{0}, first_open{n}, first_missing{n};
+  auto outside_witness = [&](std::uint32_t k) {
+    const std::uint32_t t = w.at[k];
+    if (t >= slots || !W.real(t)) return true;
+    const std::uint32_t* c = W.corners(t);
+    return W.orient(c[0], c[1], k) <= 0 || W.orient(c[1], c[2], k) <= 0 || W.orient(c[2], c[0], k) <= 0;
+  };
+  auto not_redundant = [&](std::uint32_t k) {
+    const std::uint32_t* c = W.corners(w.at[k]);
+    return W.irregular(W.power(c[0], c[1], c[2], k));
+  };
+  auto record_point = [&](std::atomic<std::size_t>& first, std::size_t k) {
+    std::size_t cur = first.load(std::memory_order_relaxed);
+    while (k < cur && !first.compare_exchange_weak(cur, k)) {
+    }
+  };
+  par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+    std::size_t count = 0;
+    for (std::size_t k = lo; k < hi; ++k) {
+      const std::uint32_t v = static_cast<std::uint32_t>(k);
+      if (W.vertex(v)) {
+        bool closed = false;
+        const std::size_t c = W.fan(v, closed);
+        if (c == 0) record_point(first_open, k);
+        count += c;
+      } else if (outside_witness(v) || not_redundant(v)) {
+        record_point(first_missing, k);
+      }
+    }
+    fans.fetch_add(count, std::memory_order_relaxed);
+  });
+  if (const std::size_t k = first_open.load(); k < n)
     return Report::fail("vertex-fan", "the triangles around " + W.point(static_cast<std::uint32_t>(k)) +
                                           " do not end: the links around it are not a fan");
-  certify::detail::for_pieces(slots, for_range, [&](std::size_t lo, std::size_t hi) {
-    std::size_t c = 0;
-    for (std::size_t t = lo; t < hi; ++t) c += W.real(t) ? 3 : 0;
-    corners.fetch_add(c, std::memory_order_relaxed);
-  });
-  if (fans.load() != corners.load())
+  if (fans.load() != 3 * real_triangles)
     return Report::fail("vertex-fan", "the fans of the vertices hold " + std::to_string(fans.load()) + " of the " +
-                                          std::to_string(corners.load()) +
+                                          std::to_string(3 * real_triangles) +
                                           " corners of the triangles: some vertex has more than one fan");
 
   // boundary: the hull edges (real triangles' edges linked into virtual
   // triangles), one outgoing per vertex, one cycle through all of them
-  std::vector<Index> hull_edges = par_select(3 * slots, [&](Index e) {
-    return W.real(e / 3) && !W.real(w.tn[e] / 3);
-  });
-  if (hull_edges.size() < 3) return Report::fail("boundary", "the triangles have no boundary cycle");
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;  // (source, target) positions
-  out.reserve(hull_edges.size());
-  for (Index e : hull_edges) out.emplace_back(w.tv[nx(e)], w.tv[pv(e)]);
+  for (const auto& h : hull_part)
+    for (std::uint32_t e : h) out.emplace_back(w.tv[nx(e)], w.tv[pv(e)]);
+  if (out.size() < 3) return Report::fail("boundary", "the triangles have no boundary cycle");
   std::sort(out.begin(), out.end());
   for (std::size_t i = 1; i < out.size(); ++i)
     if (out[i].first == out[i - 1].first)
@@ -307,20 +381,7 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
       return Report::fail("boundary-is-hull", "the boundary is not the convex hull: " + r.message());
   }
 
-  // locally-regular (Thm 2.2): each interior edge once, from its half-edge e
-  // smaller than its twin f; d = the corner of f's triangle opposite f
-  auto irregular_edge = [&](std::size_t t, int i) {
-    const std::uint32_t e = static_cast<std::uint32_t>(3 * t) + static_cast<std::uint32_t>(i), f = w.tn[e];
-    if (f < e || !W.real(f / 3)) return false;
-    const std::uint32_t* c = W.corners(t);
-    return W.irregular(W.power(c[0], c[1], c[2], w.tv[f]));
-  };
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               return W.real(t) && (irregular_edge(t, 0) || irregular_edge(t, 1) ||
-                                                                    irregular_edge(t, 2));
-                                             });
-      t < slots) {
+  if (const std::size_t t = first_bad[kRegular].load(); t < slots) {
     int i = 0;
     while (!irregular_edge(t, i)) ++i;
     const std::uint32_t* c = W.corners(t);
@@ -331,23 +392,7 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
                             " the power circle of " + W.tri(t));
   }
 
-  // missing points: in their witness triangle (SoS) and redundant there
-  auto outside_witness = [&](std::uint32_t k) {
-    const std::uint32_t t = w.at[k];
-    if (t >= slots || !W.real(t)) return true;
-    const std::uint32_t* c = W.corners(t);
-    return W.orient(c[0], c[1], k) <= 0 || W.orient(c[1], c[2], k) <= 0 || W.orient(c[2], c[0], k) <= 0;
-  };
-  auto not_redundant = [&](std::uint32_t k) {
-    const std::uint32_t* c = W.corners(w.at[k]);
-    return W.irregular(W.power(c[0], c[1], c[2], k));
-  };
-  if (const std::size_t k = smallest_failing(n, for_range,
-                                             [&](std::size_t k) {
-                                               const std::uint32_t v = static_cast<std::uint32_t>(k);
-                                               return !W.vertex(v) && (outside_witness(v) || not_redundant(v));
-                                             });
-      k < n) {
+  if (const std::size_t k = first_missing.load(); k < n) {
     const std::uint32_t v = static_cast<std::uint32_t>(k);
     if (outside_witness(v))
       return Report::fail("missing-point-witness", W.point(v) + " is not a vertex and " +
@@ -371,17 +416,19 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
     // the exact level takes any rotation and order: compare in canonical form
     sorted = tris;
     par_for(sorted.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
-      for (std::size_t i = lo; i < hi; ++i) std::rotate(sorted[i].begin(), std::min_element(sorted[i].begin(), sorted[i].end()), sorted[i].end());
+      for (std::size_t i = lo; i < hi; ++i)
+        std::rotate(sorted[i].begin(), std::min_element(sorted[i].begin(), sorted[i].end()), sorted[i].end());
     });
     par_sort(sorted, [](const Triangle& a, const Triangle& b) { return a < b; });
     for (std::size_t i = 1; i < sorted.size(); ++i)
-      if (sorted[i] == sorted[i - 1]) return Report::fail("canonical-output", "triangle " + tri_str(sorted[i]) + " is repeated");
+      if (sorted[i] == sorted[i - 1])
+        return Report::fail("canonical-output", "triangle " + tri_str(sorted[i]) + " is repeated");
     out_tris = &sorted;
   }
   const std::vector<Triangle>& T = *out_tris;
-  if (T.size() != corners.load() / 3)
+  if (T.size() != real_triangles)
     return Report::fail("canonical-output", "the output has " + std::to_string(T.size()) + " triangles, the witness " +
-                                                std::to_string(corners.load() / 3));
+                                                std::to_string(real_triangles));
   // first[m]: the first output triangle whose smallest index is >= m (each m
   // written by one i: race-free)
   std::vector<std::uint32_t> first(n + 1);
@@ -391,48 +438,27 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
       for (std::size_t m = from; m <= to; ++m) first[m] = static_cast<std::uint32_t>(i);
     }
   });
-  auto canonical_ids = [&](std::size_t t) {
-    Triangle x = W.ids(t);
-    std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
-    return x;
-  };
   auto in_output = [&](const Triangle& x) {
     for (std::uint32_t i = first[x[0]]; i < first[x[0] + 1]; ++i)
       if (T[i][1] == x[1] && T[i][2] == x[2]) return true;
     return false;
   };
-  // The lookups go by smallest index, the witness by slot: looked up in slot
-  // order, each would be a cache miss in `first` and in the output. So the
-  // witnessed triangles are first bucketed by their smallest index (at most
-  // 4097 ranges of 2^shift indices; fixed chunks of slots, per-chunk counts, each chunk
-  // writing its own ranges), then each bucket is looked up in its own small
-  // range of the output.
-  int shift = 0;
-  while ((n >> shift) > 4096) ++shift;
-  const std::size_t B = (n >> shift) + 1;
-  auto bucket = [&](Index m) { return static_cast<std::size_t>(m >> shift); };
-  const std::size_t per = std::max<std::size_t>(kChunk, (slots + 63) / 64), chunks = (slots + per - 1) / per;
-  std::vector<std::size_t> pos(chunks * B, 0);  // pos[c * B + b]: counts, then write positions
-  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t c = lo; c < hi; ++c)
-      for (std::size_t t = c * per; t < std::min(slots, (c + 1) * per); ++t)
-        if (W.real(t)) ++pos[c * B + bucket(canonical_ids(t)[0])];
-  });
+  // Looked up in slot order, each witnessed triangle would be a cache miss in
+  // `first` and in the output; bucketed by smallest index (each chunk writing
+  // its own ranges), each bucket is looked up in its own small range of both.
   std::size_t total = 0;
   for (std::size_t b = 0; b < B; ++b)
-    for (std::size_t c = 0; c < chunks; ++c) {
-      const std::size_t k = pos[c * B + b];
-      pos[c * B + b] = total;
+    for (std::size_t ch = 0; ch < chunks; ++ch) {
+      const std::size_t k = pos[ch * B + b];
+      pos[ch * B + b] = total;
       total += k;
     }
   std::vector<Triangle> by_bucket(total);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t c = lo; c < hi; ++c)
-      for (std::size_t t = c * per; t < std::min(slots, (c + 1) * per); ++t)
-        if (W.real(t)) {
-          const Triangle x = canonical_ids(t);
-          by_bucket[pos[c * B + bucket(x[0])]++] = x;
-        }
+    for (std::size_t ch = lo; ch < hi; ++ch) {
+      for (const Triangle& x : part[ch]) by_bucket[pos[ch * B + bucket(x[0])]++] = x;
+      std::vector<Triangle>().swap(part[ch]);
+    }
   });
   std::atomic<bool> absent{false};
   par_for(total, kChunk, [&](std::size_t lo, std::size_t hi) {
@@ -440,7 +466,8 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
       if (!in_output(by_bucket[i])) absent.store(true, std::memory_order_relaxed);
   });
   if (absent.load()) {  // name the smallest such slot
-    const std::size_t t = smallest_failing(slots, for_range, [&](std::size_t t) { return W.real(t) && !in_output(canonical_ids(t)); });
+    const std::size_t t =
+        smallest_failing(slots, for_range, [&](std::size_t t) { return W.real(t) && !in_output(canonical_ids(t)); });
     return Report::fail("canonical-output", "triangle " + W.tri(t) + " of the witness is not in the output");
   }
   return Report::pass();
