@@ -52,10 +52,11 @@
 // moves down as points are added), so the final triangulation is RT(S ⊕ W)
 // under SoS, which is ref::rt2_ffrt's and ref::dt2_lawson's answer.
 //
-// Parallelism: stages 1 and 3 (and certification, cpu::certify_rt2) run on
-// all threads; stage 2 is sequential — see the closing note of issue 13 and
-// README "2D regular triangulation" for the measurements behind that choice.
-// The output does not depend on the thread count.
+// Parallelism: stages 1, 3 and 4 (and certification from the witness,
+// cpu::certify_rt2) run on all threads; stage 2 is sequential — see the
+// closing note of issue 13 and README "2D regular triangulation" for the
+// measurements behind that choice. Neither the output nor the witness
+// depends on the thread count.
 //
 // Input that does not span the plane is rejected with the reference's
 // std::invalid_argument (ref::require_plane, "rt2 (cpu): <problem>").
