@@ -107,7 +107,7 @@ asan: deps
 #       under TSan in CI; make test runs it) — its property and rejection
 #       tests run the same OpenMP kernels here.
 TSAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
-TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull3_witness_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test \
+TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull3_witness_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test rt2_witness_test \
               hull2_cuda_omp_test
 ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
 
@@ -120,7 +120,7 @@ tsan: deps
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)
 	cd build-tsan && OMP_TOOL_LIBRARIES=$(ARCHER) ARCHER_OPTIONS=verbose=1 \
 	  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/.ci/tsan.supp \
-	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|input)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|hull3 witness: (degenerate|every generator|an? )|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: many missing points)'
+	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|input)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|hull3 witness: (degenerate|every generator|an? )|rt2 cpu: (degenerate|every generator|input|20000)|rt2 cpu certify: many missing points|rt2 witness: (degenerate|every generator|wrong))'
 
 sanitize: asan tsan
 

@@ -13,11 +13,12 @@
 //                           flip-flop; BRIO sort, insertion, output; the
 //                           canonical output);
 //   certify                 cpu::certify_hull2 / cpu::certify_hull3_witnessed
-//                           (with the kernel's witness) / cpu::certify_rt2 at
-//                           the canonical level (must pass); for hull3 also
-//                           the witness-free cpu::certify_hull3 on the same
-//                           output (what `flipflop certify hull3` runs; a
-//                           peer row, not in the total);
+//                           / cpu::certify_rt2 (hull3, rt2|dt2: with the
+//                           kernel's witness) at the canonical level (must
+//                           pass); for hull3 also the witness-free
+//                           cpu::certify_hull3 on the same output (what
+//                           `flipflop certify hull3` runs; a peer row, not in
+//                           the total);
 //   write                   the index text to a temporary file.
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
@@ -101,10 +102,11 @@ int bench_stages(const Args& a) {
     std::vector<Index> cycle;
     std::vector<Triangle> tris;
     cpu::Hull3Witness witness;
+    cpu::Rt2Witness rt2_witness;  // rt2|dt2: certified from the kernel's witness, as `flipflop rt2|dt2` does
     if (tri) {
       cpu::Rt2Options o;
       o.times = &st;
-      t = seconds([&] { tris = cpu::rt2(in, o); });
+      t = seconds([&] { tris = cpu::rt2(in, o, nullptr, &rt2_witness); });
       size = tris.size();
     } else if (h3) {
       cpu::Hull3Options o;
@@ -122,7 +124,7 @@ int bench_stages(const Args& a) {
     for (const auto& [name, s] : st.stages) add("compute: " + name, s);
     certify::Report rep;
     t = seconds([&] {
-      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical)
+      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical, rt2_witness)
             : h3 ? cpu::certify_hull3_witnessed(in, tris, certify::Level::canonical, witness)
                  : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "gen/generate.hpp"
@@ -246,6 +247,7 @@ int run_compute(const ComputeArgs& a) {
   std::vector<Triangle> tris;
   cpu::Hull3Witness hull3_witness;  // filled by the cpu hull3 kernel for its certifier
   std::string counts;
+  std::optional<cpu::Rt2Witness> rt2_witness;  // the cpu rt2 kernel's certificate
   if (a.kind == "hull2" && algo != "brute") {
     // kernels_cpu/hull2: throw-away and parallel Graham-sorting, byte-identical
     // to the reference
@@ -281,7 +283,7 @@ int run_compute(const ComputeArgs& a) {
     ref::Rt2Stats st;
     cpu::Rt2Options o;
     o.threads = a.threads;
-    tris = cpu::rt2(ps, o, &st);
+    tris = cpu::rt2(ps, o, &st, &rt2_witness.emplace());
     counts = "1-3 flips " + std::to_string(st.flips_1_3) + ", 2-2 flips " + std::to_string(st.flips_2_2) +
              ", 3-1 flips " + std::to_string(st.flips_3_1) + ", discarded early " + std::to_string(st.discarded_early);
   } else if ((a.kind == "rt2" || a.kind == "dt2") && algo != "brute") {
@@ -336,9 +338,11 @@ int run_compute(const ComputeArgs& a) {
                       : a.kind == "hull3" && parallel_certifier
                           ? cpu::certify_hull3(ps, tris, certify::Level::canonical, a.threads)
                       : a.kind == "hull3" ? certify::hull3(ps, tris, certify::Level::canonical)
+                      : rt2_witness ? cpu::certify_rt2(ps, tris, certify::Level::canonical, *rt2_witness, a.threads)
                       : parallel_certifier ? cpu::certify_rt2(ps, tris, certify::Level::canonical, a.threads)
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);
+  rt2_witness.reset();
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
 
   // The strict views are derived from the certified canonical answer; the

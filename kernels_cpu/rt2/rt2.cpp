@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -22,13 +23,9 @@ namespace {
 
 // A point in insertion order: coordinates (the predicates' coordinate
 // pointer), weight, input index (= SoS index).
-struct Vtx {
-  double xy[2];
-  double w;
-  Index id;
-};
+using Vtx = Rt2Point;
 
-constexpr std::uint32_t kDead = ~std::uint32_t{0};
+constexpr std::uint32_t kDead = Rt2Witness::kNoSlot;
 
 // half-edge e = 3t + i: the edge of triangle t opposite its corner i, directed
 // from corner i+1 to corner i+2 (counter-clockwise)
@@ -142,7 +139,8 @@ std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min) {
 class Builder {
  public:
   Builder(std::vector<Vtx> pts, const pred::StaticFilter& f, ref::Rt2Stats& st)
-      : P_(std::move(pts)), f_(f), st_(st), V_(static_cast<std::uint32_t>(P_.size())) {
+      : P_(std::move(pts)), f_(f), st_(st), V_(static_cast<std::uint32_t>(P_.size())),
+        at_(P_.size(), kDead), missing_(P_.size(), 0) {
     tv_.reserve(6 * P_.size() + 12);
     tn_.reserve(6 * P_.size() + 12);
   }
@@ -150,6 +148,9 @@ class Builder {
   void run();
   // the real triangles, as input indices in canonical form, sorted
   std::vector<Triangle> output() const;
+  // stage 4: completes at_ and hands the triangulation over (the builder is
+  // spent afterwards)
+  void witness(Rt2Witness& w);
 
  private:
   std::vector<Vtx> P_;
@@ -161,6 +162,11 @@ class Builder {
   std::vector<std::uint32_t> stack_, pending_;
   std::uint32_t home_ = 0;  // a live real triangle at the last inserted point: where the walk starts
   std::uint32_t rng_ = 0x2545F491u;
+  // per position: while inserting, for a point found redundant or removed by
+  // a 3-1 flip (missing_ set) the slot it was in then — a hint where to look
+  // for it at the end; after witness(), Rt2Witness::at
+  std::vector<std::uint32_t> at_;
+  std::vector<std::uint8_t> missing_;
 
   pred::Pt pt(std::uint32_t v) const { return {P_[v].id, P_[v].xy}; }
   pred::WPt wpt(std::uint32_t v) const { return {P_[v].id, P_[v].xy, P_[v].w}; }
@@ -183,6 +189,7 @@ class Builder {
     return pred::power2d(f_, wpt(a), wpt(b), wpt(c), wpt(d));
   }
   bool is_virtual(std::uint32_t t) const { return tv_[3 * t] == V_ || tv_[3 * t + 1] == V_ || tv_[3 * t + 2] == V_; }
+  bool is_real(std::uint32_t t) const { return tv_[3 * t] != kDead && !is_virtual(t); }
 
   std::uint32_t alloc() {
     if (!free_.empty()) {
@@ -215,7 +222,8 @@ class Builder {
   std::array<std::uint32_t, 3> flip13(std::uint32_t t, std::uint32_t p);
   void flip22(std::uint32_t e);
   void flip31(std::uint32_t e, bool remove_a);
-  std::uint32_t walk(std::uint32_t p, bool& inside);
+  std::uint32_t locate(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside) const;
+  std::uint32_t walk(std::uint32_t p, bool& inside) { return locate(p, home_, rng_, inside); }
   void insert_outside(std::uint32_t p, std::uint32_t e0);
   void regularize(std::uint32_t p);
 };
@@ -277,6 +285,7 @@ void Builder::flip31(std::uint32_t e, bool remove_a) {
     set(t, p, d, b);
     link(3 * t, tw_db), link(3 * t + 1, tw_bp), link(3 * t + 2, tw_pd);
     release(u), release(w);
+    at_[a] = t, missing_[a] = 1;  // a lies in (p, d, b)
   } else {
     // w = (b, d, p): across b -> p from t
     const std::uint32_t w = tn_[nx(e)] / 3;
@@ -284,11 +293,13 @@ void Builder::flip31(std::uint32_t e, bool remove_a) {
     set(t, p, a, d);
     link(3 * t, tw_ad), link(3 * t + 1, tw_dp), link(3 * t + 2, tw_pa);
     release(u), release(w);
+    at_[b] = t, missing_[b] = 1;  // b lies in (p, a, d)
   }
   ++st_.flips_3_1;
 }
 
-// Remembering visibility walk from home_ to the point p (never a vertex):
+// Remembering visibility walk from the real triangle `start` to the point p
+// (never a vertex), rng its random state:
 // returns 3t with inside = true when p lies in the real triangle t, or a
 // half-edge e of a real triangle whose edge (a hull edge) p sees, with inside
 // = false. Under SoS no point is on a line, so every step is decided; the
@@ -296,12 +307,12 @@ void Builder::flip31(std::uint32_t e, bool remove_a) {
 // relation of its cells is acyclic) and the random first edge keeps it short
 // on adversarial layouts. The step bound only guards against a corrupted
 // structure.
-std::uint32_t Builder::walk(std::uint32_t p, bool& inside) {
-  std::uint32_t t = home_, came = kDead;
+std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside) const {
+  std::uint32_t t = start, came = kDead;
   const std::size_t cap = tv_.size() + 16;
   for (std::size_t steps = 0; steps < cap; ++steps) {
-    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 17, rng_ ^= rng_ << 5;
-    const std::uint32_t r = rng_ % 3;
+    rng ^= rng << 13, rng ^= rng >> 17, rng ^= rng << 5;
+    const std::uint32_t r = rng % 3;
     bool moved = false;
     for (std::uint32_t j = 0; j < 3; ++j) {
       const std::uint32_t e = 3 * t + (r + j) % 3;
@@ -439,6 +450,7 @@ void Builder::run() {
       // lower hull now and after any insertion (it only moves down).
       if (power(tv_[3 * t], tv_[3 * t + 1], tv_[3 * t + 2], p) < 0) {
         ++st_.discarded_early;
+        at_[p] = t, missing_[p] = 1;
         continue;
       }
       for (std::uint32_t h : flip13(t, p)) stack_.push_back(h);
@@ -470,7 +482,7 @@ std::vector<Triangle> Builder::output() const {
       std::vector<Triangle>& L = part[c];
       L.reserve(std::min(slots, (c + 1) * per) - c * per);
       for (std::size_t t = c * per; t < std::min(slots, (c + 1) * per); ++t) {
-        if (tv_[3 * t] == kDead || is_virtual(static_cast<std::uint32_t>(t))) continue;
+        if (!is_real(static_cast<std::uint32_t>(t))) continue;
         const Index a = P_[tv_[3 * t]].id, b = P_[tv_[3 * t + 1]].id, d = P_[tv_[3 * t + 2]].id;
         L.push_back(a < b ? (a < d ? Triangle{a, b, d} : Triangle{d, a, b})
                           : (b < d ? Triangle{b, d, a} : Triangle{d, a, b}));
@@ -522,9 +534,67 @@ std::vector<Triangle> Builder::output() const {
   return out;
 }
 
+// Stage 4. A vertex's triangle: the smallest real slot with it as a corner
+// (an atomic maximum of ~slot, so the witness does not depend on the thread
+// count). A missing point's: the real triangle containing it under SoS, by
+// the visibility walk of stage 2 — the points taken in insertion order in
+// pieces of kChunk, each walk starting from the previous missing point's
+// triangle (the BRIO order is spatially coherent: most points are in its last
+// round, along a Hilbert curve), a piece's first from its hint (the slot it
+// was found redundant in, or removed from, if that slot still holds a real
+// triangle: usually nearby), else from home_. The triangle containing a point
+// is unique under SoS, so the walks' starts and random choices do not change
+// the answer. Every missing point lies in a real triangle: it was in one when
+// it was discarded or removed, and the region of the real triangles (the hull
+// of the inserted points) only grows; leaving it is a broken structure.
+// Whether p is redundant under the triangle found is for the certifier to
+// decide (it is: the final triangulation is regular, p is not a vertex).
+void Builder::witness(Rt2Witness& w) {
+  const std::size_t slots = tv_.size() / 3, n = V_;
+  {
+    std::vector<std::atomic<std::uint32_t>> first(n);  // ~slot; 0: none yet (zero-initialised)
+    par_for(slots, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t t = lo; t < hi; ++t) {
+        if (!is_real(static_cast<std::uint32_t>(t))) continue;
+        const std::uint32_t mark = ~static_cast<std::uint32_t>(t);
+        for (int i = 0; i < 3; ++i) {
+          std::atomic<std::uint32_t>& a = first[tv_[3 * t + static_cast<std::size_t>(i)]];
+          std::uint32_t cur = a.load(std::memory_order_relaxed);
+          while (cur < mark && !a.compare_exchange_weak(cur, mark, std::memory_order_relaxed)) {
+          }
+        }
+      }
+    });
+    par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::uint32_t m = first[k].load(std::memory_order_relaxed);
+        if (!missing_[k]) at_[k] = m == 0 ? kDead : ~m;
+      }
+    });
+  }
+  par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+    std::uint32_t rng = 0x2545F491u ^ static_cast<std::uint32_t>(lo * 0x9E3779B9u), prev = kDead;
+    for (std::size_t k = lo; k < hi; ++k) {
+      if (!missing_[k]) continue;
+      const std::uint32_t hint = at_[k];
+      const std::uint32_t start = prev != kDead ? prev : is_real(hint) ? hint : home_;
+      bool inside = false;
+      const std::uint32_t e = locate(static_cast<std::uint32_t>(k), start, rng, inside);
+      if (!inside)
+        throw std::logic_error("rt2 (cpu): point " + std::to_string(P_[k].id) +
+                               " is not a vertex and lies outside the triangulation (corrupted triangulation)");
+      at_[k] = prev = e / 3;
+    }
+  });
+  w.pts = std::move(P_);
+  w.tv = std::move(tv_);
+  w.tn = std::move(tn_);
+  w.at = std::move(at_);
+}
+
 }  // namespace
 
-std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Stats* stats) {
+std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Stats* stats, Rt2Witness* witness) {
   ref::require_plane(ps, "rt2 (cpu)");
   // half-edges 3t + i of about 2n triangles must fit 32 bits, indices the
   // 29 bits of the BRIO key
@@ -551,6 +621,10 @@ std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Sta
     clock.mark("insert");
     out = B.output();
     clock.mark("output");
+    if (witness) {
+      B.witness(*witness);
+      clock.mark("witness");
+    }
   });
   st.rounds = 1;
   if (stats) *stats = st;

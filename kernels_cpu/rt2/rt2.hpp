@@ -23,7 +23,15 @@
 //                 becoming redundant is removed), Algorithm 5's V- and
 //                 D-criterion restricted to the link of the new point;
 //   3. [output]   the real triangles in canonical form (DESIGN.md), mapped to
-//                 input indices in parallel, sorted in parallel.
+//                 input indices in parallel, sorted in parallel;
+//   4. [witness]  (when asked for) the certificate of Rt2Witness: for each
+//                 vertex an incident triangle (a parallel pass over the
+//                 triangles, the smallest slot by an atomic minimum), for
+//                 each point that is not a vertex the triangle containing it,
+//                 by parallel visibility walks over the points in insertion
+//                 order, each from the previous point's triangle (a piece's
+//                 first point from the triangle where it was found redundant
+//                 or removed, when that slot still holds a real triangle).
 // Triangles are flat arrays: three vertex slots and three twin half-edges per
 // triangle (half-edge 3t + i is the edge opposite corner i, its twin stored as
 // 3u + j), freed slots reused; the virtual vertex is vertex n. Predicates are
@@ -44,15 +52,17 @@
 // moves down as points are added), so the final triangulation is RT(S ⊕ W)
 // under SoS, which is ref::rt2_ffrt's and ref::dt2_lawson's answer.
 //
-// Parallelism: stages 1 and 3 (and certification, cpu::certify_rt2) run on
-// all threads; stage 2 is sequential — see the closing note of issue 13 and
-// README "2D regular triangulation" for the measurements behind that choice.
-// The output does not depend on the thread count.
+// Parallelism: stages 1, 3 and 4 (and certification from the witness,
+// cpu::certify_rt2) run on all threads; stage 2 is sequential — see the
+// closing note of issue 13 and README "2D regular triangulation" for the
+// measurements behind that choice. Neither the output nor the witness
+// depends on the thread count.
 //
 // Input that does not span the plane is rejected with the reference's
 // std::invalid_argument (ref::require_plane, "rt2 (cpu): <problem>").
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "kernels_cpu/stage_times.hpp"
@@ -69,11 +79,47 @@ struct Rt2Options {
   StageTimes* times = nullptr;
 };
 
+// A point in the kernel's insertion order: coordinates, weight, input index
+// (= SoS index).
+struct Rt2Point {
+  double xy[2];
+  double w;
+  Index id;
+};
+
+// What the kernel hands its certifier (cpu::certify_rt2 with a witness,
+// certify_rt2.hpp): its final triangulation in its own (spatial) order, and
+// for every input point that is not a vertex the triangle that proves it
+// redundant. Positions are indices into pts; the virtual vertex of the
+// extended triangulation (thesis §2.1) is position pts.size().
+struct Rt2Witness {
+  // the input points in insertion (BRIO) order: position k is input point
+  // pts[k].id, a permutation of the input
+  std::vector<Rt2Point> pts;
+  // per triangle slot t, corners tv[3t..3t+2] (positions) counter-clockwise;
+  // a slot with the virtual vertex as a corner is virtual (outside the hull),
+  // an unused slot holds three kNoSlot
+  std::vector<std::uint32_t> tv;
+  // half-edge 3t + i is the edge of slot t opposite corner i, from corner
+  // i + 1 to corner i + 2; tn[3t + i] is its twin 3u + j (the same edge,
+  // reversed, in the neighbouring slot u). A real triangle's edge whose twin
+  // lies in a virtual triangle is a hull edge.
+  std::vector<std::uint32_t> tn;
+  // per position k: for a vertex, a real triangle with k as a corner; for any
+  // other point, the real triangle that contains it under SoS and under
+  // whose lifted plane its lifted point is not (it is redundant there)
+  std::vector<std::uint32_t> at;
+  static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
+};
+
 // RT(S ⊕ W) of the weighted planar points ps (weights 0 when unweighted: the
 // Delaunay triangulation) under flipflop's SoS, canonical counter-clockwise
 // triangles — identical to ref::rt2_ffrt(ps). stats, if given, is reset and
 // filled: flips_1_3 (insertions), flips_2_2, flips_3_1 (vertices removed),
 // discarded_early (points found redundant when located), rounds (1).
-std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt = {}, ref::Rt2Stats* stats = nullptr);
+// witness, if given, receives the kernel's final triangulation (Rt2Witness;
+// its `at` found by a parallel walk, stage [witness] of opt.times).
+std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt = {}, ref::Rt2Stats* stats = nullptr,
+                          Rt2Witness* witness = nullptr);
 
 }  // namespace flipflop::cpu
