@@ -65,6 +65,7 @@
 
 #include "predicates/expansion.hpp"
 #include "predicates/lambda_filter.hpp"
+#include "predicates/static_filter.hpp"  // filter_detail::det_plain
 
 namespace flipflop::pred::xp {
 
@@ -439,6 +440,33 @@ FF_HD inline ErrDouble approx_entry(const Entry<A>& e) {
   }
 }
 
+// The minor of an ErrDouble K x K matrix (row-major) on the kept rows and
+// columns (bit masks, equal popcount), by det_by_minors (lambda_filter.hpp):
+// its value and a proven bound on its error. The empty minor is 1; 8 x 8 (K =
+// 8, nothing deleted) is beyond det_by_minors and returns an undecided value.
+template <int K>
+FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsigned cols) {
+  int ri[K], ci[K], r = 0, nc = 0;
+  for (int i = 0; i < K; ++i)
+    if (rows & (1u << i)) ri[r++] = i;
+  for (int j = 0; j < K; ++j)
+    if (cols & (1u << j)) ci[nc++] = j;
+  ErrDouble t[K * K];
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < r; ++j) t[i * r + j] = ap[ri[i] * K + ci[j]];
+  switch (r) {
+    case 0: return ErrDouble(1.0);
+    case 1: return t[0];
+    case 2: return det_by_minors<2>(t);
+    case 3: return det_by_minors<3>(t);
+    case 4: return det_by_minors<4>(t);
+    case 5: return det_by_minors<5>(t);
+    case 6: return det_by_minors<6>(t);
+    case 7: return det_by_minors<7>(t);
+    default: return ErrDouble(0.0, HUGE_VAL);
+  }
+}
+
 // Cheap decisions on a minor before the exact evaluation: 0 when two kept
 // rows are equal or a kept column is zero (duplicated points, lattices), the
 // ErrDouble filter's sign when it is certain; 2 when undecided.
@@ -469,39 +497,25 @@ FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsign
       }
       if (same) return 0;
     }
-  ErrDouble t[K * K];
-  for (int i = 0; i < r; ++i)
-    for (int j = 0; j < r; ++j) t[i * r + j] = ap[ri[i] * K + ci[j]];
-  int s = 0;
-  switch (r) {
-    case 1: s = sign_if_certain(t[0]); break;
-    case 2: s = sign_if_certain(det_by_minors<2>(t)); break;
-    case 3: s = sign_if_certain(det_by_minors<3>(t)); break;
-    case 4: s = sign_if_certain(det_by_minors<4>(t)); break;
-    case 5: s = sign_if_certain(det_by_minors<5>(t)); break;
-    case 6: s = sign_if_certain(det_by_minors<6>(t)); break;
-    case 7: s = sign_if_certain(det_by_minors<7>(t)); break;
-    default: s = 0; break;
-  }
+  const int s = sign_if_certain(errdouble_minor<K>(ap, rows, cols));
   return s != 0 ? s : 2;
 }
 
-template <class A, int K>
-FF_HD inline int sos_sign(const LambdaX<A, K>& L) {
+// The search over matchings in the dominance order for a Λ of K rows; with
+// det_is_zero the caller has decided det Λ = 0 and the memo starts with it.
+// minor(kr, kc) returns the sign of the minor on the kept rows / columns, or 2
+// when it cannot decide; the search then returns 2 (the caller's slower
+// evaluation takes over). Memo: 2^(2K-1) bytes.
+template <int K, class MinorFn>
+FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn) {
   constexpr unsigned kAll = (1u << K) - 1u;
   constexpr unsigned kColMask = (1u << (K - 1)) - 1u;  // the 1-column (bit K-1) is always kept
   signed char memo[1u << (2 * K - 1)];
   for (unsigned i = 0; i < (1u << (2 * K - 1)); ++i) memo[i] = 2;
-  ErrDouble ap[K * K];
-  for (int i = 0; i < K; ++i)
-    for (int j = 0; j < K; ++j) ap[i * K + j] = approx_entry<A>(L.a[i][j]);
+  if (det_is_zero) memo[(kAll << (K - 1)) | (kAll & kColMask)] = 0;  // det Λ itself
   auto minor = [&](unsigned kr, unsigned kc) -> int {
     signed char& slot = memo[(kr << (K - 1)) | (kc & kColMask)];
-    if (slot == 2) {
-      int q = minor_quick<A, K>(L, ap, kr, kc);
-      if (q == 2) q = MinorOf<A, K>::sign(L, kr, kc);
-      slot = static_cast<signed char>(q);
-    }
+    if (slot == 2) slot = static_cast<signed char>(minor_fn(kr, kc));
     return slot;
   };
   int choice[K];
@@ -531,7 +545,9 @@ FF_HD inline int sos_sign(const LambdaX<A, K>& L) {
       kc &= ~(1u << c);
     }
     if (r == 0) {
-      if (const int s = minor(kr, kc)) return sg * s;
+      const int s = minor(kr, kc);
+      if (s == 2) return 2;
+      if (s != 0) return sg * s;
       continue;
     }
     --r;
@@ -542,12 +558,137 @@ FF_HD inline int sos_sign(const LambdaX<A, K>& L) {
   }
 }
 
+// SoS sign on Λ as expansions: every minor decided by minor_quick, else
+// exactly by MinorOf (det_is_zero: the caller has found det Λ = 0).
+template <class A, int K>
+FF_HD inline int sos_sign(const LambdaX<A, K>& L, bool det_is_zero = false) {
+  ErrDouble ap[K * K];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) ap[i * K + j] = approx_entry<A>(L.a[i][j]);
+  return sos_search<K>(det_is_zero, [&](unsigned kr, unsigned kc) -> int {
+    const int q = minor_quick<A, K>(L, ap, kr, kc);
+    return q != 2 ? q : MinorOf<A, K>::sign(L, kr, kc);
+  });
+}
+
+// ---- SoS on doubles (det Λ = 0, inside the window) ---------------------------
+// On exactly degenerate input the perturbation's minors are mostly far from 0;
+// the expansions above are needed only where one is (nearly) 0. Λ as doubles:
+// coordinates, the 1-column and, for a lifted column, |x|^2 - w when computing
+// it in double loses nothing (every two_product and two_sum error of the
+// left-to-right evaluation is 0; a sufficient test) — then every entry is
+// exact and a minor of Λ is a determinant of doubles. Returns false when a
+// lifted entry is not a double.
+template <int K>
+FF_HD inline bool lambda_doubles(const double* const* p, const double* w, double (&a)[K][K]) {
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) a[i][j] = p[i][j];
+    if (w) {
+      double s = -w[i];
+      for (int j = 0; j < ncoord; ++j) {
+        double sq = 0.0, sqe = 0.0, t = 0.0, te = 0.0;
+        Dbl::two_product(p[i][j], p[i][j], sq, sqe);
+        Dbl::two_sum(s, sq, t, te);
+        if (sqe != 0.0 || te != 0.0) return false;
+        s = t;
+      }
+      a[i][K - 2] = s;
+    }
+    a[i][K - 1] = 1.0;
+  }
+  return true;
+}
+
+// Are all r x r minors of the double matrix a computed exactly by
+// det_by_minors in double arithmetic? Let every entry be a multiple of 2^g and
+// below 2^m in magnitude (`range` covers every entry: the caller's input
+// values, to which the 1-column and the lifted entries are added here), g- =
+// min(g, 0), m+ = max(m, 0). det_by_minors forms, level by level, sums of
+// products entry x (level l-1 minor); if every earlier value is exact, every
+// exact value it forms is a signed partial sum of at most r! products of
+// l <= r entries (det_plain's levels and its last row are of this form too):
+// a multiple of 2^(l g-), hence of 2^(r g-), and below
+// r! 2^(r m+) <= 2^(lf(r) + r m+), lf(r) = ceil(log2 r!). Such a value is a
+// double when lf(r) + r m+ - r g- <= 53 and r g- >= -1074 (no underflow, and
+// no overflow: the magnitude stays below 2^53). Then each rounding is exact,
+// by induction every value is exact, and a computed 0 is a true 0.
+template <int K>
+FF_HD inline bool doubles_exact_minors(const double (&a)[K][K], bool lifted, Range range, int r) {
+  constexpr int kLogFact[9] = {0, 0, 1, 3, 5, 7, 10, 13, 16};
+  range.add(1.0);
+  if (lifted)
+    for (int i = 0; i < K; ++i) range.add(a[i][K - 2]);
+  const int mp = range.ehi > 0 ? range.ehi : 0;
+  const int gm = range.llo < 0 ? range.llo : 0;
+  return r * gm >= -1074 && kLogFact[r] + r * mp - r * gm <= 53;
+}
+
+// Plain-double minor of a on the kept rows / columns (static_filter.hpp's
+// det_plain: Laplace over column subsets, sums of products as above).
+template <int K>
+FF_HD inline double double_minor(const double (&a)[K][K], unsigned rows, unsigned cols) {
+  int ri[K], ci[K], r = 0, nc = 0;
+  for (int i = 0; i < K; ++i)
+    if (rows & (1u << i)) ri[r++] = i;
+  for (int j = 0; j < K; ++j)
+    if (cols & (1u << j)) ci[nc++] = j;
+  double t[K * K];
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < r; ++j) t[i * r + j] = a[ri[i]][ci[j]];
+  switch (r) {
+    case 0: return 1.0;
+    case 1: return t[0];
+    case 2: return filter_detail::det_plain<2>(t);
+    case 3: return filter_detail::det_plain<3>(t);
+    case 4: return filter_detail::det_plain<4>(t);
+    case 5: return filter_detail::det_plain<5>(t);
+    case 6: return filter_detail::det_plain<6>(t);
+    default: return filter_detail::det_plain<7>(t);  // r <= K - 1 <= 7
+  }
+}
+
+// SoS sign from the double Λ: when doubles_exact_minors holds (small
+// integers, lattices) each minor is evaluated in plain doubles, exactly; else
+// by det_by_minors in ErrDouble, its sign taken where the bound certifies it;
+// 2 when some minor the order reaches is undecided (the expansion search then
+// decides). `range`: the input values (coordinates, weights) of the call.
+// Stack: K^2 doubles, K^2 ErrDouble, the memo (K = 5: 1.1 KB).
+template <int K>
+FF_HD inline int sos_sign_doubles(const double* const* p, const double* w, const Range& range) {
+  double a[K][K];
+  if (!lambda_doubles<K>(p, w, a)) return 2;
+  if (doubles_exact_minors<K>(a, w != nullptr, range, K - 1))
+    return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+      const double m = double_minor<K>(a, kr, kc);
+      return (m > 0.0) - (m < 0.0);
+    });
+  ErrDouble ap[K * K];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) ap[i * K + j] = ErrDouble(a[i][j]);
+  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+    const int s = sign_if_certain(errdouble_minor<K>(ap, kr, kc));
+    return s != 0 ? s : 2;
+  });
+}
+// The same with the range computed here (tests).
+template <int K>
+FF_HD inline int sos_sign_doubles(const double* const* p, const double* w) {
+  Range range;
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) range.add(p[i][j]);
+    if (w) range.add(w[i]);
+  }
+  return sos_sign_doubles<K>(p, w, range);
+}
+
 template <class A, int K>
 FF_HD inline int det_or_sos(const LambdaX<A, K>& L, bool sos) {
   constexpr unsigned kAll = (1u << K) - 1u;
   const int s = MinorOf<A, K>::sign(L, kAll, kAll);
   if (s != 0 || !sos) return s;
-  return sos_sign<A, K>(L);
+  return sos_sign<A, K>(L, true);
 }
 
 // Λ of K points: p[i] coordinates, w weights (lifted: K-2 coordinates and the
@@ -639,6 +780,29 @@ FF_HD inline int det_translated(const double* const* p, const double* w) {
   return MinorOf<A, K - 1>::sign(T, kAll, kAll);
 }
 
+// Exact determinants of doubles as expansions ([She97] §4.3, stage B):
+// a0 b1 - a1 b0 (<= 4 components) and the 3 x 3 determinant of rows a, b, c
+// expanded along the third column (<= 24 components).
+FF_HD inline int det2_exact(double a0, double a1, double b0, double b1, double* out) {
+  double x[2], y[2];
+  Dbl::two_product(a0, b1, x[1], x[0]);
+  Dbl::two_product(a1, b0, y[1], y[0]);
+  y[0] = -y[0];
+  y[1] = -y[1];
+  return sum_zeroelim<Dbl>(2, x, 2, y, out);
+}
+FF_HD inline int det3_exact(const double* a, const double* b, const double* c, double* out) {
+  double m_bc[4], m_ac[4], m_ab[4], s0[8], s1[8], s2[8], u[16];
+  const int l_bc = det2_exact(b[0], b[1], c[0], c[1], m_bc);
+  const int l_ac = det2_exact(a[0], a[1], c[0], c[1], m_ac);
+  const int l_ab = det2_exact(a[0], a[1], b[0], b[1], m_ab);
+  const int x = scale_zeroelim<Dbl>(l_bc, m_bc, a[2], s0);
+  const int y = scale_zeroelim<Dbl>(l_ac, m_ac, -b[2], s1);
+  const int z = scale_zeroelim<Dbl>(l_ab, m_ab, c[2], s2);
+  const int xy = sum_zeroelim<Dbl>(x, s0, y, s1, u);
+  return sum_zeroelim<Dbl>(xy, u, z, s2, out);
+}
+
 // Shewchuk's adaptive stages B and C for orient2d / orient3d (K = 3, 4, no
 // lift) [She97 §4.3, orient2dadapt / orient3dadapt], on T (rows p_i - p_{K-1},
 // det T = det Λ). Stage B: the determinant of the rounded differences (heads)
@@ -664,15 +828,6 @@ FF_HD inline int orient_adaptive(const double* const* p) {
       Dbl::two_sum(p[i][j], -p[K - 1][j], t[i * N + j], tail[i * N + j]);
       exact = exact && tail[i * N + j] == 0.0;
     }
-  // 2 x 2 minor of rows r, r+1 on columns a, b: t_ra t_(r+1)b - t_rb t_(r+1)a
-  auto minor2 = [&](int r, int a, int b, double* out) {
-    double x[2], y[2];
-    Dbl::two_product(t[r * N + a], t[(r + 1) * N + b], x[1], x[0]);
-    Dbl::two_product(t[r * N + b], t[(r + 1) * N + a], y[1], y[0]);
-    y[0] = -y[0];
-    y[1] = -y[1];
-    return sum_zeroelim<Dbl>(2, x, 2, y, out);
-  };
   auto estimate = [](int len, const double* e) {
     double v = e[0];
     for (int i = 1; i < len; ++i) v += e[i];
@@ -684,7 +839,7 @@ FF_HD inline int orient_adaptive(const double* const* p) {
     const double acx = t[0], acy = t[1], bcx = t[2], bcy = t[3];
     const double detsum = std::fabs(acx * bcy) + std::fabs(acy * bcx);
     double B[4];
-    const int len = minor2(0, 0, 1, B);
+    const int len = det2_exact(acx, acy, bcx, bcy, B);
     if (exact) return sign_of<Dbl>(len, B);
     double det = estimate(len, B);
     double bound = errB * detsum;
@@ -705,23 +860,8 @@ FF_HD inline int orient_adaptive(const double* const* p) {
                              (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * std::fabs(cdz);
     // det T along the z column: adz (bdx cdy - bdy cdx) - bdz (adx cdy - ady cdx)
     //                           + cdz (adx bdy - ady bdx)
-    double m_bc[4], m_ac[4], m_ab[4], s0[8], s1[8], s2[8], u[16], B[24];
-    const int l_bc = minor2(1, 0, 1, m_bc);  // rows b, c: bdx cdy - bdy cdx
-    int l_ac = 0;
-    {
-      double x[2], y[2];  // rows a, c: adx cdy - ady cdx
-      Dbl::two_product(adx, cdy, x[1], x[0]);
-      Dbl::two_product(ady, cdx, y[1], y[0]);
-      y[0] = -y[0];
-      y[1] = -y[1];
-      l_ac = sum_zeroelim<Dbl>(2, x, 2, y, m_ac);
-    }
-    const int l_ab = minor2(0, 0, 1, m_ab);  // rows a, b: adx bdy - ady bdx
-    const int a = scale_zeroelim<Dbl>(l_bc, m_bc, adz, s0);
-    const int b = scale_zeroelim<Dbl>(l_ac, m_ac, -bdz, s1);
-    const int c = scale_zeroelim<Dbl>(l_ab, m_ab, cdz, s2);
-    const int ab = sum_zeroelim<Dbl>(a, s0, b, s1, u);
-    const int len = sum_zeroelim<Dbl>(ab, u, c, s2, B);
+    double B[24];
+    const int len = det3_exact(t, t + 3, t + 6, B);
     if (exact) return sign_of<Dbl>(len, B);
     double det = estimate(len, B);
     double bound = errB * permanent;
@@ -738,6 +878,82 @@ FF_HD inline int orient_adaptive(const double* const* p) {
     if (det > bound || -det > bound) return det > 0 ? 1 : -1;
     return 2;
   }
+}
+
+// The adaptive stage of power2d / power3d (K = 4, 5; [She97] §4.4,
+// incircleadapt / insphereadapt, stage B): T of the translated rows
+// d_i = p_i - p_(K-1) with the lifted column l_i = |d_i|^2 - (w_i - w_(K-1))
+// (lambda_filter.hpp). When every Two_Diff tail of the coordinates is 0 — the
+// usual case when the points are close to each other, as in near-degenerate
+// and small-integer sets — the d_ij are exact doubles, l_i is an exact short
+// expansion (M two_products and one two_sum: <= 2M + 2 components), and so is
+// every cofactor C_i of the coordinate columns (det2_exact / det3_exact):
+// det T = Σ_i (-1)^(i+M) l_i C_i is then computed exactly, with no error
+// bound to test, far more cheaply than the whole-matrix Laplace expansion of
+// det_translated (whose entry-by-minor products and merges dominated the
+// profile). l_i and C_i are compressed first ([She97] Fig. 13: a few
+// components instead of up to 8 and 24), so each product is a few
+// scale_zeroelim calls. Returns 2 when a tail is not 0 (det_translated
+// decides). Inside the double window only (Range::fits(K), checked by the
+// caller): nothing overflows, no product's error underflows, and the
+// accumulator, compressed whenever it exceeds kCapD, obeys the length bound of
+// expansion.hpp. Stack: about 3 kCapD + 2 x 48 doubles (1.8 KB).
+template <int K>
+FF_HD inline int lifted_adaptive(const double* const* p, const double* w) {
+  static_assert(K == 4 || K == 5, "power2d / power3d only");
+  constexpr int N = K - 1, M = K - 2;
+  double d[N][3];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < M; ++j) {
+      double tail = 0.0;
+      Dbl::two_sum(p[i][j], -p[K - 1][j], d[i][j], tail);
+      if (tail != 0.0) return 2;
+    }
+  double acc[2 * kCapD + 4], sum[2 * kCapD + 4], scaled[48];
+  int alen = 1;
+  acc[0] = 0.0;
+  for (int i = 0; i < N; ++i) {
+    // l_i = Σ_j d_ij^2 - (w_i - w_k), exactly
+    double lift[2 * M + 2], ltmp[2 * M + 2];
+    int llen = 0;
+    {
+      double wh = 0.0, wl = 0.0;
+      Dbl::two_sum(w[i], -w[K - 1], wh, wl);
+      lift[0] = -wl;
+      lift[1] = -wh;
+      llen = 2;
+      for (int j = 0; j < M; ++j) {
+        double sq[2];
+        Dbl::two_product(d[i][j], d[i][j], sq[1], sq[0]);
+        llen = sum_zeroelim<Dbl>(llen, lift, 2, sq, ltmp);
+        for (int q = 0; q < llen; ++q) lift[q] = ltmp[q];
+      }
+      llen = compress<Dbl>(llen, lift);
+    }
+    if (llen == 1 && lift[0] == 0.0) continue;
+    // C_i: the M x M determinant of the coordinates of the other rows
+    double cof[24];
+    int clen = 0;
+    {
+      const double* r[3];
+      int n = 0;
+      for (int q = 0; q < N; ++q)
+        if (q != i) r[n++] = d[q];
+      if constexpr (M == 2) clen = det2_exact(r[0][0], r[0][1], r[1][0], r[1][1], cof);
+      else clen = det3_exact(r[0], r[1], r[2], cof);
+      clen = compress<Dbl>(clen, cof);
+    }
+    if (clen == 1 && cof[0] == 0.0) continue;
+    const bool negative = ((i + M) & 1) != 0;
+    for (int c = 0; c < llen; ++c) {
+      if (lift[c] == 0.0) continue;
+      const int sl = scale_zeroelim<Dbl>(clen, cof, negative ? -lift[c] : lift[c], scaled);
+      alen = sum_zeroelim<Dbl>(alen, acc, sl, scaled, sum);
+      if (alen > kCapD) alen = compress<Dbl>(alen, sum);
+      for (int q = 0; q < alen; ++q) acc[q] = sum[q];
+    }
+  }
+  return sign_of<Dbl>(alen, acc);
 }
 
 // Exact sign of det Λ of K points in the given row order; with `sos`, the
@@ -757,17 +973,23 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
     int s = 2;
     if constexpr (K == 3 || K == 4)
       if (!w) s = orient_adaptive<K>(p);
+    if constexpr (K == 4 || K == 5)
+      if (w) s = lifted_adaptive<K>(p, w);
     if (s == 2) s = det_translated<Dbl, K>(p, w);
     if (s != 0 || !sos) return s;
+    // det Λ = 0: the perturbation's minors on doubles first, expansions
+    // only when one of them is undecided there
+    s = sos_sign_doubles<K>(p, w, range);
+    if (s != 2) return s;
     LambdaX<Dbl, K> L;
     build_lambda<Dbl, K>(p, w, L);
-    return sos_sign<Dbl, K>(L);
+    return sos_sign<Dbl, K>(L, true);
   }
   const int s = det_translated<XDbl, K>(p, w);
   if (s != 0 || !sos) return s;
   LambdaX<XDbl, K> L;
   build_lambda<XDbl, K>(p, w, L);
-  return sos_sign<XDbl, K>(L);
+  return sos_sign<XDbl, K>(L, true);
 }
 
 // A row of a mixed Λ-matrix for the exact stage: an input point (x) or the

@@ -8,9 +8,14 @@
 //                         (static_filter.hpp);
 //   3. dynamic filter     ErrDouble running error bound (lambda_filter.hpp);
 //   4. exact              expansion arithmetic (exact_expansion.hpp), rows
-//                         sorted by point index;
-//   5. SoS                the perturbation terms on the same expansions, when
-//                         the exact determinant is 0 and ids are given.
+//                         sorted by point index: Shewchuk's adaptive stages
+//                         for orient2d/3d, the exact stage B of power2d/3d
+//                         when the translated coordinates are exact
+//                         (lifted_adaptive), else the whole translated matrix;
+//   5. SoS                when the exact determinant is 0 and ids are given,
+//                         the perturbation terms on double minors first
+//                         (exact for small integers, else ErrDouble-filtered:
+//                         sos_sign_doubles), on expansions where undecided.
 //
 // Stages 1-3 return a sign only when it is certain; 4-5 always decide. No
 // stage allocates memory or recurses. GMP (Mode::gmp in predicates.hpp) is the

@@ -44,7 +44,9 @@
 #include <rapidcheck/catch.h>
 #include <vector>
 
+#include "predicates/exact_expansion.hpp"
 #include "predicates/predicates.hpp"
+#include "predicates/staged.hpp"
 #include "proptests/support/predicate_inputs.hpp"
 #include "proptests/support/rc_scaled.hpp"
 
@@ -230,12 +232,38 @@ Instance gen_small_int(const Spec& s, int max_id) {
   return in;
 }
 
+// The SoS search on double minors alone (xp::sos_sign_doubles, the first SoS
+// step of the default path when det Λ = 0): rows sorted by id as lambda_exact
+// sorts them; 2 when it leaves the call to the expansions, or when it does not
+// apply (a repeated id, det Λ != 0).
+template <int K>
+int sos_doubles(const Instance& in, bool lifted) {
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = in.p(i);
+  const double* w = lifted ? in.w.data() : nullptr;
+  if (flipflop::pred::stage::gmp(K, p, w) != 0) return 2;
+  int order[K];
+  const int parity = flipflop::pred::sort_rows_by_id(K, in.id.data(), order);
+  if (parity == 0) return 2;
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = lifted ? w[order[i]] : 0.0;
+  }
+  const int s = flipflop::pred::xp::sos_sign_doubles<K>(sp, lifted ? sw : nullptr);
+  return s == 2 ? 2 : parity * s;
+}
+
 void check_oracle(const Spec& s, int max_id) {
   const Instance in = gen_small_int(s, max_id);
   RC_LOG() << describe(s, in);
   const int expected = oracle_sos_sign(int_lambda(s, in), in.id);
   RC_ASSERT(eval(s, in, true, Mode::gmp) == expected);
   RC_ASSERT(eval(s, in, true, Mode::filtered) == expected);
+  const int d = in.k == 3 ? sos_doubles<3>(in, s.weighted()) : sos_doubles<4>(in, s.weighted());
+  RC_LOG() << "sos_sign_doubles " << d << "\n";
+  RC_ASSERT((d == 2 || d == expected));
 }
 
 }  // namespace
