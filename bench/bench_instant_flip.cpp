@@ -62,15 +62,16 @@ Weights generate(const Args& a) {
 
 int bench_instant_flip(const Args& a) {
   const Weights g = generate(a);
-  ref::DynamicRegularTriangulation rt(g.pw, g.pw.weights);  // the start: not timed
+  const std::vector<double> w = g.pw.weights.to_vector(), u = g.pu.weights.to_vector();
+  ref::DynamicRegularTriangulation rt(g.pw, w);  // the start: not timed
   double t_instant = 0, t_rt1 = 0, t_cgal = 0;
   ref::WeightUpdateStats last;
   std::vector<Peer<Simplices>> rows = {
       {"flipflop:instant-flip",
        [&](const PointSet&) {
-         t_instant = seconds([&] { last = cpu::set_weights(rt, g.pu.weights, 0); });
+         t_instant = seconds([&] { last = cpu::set_weights(rt, u, 0); });
          Simplices out = rt.simplices();
-         cpu::set_weights(rt, g.pw.weights, 0);  // back to the start for the next run
+         cpu::set_weights(rt, w, 0);  // back to the start for the next run
          return out;
        },
        [&] { return t_instant; }},

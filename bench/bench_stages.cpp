@@ -50,10 +50,6 @@ namespace flipflop::bench::detail {
 
 namespace {
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
 // A temporary directory removed at the end of the benchmark.
 struct TempDir {
   std::filesystem::path dir;

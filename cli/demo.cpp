@@ -192,7 +192,7 @@ int run_demo() {
     all_ok &= run_one<Simplices>("rtd d=3 cube w=0 -> w[0,1e-4]", "flipflop instant flip", ps,
                                  [&] {
                                    ref::rtd::TriangulationD T = ref::build_rtd(p0);
-                                   ref::instant_flip(T, p0.weights, ps.weights);
+                                   ref::instant_flip(T, p0.weights.to_vector(), ps.weights.to_vector());
                                    return ref::rtd::real_simplices(T);
                                  },
                                  rd(ps), Level::canonical);

@@ -138,16 +138,17 @@ int run_instant_flip(const InstantFlipArgs& a) {
   check_spans(pts, a.points);
 
   // RT(S ⊕ W) with its redundant points tracked, then in place to U.
+  const std::vector<double> w = pw.weights.to_vector(), u = pu.weights.to_vector();
   const auto t0 = Clock::now();
   ref::DynamicRegularTriangulation rt =
-      with_input_errors(a.from, [&] { return ref::DynamicRegularTriangulation(pts, pw.weights); });
+      with_input_errors(a.from, [&] { return ref::DynamicRegularTriangulation(pts, w); });
   const double t_build = seconds_since(t0);
   const std::vector<std::vector<Index>> start = rt.simplices();
-  const ref::MovingModel mm(pts, pw.weights, pu.weights);
+  const ref::MovingModel mm(pts, w, u);
   std::optional<ref::PerturbationOrder> order;  // for the time lines only
   if (a.timeline) {
     ref::PerturbationOrderResult po = with_input_errors(
-        a.from, [&] { return ref::find_perturbation_order(pts, pw.weights, start); });
+        a.from, [&] { return ref::find_perturbation_order(pts, w, start); });
     order = po.order ? *po.order : ref::PerturbationOrder::identity(pts.size());
     std::cerr << "instant-flip: start, RT(S+W)"
               << (po.order ? "" : " (no perturbation order: " + po.reason + "; index order shown)") << "\n"
@@ -156,7 +157,7 @@ int run_instant_flip(const InstantFlipArgs& a) {
 
   // Algorithm 14 with insertions (dynamic_rt.hpp).
   const auto t2 = Clock::now();
-  const ref::WeightUpdateStats st = with_input_errors(a.to, [&] { return cpu::set_weights(rt, pu.weights, a.threads); });
+  const ref::WeightUpdateStats st = with_input_errors(a.to, [&] { return cpu::set_weights(rt, u, a.threads); });
   const double t_flip = seconds_since(t2);
   const std::vector<std::vector<Index>> result = rt.simplices();
   const auto t3 = Clock::now();

@@ -51,10 +51,6 @@ void check_valid(const PointSet& ps, int dim, bool weighted, const std::string& 
     if (!std::isfinite(w)) fail(kTarget, "returned a non-finite weight" + where, describe(ps));
 }
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
 void check_round_trip(const PointSet& ps, int dim, bool weighted) {
   std::ostringstream os;
   io::write_points(os, ps);

@@ -94,7 +94,7 @@ PointSet generate(const std::string& dist, std::size_t n, const Options& o) {
   ps.weighted = o.weighted;
   ps.coords.reserve(n * static_cast<std::size_t>(f.dim));
   Rng r(o.seed);
-  f.make(r, n, o, ps.coords);
+  f.make(r, n, o, ps.coords.vec());
   if (o.weighted) {
     // wlo·(1-u) + whi·u cannot overflow where whi - wlo would; clamped
     // against rounding past the ends.

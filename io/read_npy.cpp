@@ -93,7 +93,7 @@ PointSet read_npy(const std::string& path, int dim, bool weighted) {
   ps.weighted = weighted;
   const std::size_t values = static_cast<std::size_t>(n) * static_cast<std::size_t>(c);
   std::vector<double> buf;
-  std::vector<double>& target = weighted ? buf : ps.coords;
+  std::vector<double>& target = weighted ? buf : ps.coords.vec();
   target.resize(values);
   f.read(reinterpret_cast<char*>(target.data()), static_cast<std::streamsize>(values * sizeof(double)));
   if (static_cast<std::size_t>(f.gcount()) != values * sizeof(double))

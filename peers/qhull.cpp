@@ -39,7 +39,7 @@ namespace {
 // be reported as one line.
 class QhullRun {
  public:
-  QhullRun(const PointSet& pts, int dim, const char* options, const char* who = nullptr) : coords_(pts.coords) {
+  QhullRun(const PointSet& pts, int dim, const char* options, const char* who = nullptr) : coords_(pts.coords.to_vector()) {
     if (pts.dim != dim)
       throw std::invalid_argument((who ? std::string(who) : "qhull_hull" + std::to_string(dim)) + ": expected " +
                                   std::to_string(dim) + "D points, got " +

@@ -38,11 +38,6 @@ const std::vector<std::string> kAll = {
     "sphere-lattice", "collinear2", "collinear3", "coplanar3", "duplicates2",    "duplicates3",
     "jitter2",     "jitter3",     "huge2",      "huge3",       "tiny2",          "tiny3"};
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
 // |p - (1/2, ..., 1/2)|^2, exactly.
 mpq_class dist2_center(const double* p, int dim) {
   mpq_class s = 0;

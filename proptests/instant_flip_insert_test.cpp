@@ -172,8 +172,8 @@ TEST_CASE("instant flip: lattices without a frame (flat simplices on the hull)",
     std::mt19937_64 g(seed ^ 0x5eed);
     PointSet pu = pw;
     for (double& x : pu.weights) x = static_cast<double>(g() % 3);
-    ref::DynamicRegularTriangulation rt(pw, pw.weights);
-    rt.set_weights(pu.weights);
+    ref::DynamicRegularTriangulation rt(pw, pw.weights.to_vector());
+    rt.set_weights(pu.weights.to_vector());
     RC_ASSERT(rt.simplices() == ref::rtd_incremental(pu).simplices);
   });
 }

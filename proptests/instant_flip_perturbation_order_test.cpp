@@ -64,7 +64,7 @@ void check_found(const PointSet& ps, const std::vector<double>& w, const Simplex
 }
 
 void check_weakly_regular_family(const PointSet& ps, int relabellings, std::uint64_t seed) {
-  const std::vector<double> w = ps.weights;  // equal weights (0)
+  const std::vector<double> w = ps.weights.to_vector();  // equal weights (0)
   const SimplexSet T = to_set(ref::rtd_incremental(ps).simplices);
   REQUIRE(all_convex_q(ps, heights_q(ps, to_q(w)), T, /*allow_flat=*/true));  // weakly regular
   const ref::PerturbationOrderResult r0 = ref::find_perturbation_order(ps, w, as_list(T));

@@ -62,23 +62,10 @@ struct TempDir {
   std::string path(const std::string& name) const { return (dir / name).string(); }
 };
 
-std::uint64_t bits(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
-
 double from_bits(std::uint64_t b) {
   double v;
   std::memcpy(&v, &b, sizeof v);
   return v;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (bits(a[i]) != bits(b[i])) return false;
-  return true;
 }
 
 // Runs f, which must throw InputError; returns it.

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "reference/values.hpp"
+
 namespace flipflop {
 
 // n points with `dim` coordinates each, stored contiguously (structure of
@@ -15,8 +17,8 @@ namespace flipflop {
 struct PointSet {
   int dim = 0;
   bool weighted = false;
-  std::vector<double> coords;   // size() * dim values
-  std::vector<double> weights;  // size() values when weighted
+  Values coords;   // size() * dim values (owned, or borrowed: values.hpp)
+  Values weights;  // size() values when weighted
 
   std::size_t size() const { return dim > 0 ? coords.size() / static_cast<std::size_t>(dim) : 0; }
   const double* point(std::size_t i) const { return coords.data() + i * static_cast<std::size_t>(dim); }

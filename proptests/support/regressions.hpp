@@ -1093,7 +1093,7 @@ inline Outcome rtd_counts(const PointSet& ps, const Params&) {
   ref::rtd::TriangulationD T = ref::build_rtd(pw);
   ref::InstantFlipStats fs;
   try {
-    fs = ref::instant_flip(T, pw.weights, pw.weights);
+    fs = ref::instant_flip(T, pw.weights.to_vector(), pw.weights.to_vector());
   } catch (const std::logic_error& e) {  // std::invalid_argument included
     // documented for degenerate coordinates only (instant_flip.hpp)
     FF_EXPECT(!general_position_d(ps, false), "instant flip from W to W threw: " << e.what());
@@ -1194,7 +1194,7 @@ inline InstantFlipRun run_instant_flip(const PointSet& ps, const std::vector<dou
         if (!sset.count(t)) start_left.insert(t);
     };
   try {
-    R.stats = ref::instant_flip(T, pw.weights, u, opt);
+    R.stats = ref::instant_flip(T, pw.weights.to_vector(), u, opt);
   } catch (const std::invalid_argument& e) {
     R.kind = InstantFlipRun::Kind::invalid_argument;
     R.what = e.what();

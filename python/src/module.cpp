@@ -3,8 +3,9 @@
 // scipy-like classes, derived floating-point attributes).
 //
 // Every function takes C-contiguous float64 numpy arrays (checked and made
-// so by the Python half), copies them once into the library's PointSet,
-// releases the GIL while computing, and returns new numpy arrays (int64
+// so by the Python half), reads them in place through a borrowing PointSet
+// (no copy: reference/values.hpp; the arrays must not be written by another
+// thread during the call), releases the GIL while computing, and returns new numpy arrays (int64
 // indices). Results are certified at the canonical level before they are
 // returned, as on the command line: a result that fails is never returned
 // (RuntimeError). Input the algorithms reject (too few points,
@@ -64,19 +65,29 @@ using IndexArray = nb::ndarray<nb::numpy, std::int64_t>;
 PointSet point_set(const Points& p, const std::optional<Vector>& w) {
   PointSet ps;
   ps.dim = static_cast<int>(p.shape(1));
-  ps.coords.assign(p.data(), p.data() + p.shape(0) * p.shape(1));
+  // Read in place (reference/values.hpp): the array is C-contiguous float64
+  // and nanobind holds a reference to it for the whole call.
+  ps.coords = Values::borrow(p.data(), p.shape(0) * p.shape(1));
   if (w) {
     if (w->shape(0) != p.shape(0))
       throw std::invalid_argument(std::to_string(w->shape(0)) + " weights for " + std::to_string(p.shape(0)) +
                                   " points");
     ps.weighted = true;
-    ps.weights.assign(w->data(), w->data() + w->shape(0));
+    ps.weights = Values::borrow(w->data(), w->shape(0));
   }
-  for (double x : ps.coords)
+  const PointSet& read = ps;  // const: reading a borrowed array never copies it
+  for (double x : read.coords)
     if (!std::isfinite(x)) throw std::invalid_argument("the points hold NaN or infinite coordinates");
-  for (double x : ps.weights)
+  for (double x : read.weights)
     if (!std::isfinite(x)) throw std::invalid_argument("the weights hold NaN or infinite values");
   return ps;
+}
+
+// For the tests: whether point_set reads the arrays in place (no copy).
+bool reads_in_place(const Points& p, const std::optional<Vector>& w) {
+  const PointSet ps = point_set(p, w);
+  return ps.coords.borrowed() && ps.coords.data() == p.data() &&
+         (!w || (ps.weights.borrowed() && ps.weights.data() == w->data()));
 }
 
 void require_spanning(const PointSet& ps) {
@@ -138,7 +149,7 @@ std::vector<Triangle> triangles_of(const std::vector<std::vector<Index>>& cells)
 // ---- hulls -------------------------------------------------------------------
 
 IndexArray hull2(const Points& p, const std::string& backend, int threads) {
-  PointSet ps = point_set(p, std::nullopt);
+  const PointSet ps = point_set(p, std::nullopt);
   if (ps.dim != 2) throw std::invalid_argument("hull2 expects points of shape (n, 2)");
   std::vector<Index> cycle;
   {
@@ -160,7 +171,7 @@ IndexArray hull2(const Points& p, const std::string& backend, int threads) {
 }
 
 IndexArray hull3(const Points& p, const std::string& backend, int threads) {
-  PointSet ps = point_set(p, std::nullopt);
+  const PointSet ps = point_set(p, std::nullopt);
   if (ps.dim != 3) throw std::invalid_argument("hull3 expects points of shape (n, 3)");
   std::vector<Triangle> tris;
   {
@@ -185,7 +196,7 @@ IndexArray hull3(const Points& p, const std::string& backend, int threads) {
 // The strict view: (extreme points, facets as lists) — polygons, or with
 // `triangulate` triangles fanned from the smallest vertex.
 std::pair<IndexArray, std::vector<std::vector<Index>>> hull3_strict(const Points& p, bool triangulate) {
-  PointSet ps = point_set(p, std::nullopt);
+  const PointSet ps = point_set(p, std::nullopt);
   if (ps.dim != 3) throw std::invalid_argument("hull3 expects points of shape (n, 3)");
   ref::StrictHull3 h;
   {
@@ -206,7 +217,7 @@ std::pair<IndexArray, std::vector<std::vector<Index>>> hull3_strict(const Points
 // RT+1; all canonical.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
                                               const std::string& backend, bool strict, int threads) {
-  PointSet ps = point_set(p, w);
+  const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
   if (!(backend == "reference" || (backend == "cpu" && d == 2)))
@@ -427,14 +438,14 @@ std::pair<nb::ndarray<nb::numpy, double>, std::optional<nb::ndarray<nb::numpy, d
 // `flipflop instant-flip`: (simplices, total flips), for any W and U.
 std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector& w, const Vector& u) {
   const PointSet pw = point_set(p, w), pu = point_set(p, u);
-  PointSet pts = point_set(p, std::nullopt);
+  const PointSet pts = point_set(p, std::nullopt);
   std::vector<std::vector<Index>> result;
   std::uint64_t flips = 0;
   {
     nb::gil_scoped_release nogil;
     require_spanning(pts);
-    ref::DynamicRegularTriangulation rt(pts, pw.weights);
-    flips = cpu::set_weights(rt, pu.weights, 0).total_flips();
+    ref::DynamicRegularTriangulation rt(pts, pw.weights.to_vector());
+    flips = cpu::set_weights(rt, pu.weights.to_vector(), 0).total_flips();
     result = rt.simplices();
     check_certified(certify::rtd(pu, result), "instant flip");
   }
@@ -461,5 +472,6 @@ NB_MODULE(_flipflop, m) {
         nb::arg("weights").none());
   m.def("distributions", &gen::distributions);
   m.def("dimension_of", &gen::dimension_of);
+  m.def("_reads_in_place", &reads_in_place, nb::arg("points"), nb::arg("weights").none());
   m.def("instant_flip", &instant_flip, nb::arg("points"), nb::arg("w"), nb::arg("u"));
 }

@@ -328,3 +328,27 @@ def test_npy_input_written_by_numpy(tmp_path):
     np.save(tmp_path / "f.npy", p.astype(np.float32))
     code, _, err = cli("hull3", tmp_path / "f.npy")
     assert code == 2 and "float64" in err and len(err.strip().splitlines()) == 1
+
+
+def test_points_and_weights_read_in_place():
+    """C-contiguous float64 input is read without a copy (the library borrows
+    the numpy buffer), left unchanged, and gives the answer of a copy; other
+    layouts and dtypes are converted once by numpy and give the same answer."""
+    from flipflop import _flipflop
+
+    rng = np.random.default_rng(5)
+    p = rng.random((3000, 3))
+    w = rng.random(3000) * 1e-3
+    assert _flipflop._reads_in_place(p, None)
+    assert _flipflop._reads_in_place(p[:, :2].copy(), w)
+    before = p.copy()
+    h = flipflop.ConvexHull(p)
+    assert np.array_equal(p, before)
+    assert h.points is p or np.shares_memory(h.points, p)
+    assert np.array_equal(h.simplices, flipflop.ConvexHull(p.copy()).simplices)
+    assert np.array_equal(h.simplices, flipflop.ConvexHull(np.asfortranarray(p)).simplices)
+    assert np.array_equal(h.simplices, flipflop.ConvexHull(p.tolist()).simplices)
+    q = np.ascontiguousarray(p[:, :2])
+    t = flipflop.Delaunay(q, weights=w)
+    assert np.array_equal(t.simplices, flipflop.Delaunay(q.copy(), weights=w.copy()).simplices)
+    assert np.array_equal(t.simplices, flipflop.Delaunay(np.asfortranarray(q), weights=w.tolist()).simplices)

@@ -68,7 +68,7 @@ WeightUpdateStats DynamicRegularTriangulation::set_weights(const std::vector<dou
   opt.order = options.order;
   opt.tie_seed = options.tie_seed;
   opt.for_range = options.for_range;
-  std::vector<double> w = ps_->weights;
+  std::vector<double> w = ps_->weights.to_vector();
   try {
     st.instant = instant_flip(T_, w, u, opt);
   } catch (const InvariantViolation&) {

@@ -90,7 +90,7 @@ class DynamicRegularTriangulation {
 
   int dim() const { return ps_->dim; }
   std::size_t size() const { return ps_->size(); }
-  const std::vector<double>& weights() const { return ps_->weights; }
+  const Values& weights() const { return ps_->weights; }
   // The points with the current weights (the triangulation points to it).
   const PointSet& points() const { return *ps_; }
   const rtd::TriangulationD& triangulation() const { return T_; }
