@@ -177,18 +177,19 @@ IndexArray hull3(const Points& p, const std::string& backend, int threads) {
   {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
-    if (backend == "cpu") {
+    if (backend == "cpu") {  // certified from the kernel's witness, as `flipflop hull3`
       cpu::Hull3Options o;
       o.threads = threads;
+      cpu::Hull3Witness witness;
+      o.witness = &witness;
       tris = cpu::hull3_ffhull(ps, o);
+      check_certified(cpu::certify_hull3_witnessed(ps, tris, certify::Level::canonical, witness, threads), "hull3");
     } else if (backend == "reference") {
       tris = ref::hull3(ps, "ffhull");
+      check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
     } else {
       throw std::invalid_argument("hull3 backends: 'cpu', 'reference'; got '" + backend + "'");
     }
-    check_certified(backend == "cpu" ? cpu::certify_hull3(ps, tris, certify::Level::canonical, threads)
-                                     : certify::hull3(ps, tris, certify::Level::canonical),
-                    "hull3");
   }
   return cells_array(tris, 3);
 }
@@ -232,10 +233,15 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
     if (d == 2) {
       cpu::Rt2Options o;
       o.threads = threads;
-      std::vector<Triangle> tris = backend == "cpu" ? cpu::rt2(ps, o) : ref::rt2_ffrt(ps);
-      check_certified(backend == "cpu" ? cpu::certify_rt2(ps, tris, certify::Level::canonical, threads)
-                                       : certify::rt2(ps, tris, certify::Level::canonical),
-                      "Delaunay");
+      std::vector<Triangle> tris;
+      if (backend == "cpu") {  // certified from the kernel's witness, as `flipflop rt2|dt2`
+        cpu::Rt2Witness witness;
+        tris = cpu::rt2(ps, o, nullptr, &witness);
+        check_certified(cpu::certify_rt2(ps, tris, certify::Level::canonical, witness, threads), "Delaunay");
+      } else {
+        tris = ref::rt2_ffrt(ps);
+        check_certified(certify::rt2(ps, tris, certify::Level::canonical), "Delaunay");
+      }
       if (strict) {
         tris = ref::strict_rt2(ps, tris);
         check_certified(certify::rt2_strict(ps, tris), "strict Delaunay");
