@@ -5,9 +5,11 @@
 # clang in BUILD_DIR (default build-fuzz; configured here with CC=clang
 # CXX=clang++ when it has no CMakeCache.txt yet) and runs each for
 # SECONDS_PER_TARGET seconds (default 60) on its seed corpus fuzz/corpus/<name>,
-# one after the other. Prints executions and exec/s per target; exits non-zero
-# when any target crashed, hung (-timeout), ran out of memory (-rss_limit_mb)
-# or found a property violation.
+# FUZZ_PARALLEL (default nproc) targets at a time (a libFuzzer run is one
+# thread; fuzz_kernels' TBB/OpenMP workers sleep between calls). Prints
+# executions and exec/s per target; exits non-zero when any target crashed,
+# hung (-timeout), ran out of memory (-rss_limit_mb) or found a property
+# violation.
 #
 # Per target, under BUILD_DIR/fuzz-runs/<name>/: corpus/ (new inputs libFuzzer
 # found; the repository corpus is only read), artifacts/ (crash reproducers),
@@ -15,11 +17,12 @@
 # (fuzz_<name>_replay) then replays it on every run.
 #
 # Environment: FUZZ_TARGETS (space-separated names: run only these),
-# FUZZ_TIMEOUT (seconds per input, default 30), FUZZ_RSS_MB
-# (default 2048), FUZZ_JOBS (build parallelism, default nproc), ASAN_OPTIONS
-# (default malloc_context_size=0: allocation stacks are not recorded, which
-# doubles the speed of the allocation-heavy exact predicates; rerun a
-# reproducer with ASAN_OPTIONS= for full ASan reports).
+# FUZZ_PARALLEL (targets run at once, default nproc), FUZZ_TIMEOUT (seconds
+# per input, default 30), FUZZ_RSS_MB (default 2048), FUZZ_JOBS (build
+# parallelism, default nproc), ASAN_OPTIONS (default malloc_context_size=0:
+# allocation stacks are not recorded, which doubles the speed of the
+# allocation-heavy exact predicates; rerun a reproducer with ASAN_OPTIONS= for
+# full ASan reports).
 set -uo pipefail
 
 SECONDS_PER_TARGET=${1:-60}
@@ -29,6 +32,7 @@ case "$BUILD" in /*) ;; *) BUILD="$ROOT/$BUILD" ;; esac
 TIMEOUT=${FUZZ_TIMEOUT:-30}
 RSS_MB=${FUZZ_RSS_MB:-2048}
 JOBS=${FUZZ_JOBS:-$(nproc)}
+PARALLEL=${FUZZ_PARALLEL:-$(nproc)}
 
 if ! [[ "$SECONDS_PER_TARGET" =~ ^[0-9]+$ ]] || [ "$SECONDS_PER_TARGET" -lt 1 ]; then
   echo "usage: fuzz/run_all.sh [SECONDS_PER_TARGET] [BUILD_DIR]" >&2
@@ -56,21 +60,10 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # OpenMP / TBB threads of fuzz_kernels: sleep instead of spinning between calls.
 export OMP_WAIT_POLICY=passive KMP_BLOCKTIME=0
 
-failed=()
-summary=()
-for dir in "$ROOT"/fuzz/corpus/*/; do
-  name=$(basename "$dir")
-  if [ -n "${FUZZ_TARGETS:-}" ] && [[ " $FUZZ_TARGETS " != *" $name "* ]]; then
-    continue
-  fi
-  exe="$BUILD/fuzz/fuzz_$name"
-  if [ ! -x "$exe" ]; then
-    summary+=("$(printf '%-14s %12s %10s  %s' "$name" "-" "-" "not built (see fuzz/CMakeLists.txt)")")
-    continue
-  fi
-  run="$BUILD/fuzz-runs/$name"
-  mkdir -p "$run/corpus" "$run/artifacts"
-  # A hard limit beyond libFuzzer's own, in case a hang escapes -timeout.
+# One target: its run folder's log.txt and a one-line summary.txt (its row of
+# the table) and failed marker; run in the background, PARALLEL at a time.
+run_target() {
+  local name=$1 dir=$2 exe=$3 run=$4 rc execs rate added rss status
   timeout --kill-after=10 $((SECONDS_PER_TARGET + TIMEOUT + 120)) \
     "$exe" -max_total_time="$SECONDS_PER_TARGET" -timeout="$TIMEOUT" -rss_limit_mb="$RSS_MB" \
     -print_final_stats=1 -artifact_prefix="$run/artifacts/" "$run/corpus" "$dir" > "$run/log.txt" 2>&1
@@ -83,12 +76,42 @@ for dir in "$ROOT"/fuzz/corpus/*/; do
     status="ok (${added:-0} new inputs, peak ${rss:-?} MB)"
   else
     status="FAILED (exit $rc)"
+    touch "$run/failed"
+  fi
+  printf '%-14s %12s %10s  %s\n' "$name" "${execs:-?}" "${rate:-?}" "$status" > "$run/summary.txt"
+}
+
+failed=()
+summary=()
+names=()
+for dir in "$ROOT"/fuzz/corpus/*/; do
+  name=$(basename "$dir")
+  if [ -n "${FUZZ_TARGETS:-}" ] && [[ " $FUZZ_TARGETS " != *" $name "* ]]; then
+    continue
+  fi
+  exe="$BUILD/fuzz/fuzz_$name"
+  run="$BUILD/fuzz-runs/$name"
+  mkdir -p "$run/corpus" "$run/artifacts"
+  rm -f "$run/summary.txt" "$run/failed"
+  if [ ! -x "$exe" ]; then
+    printf '%-14s %12s %10s  %s\n' "$name" "-" "-" "not built (see fuzz/CMakeLists.txt)" > "$run/summary.txt"
+  else
+    # each libFuzzer run is one thread: PARALLEL of them share the cores
+    while [ "$(jobs -rp | wc -l)" -ge "$PARALLEL" ]; do wait -n; done
+    run_target "$name" "$dir" "$exe" "$run" &
+  fi
+  names+=("$name")
+done
+wait
+for name in "${names[@]}"; do
+  run="$BUILD/fuzz-runs/$name"
+  summary+=("$(cat "$run/summary.txt")")
+  if [ -f "$run/failed" ]; then
     failed+=("$name")
-    echo "---- fuzz_$name failed (exit $rc); last lines of $run/log.txt:"
+    echo "---- fuzz_$name failed; last lines of $run/log.txt:"
     tail -n 40 "$run/log.txt"
     ls "$run/artifacts" 2>/dev/null | sed "s|^|  artifact: $run/artifacts/|"
   fi
-  summary+=("$(printf '%-14s %12s %10s  %s' "$name" "${execs:-?}" "${rate:-?}" "$status")")
 done
 
 echo

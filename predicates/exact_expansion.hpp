@@ -270,6 +270,27 @@ FF_HD constexpr int minor_cap(int k) {
   return A::kExtended ? cap_x(k + 1) : kCapD;
 }
 
+// The kept rows and columns of a K x K matrix (bit masks of equal popcount),
+// as increasing index lists of their common length r: how every minor below
+// (expansion, ErrDouble and double) gathers its entries.
+template <int K>
+struct Kept {
+  int ri[K] = {}, ci[K] = {}, r = 0;
+  FF_HD Kept(unsigned rows, unsigned cols) {
+    int nc = 0;
+    for (int i = 0; i < K; ++i)
+      if (rows & (1u << i)) ri[r++] = i;
+    for (int j = 0; j < K; ++j)
+      if (cols & (1u << j)) ci[nc++] = j;
+  }
+  // t (r x r, row-major) = the kept entries, at(i, j) the entry of row i, column j
+  template <class T, class At>
+  FF_HD void gather(T* t, At at) const {
+    for (int i = 0; i < r; ++i)
+      for (int j = 0; j < r; ++j) t[i * r + j] = at(ri[i], ci[j]);
+  }
+};
+
 template <class A, int K>
 struct MinorLaplace {
   static constexpr int kLevel = binom(K, K / 2);
@@ -279,11 +300,10 @@ struct MinorLaplace {
 
   // sign of the minor of L on the kept rows / columns (bit masks, equal popcount)
   FF_HD static int sign(const LambdaX<A, K>& L, unsigned rows, unsigned cols) {
-    int ri[K], ci[K], r = 0, nc = 0;
-    for (int i = 0; i < K; ++i)
-      if (rows & (1u << i)) ri[r++] = i;
-    for (int j = 0; j < K; ++j)
-      if (cols & (1u << j)) ci[nc++] = j;
+    const Kept<K> kept(rows, cols);
+    const int* ri = kept.ri;
+    const int* ci = kept.ci;
+    const int r = kept.r;
     if (r == 0) return 1;
     E lev[2][kLevel];
     T scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
@@ -332,11 +352,10 @@ struct MinorX {
   using T = XD;
 
   FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
-    int ri[K], ci[K], r = 0, nc = 0;
-    for (int i = 0; i < K; ++i)
-      if (rows & (1u << i)) ri[r++] = i;
-    for (int j = 0; j < K; ++j)
-      if (cols & (1u << j)) ci[nc++] = j;
+    const Kept<K> kept(rows, cols);
+    const int* ri = kept.ri;
+    const int* ci = kept.ci;
+    const int r = kept.r;
     if (r == 0) return 1;
     T acc[kCap], term[kCap], scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
     int alen = 1;
@@ -446,14 +465,10 @@ FF_HD inline ErrDouble approx_entry(const Entry<A>& e) {
 // 8, nothing deleted) is beyond det_by_minors and returns an undecided value.
 template <int K>
 FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsigned cols) {
-  int ri[K], ci[K], r = 0, nc = 0;
-  for (int i = 0; i < K; ++i)
-    if (rows & (1u << i)) ri[r++] = i;
-  for (int j = 0; j < K; ++j)
-    if (cols & (1u << j)) ci[nc++] = j;
+  const Kept<K> kept(rows, cols);
+  const int r = kept.r;
   ErrDouble t[K * K];
-  for (int i = 0; i < r; ++i)
-    for (int j = 0; j < r; ++j) t[i * r + j] = ap[ri[i] * K + ci[j]];
+  kept.gather(t, [&](int i, int j) { return ap[i * K + j]; });
   switch (r) {
     case 0: return ErrDouble(1.0);
     case 1: return t[0];
@@ -473,11 +488,10 @@ FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsig
 template <class A, int K>
 FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsigned rows,
                              unsigned cols) {
-  int ri[K], ci[K], r = 0, nc = 0;
-  for (int i = 0; i < K; ++i)
-    if (rows & (1u << i)) ri[r++] = i;
-  for (int j = 0; j < K; ++j)
-    if (cols & (1u << j)) ci[nc++] = j;
+  const Kept<K> kept(rows, cols);
+  const int* ri = kept.ri;
+  const int* ci = kept.ci;
+  const int r = kept.r;
   if (r == 0) return 1;
   for (int j = 0; j < r; ++j) {
     bool zero = true;
@@ -628,14 +642,10 @@ FF_HD inline bool doubles_exact_minors(const double (&a)[K][K], bool lifted, Ran
 // det_plain: Laplace over column subsets, sums of products as above).
 template <int K>
 FF_HD inline double double_minor(const double (&a)[K][K], unsigned rows, unsigned cols) {
-  int ri[K], ci[K], r = 0, nc = 0;
-  for (int i = 0; i < K; ++i)
-    if (rows & (1u << i)) ri[r++] = i;
-  for (int j = 0; j < K; ++j)
-    if (cols & (1u << j)) ci[nc++] = j;
+  const Kept<K> kept(rows, cols);
+  const int r = kept.r;
   double t[K * K];
-  for (int i = 0; i < r; ++i)
-    for (int j = 0; j < r; ++j) t[i * r + j] = a[ri[i]][ci[j]];
+  kept.gather(t, [&](int i, int j) { return a[i][j]; });
   switch (r) {
     case 0: return 1.0;
     case 1: return t[0];

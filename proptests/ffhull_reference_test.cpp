@@ -326,7 +326,7 @@ TEST_CASE("ffhull: flip_flop_3d rejects surfaces that are not star-shaped sphere
 
 // ---- measurements (hidden: run with the tag [.bench]) ------------------------------
 
-TEST_CASE("ffhull bench: flip counts on the thesis distributions and time on the ball", "[.bench]") {
+TEST_CASE("ffhull bench: flip counts on the thesis distributions and time on the ball", "[.bench][long]") {
   // §6.5: cube, ball (radius 0.5), box and sphere of thickness 0.01
   for (const std::string f : {"cube", "ball", "box", "sphere"}) {
     const PointSet ps = family(f, 100000, 1);

@@ -295,7 +295,7 @@ TEST_CASE("hull2 reference: Graham-insertion reaches the same hull whichever poi
 }
 
 TEST_CASE("hull2 reference: 10^5 points of square, disk, frame, circle — certified, flip counts",
-          "[hull2][reference][large]") {
+          "[hull2][reference][large][long]") {
   const std::size_t n = 100000, n_twist = 3000;
   std::ostringstream table;
   table << "hull2 reference, 2-1 flips (seed 1; ins = Graham-insertion inserting the furthest point,\n"

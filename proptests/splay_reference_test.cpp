@@ -146,7 +146,7 @@ TEST_CASE("splay: every generator family: brute force (60 points) and certifier 
     }
 }
 
-TEST_CASE("splay: larger inputs: certified canonical, equal to CGAL in general position", "[splay]") {
+TEST_CASE("splay: larger inputs: certified canonical, equal to CGAL in general position", "[splay][long]") {
   struct Case {
     const char* fam;
     std::size_t n;
