@@ -256,9 +256,11 @@ struct Tests {
   }
 };
 
+// record: when given (the witness' `beneath`, size n), every point removed
+// early (line 14) gets the triangle whose tetrahedron with s it was proven in.
 template <class Kernel>
 Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
-               const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
+               const std::array<Index, 4>& tet, ref::Hull3Stats& st, std::array<Index, 3>* record) {
   const std::size_t n = ps.size();
   const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
   const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
@@ -303,7 +305,9 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
         else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
       }
-      return X.inner(face[t], &M.v[3 * t], p, x, key) ? kNone : t;  // line 14: inside the tetrahedron (s, t)
+      if (!X.inner(face[t], &M.v[3 * t], p, x, key)) return t;
+      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      return kNone;  // line 14: inside the tetrahedron (s, t)
     };
     st.discarded_early += regroup(S, B, U, 4, &ps, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
   }
@@ -404,7 +408,11 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      return X.inner(pl[3 + ch], &M.v[3 * t], p, x, key) ? kNone : ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
+      // line 14: in the cone of t (the parent's cone, narrowed by the two
+      // side tests above) and on the inner side of t: inside (s, t)
+      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      return kNone;
     };
     const std::size_t dropped = regroup(S, B, U, 3, nullptr, classify, [&](std::size_t k, int ch) {
       return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
@@ -589,7 +597,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   const std::size_t n = ps.size();
   w.tet = tet;
   w.facets = out;
-  w.facet.assign(n, kNoFacet);
+  w.facet.assign(n, kNoFacet);  // w.beneath: filled by the construction rounds
   std::size_t vertices = 0;
   for (Index p = 0; p < n; ++p) vertices += P.deg[p] > 0;
   w.ball = worth_inner_ball(n - vertices, out.size());
@@ -626,10 +634,15 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
       if (P.alive[t] && !across(t, 0, p) && !across(t, 1, p) && !across(t, 2, p)) return t;
     throw std::logic_error("hull3 (cpu): no facet's cone contains point " + std::to_string(p));
   };
+  // a point inside the ball drops its record (the ball test is the
+  // certifier's cheapest); a point removed early keeps it and walks no more;
+  // the rest — the points flip-flop removed (3-1 flips) — walk
   par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t p = lo; p < hi; ++p)
-      if (P.deg[p] == 0 && !ball.strictly_inside(ps.point(static_cast<Index>(p))))
-        w.facet[p] = rank[locate(static_cast<Index>(p))];
+    for (std::size_t p = lo; p < hi; ++p) {
+      if (P.deg[p] != 0) continue;
+      if (ball.strictly_inside(ps.point(static_cast<Index>(p)))) w.beneath[p] = {kNoFacet, kNoFacet, kNoFacet};
+      else if (!w.has_record(p)) w.facet[p] = rank[locate(static_cast<Index>(p))];
+    }
   });
   clock.mark("witness: walks");
 }
@@ -638,7 +651,8 @@ template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
                                        const double* s_approx, Hull3Witness* witness) {
-  const Mesh M = construct(ps, f, s, sd, tet, st);
+  if (witness) witness->beneath.assign(ps.size(), {kNoFacet, kNoFacet, kNoFacet});
+  const Mesh M = construct(ps, f, s, sd, tet, st, witness ? witness->beneath.data() : nullptr);
   clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
   // the reference's polyhedron structure, filled from the flat arrays (same

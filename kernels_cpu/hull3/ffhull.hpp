@@ -55,10 +55,13 @@
 // The witness (Hull3Options::witness): the certifier's interior point s is
 // the kernel point itself — the witness hands over the initial tetrahedron,
 // and the certifier rounds its centroid by the same rule — so the cones of
-// the final hull from s are the kernel's. After flip-flop every non-vertex
-// is located by a stochastic visibility walk over the final hull's cones
-// (exact SoS orient3d with s, in parallel over the points) started at the
-// facet a cube map of directions from s gives (certify_hull3_surface.hpp's
+// the final hull from s are the kernel's. A point removed early (line 14)
+// keeps the proof of its removal: the triangle (a, b, c) whose tetrahedron
+// with s held it (hull3_witness.hpp: `beneath`), four predicates for the
+// certifier and no walk. After flip-flop every other non-vertex (removed by
+// a 3-1 flip) is located by a stochastic visibility walk over the final
+// hull's cones (exact SoS orient3d with s, in parallel over the points)
+// started at the facet a cube map of directions from s gives (certify_hull3_surface.hpp's
 // DirectionTable with about one cell per facet: 2.1 steps per point on 10^6
 // points of a 1e-4 sphere shell). Starting instead from the triangle each
 // point was last associated with in the construction rounds (where it was
@@ -89,9 +92,9 @@ struct Hull3Options {
   // static filter, construction rounds, flip-flop, canonical output
   StageTimes* times = nullptr;
   // when set, filled with the witness for cpu::certify_hull3_witnessed
-  // (hull3_witness.hpp): s's tetrahedron, the output, and per point a facet
-  // whose cone from s contains it and beneath which it lies (stages "witness:
-  // inner ball", "witness: walks")
+  // (hull3_witness.hpp): s's tetrahedron, the output, and per point the
+  // record of its early removal or a facet whose cone from s contains it and
+  // beneath which it lies (stages "witness: inner ball", "witness: walks")
   Hull3Witness* witness = nullptr;
 };
 
