@@ -22,16 +22,26 @@
 //     reassigned to one of the three new cones and tested for early removal
 //     in parallel, and the points are regrouped by triangle with a stable
 //     counting scatter (per-chunk counts, a scan, a parallel scatter).
-// What is sequential: line 15, flip-flop (Algorithm 6): the reference's FIFO
-// run (ff3::run, reference/hull3/flip_flop_3d.hpp) with the same decisions in
-// the same order (ffhull.cpp: FlipFlop), on the reference's Polyhedron3 filled
-// from the flat arrays, with this kernel's fast kernel point, the static
-// filter and one edge lookup per step. The parallel flip-flop rounds of
-// §6.4.1 (check all edges, claim the induced subcomplexes by atomic minimum,
-// flip) are not done: measured on this 2-core machine (10^6 sphere points,
-// 142k 2-2 flips) vertex-disjoint rounds took 690 rounds and 3.4x the checks
-// of the FIFO run, and parallel pre-checks of a FIFO round went stale (an
-// endpoint touched) for most edges, so neither beat the sequential run here.
+// Line 15, flip-flop (Algorithm 6), two ways with the same output
+// (Hull3Options::flip_flop):
+//   * the reference's FIFO run (ff3::run, reference/hull3/flip_flop_3d.hpp),
+//     sequential, with the same decisions in the same order (ffhull.cpp:
+//     FlipFlop::run), on the reference's Polyhedron3 filled from the flat
+//     arrays, with this kernel's fast kernel point, the static filter and
+//     one edge lookup per step;
+//   * rounds (§6.4.1, the labelling of §3.3.1; FlipFlop::run_rounds): all
+//     candidate edges checked in parallel, each flip claiming the triangles
+//     it replaces by an atomic minimum of its number, the flips that won all
+//     their claims performed in parallel and stitched to their neighbours,
+//     the edges they queue and the losers checked in the next round (10^6
+//     ball: 52 rounds, 1.3x the FIFO run's checks). An earlier attempt that
+//     claimed the quads' four vertices needed a round per incident edge of
+//     the construction's high-degree vertices (3416 rounds on the 10^6 ball,
+//     60x slower); claiming triangles lets the flips around one vertex run
+//     together (their degree and corner updates are atomic).
+// On this 2-core machine the rounds did not beat the FIFO run (measured in
+// the README's 3D-hull section), so `automatic` takes them only with at
+// least 4 threads on at least 4 cores.
 //
 // Why the answer equals the reference byte for byte: under the Simulation of
 // Simplicity the hull is unique (DESIGN.md), and flip-flop returns the SoS
@@ -86,8 +96,14 @@
 
 namespace flipflop::cpu {
 
+// Line 15, flip-flop: the FIFO run, or rounds (ffhull.cpp: run_rounds);
+// automatic: rounds with at least 4 threads on at least 4 cores. The output
+// is the same.
+enum class FlipFlopRun { automatic, fifo, rounds };
+
 struct Hull3Options {
   int threads = 0;  // worker threads; 0: the runtime's default
+  FlipFlopRun flip_flop = FlipFlopRun::automatic;
   // when set, filled with the seconds of each stage: initial tetrahedron and
   // static filter, construction rounds, flip-flop, canonical output
   StageTimes* times = nullptr;
