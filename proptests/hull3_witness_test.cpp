@@ -159,6 +159,32 @@ TEST_CASE("hull3 witness: deterministic sweep over the families, sizes and threa
   REQUIRE(with_records > 0);
 }
 
+// Flip-flop in rounds (ffhull.hpp) leaves the same hull, hence the same
+// witness (records come from the construction, facets from walks over the
+// same final hull), and it is certified.
+TEST_CASE("hull3 witness: flip-flop in rounds gives the FIFO run's output and witness", "[hull3_witness]") {
+  for (const char* fam : {"ball", "sphere", "grid3", "sphere-lattice", "duplicates3", "jitter3"}) {
+    INFO(fam);
+    const PointSet ps = generated(fam, 3000, 4);
+    Witnessed by[2];
+    const cpu::FlipFlopRun runs[2] = {cpu::FlipFlopRun::fifo, cpu::FlipFlopRun::rounds};
+    for (int k = 0; k < 2; ++k) {
+      cpu::Hull3Options o;
+      o.threads = 2;
+      o.flip_flop = runs[k];
+      o.witness = &by[k].w;
+      by[k].tris = cpu::hull3_ffhull(ps, o);
+    }
+    REQUIRE(by[1].tris == by[0].tris);
+    REQUIRE(by[1].w.facet == by[0].w.facet);
+    REQUIRE(by[1].w.beneath == by[0].w.beneath);
+    REQUIRE(by[1].w.tet == by[0].w.tet);
+    const certify::Report rep = witnessed(ps, by[1].tris, by[1].w);
+    INFO(rep.message());
+    REQUIRE(rep.ok);
+  }
+}
+
 TEST_CASE("hull3 witness: a wrong facet for a point is rejected", "[hull3_witness]") {
   const PointSet ps = generated("ball", 2000, 3);
   const Witnessed r = run(ps, 2);
