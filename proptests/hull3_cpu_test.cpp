@@ -1,6 +1,7 @@
 // hull3_cpu_test.cpp — the multithreaded ffHull of kernels_cpu/hull3 against
 // the exact sequential reference (ref::hull3_ffhull): byte-identical canonical
-// text for every input, at 1, 2 and 8 threads, degenerate inputs included,
+// text for every input, flip-flop as the FIFO run and in parallel rounds at
+// 1, 2 and 8 threads, degenerate inputs included,
 // and the same rejection (same message) of input that does not span R^3.
 //
 // Oracles: ref::hull3_ffhull (GMP-free exact reference, itself tested against
@@ -10,12 +11,13 @@
 // Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
 // by prop_scaled): degenerate / random sets of 4..60 points 2000 / 4 = 500;
 // every generator family at 4..3000 points 2000 / 20 = 100; the deterministic
-// sweep below: 13 families x 6 sizes x 2 seeds x 3 thread counts. The
+// sweep below: 13 families x 6 sizes x 2 seeds x 3 runs (kLongRuns). The
 // parallel certifier (cpu::certify_hull3) gives the sequential certifier's
 // verdict and message on correct and corrupted hulls at both levels.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -41,25 +43,47 @@ constexpr int kThreads[] = {1, 2, 8};
 using test::is_error;
 using test::outcome;
 
-std::string cpu_text(const PointSet& ps, int threads, ref::Hull3Stats* st = nullptr) {
+// the runs compared with the reference (ffhull.hpp: flip-flop as the FIFO
+// run or in rounds; the construction rounds at 1, 2 and 8 threads): three
+// each, the [long] tests with the rounds at 8 threads
+struct Run {
+  cpu::FlipFlopRun flip_flop;
+  int threads;
+};
+constexpr Run kRuns[] = {{cpu::FlipFlopRun::fifo, 1}, {cpu::FlipFlopRun::rounds, 2}, {cpu::FlipFlopRun::fifo, 8}};
+constexpr Run kLongRuns[] = {{cpu::FlipFlopRun::fifo, 1}, {cpu::FlipFlopRun::rounds, 2}, {cpu::FlipFlopRun::rounds, 8}};
+
+std::string cpu_text(const PointSet& ps, int threads, ref::Hull3Stats* st = nullptr,
+                     cpu::FlipFlopRun run = cpu::FlipFlopRun::automatic) {
   cpu::Hull3Options o;
   o.threads = threads;
+  o.flip_flop = run;
   return outcome([&] { return cpu::hull3_ffhull(ps, o, st); });
 }
 
 std::string ref_text(const PointSet& ps) { return test::hull3_reference_text(ps); }
 
-// cpu == reference at every thread count; counts consistent (every point is
-// inserted, discarded early or one of the initial four). Returns the text.
+// cpu == reference at every thread count, flip-flop run either way; counts
+// consistent (every point is inserted, discarded early or one of the initial
+// four; every inserted point and initial point that is no hull vertex was
+// removed by one 3-1 flip, either way). Returns the text.
 std::string check_rc(const PointSet& ps) {
   const std::string expect = ref_text(ps);
-  for (int t : kThreads) {
+  std::uint64_t vertices = 0;
+  if (!is_error(expect)) {
+    std::vector<char> vertex(ps.size(), 0);
+    for (const Triangle& tr : cpu::hull3_ffhull(ps))  // the reference's text, as the runs below check
+      for (Index v : tr) vertex[v] = 1;
+    vertices = static_cast<std::uint64_t>(std::count(vertex.begin(), vertex.end(), 1));
+  }
+  for (const Run& run : kRuns) {
     ref::Hull3Stats st;
-    const std::string got = cpu_text(ps, t, &st);
+    const std::string got = cpu_text(ps, run.threads, &st, run.flip_flop);
     RC_ASSERT(got == expect);
     if (!is_error(expect)) {
       RC_ASSERT(st.insertions == st.flips_1_3);
       RC_ASSERT(st.insertions + st.discarded_early + 4 == ps.size());
+      RC_ASSERT(st.flips_3_1 == st.insertions + 4 - vertices);
     }
   }
   return expect;
@@ -92,9 +116,10 @@ TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread co
                               [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
                                 INFO(fam << " n=" << n << " seed=" << seed);
                                 const std::string expect = test::hull3_sweep_expect(ps, rejected);
-                                for (int t : kThreads) {
-                                  INFO("threads " << t);
-                                  REQUIRE(cpu_text(ps, t) == expect);
+                                for (const Run& run : kLongRuns) {
+                                  const bool rounds = run.flip_flop == cpu::FlipFlopRun::rounds;
+                                  INFO("threads " << run.threads << (rounds ? ", rounds" : ", fifo"));
+                                  REQUIRE(cpu_text(ps, run.threads, nullptr, run.flip_flop) == expect);
                                   ++cases;
                                 }
                               });
@@ -110,9 +135,10 @@ TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, cer
     const PointSet ps = gen::generate(fam, 100000, o);
     INFO(fam);
     const auto expect = ref::hull3_ffhull(ps);
-    for (int t : {1, 2, 8}) {
+    for (const Run& run : kLongRuns) {
       cpu::Hull3Options opt;
-      opt.threads = t;
+      opt.threads = run.threads;
+      opt.flip_flop = run.flip_flop;
       REQUIRE(cpu::hull3_ffhull(ps, opt) == expect);
     }
     REQUIRE(certify::hull3(ps, expect, certify::Level::canonical).ok);

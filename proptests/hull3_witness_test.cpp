@@ -15,11 +15,16 @@
 // that facet; certify::hull3 names the same condition), a non-convex edge
 // (convex-edge), a bad interior point (repeated, out of range, coplanar:
 // witness-interior-point), an output that is not the witnessed facet set
-// (witness-output) and a witness of the wrong size (witness-size).
+// (witness-output) and a witness of the wrong size (witness-size); and
+// corrupted early-removal records (witness-tetrahedron): a tetrahedron that
+// does not hold the point, one turned inside out, a corner that has a record
+// itself, a repeated or out-of-range corner, a record for one of s's points.
+// A record dropped, with no facet and no ball, is witness-facet.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -67,7 +72,9 @@ bool check_accepts(const PointSet& ps, const Check& check) {
     const Witnessed r = t == 1 ? first : run(ps, t);
     check(r.tris == plain);
     check(r.w.facets == r.tris);
-    check(r.w.tet == first.w.tet && r.w.facet == first.w.facet && r.w.ball == first.w.ball);
+    check(r.w.tet == first.w.tet && r.w.facet == first.w.facet && r.w.beneath == first.w.beneath &&
+          r.w.ball == first.w.ball);
+    check(r.w.beneath.size() == ps.size());
     for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
       const certify::Report rep = cpu::certify_hull3_witnessed(ps, r.tris, level, r.w, t);
       if (!rep.ok) std::cerr << "rejected: " << rep.message() << "\n";
@@ -90,8 +97,26 @@ certify::Report witnessed(const PointSet& ps, const std::vector<Triangle>& tris,
 // the first non-vertex that the witness gives a facet
 Index witnessed_point(const cpu::Hull3Witness& w) {
   Index p = 0;
-  while (w.facet[p] == cpu::kNoFacet) ++p;
+  while (p < w.facet.size() && w.facet[p] == cpu::kNoFacet) ++p;
+  REQUIRE(p < w.facet.size());
   return p;
+}
+
+// the first facet whose cone from s holds q, by the certifier's own
+// predicate (over all facets); facets.size() if none
+std::uint32_t cone_of(const certify::detail::Hull3Surface& ck, const std::vector<Triangle>& facets, Index q) {
+  std::uint32_t f = 0;
+  while (f < facets.size() && (ck.side(facets[f][0], facets[f][1], q) > 0 ||
+                               ck.side(facets[f][1], facets[f][2], q) > 0 ||
+                               ck.side(facets[f][2], facets[f][0], q) > 0))
+    ++f;
+  return f;
+}
+
+std::size_t records(const cpu::Hull3Witness& w) {
+  std::size_t r = 0;
+  for (std::size_t p = 0; p < w.beneath.size(); ++p) r += w.has_record(p);
+  return r;
 }
 
 PointSet generated(const char* fam, std::size_t n, std::uint64_t seed) {
@@ -116,17 +141,48 @@ TEST_CASE("hull3 witness: every generator family up to 3000 points is certified 
 }
 
 TEST_CASE("hull3 witness: deterministic sweep over the families, sizes and thread counts", "[hull3_witness][long]") {
-  std::size_t cases = 0, balls = 0;
+  std::size_t cases = 0, balls = 0, with_records = 0;
   test::for_each_family_input(3, {4, 30, 3000}, 2,
                               [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
                                 INFO(fam << " n=" << n << " seed=" << seed);
                                 if (check_accepts(ps, [](bool ok) { REQUIRE(ok); })) ++cases;
-                                if (dimension_problem(ps).empty()) balls += run(ps, 2).w.ball;
+                                if (dimension_problem(ps).empty()) {
+                                  const Witnessed r = run(ps, 2);
+                                  balls += r.w.ball;
+                                  with_records += records(r.w) > 0;
+                                }
                               });
   std::cout << "hull3 witness sweep: " << cases << " inputs certified with their witness at 1, 2, 8 threads ("
-            << balls << " with the inner ball)\n";
+            << balls << " with the inner ball, " << with_records << " with early-removal records)\n";
   REQUIRE(cases >= 13 * 3);
   REQUIRE(balls > 0);
+  REQUIRE(with_records > 0);
+}
+
+// Flip-flop in rounds (ffhull.hpp) leaves the same hull, hence the same
+// witness (records come from the construction, facets from walks over the
+// same final hull), and it is certified.
+TEST_CASE("hull3 witness: flip-flop in rounds gives the FIFO run's output and witness", "[hull3_witness]") {
+  for (const char* fam : {"ball", "sphere", "grid3", "sphere-lattice", "duplicates3", "jitter3"}) {
+    INFO(fam);
+    const PointSet ps = generated(fam, 3000, 4);
+    Witnessed by[2];
+    const cpu::FlipFlopRun runs[2] = {cpu::FlipFlopRun::fifo, cpu::FlipFlopRun::rounds};
+    for (int k = 0; k < 2; ++k) {
+      cpu::Hull3Options o;
+      o.threads = 2;
+      o.flip_flop = runs[k];
+      o.witness = &by[k].w;
+      by[k].tris = cpu::hull3_ffhull(ps, o);
+    }
+    REQUIRE(by[1].tris == by[0].tris);
+    REQUIRE(by[1].w.facet == by[0].w.facet);
+    REQUIRE(by[1].w.beneath == by[0].w.beneath);
+    REQUIRE(by[1].w.tet == by[0].w.tet);
+    const certify::Report rep = witnessed(ps, by[1].tris, by[1].w);
+    INFO(rep.message());
+    REQUIRE(rep.ok);
+  }
 }
 
 TEST_CASE("hull3 witness: a wrong facet for a point is rejected", "[hull3_witness]") {
@@ -163,6 +219,164 @@ TEST_CASE("hull3 witness: a wrong facet for a point is rejected", "[hull3_witnes
     b.w.facet[q] = cpu::kNoFacet;
     REQUIRE(witnessed(big, b.tris, b.w).condition == "witness-facet");
   }
+}
+
+// The early-removal records (hull3_witness.hpp: `beneath`), each corruption
+// with its named condition; the point named is the corrupted one (the
+// certifier reports the smallest failing point, every other record is intact).
+TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3_witness]") {
+  const PointSet ps = generated("ball", 2000, 3);
+  const Witnessed r = run(ps, 2);
+  REQUIRE(witnessed(ps, r.tris, r.w).ok);
+  REQUIRE(!r.w.ball);  // every early removal keeps its record
+  REQUIRE(records(r.w) > ps.size() / 2);
+  const auto expect = [&](const cpu::Hull3Witness& w, Index p, const std::string& what,
+                          certify::Level level = certify::Level::canonical) {
+    const certify::Report rep = witnessed(ps, r.tris, w, level);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "witness-tetrahedron");
+    REQUIRE(rep.detail.find("point " + std::to_string(p) + " ") == 0);
+    REQUIRE(rep.detail.find(what) != std::string::npos);
+  };
+  // s, approximately: the centroid of the witness' tetrahedron
+  double sx = 0;
+  for (Index q : r.w.tet) sx += ps.point(q)[0] / 4;
+  const auto x = [&](Index q) { return ps.point(q)[0]; };
+  Index p = 0;
+  while (!r.w.has_record(p)) ++p;
+  const std::array<Index, 3> rec = r.w.beneath[p];
+  cpu::Hull3Witness w = r.w;
+  SECTION("a tetrahedron that does not hold the point") {
+    // a record point right of s gets a record all of whose corners lie left
+    // of s (with a margin, in doubles): the closed tetrahedron with s lies in
+    // x <= sx, the point does not
+    Index right = 0, left = 0;
+    while (right < ps.size() && !(r.w.has_record(right) && x(right) > sx + 0.1)) ++right;
+    const auto left_of_s = [&](Index q) {
+      if (!r.w.has_record(q)) return false;
+      for (Index c : r.w.beneath[q])
+        if (!(x(c) < sx - 0.1)) return false;
+      return true;
+    };
+    while (left < ps.size() && !left_of_s(left)) ++left;
+    REQUIRE(right < ps.size());
+    REQUIRE(left < ps.size());
+    w.beneath[right] = r.w.beneath[left];
+    expect(w, right, "does not hold the point");
+    expect(w, right, "does not hold the point", certify::Level::exact);
+  }
+  SECTION("a tetrahedron turned inside out (s outside the record's plane)") {
+    std::swap(w.beneath[p][1], w.beneath[p][2]);
+    expect(w, p, "does not hold the point");
+  }
+  SECTION("a triangle whose cone from s holds the point, nearer to s than the point") {
+    // only the inner-side test (the fourth predicate) sees this: the point
+    // furthest from s gets the record (a, b, c) of three other points around
+    // its ray at under 0.6 of its distance from s. The closed tetrahedron
+    // (s, a, b, c) lies in the ball about s through its furthest corner (in
+    // doubles, with that margin), the point outside it. The corners are
+    // given facets instead of their records (the facet whose cone holds
+    // each, by the certifier's own predicate, as in the dropped-vertex test
+    // below), so that they are anchored.
+    certify::detail::Hull3Surface ck;
+    REQUIRE(certify::detail::hull3_surface(ps, r.tris, certify::Level::canonical, certify::Speedups{}, &r.w.tet, ck)
+                .ok);
+    double sc[3] = {0, 0, 0};
+    for (Index q : r.w.tet)
+      for (int j = 0; j < 3; ++j) sc[j] += ps.point(q)[j] / 4;
+    const auto dist = [&](Index q) {
+      double d = 0;
+      for (int j = 0; j < 3; ++j) d += (ps.point(q)[j] - sc[j]) * (ps.point(q)[j] - sc[j]);
+      return std::sqrt(d);
+    };
+    Index far = p;
+    for (Index q = 0; q < ps.size(); ++q)
+      if (r.w.has_record(q) && dist(q) > dist(far)) far = q;
+    const auto cosine = [&](Index q) {
+      double c = 0;
+      for (int j = 0; j < 3; ++j) c += (ps.point(q)[j] - sc[j]) * (ps.point(far)[j] - sc[j]);
+      return c / (dist(q) * dist(far));
+    };
+    std::vector<Index> near;  // non-vertices at 0.2 to 0.6 of far's distance, by angle from far's ray
+    for (Index q = 0; q < ps.size(); ++q)
+      if (!ck.is_vertex[q] && dist(q) > 0.2 * dist(far) && dist(q) < 0.6 * dist(far)) near.push_back(q);
+    std::sort(near.begin(), near.end(), [&](Index u, Index v) { return cosine(u) > cosine(v); });
+    near.resize(std::min<std::size_t>(near.size(), 15));
+    const auto holds = [&](const Triangle& t) {  // far in the cone of t from s, s inside
+      return ck.facet_vs_s(t) > 0 && ck.side(t[0], t[1], far) < 0 && ck.side(t[1], t[2], far) < 0 &&
+             ck.side(t[2], t[0], far) < 0;
+    };
+    Triangle rec2{};
+    bool found = false;
+    for (std::size_t i = 0; i < near.size() && !found; ++i)
+      for (std::size_t j = i + 1; j < near.size() && !found; ++j)
+        for (std::size_t k = j + 1; k < near.size() && !found; ++k)
+          for (const Triangle& t : {Triangle{near[i], near[j], near[k]}, Triangle{near[i], near[k], near[j]}})
+            if (!found && holds(t)) rec2 = t, found = true;
+    REQUIRE(found);
+    for (Index c : rec2) {
+      REQUIRE(dist(c) < 0.6 * dist(far));
+      w.beneath[c] = {cpu::kNoFacet, cpu::kNoFacet, cpu::kNoFacet};
+      w.facet[c] = cone_of(ck, r.tris, c);
+    }
+    REQUIRE(witnessed(ps, r.tris, w).ok);  // the corners anchored by facets: still the same hull
+    w.beneath[far] = rec2;
+    expect(w, far, "not strictly on the inner side of the record's plane");
+    expect(w, far, "not strictly on the inner side of the record's plane", certify::Level::exact);
+  }
+  SECTION("a corner that has a record itself") {
+    Index q = 0;
+    while (q == p || !r.w.has_record(q)) ++q;
+    w.beneath[p][0] = q;
+    expect(w, p, "which is itself certified by a record");
+  }
+  SECTION("a repeated corner, the point as a corner, a corner out of range") {
+    w.beneath[p][1] = rec[0];
+    expect(w, p, "repeats a point");
+    w.beneath[p] = {rec[0], rec[1], p};
+    expect(w, p, "repeats a point");
+    w.beneath[p] = {rec[0], static_cast<Index>(ps.size()), rec[2]};
+    expect(w, p, "names point " + std::to_string(ps.size()) + " but the input has");
+  }
+  SECTION("a record dropped: no facet, no record, no ball") {
+    w.beneath[p] = {cpu::kNoFacet, cpu::kNoFacet, cpu::kNoFacet};
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-facet");
+  }
+  SECTION("records for the wrong number of points") {
+    w.beneath.pop_back();
+    REQUIRE(witnessed(ps, r.tris, w).condition == "witness-size");
+  }
+}
+
+// A record may not certify one of s's four points (s is in the hull because
+// they are anchored): on a lattice the initial tetrahedron's points need not
+// be vertices of the SoS hull; such a point gets another point's record.
+TEST_CASE("hull3 witness: a record for one of the interior point's points is rejected", "[hull3_witness]") {
+  bool found = false;
+  for (std::uint64_t seed = 1; seed <= 20 && !found; ++seed) {
+    const PointSet ps = generated("grid3", 2000, seed);
+    const Witnessed r = run(ps, 2);
+    certify::detail::Hull3Surface ck;
+    REQUIRE(certify::detail::hull3_surface(ps, r.tris, certify::Level::canonical, certify::Speedups{}, &r.w.tet, ck)
+                .ok);
+    for (Index t : r.w.tet) {
+      if (ck.is_vertex[t] || found) continue;
+      Index q = 0;  // a record whose corners are not t
+      while (q < ps.size() && !(r.w.has_record(q) && std::count(r.w.beneath[q].begin(), r.w.beneath[q].end(), t) == 0))
+        ++q;
+      if (q == ps.size()) continue;
+      INFO("seed " << seed << ", point " << t);
+      cpu::Hull3Witness w = r.w;
+      w.facet[t] = cpu::kNoFacet;
+      w.beneath[t] = r.w.beneath[q];
+      const certify::Report rep = witnessed(ps, r.tris, w);
+      INFO(rep.message());
+      REQUIRE(rep.condition == "witness-tetrahedron");
+      REQUIRE(rep.detail.find("is for one of the interior point's four points") != std::string::npos);
+      found = true;
+    }
+  }
+  REQUIRE(found);
 }
 
 // The hull of the input without one of its vertices v, indices mapped back:
@@ -206,20 +420,12 @@ TEST_CASE("hull3 witness: a point declared inside that is outside (a hull vertex
     certify::detail::Hull3Surface ck;
     certify::Speedups none;
     REQUIRE(certify::detail::hull3_surface(ps, w.facets, certify::Level::canonical, none, &w.tet, ck).ok);
-    const auto cone_of = [&](Index p) {
-      std::uint32_t f = 0;
-      while (f < w.facets.size() && (ck.side(w.facets[f][0], w.facets[f][1], p) > 0 ||
-                                     ck.side(w.facets[f][1], w.facets[f][2], p) > 0 ||
-                                     ck.side(w.facets[f][2], w.facets[f][0], p) > 0))
-        ++f;
-      return f;
-    };
     // the rest's points inside its inner ball: a facet each (the ball the
     // certifier builds from the mapped facets need not be the same)
     w.ball = false;
     for (Index i = 0; i < ps.size(); ++i)
-      if (i != v && !ck.is_vertex[i] && w.facet[i] == cpu::kNoFacet) w.facet[i] = cone_of(i);
-    const std::uint32_t f = cone_of(v);
+      if (i != v && !ck.is_vertex[i] && w.facet[i] == cpu::kNoFacet) w.facet[i] = cone_of(ck, w.facets, i);
+    const std::uint32_t f = cone_of(ck, w.facets, v);
     REQUIRE(f < w.facets.size());
     w.facet[v] = f;
     // only v is outside: every other point keeps its (mapped) witness

@@ -29,6 +29,9 @@ Report check_witness_frame(const PointSet& ps, const std::vector<Triangle>& tris
   if (w.facet.size() != n)
     return Report::fail("witness-size", "the witness names facets for " + std::to_string(w.facet.size()) +
                                             " points, the input has " + std::to_string(n));
+  if (!w.beneath.empty() && w.beneath.size() != n)
+    return Report::fail("witness-size", "the witness has records for " + std::to_string(w.beneath.size()) +
+                                            " points, the input has " + std::to_string(n));
   if (w.facets.size() != tris.size())
     return Report::fail("witness-output", "the output has " + std::to_string(tris.size()) +
                                               " facets, the witness is about " + std::to_string(w.facets.size()));
@@ -67,13 +70,44 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
     const certify::detail::InnerBall<3> ball =
         w.ball ? certify::detail::InnerBall<3>(ps, tris, sp.for_range) : certify::detail::InnerBall<3>();
     const std::size_t n = ps.size();
+    // witness-tetrahedron: p strictly inside the tetrahedron (s, a, b, c) of
+    // its record under the perturbation (four orient3d; that s is on the
+    // inner side of (a, b, c) follows from them), a, b, c anchored (no record
+    // of their own); why this suffices: certify_hull3.hpp
+    auto check_record = [&](Index p) -> Report {
+      const Triangle t{w.beneath[p][0], w.beneath[p][1], w.beneath[p][2]};
+      const auto fail = [&](const std::string& why) {
+        return Report::fail("witness-tetrahedron", "point " + std::to_string(p) + " is not a vertex and its record " +
+                                                       tri_str(t) + " " + why);
+      };
+      for (int k = 0; k < 3; ++k) {
+        if (t[k] >= n)
+          return fail("names point " + std::to_string(t[k]) + " but the input has " + std::to_string(n) + " points");
+        if (t[k] == p || t[k] == t[(k + 1) % 3]) return fail("repeats a point or names the point itself");
+      }
+      for (int k = 0; k < 3; ++k)
+        if (w.has_record(t[k]))
+          return fail("names point " + std::to_string(t[k]) + ", which is itself certified by a record");
+      for (Index q : w.tet)
+        if (q == p) return fail("is for one of the interior point's four points");
+      for (int k = 0; k < 3; ++k)
+        if (ck.side(t[k], t[(k + 1) % 3], p) >= 0)
+          return fail("does not hold the point: it is not strictly inside the plane through s and edge " +
+                      certify::detail::edge_str(t[k], t[(k + 1) % 3]) + " (under the perturbation)");
+      if (pred::orient3d(ck.f, ck.pt(t[0]), ck.pt(t[1]), ck.pt(t[2]), ck.pt(p)) <= 0)
+        return fail("does not hold the point: it is not strictly on the inner side of the record's plane (under "
+                    "the perturbation)");
+      return Report::pass();
+    };
     // the point's first failing condition, or pass
     auto check = [&](Index p) -> Report {
       const std::uint32_t f = w.facet[p];
+      if (f == kNoFacet && w.has_record(p)) return check_record(p);
       if (f == kNoFacet) {
         if (ball.strictly_inside(ps.point(p))) return Report::pass();
         return Report::fail("witness-facet", "point " + std::to_string(p) +
-                                                 " is not a vertex, the witness names no facet for it, and " +
+                                                 " is not a vertex, the witness names no facet and no record " +
+                                                 "for it, and " +
                                                  (w.ball ? "it is not strictly inside the verified inner ball"
                                                          : "the witness asks for no inner ball"));
       }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "kernels_cpu/parallel.hpp"
@@ -256,9 +258,11 @@ struct Tests {
   }
 };
 
+// record: when given (the witness' `beneath`, size n), every point removed
+// early (line 14) gets the triangle whose tetrahedron with s it was proven in.
 template <class Kernel>
 Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
-               const std::array<Index, 4>& tet, ref::Hull3Stats& st) {
+               const std::array<Index, 4>& tet, ref::Hull3Stats& st, std::array<Index, 3>* record) {
   const std::size_t n = ps.size();
   const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
   const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
@@ -303,7 +307,9 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
         else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
       }
-      return X.inner(face[t], &M.v[3 * t], p, x, key) ? kNone : t;  // line 14: inside the tetrahedron (s, t)
+      if (!X.inner(face[t], &M.v[3 * t], p, x, key)) return t;
+      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      return kNone;  // line 14: inside the tetrahedron (s, t)
     };
     st.discarded_early += regroup(S, B, U, 4, &ps, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
   }
@@ -404,7 +410,11 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      return X.inner(pl[3 + ch], &M.v[3 * t], p, x, key) ? kNone : ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
+      // line 14: in the cone of t (the parent's cone, narrowed by the two
+      // side tests above) and on the inner side of t: inside (s, t)
+      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      return kNone;
     };
     const std::size_t dropped = regroup(S, B, U, 3, nullptr, classify, [&](std::size_t k, int ch) {
       return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
@@ -429,11 +439,8 @@ class FlipFlop {
 
   void run() {
     using Action = ref::ff3::Action;
-    std::deque<Queued> Q;  // line 2: every edge, in the order of ref::poly::edges
-    for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
-      if (P_.alive[t])
-        for (int k = 0; k < 3; ++k)
-          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) Q.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
+    const std::vector<Queued> E = all_edges();
+    std::deque<Queued> Q(E.begin(), E.end());  // line 2
     while (!Q.empty()) {  // line 3
       const auto [u, w, hint] = Q.front();  // line 4
       Q.pop_front();
@@ -484,6 +491,153 @@ class FlipFlop {
     if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
   }
 
+  // Flip-flop in rounds (§6.4.1, with the labelling of §3.3.1). A round:
+  //   check   every candidate edge is located and decided (ff3::decide)
+  //           against the state before the round, in parallel, read-only; a
+  //           flip claims the triangles it replaces (2-2: the two of its
+  //           edge; 3-1: the three around the vertex) by an atomic minimum of
+  //           its candidate number per slot, a label claims its vertex;
+  //   flip    the flips that hold all their claims rewrite their own slots in
+  //           parallel (degrees and corners of shared vertices atomically);
+  //   stitch  each winner points the outer edges of its new triangles at the
+  //           neighbours: a neighbour that flipped too holds the edge in one
+  //           of its own slots; a neighbour that did not gets its one entry
+  //           across that edge rewritten (nobody else borders it there);
+  //   queue   the edges the FIFO run would queue after each action (for a
+  //           label: the edges around its vertex now) and every action that
+  //           lost a claim are the next round's candidates.
+  // Why the result is flip-flop's: the flips of a round replace disjoint sets
+  // of triangles, and a flip's decision reads only its own triangles (a 3-1
+  // flip: all three around its vertex, so that vertex's degree is fixed too),
+  // the points, the labels before the round, and degrees only to choose a
+  // 3-1 flip (when the decision is a 2-2 flip, the endpoint is in no cone and
+  // its degree did not matter). So the round is the sequential run of its
+  // flips in any order followed by its labels (a label is a fact, Lemma 6.5,
+  // true in any state), each decision valid when performed; the stitch
+  // leaves the structure that run leaves. Every round with an action
+  // performs one (the smallest candidate number holds its claims), the
+  // result is the SoS hull whatever the order (Thm 6.12: unique), hence
+  // byte for byte the reference's, and the claims are minima, so the run
+  // does not depend on the thread count.
+  void run_rounds() {
+    using Action = ref::ff3::Action;
+    std::vector<Queued> cand = all_edges();  // line 2
+    std::vector<std::atomic<std::uint32_t>> slot_claim(P_.tri.size()), vertex_claim(P_.n);
+    par_for(slot_claim.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t t = lo; t < hi; ++t) slot_claim[t].store(kNone, std::memory_order_relaxed);
+    });
+    par_for(P_.n, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t v = lo; v < hi; ++v) vertex_claim[v].store(kNone, std::memory_order_relaxed);
+    });
+    std::vector<Checked> ck;
+    std::vector<std::uint8_t> won;
+    std::vector<std::size_t> off;
+    std::vector<Queued> next;
+    const auto is_flip = [](const ref::ff3::Decision& d) {
+      return d.action != Action::none && d.action != Action::label;
+    };
+    while (!cand.empty()) {  // line 3, a round at a time
+      const std::size_t K = cand.size();
+      ck.resize(K);
+      par_for(K, 256, [&](std::size_t lo, std::size_t hi) {  // check (lines 4-5)
+        for (std::size_t i = lo; i < hi; ++i) {
+          Checked& c = ck[i];
+          c.d = {};
+          c.ns = 0;
+          c.slot[0] = c.slot[1] = c.slot[2] = kNone;
+          c.e = locate(cand[i].u, cand[i].w, cand[i].hint);
+          if (!c.e.valid()) continue;  // flipped away since it was queued
+          c.f = P_.twin(c.e);
+          c.q = {cand[i].u, cand[i].w, P_.apex(c.e), P_.apex(c.f)};
+          c.d = decide(c.q);
+          const auto id = static_cast<std::uint32_t>(i);
+          if (c.d.action == Action::label) {
+            claim_min(vertex_claim[c.d.inner], id);
+          } else if (c.d.action == Action::flip22_v || c.d.action == Action::flip22_d) {
+            c.slot[0] = c.e.t, c.slot[1] = c.f.t, c.ns = 2;
+          } else if (c.d.action != Action::none) {  // the three triangles around the vertex, from its corner
+            const Index a = c.d.inner;
+            c.slot[0] = P_.corner[a];
+            for (int j = 1; j < 3; ++j) c.slot[j] = P_.adj[c.slot[j - 1]][(pos(c.slot[j - 1], a) + 2) % 3];
+            c.ns = 3;
+          }
+          for (int j = 0; j < c.ns; ++j) claim_min(slot_claim[c.slot[j]], id);
+        }
+      });
+      won.assign(K, 0);
+      par_for(K, 1024, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          const Checked& c = ck[i];
+          bool all = c.d.action != Action::none;
+          if (c.d.action == Action::label) all = vertex_claim[c.d.inner].load(std::memory_order_relaxed) == i;
+          for (int j = 0; j < c.ns; ++j) all = all && slot_claim[c.slot[j]].load(std::memory_order_relaxed) == i;
+          won[i] = all;
+        }
+      });
+      par_for(K, 256, [&](std::size_t lo, std::size_t hi) {  // flip (lines 8-9, 12-15), own slots only
+        for (std::size_t i = lo; i < hi; ++i)
+          if (won[i]) apply(ck[i]);
+      });
+      par_for(K, 256, [&](std::size_t lo, std::size_t hi) {  // stitch
+        for (std::size_t i = lo; i < hi; ++i)
+          if (won[i] && is_flip(ck[i].d)) stitch(ck[i], static_cast<std::uint32_t>(i), slot_claim, won, ck);
+      });
+      // queue: where each candidate's successors go (a winner's queued
+      // edges, or the loser itself), counted in order
+      off.resize(K + 1);
+      off[0] = 0;
+      for (std::size_t i = 0; i < K; ++i) {
+        const Checked& c = ck[i];
+        std::size_t m = 0;
+        if (c.d.action != Action::none) {
+          if (!won[i]) m = 1;
+          else if (c.d.action == Action::label) m = P_.deg[c.d.inner], ++stats_.labelled_non_extreme;
+          else if (c.ns == 3) m = 3, ++stats_.flips_3_1;
+          else m = 4, ++stats_.flips_2_2;
+        }
+        off[i + 1] = off[i] + m;
+      }
+      next.resize(off[K]);
+      par_for(K, 256, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t i = lo; i < hi; ++i) {
+          const Checked& c = ck[i];
+          if (c.d.action == Action::none) continue;
+          Queued* out = &next[off[i]];
+          if (!won[i]) {
+            *out = cand[i];
+          } else if (c.d.action == Action::label) {  // lines 16-19: the edges around the labelled vertex
+            const Index a = c.d.inner;
+            std::uint32_t t = P_.corner[a];
+            for (std::uint32_t j = 0; j < P_.deg[a]; ++j) {
+              const int k = pos(t, a);
+              out[j] = {a, P_.tri[t][(k + 1) % 3], t};
+              t = P_.adj[t][(k + 2) % 3];
+            }
+          } else if (c.ns == 3) {  // the link of the removed vertex
+            const std::uint32_t t = c.slot[0];
+            const Triangle& L = P_.tri[t];
+            out[0] = {L[0], L[1], t}, out[1] = {L[1], L[2], t}, out[2] = {L[2], L[0], t};
+          } else {  // the four outer edges of the flipped pair
+            out[0] = {c.q.a, c.q.c, c.e.t}, out[1] = {c.q.b, c.q.c, c.e.t};
+            out[2] = {c.q.a, c.q.d, c.e.t}, out[3] = {c.q.b, c.q.d, c.e.t};
+          }
+        }
+      });
+      par_for(K, 1024, [&](std::size_t lo, std::size_t hi) {  // release the claims
+        for (std::size_t i = lo; i < hi; ++i) {
+          const Checked& c = ck[i];
+          if (c.d.action == Action::label) vertex_claim[c.d.inner].store(kNone, std::memory_order_relaxed);
+          for (int j = 0; j < c.ns; ++j) slot_claim[c.slot[j]].store(kNone, std::memory_order_relaxed);
+        }
+      });
+      for (std::size_t i = 0; i < K; ++i)  // the slots 3-1 flips released
+        if (won[i] && ck[i].ns == 3) P_.free_slots.push_back(ck[i].slot[1]), P_.free_slots.push_back(ck[i].slot[2]);
+      cand.swap(next);
+    }
+    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left.
+    if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
+  }
+
  private:
   struct Quad {
     Index a, b, c, d;  // edge a -> b, link c (apex of a b c) and d (apex of b a d)
@@ -492,6 +646,104 @@ class FlipFlop {
     Index u, w;
     std::uint32_t hint;  // a slot near the edge when it was queued
   };
+  // every edge, in the order of ref::poly::edges, with its slot as the hint
+  std::vector<Queued> all_edges() const {
+    std::vector<Queued> E;
+    for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
+      if (P_.alive[t])
+        for (int k = 0; k < 3; ++k)
+          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) E.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
+    return E;
+  }
+  struct Checked {  // a candidate of a round: its edge (e, twin f), quad, decision, claimed slots
+    ref::poly::DEdge e, f;
+    Quad q{};
+    ref::ff3::Decision d;
+    std::uint32_t slot[3] = {kNone, kNone, kNone};
+    int ns = 0;
+  };
+  static void claim_min(std::atomic<std::uint32_t>& c, std::uint32_t i) {
+    std::uint32_t cur = c.load(std::memory_order_relaxed);
+    while (i < cur && !c.compare_exchange_weak(cur, i, std::memory_order_relaxed)) {
+    }
+  }
+  int pos(std::uint32_t t, Index v) const {
+    int k = 0;
+    while (P_.tri[t][k] != v) ++k;
+    return k;
+  }
+  // degrees and corners of vertices that other winners of the round share
+  void add_deg(Index v, int delta) {
+    __atomic_fetch_add(&P_.deg[v], static_cast<std::uint32_t>(delta), __ATOMIC_RELAXED);
+  }
+  void set_corner(Index v, std::uint32_t t) { __atomic_store_n(&P_.corner[v], t, __ATOMIC_RELAXED); }
+  // A winner's action on its own slots (ref::poly::flip22 / flip31 without
+  // touching a neighbour: stitch does that), or its label.
+  void apply(const Checked& c) {
+    using Action = ref::ff3::Action;
+    if (c.d.action == Action::label) {
+      __atomic_store_n(&st_.labelled[c.d.inner], std::uint8_t{1}, __ATOMIC_RELAXED);
+    } else if (c.ns == 2) {  // (a, b, c), (b, a, d) -> (a, d, c), (d, b, c) in the slots of e and its twin
+      const std::uint32_t t1 = c.e.t, t2 = c.f.t;
+      const Index a = c.q.a, b = c.q.b, cc = c.q.c, d = c.q.d;
+      const std::uint32_t n_bc = P_.adj[t1][(c.e.k + 1) % 3], n_ca = P_.adj[t1][(c.e.k + 2) % 3];
+      const std::uint32_t n_ad = P_.adj[t2][(c.f.k + 1) % 3], n_db = P_.adj[t2][(c.f.k + 2) % 3];
+      P_.tri[t1] = {a, d, cc};
+      P_.adj[t1] = {n_ad, t2, n_ca};
+      P_.tri[t2] = {d, b, cc};
+      P_.adj[t2] = {n_db, n_bc, t1};
+      set_corner(a, t1), set_corner(cc, t1), set_corner(d, t1), set_corner(b, t2);
+      add_deg(a, -1), add_deg(b, -1), add_deg(cc, 1), add_deg(d, 1);
+    } else {  // slots (a, L0, L1), (a, L1, L2), (a, L2, L0) -> (L0, L1, L2) in the first
+      const Index a = c.d.inner;
+      Index L[3];
+      std::uint32_t outer[3];
+      for (int i = 0; i < 3; ++i) {
+        const int k = pos(c.slot[i], a);
+        L[i] = P_.tri[c.slot[i]][(k + 1) % 3];
+        outer[i] = P_.adj[c.slot[i]][(k + 1) % 3];
+      }
+      const std::uint32_t t = c.slot[0];
+      P_.tri[t] = {L[0], L[1], L[2]};
+      P_.adj[t] = {outer[0], outer[1], outer[2]};
+      P_.alive[c.slot[1]] = 0, P_.alive[c.slot[2]] = 0;
+      for (Index v : L) set_corner(v, t), add_deg(v, -1);
+      P_.corner[a] = kNone;
+      P_.deg[a] = 0;
+      st_.removed[a] = 1;
+    }
+  }
+  // The outer edges of winner i's new triangles: adj entries pointing at the
+  // triangle across, and the entry back from a neighbour that did not flip.
+  void stitch(const Checked& c, std::uint32_t i, const std::vector<std::atomic<std::uint32_t>>& claim,
+              const std::vector<std::uint8_t>& won, const std::vector<Checked>& ck) {
+    const auto own = [&](std::uint32_t t) { return t == c.slot[0] || t == c.slot[1] || t == c.slot[2]; };
+    for (int j = 0; j < c.ns; ++j) {
+      const std::uint32_t t = c.slot[j];
+      if (!P_.alive[t]) continue;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t nb = P_.adj[t][k];
+        if (own(nb)) continue;
+        const Index x = P_.tri[t][k], y = P_.tri[t][(k + 1) % 3];  // edge x -> y; the neighbour has y -> x
+        const std::uint32_t w = claim[nb].load(std::memory_order_relaxed);
+        if (w != kNone && w != i && won[w]) {  // the neighbour flipped: the edge is in one of its slots
+          const Checked& o = ck[w];
+          std::uint32_t to = kNone;
+          for (int m = 0; m < o.ns && to == kNone; ++m)
+            if (P_.alive[o.slot[m]])
+              for (int r = 0; r < 3; ++r)
+                if (P_.tri[o.slot[m]][r] == y && P_.tri[o.slot[m]][(r + 1) % 3] == x) to = o.slot[m];
+          if (to == kNone)
+            throw std::logic_error("hull3 (cpu): a flip-flop round lost the edge " + std::to_string(x) + " " +
+                                   std::to_string(y));
+          P_.adj[t][k] = to;
+        } else {
+          for (int r = 0; r < 3; ++r)
+            if (P_.tri[nb][r] == y && P_.tri[nb][(r + 1) % 3] == x) P_.adj[nb][r] = t;
+        }
+      }
+    }
+  }
   // the directed edge u -> w in slot t, or invalid
   ref::poly::DEdge in_slot(std::uint32_t t, Index u, Index w) const {
     if (t >= P_.tri.size() || !P_.alive[t]) return {};
@@ -589,7 +841,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   const std::size_t n = ps.size();
   w.tet = tet;
   w.facets = out;
-  w.facet.assign(n, kNoFacet);
+  w.facet.assign(n, kNoFacet);  // w.beneath: filled by the construction rounds
   std::size_t vertices = 0;
   for (Index p = 0; p < n; ++p) vertices += P.deg[p] > 0;
   w.ball = worth_inner_ball(n - vertices, out.size());
@@ -626,19 +878,38 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
       if (P.alive[t] && !across(t, 0, p) && !across(t, 1, p) && !across(t, 2, p)) return t;
     throw std::logic_error("hull3 (cpu): no facet's cone contains point " + std::to_string(p));
   };
+  // a point inside the ball drops its record (the ball test is the
+  // certifier's cheapest); a point removed early keeps it and walks no more;
+  // the rest — the points flip-flop removed (3-1 flips) — walk
   par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t p = lo; p < hi; ++p)
-      if (P.deg[p] == 0 && !ball.strictly_inside(ps.point(static_cast<Index>(p))))
-        w.facet[p] = rank[locate(static_cast<Index>(p))];
+    for (std::size_t p = lo; p < hi; ++p) {
+      if (P.deg[p] != 0) continue;
+      if (ball.strictly_inside(ps.point(static_cast<Index>(p)))) w.beneath[p] = {kNoFacet, kNoFacet, kNoFacet};
+      else if (!w.has_record(p)) w.facet[p] = rank[locate(static_cast<Index>(p))];
+    }
   });
   clock.mark("witness: walks");
+}
+
+// Flip-flop in rounds or as the FIFO run (Hull3Options::flip_flop): the
+// rounds check about 1.3x the edges the FIFO run pops (losers and repeated
+// candidates are checked again; 10^6 ball: 256k against 196k checks, 52
+// rounds) and add four parallel passes a round, so on this 2-core machine
+// they did not beat the FIFO run (README, 3D hull), and with more threads
+// than cores they wait at every pass; automatic takes them only with at
+// least 4 threads on at least 4 cores.
+bool use_rounds(FlipFlopRun run) {
+  if (run == FlipFlopRun::automatic)
+    return tbb::this_task_arena::max_concurrency() >= 4 && std::thread::hardware_concurrency() >= 4;
+  return run == FlipFlopRun::rounds;
 }
 
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
-                                       const double* s_approx, Hull3Witness* witness) {
-  const Mesh M = construct(ps, f, s, sd, tet, st);
+                                       const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
+  if (witness) witness->beneath.assign(ps.size(), {kNoFacet, kNoFacet, kNoFacet});
+  const Mesh M = construct(ps, f, s, sd, tet, st, witness ? witness->beneath.data() : nullptr);
   clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
   // the reference's polyhedron structure, filled from the flat arrays (same
@@ -659,9 +930,13 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
     }
   if constexpr (FF_CHECKED)
     FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
-  // line 15: flip-flop (Algorithm 6), sequential
+  // line 15: flip-flop (Algorithm 6)
   ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
-  FlipFlop(state, f, st).run();
+  {
+    FlipFlop ff(state, f, st);
+    if (use_rounds(run)) ff.run_rounds();
+    else ff.run();
+  }
   clock.mark("flip-flop");
   std::vector<std::uint32_t> rank;
   std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
@@ -672,7 +947,8 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   return out;
 }
 
-std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock, Hull3Witness* witness) {
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock, Hull3Witness* witness,
+                              FlipFlopRun run) {
   if (ps.dim != 3 || ps.size() < 4 || ps.size() >= kNone / 2) {
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
     throw std::invalid_argument("hull3 (cpu): too many points for 32-bit indices");
@@ -685,10 +961,10 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
       parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
                              inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
   clock.mark("initial tetrahedron and static filter");
-  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness);
+  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock, s.data(), witness);
+  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock, s.data(), witness, run);
 }
 
 }  // namespace
@@ -698,7 +974,7 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, const Hull3Options& opt, 
   std::vector<Triangle> out;
   if (opt.threads < 0) throw std::invalid_argument("hull3 (cpu): the number of threads must be positive");
   StageClock clock(opt.times);
-  with_threads(opt.threads, [&] { out = compute(ps, st, clock, opt.witness); });
+  with_threads(opt.threads, [&] { out = compute(ps, st, clock, opt.witness, opt.flip_flop); });
   if (stats) *stats = st;
   return out;
 }

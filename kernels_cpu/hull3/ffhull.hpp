@@ -22,16 +22,26 @@
 //     reassigned to one of the three new cones and tested for early removal
 //     in parallel, and the points are regrouped by triangle with a stable
 //     counting scatter (per-chunk counts, a scan, a parallel scatter).
-// What is sequential: line 15, flip-flop (Algorithm 6): the reference's FIFO
-// run (ff3::run, reference/hull3/flip_flop_3d.hpp) with the same decisions in
-// the same order (ffhull.cpp: FlipFlop), on the reference's Polyhedron3 filled
-// from the flat arrays, with this kernel's fast kernel point, the static
-// filter and one edge lookup per step. The parallel flip-flop rounds of
-// §6.4.1 (check all edges, claim the induced subcomplexes by atomic minimum,
-// flip) are not done: measured on this 2-core machine (10^6 sphere points,
-// 142k 2-2 flips) vertex-disjoint rounds took 690 rounds and 3.4x the checks
-// of the FIFO run, and parallel pre-checks of a FIFO round went stale (an
-// endpoint touched) for most edges, so neither beat the sequential run here.
+// Line 15, flip-flop (Algorithm 6), two ways with the same output
+// (Hull3Options::flip_flop):
+//   * the reference's FIFO run (ff3::run, reference/hull3/flip_flop_3d.hpp),
+//     sequential, with the same decisions in the same order (ffhull.cpp:
+//     FlipFlop::run), on the reference's Polyhedron3 filled from the flat
+//     arrays, with this kernel's fast kernel point, the static filter and
+//     one edge lookup per step;
+//   * rounds (§6.4.1, the labelling of §3.3.1; FlipFlop::run_rounds): all
+//     candidate edges checked in parallel, each flip claiming the triangles
+//     it replaces by an atomic minimum of its number, the flips that won all
+//     their claims performed in parallel and stitched to their neighbours,
+//     the edges they queue and the losers checked in the next round (10^6
+//     ball: 52 rounds, 1.3x the FIFO run's checks). An earlier attempt that
+//     claimed the quads' four vertices needed a round per incident edge of
+//     the construction's high-degree vertices (3416 rounds on the 10^6 ball,
+//     60x slower); claiming triangles lets the flips around one vertex run
+//     together (their degree and corner updates are atomic).
+// On this 2-core machine the rounds did not beat the FIFO run (measured in
+// the README's 3D-hull section), so `automatic` takes them only with at
+// least 4 threads on at least 4 cores.
 //
 // Why the answer equals the reference byte for byte: under the Simulation of
 // Simplicity the hull is unique (DESIGN.md), and flip-flop returns the SoS
@@ -55,10 +65,13 @@
 // The witness (Hull3Options::witness): the certifier's interior point s is
 // the kernel point itself — the witness hands over the initial tetrahedron,
 // and the certifier rounds its centroid by the same rule — so the cones of
-// the final hull from s are the kernel's. After flip-flop every non-vertex
-// is located by a stochastic visibility walk over the final hull's cones
-// (exact SoS orient3d with s, in parallel over the points) started at the
-// facet a cube map of directions from s gives (certify_hull3_surface.hpp's
+// the final hull from s are the kernel's. A point removed early (line 14)
+// keeps the proof of its removal: the triangle (a, b, c) whose tetrahedron
+// with s held it (hull3_witness.hpp: `beneath`), four predicates for the
+// certifier and no walk. After flip-flop every other non-vertex (removed by
+// a 3-1 flip) is located by a stochastic visibility walk over the final
+// hull's cones (exact SoS orient3d with s, in parallel over the points)
+// started at the facet a cube map of directions from s gives (certify_hull3_surface.hpp's
 // DirectionTable with about one cell per facet: 2.1 steps per point on 10^6
 // points of a 1e-4 sphere shell). Starting instead from the triangle each
 // point was last associated with in the construction rounds (where it was
@@ -83,15 +96,21 @@
 
 namespace flipflop::cpu {
 
+// Line 15, flip-flop: the FIFO run, or rounds (ffhull.cpp: run_rounds);
+// automatic: rounds with at least 4 threads on at least 4 cores. The output
+// is the same.
+enum class FlipFlopRun { automatic, fifo, rounds };
+
 struct Hull3Options {
   int threads = 0;  // worker threads; 0: the runtime's default
+  FlipFlopRun flip_flop = FlipFlopRun::automatic;
   // when set, filled with the seconds of each stage: initial tetrahedron and
   // static filter, construction rounds, flip-flop, canonical output
   StageTimes* times = nullptr;
   // when set, filled with the witness for cpu::certify_hull3_witnessed
-  // (hull3_witness.hpp): s's tetrahedron, the output, and per point a facet
-  // whose cone from s contains it and beneath which it lies (stages "witness:
-  // inner ball", "witness: walks")
+  // (hull3_witness.hpp): s's tetrahedron, the output, and per point the
+  // record of its early removal or a facet whose cone from s contains it and
+  // beneath which it lies (stages "witness: inner ball", "witness: walks")
   Hull3Witness* witness = nullptr;
 };
 

@@ -2,6 +2,13 @@
 // witness-checked certifier (certify_hull3.hpp, cpu::certify_hull3_witnessed)
 // so that every input point is checked with a constant number of exact
 // predicates instead of being located by a walk.
+//
+// A non-vertex carries one of three certificates (the certifier tries them in
+// this order): a final facet (`facet`), a tetrahedron (s, a, b, c) that holds
+// it (`beneath`: the record of its early removal in the construction rounds,
+// thesis §6.4 Algorithm 7 line 14), or none when it lies strictly inside the
+// inner ball. Only the points with neither a record nor the ball are located
+// by a walk over the final hull's cones (ffhull.cpp: make_witness).
 #pragma once
 
 #include <array>
@@ -26,8 +33,19 @@ struct Hull3Witness {
   std::vector<Triangle> facets;
   // Per input point: the index in `facets` of a facet whose cone from s
   // contains the point and beneath which it lies; kNoFacet for the hull's
-  // vertices and, when `ball`, for points strictly inside the inner ball.
+  // vertices, for points with a record in `beneath` and, when `ball`, for
+  // points strictly inside the inner ball.
   std::vector<std::uint32_t> facet;
+  // Per input point (or empty: no records): the early-removal record, three
+  // input indices (a, b, c) of a triangle of the surface under construction
+  // (counter-clockwise seen from outside, so s is on its inner side) such that
+  // the point lies strictly inside the tetrahedron (s, a, b, c) under the
+  // perturbation: in the triangle's cone from s and on the inner side of its
+  // plane, the two facts the kernel's removal test established. a, b, c are
+  // vertices of that surface, hence never removed early themselves (they carry
+  // no record). {kNoFacet, kNoFacet, kNoFacet} where there is no record.
+  std::vector<std::array<Index, 3>> beneath;
+  bool has_record(std::size_t p) const { return !beneath.empty() && beneath[p][0] != kNoFacet; }
   // The certifier builds the inner ball of the facets (reference/certify/
   // inner_ball.hpp, verified exactly) and accepts a non-vertex without a
   // facet when it lies strictly inside that ball.
