@@ -38,6 +38,7 @@
 #include "kernels_cpu/hull2/throw_away.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/family_sweep.hpp"
+#include "proptests/support/large_n.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -151,21 +152,14 @@ TEST_CASE("hull2 cpu: deterministic sweep over the families, sizes, thread count
   REQUIRE(cases >= 11 * 6 * 2 * 3 * 2 * 2);
 }
 
-// make tsan runs the large-input case below for its parallel paths (kChunk
-// pieces, the throw-away's parallel scan); 40000 points still make five pieces
-// at a fifth of ThreadSanitizer's cost (151 s of the stage in CI at 200000)
-#ifdef FLIPFLOP_TEST_UNDER_TSAN
-constexpr std::size_t kLargeN = 40000;
-#else
-constexpr std::size_t kLargeN = 200000;
-#endif
-
 TEST_CASE("hull2 cpu: large inputs of every family equal the reference, certified", "[hull2_cpu][long]") {
   for (const std::string& fam : test::families(2)) {
     gen::Options g;
     g.seed = 11;
     g.thickness = 0.01;
-    const PointSet ps = gen::generate(fam, kLargeN, g);
+    // under TSan 40000 points: five pieces, the throw-away's parallel scan (151 s
+    // of make tsan in CI at 200000)
+    const PointSet ps = gen::generate(fam, test::large_n(200000, 40000), g);
     INFO(fam);
     const std::string expect = ref_text(ps);
     if (is_error(expect)) {

@@ -28,6 +28,7 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/hull3_expect.hpp"
+#include "proptests/support/large_n.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -112,7 +113,8 @@ TEST_CASE("hull3 cpu: every generator family up to 3000 points equals the refere
 
 TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread counts", "[hull3_cpu][long]") {
   std::size_t cases = 0, rejected = 0;
-  test::for_each_family_input(3, {4, 7, 30, 200, 2000, 20000}, 2,
+  // up to 10000 points: two kChunk pieces; the large case below goes further
+  test::for_each_family_input(3, {4, 7, 30, 200, 2000, 10000}, 2,
                               [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
                                 INFO(fam << " n=" << n << " seed=" << seed);
                                 const std::string expect = test::hull3_sweep_expect(ps, rejected);
@@ -132,7 +134,8 @@ TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, cer
   for (const char* fam : {"ball", "sphere", "box", "cball", "sphere-lattice", "grid3"}) {
     gen::Options o;
     o.seed = 11;
-    const PointSet ps = gen::generate(fam, 100000, o);
+    // under TSan 25000 points (73 s there at 100000, rounds at 2 and 8 threads)
+    const PointSet ps = gen::generate(fam, test::large_n(100000, 25000), o);
     INFO(fam);
     const auto expect = ref::hull3_ffhull(ps);
     for (const Run& run : kLongRuns) {
@@ -172,7 +175,7 @@ TEST_CASE("hull3 cpu: the parallel certifier gives the sequential verdict and me
     for (std::uint64_t seed : {1, 2}) {
       gen::Options o;
       o.seed = seed;
-      const PointSet ps = gen::generate(fam, 20000, o);
+      const PointSet ps = gen::generate(fam, test::large_n(20000, 10000), o);  // TSan: 39 s at 20000
       const std::vector<Triangle> hull = ref::hull3_ffhull(ps);
       std::vector<std::vector<Triangle>> outputs = {hull};
       auto flipped = hull;
