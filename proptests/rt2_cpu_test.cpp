@@ -13,8 +13,8 @@
 // by prop_scaled): degenerate sets of 3..60 points 2000 / 4 = 500 each
 // weighted and unweighted; every generator family at 3..2000 points
 // 2000 / 20 = 100 each; the deterministic sweep: 2D families x 6 sizes x 2
-// seeds x 2 weightings x 3 thread counts x 4 modes (sequential at two BRIO
-// settings, the parallel stage 2b with territories and with batches).
+// seeds x 2 weightings x (3 thread counts x 2 BRIO settings, sequential,
+// + the parallel stage 2b with territories and with batches at 2 threads).
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -75,17 +75,18 @@ std::string cpu_text(const PointSet& ps, int threads, const Mode& m = kModes[1],
   return problem_of(outcome([&] { return cpu::rt2(ps, options(threads, m), st); }));
 }
 
-// cpu == reference at every thread count in every mode (parallel: false,
-// the sequential ones only); the counts are consistent: every point is one
+// cpu == reference at every thread count in every mode (parallel: 0, the
+// sequential ones only; t > 0: the parallel ones at t threads only); the
+// counts are consistent: every point is one
 // of the initial three, inserted (a 1-3 flip or a cavity replaced) or
 // discarded when located, and the vertices are the inserted points less the
 // removed ones (3-1 flips).
 template <class Assert>
-std::string check(const PointSet& ps, const Assert& require, bool parallel = true) {
+std::string check(const PointSet& ps, const Assert& require, int parallel = -1) {
   const std::string expect = ref_text(ps);
   for (int t : kThreads)
     for (const Mode& m : kModes) {
-      if (!parallel && m.how != Insertion::sequential) continue;
+      if (m.how != Insertion::sequential && parallel >= 0 && parallel != t) continue;
       ref::Rt2Stats st;
       require(cpu_text(ps, t, m, &st) == expect, t, m);
       if (!is_error(expect)) {
@@ -96,7 +97,7 @@ std::string check(const PointSet& ps, const Assert& require, bool parallel = tru
   return expect;
 }
 
-std::string check_rc(const PointSet& ps, bool parallel = true) {
+std::string check_rc(const PointSet& ps, int parallel = -1) {
   return check(ps, [](bool ok, int, const Mode&) { RC_ASSERT(ok); }, parallel);
 }
 
@@ -121,7 +122,7 @@ TEST_CASE("rt2 cpu: every generator family up to 2000 points equals the referenc
                           "other properties, the [long] sweep)",
                       20, [weighted] {
                         const PointSet ps = *test::thinned(test::family_points(2, 3, 2000, weighted));
-                        check_rc(ps, false);
+                        check_rc(ps, 0);
                       });
 }
 
@@ -134,15 +135,18 @@ TEST_CASE("rt2 cpu: deterministic sweep over the families, sizes, weights and th
         for (bool weighted : {false, true}) {
           const PointSet ps = test::family_input(fam, n, seed, weighted, 1e-3);
           INFO(fam << " n=" << n << " seed=" << seed << (weighted ? " weighted" : ""));
-          const std::string expect = check(ps, [](bool ok, int t, const Mode& m) {
-            INFO("threads " << t << ", " << name(m.how) << ", brio_min " << m.brio);
-            REQUIRE(ok);
-          });
+          const std::string expect = check(
+              ps,
+              [](bool ok, int t, const Mode& m) {
+                INFO("threads " << t << ", " << name(m.how) << ", brio_min " << m.brio);
+                REQUIRE(ok);
+              },
+              2);  // stage 2b at 2 threads (thread independence: rt2_witness_test)
           if (is_error(expect)) {
             ++rejected;
             REQUIRE(!dimension_problem(ps).empty());
           }
-          cases += 3 * std::size(kModes);
+          cases += 3 * 2 + 2;
         }
   }
   std::cout << "rt2 cpu sweep: " << cases << " runs over " << families << " families identical to the reference ("
@@ -171,6 +175,7 @@ TEST_CASE("rt2 cpu: 20000-point inputs in the three weight ranges of §5.4 equal
       cpu::Rt2Options opt;
       opt.threads = t;
       opt.insertion = how;
+      opt.parallel_from = 64;  // territories of >= 64 vertices: also with 1e-1 weights (1 % vertices)
       ref::Rt2Stats st;
       INFO(t << " threads, " << name(how));
       REQUIRE(cpu::rt2(ps, opt, &st) == expect);
