@@ -888,7 +888,6 @@ void Builder::territories(std::vector<std::uint32_t>& pending) {
   // piece j's reserved slots: slots + 2 piece_at(j) ... slots + 2 piece_at(j + 1)
   const std::size_t slots = tv_.size() / 3, total = slots + 2 * np;
   tv_.resize(3 * total, kDead), tn_.resize(3 * total, kDead);
-  resv_.resize(2 * total, kFree);
   terr_.resize(total);
   // per territory (curve key of the centroid << 32 | slot), the smallest:
   // the triangle at the start of its stretch of the curve, near its piece's
@@ -1002,7 +1001,6 @@ void Builder::run_parallel(std::size_t from, const std::vector<std::size_t>& rou
   // batch ~ vertices / kShare: about 95 % of a batch wins at 1/128
   constexpr std::size_t kShare = 128;
   const std::size_t kTail = std::min<std::size_t>(64, parallel_from_);
-  resv_.assign(2 * (tv_.size() / 3), kFree);
   std::vector<std::uint32_t> pending, order, carry, slice, pts;
   for (std::size_t r = 0; r + 1 < rounds_at.size(); ++r) {
     const std::size_t lo = std::max(from, rounds_at[r]), hi = rounds_at[r + 1];
