@@ -725,7 +725,9 @@ void Builder::commit(Piece& pc, const Cand& c, const std::uint32_t* extra, std::
 // (parallel); then the points outside the hull one by one. losers: the
 // points to try again, in order.
 void Builder::batch(const std::vector<std::uint32_t>& pts, std::vector<std::uint32_t>& losers) {
-  constexpr std::size_t kPiece = 256;
+  // points per task: small enough that the batches of the tests (tens of
+  // points) span several tasks too
+  constexpr std::size_t kPiece = 32;
   const std::size_t pieces = (pts.size() + kPiece - 1) / kPiece;
   if (pieces_.size() < pieces) pieces_.resize(pieces);
   const std::uint32_t slots = static_cast<std::uint32_t>(tv_.size() / 3);
