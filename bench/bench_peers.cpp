@@ -16,12 +16,15 @@
 //          flipflop:reference:ffhull, :splay (:twist-flip, quadratic, for
 //          n <= 20000); qhull (libqhull_r, Qt), cgal:convex_hull_3
 //   dt2    flipflop:cpu (kernels_cpu/rt2: BRIO order, incremental flipping,
-//          parallel sort and output), flipflop:reference:ffrt and :lawson;
+//          parallel sort and output), flipflop:territories and :batches
+//          (the same with parallel insertion), flipflop:reference:ffrt and
+//          :lawson;
 //          cgal:delaunay_triangulation_2 (range insertion, spatially sorted),
 //          qhull (libqhull_r, d Qbb Qt)
 //          (hull3, dt2 and rt2: flipflop:cuda-omp, flipflop:cuda[:no-transfers],
 //          the GPU ffHull and ffRT of kernels_cuda/hull3 and rt2, as for hull2)
-//   rt2    flipflop:cpu, flipflop:reference:ffrt;
+//   rt2    flipflop:cpu, flipflop:territories, flipflop:batches,
+//          flipflop:reference:ffrt;
 //          cgal:regular_triangulation_2 (range insertion, spatially sorted)
 //
 // A timed run is one call: for a peer, the peers/ wrapper (copying the points
@@ -155,6 +158,15 @@ int bench_peers(const Args& a) {
     return compare_peers<Tris>(a, pts, rows, "triangles");
   }
   std::vector<Peer<Tris>> rows = {{"flipflop:cpu", [](const PointSet& p) { return cpu::rt2(p); }}};
+  // the cpu kernel with its parallel insertion (`--algo territories|batches`);
+  // named so that the prefix flipflop:cpu does not select them
+  for (const auto& [name, how] : {std::pair{"flipflop:territories", cpu::Rt2Options::Insertion::territories},
+                                  std::pair{"flipflop:batches", cpu::Rt2Options::Insertion::batches}})
+    rows.push_back({name, [how = how](const PointSet& p) {
+                      cpu::Rt2Options o;
+                      o.insertion = how;
+                      return cpu::rt2(p, o);
+                    }});
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
   add_gpu_rows(rows, [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::rt2_gpu(b, pts, nullptr, t); });
 #endif

@@ -124,7 +124,7 @@ namespace {
 std::vector<std::string> cpu_algorithms(const std::string& kind) {
   if (kind == "hull3") return {"ffhull"};
   if (kind == "hull2") return {"graham-sort", "graham-insert"};
-  if (kind == "rt2" || kind == "dt2") return {"incremental"};
+  if (kind == "rt2" || kind == "dt2") return {"incremental", "territories", "batches"};
   return {};
 }
 // The reference's default algorithm (when --backend reference is asked for
@@ -146,8 +146,8 @@ std::string default_backend(const std::string& kind, const std::string& algo) {
 std::vector<std::string> available_algorithms(const std::string& kind) {
   std::vector<std::string> algos;
   if (kind == "hull2") algos = ref::hull2_algorithms();
-  if (kind == "rt2") algos = {"incremental", "ffrt", "ffrt-vfirst"};
-  if (kind == "dt2") algos = {"incremental", "ffrt", "ffrt-vfirst", "lawson"};
+  if (kind == "rt2") algos = {"incremental", "territories", "batches", "ffrt", "ffrt-vfirst"};
+  if (kind == "dt2") algos = {"incremental", "territories", "batches", "ffrt", "ffrt-vfirst", "lawson"};
   if (kind == "hull3") algos = ref::hull3_algorithms();
   algos.push_back("brute");
   return algos;
@@ -220,8 +220,8 @@ int run_compute(const ComputeArgs& a) {
                            : is_gpu(a.backend)        ? gpu_algorithms(a.kind).front()
                                                       : default_algorithm(a.kind);
   const std::string backend = a.backend.empty() ? default_backend(a.kind, algo) : a.backend;
-  if (backend == "reference" && algo == "incremental")
-    throw UsageError("--algo incremental is the cpu backend's (kernels_cpu/rt2); the reference computes ffrt, "
+  if (backend == "reference" && (a.kind == "rt2" || a.kind == "dt2") && cpu_computes(a.kind, algo))
+    throw UsageError("--algo " + algo + " is the cpu backend's (kernels_cpu/rt2); the reference computes ffrt, "
                      "ffrt-vfirst" + std::string(a.kind == "dt2" ? ", lawson" : "") + " and brute");
   if (backend == "cpu" && !cpu_computes(a.kind, algo)) {
     std::string list;
@@ -283,6 +283,9 @@ int run_compute(const ComputeArgs& a) {
     ref::Rt2Stats st;
     cpu::Rt2Options o;
     o.threads = a.threads;
+    // stage 2b: parallel insertion (kernels_cpu/rt2/rt2.hpp)
+    if (algo == "territories") o.insertion = cpu::Rt2Options::Insertion::territories;
+    if (algo == "batches") o.insertion = cpu::Rt2Options::Insertion::batches;
     tris = cpu::rt2(ps, o, &st, &rt2_witness.emplace());
     counts = "1-3 flips " + std::to_string(st.flips_1_3) + ", 2-2 flips " + std::to_string(st.flips_2_2) +
              ", 3-1 flips " + std::to_string(st.flips_3_1) + ", discarded early " + std::to_string(st.discarded_early);

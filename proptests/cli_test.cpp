@@ -358,6 +358,15 @@ TEST_CASE("cli: rt2 and dt2 --backend cpu (the default) write the reference's by
   REQUIRE(run(t, "dt2 " + grid.string() + " --strict -o " + (t.dir / "s_cpu.txt").string()).code == 0);
   REQUIRE(run(t, "dt2 " + grid.string() + " --strict --backend reference -o " + (t.dir / "s_ref.txt").string()).code == 0);
   CHECK(slurp(t.dir / "s_cpu.txt") == slurp(t.dir / "s_ref.txt"));
+  // the parallel insertions (stage 2b) are the cpu backend's: the same bytes
+  REQUIRE(run(t, "dt2 " + grid.string() + " --backend reference -o " + (t.dir / "ref.txt").string()).code == 0);
+  for (const char* algo : {"territories", "batches"}) {
+    INFO(algo);
+    const fs::path out = t.dir / (std::string(algo) + ".txt");
+    REQUIRE(run(t, "dt2 " + grid.string() + " --algo " + algo + " --threads 2 -o " + out.string()).code == 0);
+    CHECK(slurp(out) == slurp(t.dir / "ref.txt"));
+    CHECK(run(t, "dt2 " + grid.string() + " --backend reference --algo " + algo).code != 0);
+  }
 }
 
 TEST_CASE("cli: certify rtd (exact and --canonical) accepts rtd's output and CGAL's, rejects a reversed simplex", "[cli]") {

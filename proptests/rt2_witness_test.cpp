@@ -3,7 +3,8 @@
 // kernels_cpu/rt2/certify_rt2.hpp).
 //
 // Properties: on every 2D generator family with weights, degenerate sets
-// included, at 1, 2 and 8 threads, the kernel's output with its witness is
+// included, at 1, 2 and 8 threads, with the sequential insertion and with
+// stage 2b's territories and batches, the kernel's output with its witness is
 // certified at both levels, and the witness-free certifier (certify::rt2,
 // an independent oracle: it locates every point itself and derives the
 // structure from the triangles alone) agrees; the witness does not depend on
@@ -53,10 +54,16 @@ struct Run {
   cpu::Rt2Witness w;
 };
 
-Run run(const PointSet& ps, int threads = 0) {
+using Insertion = cpu::Rt2Options::Insertion;
+
+// parallel_from: where stage 2b (territories, batches) starts; small, so
+// that small inputs reach it
+Run run(const PointSet& ps, int threads = 0, Insertion how = Insertion::sequential, std::size_t parallel_from = 4096) {
   Run r;
   cpu::Rt2Options o;
   o.threads = threads;
+  o.insertion = how;
+  o.parallel_from = parallel_from;
   r.tris = cpu::rt2(ps, o, nullptr, &r.w);
   return r;
 }
@@ -69,17 +76,24 @@ bool same_witness(const cpu::Rt2Witness& a, const cpu::Rt2Witness& b) {
 }
 
 // kernel output certified from its witness at both levels and every thread
-// count, the witness-free certifier agreeing, the witness thread-independent
+// count, the witness-free certifier agreeing, the witness thread-independent;
+// for each way of inserting (sequential, and stage 2b's territories and
+// batches from the fourth point on; parallel false: sequential only)
 template <class Require>
-void check_accepts(const PointSet& ps, const Require& require) {
+void check_accepts(const PointSet& ps, const Require& require, bool parallel = true) {
   if (!dimension_problem(ps).empty()) return;  // rejected before any triangle (rt2_cpu_test)
   const Run base = run(ps, 1);
   require(certify::rt2(ps, base.tris, certify::Level::canonical).ok, "certify::rt2 rejects the kernel's output");
-  for (int t : kThreads) {
-    const Run r = run(ps, t);
-    require(r.tris == base.tris && same_witness(r.w, base.w), "the witness depends on the thread count");
-    for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
-      require(cpu::certify_rt2(ps, r.tris, level, r.w, t).ok, "the witnessed certifier rejects the kernel's output");
+  for (Insertion how : {Insertion::sequential, Insertion::territories, Insertion::batches}) {
+    if (!parallel && how != Insertion::sequential) continue;
+    const Run first = how == Insertion::sequential ? base : run(ps, 1, how, 3);
+    for (int t : kThreads) {
+      const Run r = how == Insertion::sequential ? run(ps, t) : run(ps, t, how, 3);
+      require(r.tris == base.tris, "the insertion modes disagree");
+      require(same_witness(r.w, first.w), "the witness depends on the thread count");
+      for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
+        require(cpu::certify_rt2(ps, r.tris, level, r.w, t).ok, "the witnessed certifier rejects the kernel's output");
+      }
     }
   }
 }
@@ -302,11 +316,39 @@ TEST_CASE("rt2 witness: every generator family is certified from the kernel's wi
   for (bool weighted : {false, true})
     test::prop_scaled(std::string("family sets of 3..2000 points, ") +
                           (weighted ? "weights from none to 99% redundant" : "unweighted") +
-                          ": witnessed certifier accepts at 1, 2, 8 threads, both levels; certify::rt2 agrees",
+                          ": witnessed certifier accepts at 1, 2, 8 threads, both levels; certify::rt2 agrees "
+                          "(sequential insertion; stage 2b: the degenerate sets and the 5000-point inputs)",
                       40, [weighted] {
                         const PointSet ps = *test::thinned(test::family_points(2, 3, 2000, weighted));
-                        check_accepts(ps, [](bool ok, const char*) { RC_ASSERT(ok); });
+                        check_accepts(ps, [](bool ok, const char*) { RC_ASSERT(ok); }, false);
                       });
+}
+
+TEST_CASE("rt2 witness: stage 2b's witness is thread-independent and certified on 5000-point inputs", "[rt2_witness]") {
+  // parallel insertion from the 65th point on: dozens of territories and
+  // batches; uniform (weights in three ranges) and lattice input
+  for (const double whi : {0.0, 1e-5, 1e-3, 1e-1}) {
+    const PointSet ps = square(5000, whi, 7);
+    INFO("square, weights [0, " << whi << "]");
+    const Run base = run(ps, 1);
+    for (Insertion how : {Insertion::territories, Insertion::batches}) {
+      const Run first = run(ps, 1, how, 64);
+      REQUIRE(first.tris == base.tris);
+      for (int t : kThreads) {
+        const Run r = run(ps, t, how, 64);
+        INFO(t << " threads, " << (how == Insertion::territories ? "territories" : "batches"));
+        REQUIRE(r.tris == base.tris);
+        REQUIRE(same_witness(r.w, first.w));
+        REQUIRE(cpu::certify_rt2(ps, r.tris, certify::Level::exact, r.w, t).ok);
+      }
+    }
+  }
+  const PointSet grid = test::family_input("grid2", 5000, 2, false, 0);
+  for (Insertion how : {Insertion::territories, Insertion::batches}) {
+    const Run first = run(grid, 1, how, 64);
+    REQUIRE(cpu::certify_rt2(grid, first.tris, certify::Level::exact, first.w, 1).ok);
+    for (int t : kThreads) REQUIRE(same_witness(run(grid, t, how, 64).w, first.w));
+  }
 }
 
 TEST_CASE("rt2 witness: large inputs in several pieces are certified, every family", "[rt2_witness][long]") {

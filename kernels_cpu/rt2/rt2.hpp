@@ -9,7 +9,8 @@
 //                 computed in parallel, one parallel radix sort; the points copied
 //                 in that order into one flat array (x, y, w, index) for
 //                 locality;
-//   2. [insert]   incremental flipping (Edelsbrunner–Shah 1996; thesis §2.3's
+//   2. [insert]   (Insertion::sequential, the default) incremental
+//                 flipping (Edelsbrunner–Shah 1996; thesis §2.3's
 //                 flips on the extended triangulation of §2.1): each point is
 //                 located by a remembering visibility walk from the previous
 //                 point's triangle; a point in a real triangle whose lifted
@@ -22,6 +23,24 @@
 //                 locally regular by 2-2 flips and 3-1 flips (a vertex
 //                 becoming redundant is removed), Algorithm 5's V- and
 //                 D-criterion restricted to the link of the new point;
+//   2b.[insert]   (Insertion::territories or batches) the first points as
+//                 in 2, then each BRIO round in parallel (ffRT's insertion
+//                 rounds, §5.3), each point by a Bowyer–Watson step: its
+//                 cavity (the triangles whose lifted plane is above its
+//                 lifted point) replaced by the fan from it. territories:
+//                 the round's Hilbert curve cut into pieces, each piece one
+//                 task owning the triangles around its stretch and inserting
+//                 its points in order while their walks, cavities and rings
+//                 stay in its own triangles, the others deferred and then
+//                 inserted as in 2. batches: every point of a batch located
+//                 in parallel, the redundant ones discarded, the cavity and
+//                 the ring around it labelled by an atomic minimum of the
+//                 point's priority (§3.3.1's conflict resolution over the
+//                 induced subcomplex); the points that hold all their labels
+//                 replace their cavities in parallel (slots by prefix sums),
+//                 the others wait for the next batch. Points outside the
+//                 current hull: inserted as in 2 (rare after the first
+//                 rounds);
 //   3. [output]   the real triangles in canonical form (DESIGN.md), mapped to
 //                 input indices in parallel, sorted in parallel;
 //   4. [witness]  (when asked for) the certificate of Rt2Witness: for each
@@ -52,11 +71,15 @@
 // moves down as points are added), so the final triangulation is RT(S ⊕ W)
 // under SoS, which is ref::rt2_ffrt's and ref::dt2_lawson's answer.
 //
-// Parallelism: stages 1, 3 and 4 (and certification from the witness,
-// cpu::certify_rt2) run on all threads; stage 2 is sequential — see the
-// closing note of issue 13 and README "2D regular triangulation" for the
-// measurements behind that choice. Neither the output nor the witness
-// depends on the thread count.
+// Parallelism: stages 1, 2b, 3 and 4 (and certification from the witness,
+// cpu::certify_rt2) run on all threads; stage 2 is sequential. 2 is the
+// default: on the 2-core machine measured 2b is not faster (README "The
+// multithreaded 2D triangulation"): batches lose the Hilbert order's cache
+// locality (a batch is spread over the whole plane so that few cavities
+// meet, so nearly every triangle it touches is a cache miss: about 5x the
+// work of 2 at one thread); territories keep it but do about 1.5x the work
+// of 2 at one thread. Neither the output nor the witness depends on the
+// thread count.
 //
 // Input that does not span the plane is rejected with the reference's
 // std::invalid_argument (ref::require_plane, "rt2 (cpu): <problem>").
@@ -75,6 +98,14 @@ struct Rt2Options {
   int threads = 0;  // worker threads; 0: the runtime's default
   // Tuning; the result does not depend on it (tests vary it):
   std::size_t brio_min = 256;  // BRIO rounds stop below this many points (>= 1)
+  // Stage 2: sequential: one point after the other (`--algo incremental`);
+  // territories and batches: the first parallel_from points (in BRIO order)
+  // one by one, the rest in parallel (stage 2b, `--algo territories|batches`).
+  // The triangles are the same for all; the slots of the witness depend on
+  // these settings, never on the threads.
+  enum class Insertion { sequential, territories, batches };
+  Insertion insertion = Insertion::sequential;
+  std::size_t parallel_from = 4096;  // >= 1; also caps the territory size (stage 2b)
   // when set, filled with the seconds of each stage: sort, insert, output
   StageTimes* times = nullptr;
 };

@@ -83,6 +83,8 @@ struct Rt2Stats {
                                        // included in flips_2_2 / flips_3_1
   std::size_t candidates = 0;          // edges popped from Q (Algorithm 5 line 4)
   std::size_t phases = 0;              // FlipFlopVariant::v_first: V / label / D passes
+  std::size_t retried = 0;             // cpu::rt2 stage 2b: points deferred by their territory or
+                                       // losing a batch's labels, tried again
 };
 
 // How the V- and D-criterion are combined (§5.1).
