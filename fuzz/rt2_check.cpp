@@ -7,7 +7,8 @@
 // power-of-two scalings). Checked:
 //   * input that does not span the plane: rt2_ffrt (both flip-flop variants),
 //     dt2_lawson and the cpu backend (kernels_cpu/rt2, one and three
-//     threads, one BRIO round and rounds down to one point) throw
+//     threads, one BRIO round and rounds down to one point, sequential and
+//     parallel insertion from the 4th point) throw
 //     std::invalid_argument;
 //   * otherwise rt2_ffrt with FlipFlopVariant::combined and ::v_first return
 //     the same canonical triangles, equal to brute::rt2 (the definition, for
@@ -78,16 +79,21 @@ void expect_same(const std::string& what, const PointSet& ps, const Tris& got, c
 }
 
 // the cpu backend's settings tried: 1 and 3 threads, one BRIO round and
-// rounds down to a single point (the result must not depend on them)
+// rounds down to a single point, the sequential insertion and both parallel
+// ones (stage 2b) from the 4th point on (the result must not depend on them)
 std::vector<cpu::Rt2Options> cpu_settings() {
+  using Insertion = cpu::Rt2Options::Insertion;
   std::vector<cpu::Rt2Options> out;
-  for (int threads : {1, 3})
-    for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
-      cpu::Rt2Options o;
-      o.threads = threads;
-      o.brio_min = brio;
-      out.push_back(o);
-    }
+  for (Insertion insertion : {Insertion::sequential, Insertion::territories, Insertion::batches})
+    for (int threads : {1, 3})
+      for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
+        cpu::Rt2Options o;
+        o.threads = threads;
+        o.brio_min = brio;
+        o.insertion = insertion;
+        o.parallel_from = 4;
+        out.push_back(o);
+      }
   return out;
 }
 
@@ -128,7 +134,9 @@ bool check_rt2_input(const std::uint8_t* data, std::size_t size) {
               answer);
   if (n <= kMaxBrute) expect_same("brute::rt2", ps, brute::rt2(ps), answer);
   for (const cpu::Rt2Options& o : cpu_settings())
-    expect_same("cpu::rt2 (" + std::to_string(o.threads) + " threads, brio_min " + std::to_string(o.brio_min) + ")", ps,
+    expect_same("cpu::rt2 (" + std::to_string(o.threads) + " threads, brio_min " + std::to_string(o.brio_min) +
+                    ", insertion " + std::to_string(static_cast<int>(o.insertion)) + ")",
+                ps,
                 must_return("cpu::rt2", ps, [&] { return cpu::rt2(ps, o); }), answer);
 #ifdef FLIPFLOP_HAVE_KERNELS_OMP
   expect_same("kernels_omp::rt2_ffrt", ps, must_return("kernels_omp::rt2_ffrt", ps, [&] { return kernels_omp::rt2_ffrt(ps); }),
