@@ -238,6 +238,8 @@ class Builder {
   std::array<std::uint32_t, 3> flip13(std::uint32_t t, std::uint32_t p);
   void flip22(std::uint32_t e);
   void flip31(std::uint32_t e, bool remove_a);
+  template <class Leaves>
+  std::uint32_t walk_to(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside, Leaves leaves) const;
   std::uint32_t locate(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside) const;
   std::uint32_t walk(std::uint32_t p, bool& inside) { return locate(p, home_, rng_, inside); }
   void insert_outside(std::uint32_t p, std::uint32_t e0);
@@ -356,14 +358,16 @@ void Builder::flip31(std::uint32_t e, bool remove_a) {
 
 // Remembering visibility walk from the real triangle `start` to the point p
 // (never a vertex), rng its random state:
-// returns 3t with inside = true when p lies in the real triangle t, or a
-// half-edge e of a real triangle whose edge (a hull edge) p sees, with inside
-// = false. Under SoS no point is on a line, so every step is decided; the
+// returns 3t with inside = true when p lies in the real triangle t, or, with
+// inside = false, the first half-edge e it would cross into a triangle that
+// `leaves` (locate: a virtual one, so e is a hull edge p sees). Under SoS no point is on a line, so every step is decided; the
 // walk is acyclic in a regular triangulation (Edelsbrunner 1990: the in-front
 // relation of its cells is acyclic) and the random first edge keeps it short
 // on adversarial layouts. The step bound only guards against a corrupted
 // structure.
-std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside) const {
+template <class Leaves>
+std::uint32_t Builder::walk_to(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside,
+                               Leaves leaves) const {
   std::uint32_t t = start, came = kDead;
   const std::size_t cap = tv_.size() + 16;
   for (std::size_t steps = 0; steps < cap; ++steps) {
@@ -375,7 +379,7 @@ std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t start, std::uint32_
       if (e == came) continue;  // p is on t's side of the edge it came through
       if (orient(tv_[nx(e)], tv_[pv(e)], p) < 0) {
         const std::uint32_t f = tn_[e];
-        if (is_virtual(f / 3)) {
+        if (leaves(f / 3)) {
           inside = false;
           return e;
         }
@@ -389,6 +393,10 @@ std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t start, std::uint32_
     }
   }
   throw std::logic_error("rt2 (cpu): the point location walk did not end (corrupted triangulation)");
+}
+
+std::uint32_t Builder::locate(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside) const {
+  return walk_to(p, start, rng, inside, [this](std::uint32_t t) { return is_virtual(t); });
 }
 
 // p lies beyond the hull edge a -> b of e's real triangle (orient(a, b, p) <
@@ -827,31 +835,8 @@ void Builder::batch(const std::vector<std::uint32_t>& pts, std::vector<std::uint
 // (another territory's, or a virtual one: the point may be outside the hull).
 std::uint32_t Builder::locate_in(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, std::uint32_t terr,
                                  bool& inside) const {
-  std::uint32_t t = start, came = kDead;
-  const std::size_t cap = tv_.size() + 16;
-  for (std::size_t steps = 0; steps < cap; ++steps) {
-    rng ^= rng << 13, rng ^= rng >> 17, rng ^= rng << 5;
-    const std::uint32_t r = rng % 3;
-    bool moved = false;
-    for (std::uint32_t j = 0; j < 3; ++j) {
-      const std::uint32_t e = 3 * t + (r + j) % 3;
-      if (e == came) continue;
-      if (orient(tv_[nx(e)], tv_[pv(e)], p) < 0) {
-        const std::uint32_t f = tn_[e];
-        if (terr_[f / 3] != terr) {
-          inside = false;
-          return kDead;
-        }
-        t = f / 3, came = f, moved = true;
-        break;
-      }
-    }
-    if (!moved) {
-      inside = true;
-      return 3 * t;
-    }
-  }
-  throw std::logic_error("rt2 (cpu): the point location walk did not end (corrupted triangulation)");
+  const std::uint32_t e = walk_to(p, start, rng, inside, [&](std::uint32_t t) { return terr_[t] != terr; });
+  return inside ? e : kDead;
 }
 
 // Stage 2b, first pass over a round: territories. The pending points (in
