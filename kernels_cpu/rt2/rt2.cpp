@@ -360,11 +360,11 @@ void Builder::flip31(std::uint32_t e, bool remove_a) {
 // (never a vertex), rng its random state:
 // returns 3t with inside = true when p lies in the real triangle t, or, with
 // inside = false, the first half-edge e it would cross into a triangle that
-// `leaves` (locate: a virtual one, so e is a hull edge p sees). Under SoS no point is on a line, so every step is decided; the
-// walk is acyclic in a regular triangulation (Edelsbrunner 1990: the in-front
-// relation of its cells is acyclic) and the random first edge keeps it short
-// on adversarial layouts. The step bound only guards against a corrupted
-// structure.
+// `leaves` (locate: a virtual one, so e is a hull edge p sees). Under SoS no
+// point is on a line, so every step is decided; the walk is acyclic in a
+// regular triangulation (Edelsbrunner 1990: the in-front relation of its
+// cells is acyclic) and the random first edge keeps it short on adversarial
+// layouts. The step bound only guards against a corrupted structure.
 template <class Leaves>
 std::uint32_t Builder::walk_to(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, bool& inside,
                                Leaves leaves) const {
