@@ -402,9 +402,11 @@ int certify_rtd_file(const CertifyArgs& a) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(a.output + ": " + e.what());
   }
+  // --strict: the exact level, which refuses every simplex of zero volume
+  // (the strict view's defining property) — the same check, named as asked
   const certify::Report r =
       certify::rtd(ps, simplices, a.canonical ? certify::Level::canonical : certify::Level::exact);
-  const char* level = a.canonical ? "canonical" : "exact";
+  const char* level = a.canonical ? "canonical" : a.strict ? "strict" : "exact";
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {
     std::cout << "NOT certified (rtd, " << level << "): " << r.message() << "\n";
@@ -419,6 +421,8 @@ int certify_rtd_file(const CertifyArgs& a) {
 
 int run_certify(const CertifyArgs& a) {
   if (a.threads != 0 && a.kind == "rtd") throw UsageError("--threads applies to certify hull2, hull3, rt2 and dt2");
+  if (a.kind == "rtd" && a.strict && a.canonical)
+    throw UsageError("--canonical does not apply to the strict views (certified at the exact level)");
   if (a.kind == "rtd") return certify_rtd_file(a);
   if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
   if (a.strict && a.kind == "hull2") throw UsageError("--strict applies to certify hull3, rt2 and dt2");

@@ -3,10 +3,11 @@
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
-//   flipflop rtd IN --dim d [-o OUT] [--stats]
+//   flipflop rtd IN --dim d [-o OUT] [--strict] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
+//   flipflop certify rtd POINTS OUTPUT --dim d [--canonical | --strict]
 //   flipflop bench ...
 //   flipflop demo
 //
@@ -88,6 +89,9 @@ int main(int argc, char** argv) {
                   ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
   rtd->add_flag("--ascii", r.ascii, ".ply and .stl output in ASCII (default binary)");
   rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
+  rtd->add_flag("--strict", r.strict,
+                "the strict view: no simplex of zero volume (the exact regular subdivision's pulling refinement; "
+                "d = 2: as rt2 --strict), certified at the exact level");
   InstantFlipArgs f;
   auto* iflip = app.add_subcommand(
       "instant-flip", "RT(S+W) -> RT(S+U) by the monotonic instant flip (thesis §9.2, Algorithm 14)");
@@ -118,7 +122,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   cert->add_flag("--strict", v.strict,
                  "the output is a strict view (hull3 --strict: extreme points and polygons; rt2|dt2 --strict: "
-                 "no zero-area triangle), certified at the exact level");
+                 "no zero-area triangle; rtd --strict: no zero-volume simplex), certified at the exact level");
   cert->add_flag("--triangulate", v.triangulate, "with certify hull3 --strict: the view of hull3 --strict --triangulate");
   cert->add_flag("--canonical", v.canonical,
                  "also require flipflop's unique answer under Simulation of Simplicity, in canonical form");

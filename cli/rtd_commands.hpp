@@ -33,6 +33,7 @@ struct RtdArgs {
   std::string in, out;
   int dim = 0;  // 2..5
   bool stats = false;
+  bool strict = false;  // the strict view (reference/rtd/strict_rtd.hpp)
   bool ascii = false;  // .ply/.stl output in ASCII
 };
 

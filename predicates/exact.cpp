@@ -163,6 +163,7 @@ namespace {
 // first leaf with a non-zero complementary minor decides the sign.
 struct SosSearch {
   const IntLambda& m;
+  const IntLambda* q = nullptr;  // pulled: the unweighted Λ (exact_expansion.hpp sos_search, Pulled)
   // memo of minor signs: index = (rows << k) | cols, value 2 = unknown
   std::vector<signed char> memo;
 
@@ -181,9 +182,22 @@ struct SosSearch {
   // r: row to decide; kept rows/cols: not yet deleted; sgn: product of the
   // Laplace signs of the deletions made so far.
   int dfs(int r, std::uint32_t kept_rows, std::uint32_t kept_cols, int sgn) {
-    if (r < 0) return sgn * cached_minor(kept_rows, kept_cols);
+    if (r < 0) {
+      if (const int s = cached_minor(kept_rows, kept_cols)) return sgn * s;
+      if (!q) return 0;
+      if (const int s = minor_sign(*q, kept_rows, kept_cols)) return sgn * s;  // the ε1 term
+      const int hc = m.k - 2;  // the pulled heights of the kept rows, smallest index first
+      for (int i = 0; i < m.k; ++i) {
+        if (!(kept_rows & (1u << i))) continue;
+        const int parity = popcount_below(kept_rows, i) + popcount_below(kept_cols, hc);
+        if (const int s = cached_minor(kept_rows & ~(1u << i), kept_cols & ~(1u << hc)))
+          return ((parity & 1) ? sgn : -sgn) * s;
+      }
+      return 0;
+    }
     if (int s = dfs(r - 1, kept_rows, kept_cols, sgn)) return s;  // row r not perturbed
     for (int c = m.k - 2; c >= 0; --c) {                             // 1-column never perturbed
+      if (q && c == m.k - 2) continue;
       if (!(kept_cols & (1u << c))) continue;
       int parity = popcount_below(kept_rows, r) + popcount_below(kept_cols, c);
       int f = (parity & 1) ? -1 : 1;
@@ -194,9 +208,12 @@ struct SosSearch {
 };
 }  // namespace
 
-int sos_sign(const IntLambda& m) {
+int sos_sign(const IntLambda& m, const IntLambda* unweighted) {
   if (m.k < 1 || m.k > 8) throw std::logic_error("sos_sign: k must be in 1..8");
+  if (unweighted && (m.k < 3 || unweighted->k != m.k))
+    throw std::logic_error("sos_sign: the pulled perturbation needs two lifted matrices of one size");
   SosSearch search(m);
+  search.q = unweighted;
   const std::uint32_t all = (1u << m.k) - 1u;
   int s = search.dfs(m.k - 1, all, all, 1);
   if (s == 0) throw std::logic_error("sos_sign: no non-zero term (impossible for a Λ-matrix)");

@@ -52,6 +52,8 @@ int minor_sign(const IntLambda& m, std::uint32_t rows, std::uint32_t cols);
 
 // Sign of det Λ under Simulation of Simplicity; rows of `m` must be sorted by
 // strictly increasing point index (see predicates.hpp for the derivation).
-int sos_sign(const IntLambda& m);
+// With `unweighted` (the same points' Λ with zero weights): the perturbation
+// of power_d_pulled (predicates.hpp) instead, for a lifted Λ (column k-2).
+int sos_sign(const IntLambda& m, const IntLambda* unweighted = nullptr);
 
 }  // namespace flipflop::pred::exact

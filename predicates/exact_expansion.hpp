@@ -57,6 +57,8 @@
 //   pass over the few undecided calls (thesis §6.4.2), as classify.cuh does.
 #pragma once
 
+#include <cstddef>
+
 #include <cstdint>
 #include <cstring>
 #if !defined(__CUDA_ARCH__)
@@ -520,8 +522,21 @@ FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsign
 // minor(kr, kc) returns the sign of the minor on the kept rows / columns, or 2
 // when it cannot decide; the search then returns 2 (the caller's slower
 // evaluation takes over). Memo: 2^(2K-1) bytes.
-template <int K, class MinorFn>
-FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn) {
+//
+// Pulled = true: the perturbation of the strict views of d-dimensional
+// regular triangulations (predicates.hpp, power_d_pulled): the lifted height
+// (column K-2) is not perturbed with the coordinates; instead it becomes
+// h + ε1 |x|^2 - ε2^(r) (r: the row's rank, smallest index first), with
+// ε1 >> ε2 and both infinitely larger than every coordinate perturbation.
+// The determinant is linear in that column, so a term is a matching of rows
+// to coordinate columns (its δ-order, the dominance order above) times one
+// of: the heights h, the ε1 column |x|^2 (minor_q: the same minor of the
+// unweighted Λ), or one pulled height (the cofactor of its entry, with the
+// pull's sign -1) — in that order, pulls smallest index first. So the search
+// is the one above without the height column, and a leaf whose complementary
+// minor is 0 tries minor_q and then the pulls of its kept rows.
+template <int K, bool Pulled = false, class MinorFn, class MinorQFn = std::nullptr_t>
+FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn, MinorQFn&& minor_q = nullptr) {
   constexpr unsigned kAll = (1u << K) - 1u;
   constexpr unsigned kColMask = (1u << (K - 1)) - 1u;  // the 1-column (bit K-1) is always kept
   signed char memo[1u << (2 * K - 1)];
@@ -552,6 +567,7 @@ FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn) {
     int sg = ssg[r];
     if (opt >= 1) {
       const int c = K - 1 - opt;
+      if (Pulled && c == K - 2) continue;  // heights are pulled, not perturbed with the coordinates
       if (!(kc & (1u << c))) continue;
       const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
       if (parity & 1) sg = -sg;
@@ -562,6 +578,19 @@ FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn) {
       const int s = minor(kr, kc);
       if (s == 2) return 2;
       if (s != 0) return sg * s;
+      if constexpr (Pulled) {
+        const int sq = minor_q(kr, kc);  // the ε1 term (kc holds the height column)
+        if (sq == 2) return 2;
+        if (sq != 0) return sg * sq;
+        constexpr int hc = K - 2;
+        for (int i = 0; i < K; ++i) {
+          if (!(kr & (1u << i))) continue;
+          const int parity = popcount32(kr & ((1u << i) - 1u)) + popcount32(kc & ((1u << hc) - 1u));
+          const int sp = minor(kr & ~(1u << i), kc & ~(1u << hc));
+          if (sp == 2) return 2;
+          if (sp != 0) return ((parity & 1) ? sg : -sg) * sp;  // -ε^(r_i): the pull's sign
+        }
+      }
       continue;
     }
     --r;
@@ -583,6 +612,28 @@ FF_HD inline int sos_sign(const LambdaX<A, K>& L, bool det_is_zero = false) {
     const int q = minor_quick<A, K>(L, ap, kr, kc);
     return q != 2 ? q : MinorOf<A, K>::sign(L, kr, kc);
   });
+}
+
+// The pulled perturbation (sos_search, Pulled) on L, with Lq the same Λ with
+// zero weights (its height column |x|^2).
+template <class A, int K>
+FF_HD inline int sos_sign_pulled(const LambdaX<A, K>& L, const LambdaX<A, K>& Lq) {
+  ErrDouble ap[K * K], aq[K * K];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) {
+      ap[i * K + j] = approx_entry<A>(L.a[i][j]);
+      aq[i * K + j] = approx_entry<A>(Lq.a[i][j]);
+    }
+  return sos_search<K, true>(
+      true,
+      [&](unsigned kr, unsigned kc) -> int {
+        const int q = minor_quick<A, K>(L, ap, kr, kc);
+        return q != 2 ? q : MinorOf<A, K>::sign(L, kr, kc);
+      },
+      [&](unsigned kr, unsigned kc) -> int {
+        const int q = minor_quick<A, K>(Lq, aq, kr, kc);
+        return q != 2 ? q : MinorOf<A, K>::sign(Lq, kr, kc);
+      });
 }
 
 // ---- SoS on doubles (det Λ = 0, inside the window) ---------------------------
@@ -1000,6 +1051,31 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
   LambdaX<XDbl, K> L;
   build_lambda<XDbl, K>(p, w, L);
   return sos_sign<XDbl, K>(L, true);
+}
+
+// The pulled perturbation (sos_search, Pulled; predicates.hpp power_d_pulled)
+// of a lifted Λ (w non-null) whose rows are sorted by increasing index and
+// whose exact determinant the caller has found to be 0. Host and device; the
+// expansions directly (the strict views call it only on degenerate tuples).
+template <int K>
+FF_HD inline int lambda_pulled_sos(const double* const* p, const double* w) {
+  Range range;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < K - 2; ++j) range.add(p[i][j]);
+    range.add(w[i]);
+  }
+  if (!range.finite) return non_finite_input();
+  const double zero[K] = {};
+  if (range.fits(K)) {
+    LambdaX<Dbl, K> L, Lq;
+    build_lambda<Dbl, K>(p, w, L);
+    build_lambda<Dbl, K>(p, zero, Lq);
+    return sos_sign_pulled<Dbl, K>(L, Lq);
+  }
+  LambdaX<XDbl, K> L, Lq;
+  build_lambda<XDbl, K>(p, w, L);
+  build_lambda<XDbl, K>(p, zero, Lq);
+  return sos_sign_pulled<XDbl, K>(L, Lq);
 }
 
 // A row of a mixed Λ-matrix for the exact stage: an input point (x) or the

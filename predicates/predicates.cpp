@@ -296,6 +296,36 @@ int power_d(int d, const WPt* pts, Mode m) {
   return lambda_sign(d + 2, id, p, w, m);
 }
 
+int power_d_pulled(int d, const WPt* pts, Mode m) {
+  if (d < 1 || d > 5) throw std::invalid_argument("power_d_pulled: d must be in 1..5");
+  const int k = d + 2;
+  PointId id[8];
+  const double* p[8];
+  double w[8];
+  for (int i = 0; i < k; ++i) {
+    id[i] = pts[i].id;
+    p[i] = pts[i].x;
+    w[i] = pts[i].w;
+  }
+  if (repeated_id(k, id)) return 0;
+  // the unperturbed sign first (every stage, may be 0)
+  if (const int s = lambda_sign(k, nullptr, p, w, m)) return s;
+  int order[8];
+  const int parity = sort_rows_by_id(k, id, order);
+  const double* sp[8];
+  double sw[8];
+  for (int i = 0; i < k; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w[order[i]];
+  }
+  if (m == Mode::gmp) {
+    const double zero[8] = {};
+    const exact::IntLambda q = exact::build_lambda(k, sp, zero);
+    return parity * exact::sos_sign(exact::build_lambda(k, sp, sw), &q);
+  }
+  return parity * with_k(k, [&](auto K) { return xp::lambda_pulled_sos<decltype(K)::value>(sp, sw); });
+}
+
 int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
   const PointId id[3] = {a.id, b.id, c.id};
   const double* p[3] = {a.x, b.x, c.x};

@@ -145,6 +145,27 @@ int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m = Mode::filtered);
 int orient_d(int d, const Pt* p, Mode m = Mode::filtered);
 int power_d(int d, const WPt* p, Mode m = Mode::filtered);
 
+// power_d under a second perturbation, used only by the strict views of
+// d-dimensional regular triangulations (reference/rtd/strict_rtd.hpp): every
+// lifted height h_i = |x_i|^2 - w_i becomes h_i + ε1 |x_i|^2 - ε2^(r_i)
+// (r_i the rank of the index: the smallest index PULLED down most), the
+// coordinates are perturbed as above (the height not with them), and
+// ε1 >> ε2 >> every coordinate perturbation. Since det Λ is linear in the
+// height column, the sign is: the exact one when that is not 0; else that of
+// the unweighted determinant (the ε1 term; it is the exact one again for
+// Delaunay input); else, when the d+2 points span R^d, that of the first
+// non-zero -cofactor of the height column, smallest index first (the pulls).
+// The ε1 term refines every cell of the exact regular subdivision by the
+// Delaunay subdivision of its points (a strictly convex function added to an
+// affine one: every point lifted onto the lower hull becomes a vertex), the
+// pulls then split cospherical ties — no simplex of zero volume in the
+// interior; only tuples inside a hyperplane of R^d (flat simplices on the
+// hull boundary) reach the coordinate perturbation. orient_d is unchanged (no
+// height), so orient_d and power_d_pulled are the predicates of one real
+// configuration in general position. Never 0 for distinct ids. Rows may come
+// in any order (sorted by id here, with the permutation's sign).
+int power_d_pulled(int d, const WPt* p, Mode m = Mode::filtered);
+
 // Sign of a.x[coord] - b.x[coord] under the perturbation (the 1-dimensional
 // Λ-determinant of the coordinate column): equal coordinates are separated by
 // the perturbation, which is larger for the smaller index. Never 0 for

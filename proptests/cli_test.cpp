@@ -415,6 +415,29 @@ TEST_CASE("cli: certify rtd (exact and --canonical) accepts rtd's output and CGA
   }
 }
 
+TEST_CASE("cli: rtd --strict on a 4x4x4 grid: 6 tetrahedra per cube, certified as strict; the canonical answer is not", "[cli]") {
+  TempDir t;
+  std::string grid;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+      for (int z = 0; z < 4; ++z) grid += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + " 0\n";
+  const fs::path in = t.file("grid.xyz", grid), canon = t.dir / "c.txt", strict = t.dir / "s.txt";
+  REQUIRE(run(t, "rtd " + in.string() + " --dim 3 -o " + canon.string()).code == 0);
+  Run s = run(t, "rtd " + in.string() + " --dim 3 --strict -o " + strict.string());
+  INFO(s.out << s.err);
+  REQUIRE(s.code == 0);
+  const std::string body = slurp(strict);
+  CHECK(std::count(body.begin(), body.end(), '\n') == 27 * 6);  // the pulling triangulation of each cube
+  Run ok = run(t, "certify rtd " + in.string() + " " + strict.string() + " --dim 3 --strict");
+  CHECK(ok.code == 0);
+  CHECK(ok.out.find("certified (rtd, strict)") == 0);
+  Run no = run(t, "certify rtd " + in.string() + " " + canon.string() + " --dim 3 --strict");  // zero-volume tetrahedra
+  CHECK(no.code == 1);
+  CHECK(no.out.find("NOT certified (rtd, strict): simplex-orientation") == 0);
+  Run both = run(t, "certify rtd " + in.string() + " " + strict.string() + " --dim 3 --strict --canonical");
+  CHECK(both.code == 2);
+}
+
 TEST_CASE("cli: dt2/rt2 --strict on a 12x12 grid: CGAL's 242 triangles, no zero-area one, certified", "[cli]") {
   TempDir t;
   std::string grid;

@@ -18,6 +18,7 @@
 
 #include "io/index_io.hpp"
 #include "peers/cgal_regular_d.hpp"
+#include "proptests/support/mpq_det.hpp"
 #include "proptests/support/rtd_brute.hpp"
 #include "proptests/support/rtd_inputs.hpp"
 #include "reference/dimension.hpp"
@@ -37,32 +38,6 @@ void check_certified(const PointSet& ps, const ref::Rtd& r) {
   REQUIRE(r.redundant == non_vertices(ps.size(), r.simplices));
 }
 
-// The sign of det[p_1 - p_0, ..., p_d - p_0] of the points `t` in that order,
-// exactly: doubles are dyadic rationals, Gaussian elimination over mpq_class
-// (independent of pred::orient_d and of CGAL).
-int exact_volume_sign(const PointSet& ps, const std::vector<Index>& t) {
-  const int d = ps.dim;
-  std::vector<std::vector<mpq_class>> m(static_cast<std::size_t>(d), std::vector<mpq_class>(static_cast<std::size_t>(d)));
-  for (int i = 0; i < d; ++i)
-    for (int j = 0; j < d; ++j)
-      m[i][j] = mpq_class(ps.point(t[static_cast<std::size_t>(i + 1)])[j]) - mpq_class(ps.point(t[0])[j]);
-  int sign = 1;
-  for (int c = 0; c < d; ++c) {
-    int r = c;
-    while (r < d && m[r][c] == 0) ++r;
-    if (r == d) return 0;
-    if (r != c) {
-      std::swap(m[r], m[c]);
-      sign = -sign;
-    }
-    if (m[c][c] < 0) sign = -sign;
-    for (int k = c + 1; k < d; ++k) {
-      const mpq_class f = m[k][c] / m[c][c];
-      for (int j = c; j < d; ++j) m[k][j] -= f * m[c][j];
-    }
-  }
-  return sign;
-}
 
 }  // namespace
 
@@ -76,7 +51,7 @@ TEST_CASE("rtd: every simplex has positive volume (det[p_1 - p_0, ..., p_d - p_0
     INFO("d=" << d);
     REQUIRE(!r.simplices.empty());
     for (const auto& t : r.simplices) {
-      REQUIRE(exact_volume_sign(ps, t) == 1);
+      REQUIRE(test::exact_volume_sign(ps, t) == 1);
       REQUIRE(peers::cgal_orientation_d(ps, t) == 1);
     }
     REQUIRE(r.simplices == peers::cgal_regular_d(ps));

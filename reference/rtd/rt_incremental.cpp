@@ -258,7 +258,7 @@ struct Inserter {
 
 }  // namespace
 
-rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats) {
+rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled) {
   validate_input(ps);
   RtdStats local;
   RtdStats& st = stats ? *stats : local;
@@ -266,6 +266,7 @@ rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats) {
   const int d = ps.dim;
   const std::vector<Index> order = insertion_order(ps);
   TriangulationD T = make_simplex(ps, order.data());
+  T.pulled = pulled;  // make_simplex decides orientations only (orient_d: no height)
   st.insertions = static_cast<std::uint64_t>(d + 1);
   std::vector<Index> redundant;
   Inserter ins{T, st, redundant, {}};

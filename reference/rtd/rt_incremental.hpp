@@ -60,6 +60,9 @@ struct Rtd {
 Rtd rtd_incremental(const PointSet& ps, RtdStats* stats = nullptr);
 
 // The same, returning the structure (for the instant flip, thesis §9.2).
-rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats = nullptr);
+// pulled: under pred::power_d_pulled instead of the canonical perturbation
+// (the strict view, strict_rtd.hpp); the algorithm is the same, it needs only
+// one consistent perturbation.
+rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats = nullptr, bool pulled = false);
 
 }  // namespace flipflop::ref

@@ -188,7 +188,7 @@ int orient(const TriangulationD& T, const Index* tuple) {
 int power(const TriangulationD& T, const Index* tuple) {
   pred::WPt p[kMaxDim + 2];
   for (int i = 0; i <= T.d + 1; ++i) p[i] = wpt(T, tuple[i]);
-  return pred::power_d(T.d, p);
+  return T.pulled ? pred::power_d_pulled(T.d, p) : pred::power_d(T.d, p);
 }
 
 bool locally_regular(const TriangulationD& T, RidgeD r) {

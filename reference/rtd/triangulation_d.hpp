@@ -106,6 +106,7 @@ struct TriangulationD {
   std::vector<std::int32_t> free_slots;  // dead slots for reuse
   std::vector<std::int32_t> vsimplex;    // n+1: a live simplex containing the vertex, kNone if not a vertex
   std::size_t live = 0;                  // live simplices (real and virtual)
+  bool pulled = false;                   // power() under pred::power_d_pulled (strict_rtd.hpp)
 
   int width() const { return d + 1; }
   Index virtual_vertex() const { return n; }
@@ -180,7 +181,8 @@ pred::Pt pt(const TriangulationD& T, Index x);    // x real
 // orient_d of d+1 REAL vertices in the given order.
 int orient(const TriangulationD& T, const Index* tuple);
 // power_d of d+2 REAL vertices: > 0 iff the last lifted point is strictly
-// below the hyperplane of the first d+1 lifted (those positively oriented).
+// below the hyperplane of the first d+1 lifted (those positively oriented);
+// pred::power_d_pulled when T.pulled.
 int power(const TriangulationD& T, const Index* tuple);
 // Locally regular (§2.2, rules above)?
 bool locally_regular(const TriangulationD& T, RidgeD r);
