@@ -689,6 +689,18 @@ FF_HD inline bool doubles_exact_minors(const double (&a)[K][K], bool lifted, Ran
   return r * gm >= -1074 && kLogFact[r] + r * mp - r * gm <= 53;
 }
 
+// det_plain<N>(t) for the run-time order r, N <= r <= min(K, 7): only orders
+// that fit t (K x K entries) are instantiated.
+template <int N, int K>
+FF_HD inline double det_plain_of_order(const double* t, int r) {
+  if constexpr (N > K || N > 7) {
+    return 0.0;  // unreachable: r <= K and r <= 7
+  } else {
+    if (r == N) return filter_detail::det_plain<N>(t);
+    return det_plain_of_order<N + 1, K>(t, r);
+  }
+}
+
 // Plain-double minor of a on the kept rows / columns (static_filter.hpp's
 // det_plain: Laplace over column subsets, sums of products as above).
 template <int K>
@@ -697,16 +709,9 @@ FF_HD inline double double_minor(const double (&a)[K][K], unsigned rows, unsigne
   const int r = kept.r;
   double t[K * K];
   kept.gather(t, [&](int i, int j) { return a[i][j]; });
-  switch (r) {
-    case 0: return 1.0;
-    case 1: return t[0];
-    case 2: return filter_detail::det_plain<2>(t);
-    case 3: return filter_detail::det_plain<3>(t);
-    case 4: return filter_detail::det_plain<4>(t);
-    case 5: return filter_detail::det_plain<5>(t);
-    case 6: return filter_detail::det_plain<6>(t);
-    default: return filter_detail::det_plain<7>(t);  // r <= K - 1 <= 7
-  }
+  if (r == 0) return 1.0;
+  if (r == 1) return t[0];
+  return det_plain_of_order<2, K>(t, r);
 }
 
 // SoS sign from the double Λ: when doubles_exact_minors holds (small
@@ -1031,6 +1036,24 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
   if (!range.finite) return non_finite_input();
   const int degree = w ? K : K - 1;
   if (range.fits(degree)) {
+    if constexpr (K <= 7) {
+      // Small integers and lattices (the exactly degenerate inputs): when
+      // every entry of Λ is a double and doubles_exact_minors proves every
+      // operation of det_plain exact for the whole K x K determinant, its
+      // plain-double value is det Λ itself — a computed 0 is a true 0 — and
+      // the same holds for every smaller minor the perturbation asks for.
+      double a[K][K];
+      if (lambda_doubles<K>(p, w, a) && doubles_exact_minors<K>(a, w != nullptr, range, K)) {
+        auto sign_of = [&](unsigned kr, unsigned kc) -> int {
+          const double m = double_minor<K>(a, kr, kc);
+          return (m > 0.0) - (m < 0.0);
+        };
+        constexpr unsigned kAll = (1u << K) - 1u;
+        const int s = sign_of(kAll, kAll);
+        if (s != 0 || !sos) return s;
+        return sos_search<K>(true, sign_of);
+      }
+    }
     int s = 2;
     if constexpr (K == 3 || K == 4)
       if (!w) s = orient_adaptive<K>(p);
