@@ -145,14 +145,18 @@ struct Mesh {
 };
 
 // Associated points grouped by triangle: segment k holds pts[lo[k] .. lo[k+1])
-// associated with (in the cone of, and beyond) triangle tri[k]; key[i] is the
-// rounded (p - t0) · ((t1 - t0) × (t2 - t0)) of pts[i] for its triangle, a
-// distance to the triangle's plane (times twice its area) for line 8;
-// xyz[3i..3i+2] its coordinates, carried along so that every pass reads
-// memory in order (the points of a segment are scattered over the input).
+// associated with (in the cone of, and beyond) triangle tri[k];
+// xyz[3i..3i+2] the coordinates of pts[i], carried along so that every pass
+// reads memory in order (the points of a segment are scattered over the
+// input; reading them from the input instead took 0.1 s more CPU time on the
+// 10^6 ball, 58 % of it on the load of the coordinates). Line 8's distance
+// key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
+// triangle (t0, t1, t2), is not stored: the round that needs it evaluates the
+// triangle's Plane again, which gives the same double as the test that put
+// the point there (same plane, same operations), at 16 bytes a point less
+// (the key in both buffers of the regrouping).
 struct Segments {
   std::vector<Index> pts;
-  std::vector<double> key;
   std::vector<double> xyz;
   std::vector<std::size_t> lo;  // size K + 1
   std::vector<std::uint32_t> tri;
@@ -161,15 +165,16 @@ struct Segments {
 
 // The buffers of the rounds, allocated once (fresh allocations every round
 // cost more in page faults than the round's work): the next round's segments
-// and the per-point child codes.
+// and the per-point child codes (a byte: m <= 4 children, or kDropped).
+constexpr std::uint8_t kDropped = 0xff;
 struct Buffers {
   Segments next;
-  std::vector<std::uint32_t> code;
+  std::vector<std::uint8_t> code;
 };
 
 // Regrouping after a round: every point of segment k goes to child c in
-// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
-// coordinates; key: its distance key for the child); child c of segment k is
+// [0, m) of k (classify(k, p, x) -> c, or kNone: dropped; x: its
+// coordinates); child c of segment k is
 // triangle child_tri(k, c). Stable: per-unit counts, a sequential scan in the
 // order (segment, child, unit), a parallel scatter. With `input`, the
 // coordinates are read from the input (round 0: S.xyz is empty). Returns the
@@ -180,14 +185,15 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
   const std::size_t nu = U.seg.size();
   const auto coords = [&](std::size_t i) { return input ? input->point(S.pts[i]) : &S.xyz[3 * i]; };
   if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
-  std::uint32_t* code = B.code.data();
+  std::uint8_t* code = B.code.data();
   std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* c = &cnt[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
-        code[i] = classify(U.seg[u], S.pts[i], coords(i), S.key[i]);  // key[i]: now the child's key
-        if (code[i] != kNone) ++c[code[i]];
+        const std::uint32_t ch = classify(U.seg[u], S.pts[i], coords(i));
+        code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
+        if (ch != kNone) ++c[ch];
       }
     }
   });
@@ -207,16 +213,14 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
     }
   N.lo.push_back(pos);
   N.pts.resize(pos);
-  N.key.resize(pos);
   N.xyz.resize(3 * pos);
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* o = &off[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
-        if (code[i] != kNone) {
+        if (code[i] != kDropped) {
           const std::size_t j = o[code[i]]++;
           N.pts[j] = S.pts[i];
-          N.key[j] = S.key[i];
           std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
         }
     }
@@ -247,8 +251,9 @@ struct Tests {
     if (sd) pl.set(sd, ps.point(x), ps.point(y));
   }
   // p on the inner side of (t0, t1, t2) — orient3d(t0, t1, t2, p) > 0, i.e.
-  // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0; key = that rounded product
-  bool inner(const Plane& face, const Index* t, Index p, const double* px, double& key) const {
+  // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0
+  bool inner(const Plane& face, const Index* t, Index p, const double* px) const {
+    double key;
     const int r = face.eval(px, key);
     if (fast && r) return r < 0;
     return orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
@@ -288,7 +293,6 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
   S.pts.reserve(n - 4);
   for (Index p = 0; p < n; ++p)
     if (p != a && p != b && p != c && p != d) S.pts.push_back(p);
-  S.key.resize(S.pts.size());  // written by round 0's classification
   Buffers B;
   S.lo = {0, S.pts.size()};
   S.tri = {0};
@@ -298,7 +302,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
-    const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t, Index p, const double* x) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -307,7 +311,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
         else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
       }
-      if (!X.inner(face[t], &M.v[3 * t], p, x, key)) return t;
+      if (!X.inner(face[t], &M.v[3 * t], p, x)) return t;
       if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
       return kNone;  // line 14: inside the tetrahedron (s, t)
     };
@@ -322,13 +326,19 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     const std::uint32_t T = M.size();
     const Units U = make_units(S.lo);
     // line 8: the furthest point of each triangle by the rounded distance keys
-    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp)
+    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp),
+    // each key from the triangle's Plane (Segments)
     std::vector<Best> ubest(U.seg.size());
     par_for(U.seg.size(), 1, [&](std::size_t ulo, std::size_t uhi) {
       for (std::size_t u = ulo; u < uhi; ++u) {
+        Plane face;
+        X.face_plane(face, &M.v[3 * S.tri[U.seg[u]]]);
         Best bb;
-        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
-          if (better(S.key[i], S.pts[i], bb)) bb = {std::isnan(S.key[i]) ? -HUGE_VAL : S.key[i], S.pts[i]};
+        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
+          double key;
+          face.eval(&S.xyz[3 * i], key);
+          if (better(key, S.pts[i], bb)) bb = {std::isnan(key) ? -HUGE_VAL : key, S.pts[i]};
+        }
         ubest[u] = bb;
       }
     });
@@ -401,7 +411,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     // lines 10-14: every point to one of the three new cones (line 13's rule,
     // as in the reference's ffhull.cpp), dropped when inside the tetrahedron
     // (s, new triangle)
-    const auto classify = [&](std::uint32_t k, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t k, Index p, const double* x) -> std::uint32_t {
       const Index v = far[k];
       if (p == v) return kNone;  // line 10
       const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
@@ -410,7 +420,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x)) return ch;
       // line 14: in the cone of t (the parent's cone, narrowed by the two
       // side tests above) and on the inner side of t: inside (s, t)
       if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
