@@ -740,13 +740,13 @@ TEST_CASE("write_file: a failure to open or to write is one error line naming th
 }
 
 // ---------------------------------------------------------------------------
-// .xyz in parallel batches: errors in file order, far into the file
+// .xyz in parallel blocks: errors in file order, far into the file
 // ---------------------------------------------------------------------------
 
 TEST_CASE("xyz: the first bad line of a large file is reported, whatever batch it is in") {
   TempDir t;
   const std::string p = t.path("big.xyz");
-  const std::size_t lines = 3'500'000;  // about 45 MiB: more than one 32 MiB batch
+  const std::size_t lines = 3'500'000;  // about 45 MiB: several 8 MiB blocks (read_xyz.cpp)
   {
     std::ofstream f(p, std::ios::binary);
     for (std::size_t i = 1; i <= lines; ++i) {
