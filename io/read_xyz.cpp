@@ -36,6 +36,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <new>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -178,7 +179,10 @@ class XyzReader {
   XyzReader& operator=(const XyzReader&) = delete;
 
   PointSet read() {
-    std::vector<char> buf(block_);
+    // a small file in one read, with a buffer of its size (still at least
+    // 2 max_line: long_line looks for a '#' within max_line bytes of a full buffer)
+    std::vector<char> buf(std::clamp<std::size_t>(static_cast<std::size_t>(std::min<std::uint64_t>(file_size_, block_)) + 1,
+                                                  2 * max_line_, block_));
     std::size_t have = 0;  // bytes in buf: the unfinished line of the last block, then new ones
     bool eof = false;
     while (!eof || have > 0) {
@@ -357,9 +361,12 @@ class XyzReader {
     if (reserved_ || file_size_ == 0 || bytes < block_ / 2) return;
     reserved_ = true;
     const double est = static_cast<double>(lines) / static_cast<double>(bytes) * static_cast<double>(file_size_);
-    const auto want = static_cast<std::size_t>(est * 1.25) + 1024;
-    ps_.coords.vec().reserve(want * dim_);
-    if (ps_.weighted) ps_.weights.vec().reserve(want);
+    const auto want = static_cast<std::size_t>(std::min(est * 1.25 + 1024, 4294967296.0));  // at most 2^32 points
+    try {
+      ps_.coords.vec().reserve(want * dim_);
+      if (ps_.weighted) ps_.weights.vec().reserve(want);
+    } catch (const std::bad_alloc&) {  // no room for the estimate: grow as the points come
+    }
   }
 
   std::string path_;
