@@ -1,17 +1,18 @@
 // read_xyz.cpp — the .xyz reader: one point per line, parsed in parallel
 // straight into the point set.
 //
-// The file is read in blocks of `block` bytes (XyzLayout) (fread into one reused buffer;
-// the unfinished last line of a block moves to the front of the next). The
-// complete lines of a block are cut into pieces of about `piece` bytes at line
-// starts; a first parallel pass counts each piece's lines, which bounds its
-// points, so that the second parallel pass parses every piece into its own
-// slice of the final coordinate array — no intermediate copy of the text or
-// of the values. Blank and comment lines leave a gap at the end of their
-// piece's slice, closed by a sequential move afterwards (nothing moves when
-// there are none). The coordinate array is reserved once from the file size
-// and the first full block's points per byte, so it is not regrown and
-// copied as it fills; memory is the point set plus one block.
+// The file is read in blocks of `block` bytes (XyzLayout; fread into one
+// reused buffer, the unfinished last line of a block moved to the front of
+// the next). The complete lines of a block are cut into pieces of about
+// `piece` bytes at line starts; a first parallel pass counts each piece's
+// lines, which bounds its points, so that the second parallel pass parses
+// every piece into its own slice of the final coordinate array — no
+// intermediate copy of the text or of the values. Blank and comment lines
+// leave a gap at the end of their piece's slice, closed by a sequential move
+// afterwards (nothing moves when there are none). The coordinate array is
+// reserved once from the file size and the first full block's points per
+// byte, so it is not regrown and copied as it fills; memory is the point set
+// plus one block.
 //
 // A line is parsed by std::from_chars straight from the buffer (parse_fast);
 // anything it does not accept outright — a '+' sign, an exponent out of
@@ -21,9 +22,9 @@
 // LineReader's line rules): the first bad line in file order stops the
 // reading after its block, a line that fails is parsed again sequentially for
 // its message, so the message does not depend on how the block was split; a
-// line longer than `max_line` (LineReader::max_line) is an error unless a '#' starts
-// within that many bytes (then its tail is skipped without being buffered,
-// however long); a file of garbage costs one block, not the file.
+// line longer than `max_line` (LineReader::max_line) is an error unless a '#'
+// starts within that many bytes (then its tail is skipped without being
+// buffered, however long); a file of garbage costs one block, not the file.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
