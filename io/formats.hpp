@@ -13,6 +13,17 @@ namespace flipflop::io::detail {
 inline constexpr int kMaxXyzColumns = 6;
 
 PointSet read_xyz(const std::string& path, int dim, bool weighted);
+
+// The .xyz reader's sizes (read_xyz.cpp): bytes read at a time, text per
+// parallel task, the longest line (text.hpp LineReader::max_line). Tests make
+// them small so that block and piece boundaries fall inside the numbers and
+// lines of small files; block is raised to at least 2 max_line.
+struct XyzLayout {
+  std::size_t block = std::size_t{8} << 20;
+  std::size_t piece = std::size_t{64} << 10;
+  std::size_t max_line = std::size_t{1} << 16;
+};
+PointSet read_xyz(const std::string& path, int dim, bool weighted, const XyzLayout& layout);
 PointSet read_off(const std::string& path, int dim, bool weighted);
 PointSet read_ply(const std::string& path, int dim, bool weighted);
 PointSet read_npy(const std::string& path, int dim, bool weighted);

@@ -33,6 +33,7 @@
 
 #include "gen/generate.hpp"
 #include "reference/certify/certify.hpp"
+#include "io/formats.hpp"
 #include "io/io.hpp"
 
 namespace fs = std::filesystem;
@@ -739,13 +740,13 @@ TEST_CASE("write_file: a failure to open or to write is one error line naming th
 }
 
 // ---------------------------------------------------------------------------
-// .xyz in parallel batches: errors in file order, far into the file
+// .xyz in parallel blocks: errors in file order, far into the file
 // ---------------------------------------------------------------------------
 
 TEST_CASE("xyz: the first bad line of a large file is reported, whatever batch it is in") {
   TempDir t;
   const std::string p = t.path("big.xyz");
-  const std::size_t lines = 3'500'000;  // about 45 MiB: more than one 32 MiB batch
+  const std::size_t lines = 3'500'000;  // about 45 MiB: several 8 MiB blocks (read_xyz.cpp)
   {
     std::ofstream f(p, std::ios::binary);
     for (std::size_t i = 1; i <= lines; ++i) {
@@ -766,6 +767,205 @@ TEST_CASE("xyz: the first bad line of a large file is reported, whatever batch i
   const PointSet ps = io::read_points(p, 3, false);
   REQUIRE(ps.size() == lines);
   for (std::size_t i = 0; i < lines; i += 9973) CHECK(ps.point(i)[2] == static_cast<double>((i + 1) % 1000));
+}
+
+// ---------------------------------------------------------------------------
+// .xyz with small blocks and pieces, against a reader written here
+// ---------------------------------------------------------------------------
+
+namespace {
+
+// The .xyz rules of read_points.hpp and text.hpp, line by line, with strtod
+// for the values: a line longer than max_line is bad unless a '#' starts
+// within max_line bytes; the text from '#' on is dropped; a line without
+// tokens is skipped; otherwise exactly cols tokens of the grammar
+// [+-](digits[.digits]|.digits)[(e|E)[+-]digits], none overflowing to Inf.
+struct OracleXyz {
+  std::size_t bad_line = 0;  // 0: none
+  std::size_t lines = 0;
+  std::vector<double> coords, weights;
+};
+bool decimal_token(const std::string& t) {
+  std::size_t i = 0;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  const auto digits = [&] {
+    const std::size_t b = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i - b;
+  };
+  std::size_t m = digits();
+  if (i < t.size() && t[i] == '.') ++i, m += digits();
+  if (m == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == t.size();
+}
+OracleXyz oracle_xyz(const std::string& text, int dim, bool weighted, std::size_t max_line) {
+  OracleXyz o;
+  const std::size_t cols = static_cast<std::size_t>(dim) + (weighted ? 1 : 0);
+  std::size_t b = 0;
+  while (b < text.size()) {
+    std::size_t e = text.find('\n', b);
+    if (e == std::string::npos) e = text.size();
+    std::string line = text.substr(b, e - b);
+    b = e + 1;
+    ++o.lines;
+    const std::size_t hash = line.find('#');
+    if (line.size() > max_line && (hash == std::string::npos || hash >= max_line)) {
+      o.bad_line = o.lines;
+      return o;
+    }
+    if (hash != std::string::npos) line.resize(hash);
+    std::vector<std::string> tok;
+    for (std::size_t i = 0; i < line.size();) {
+      if (std::strchr(" \t\r\v\f", line[i]) != nullptr) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < line.size() && std::strchr(" \t\r\v\f", line[j]) == nullptr) ++j;
+      tok.push_back(line.substr(i, j - i));
+      i = j;
+    }
+    if (tok.empty()) continue;
+    bool ok = tok.size() == cols;
+    std::vector<double> v;
+    for (std::size_t c = 0; ok && c < cols; ++c) {
+      ok = decimal_token(tok[c]);
+      if (ok) v.push_back(std::strtod(tok[c].c_str(), nullptr));
+      ok = ok && std::isfinite(v.back());
+    }
+    if (!ok) {
+      o.bad_line = o.lines;
+      return o;
+    }
+    o.coords.insert(o.coords.end(), v.begin(), v.begin() + dim);
+    if (weighted) o.weights.push_back(v[static_cast<std::size_t>(dim)]);
+  }
+  return o;
+}
+
+// A number as text, in one of many spellings (some of them refused).
+std::string number_text(std::mt19937_64& g, bool allow_bad) {
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  char buf[64];
+  const double x = u(g) * std::pow(10.0, static_cast<int>(g() % 40) - 20);
+  switch (g() % (allow_bad ? 16 : 11)) {
+    case 0: std::snprintf(buf, sizeof buf, "%.17g", x); break;
+    case 1: std::snprintf(buf, sizeof buf, "%.3e", x); break;
+    case 2: std::snprintf(buf, sizeof buf, "+%.6f", std::fabs(x)); break;
+    case 3: std::snprintf(buf, sizeof buf, "%d.", static_cast<int>(g() % 1000)); break;
+    case 4: std::snprintf(buf, sizeof buf, "-.%03d", static_cast<int>(g() % 1000)); break;
+    case 5: std::snprintf(buf, sizeof buf, "%s", g() % 2 ? "-0" : "0007.50E+01"); break;
+    case 6: std::snprintf(buf, sizeof buf, "%de-%d", static_cast<int>(g() % 9 + 1), static_cast<int>(300 + g() % 60)); break;
+    case 7: std::snprintf(buf, sizeof buf, "%.20g", 4.9406564584124654e-324 * static_cast<double>(g() % 5000)); break;
+    case 8: std::snprintf(buf, sizeof buf, "1.7976931348623157e%d", static_cast<int>(300 + g() % 8)); break;
+    case 9: std::snprintf(buf, sizeof buf, "%.25f", x * 1e-12); break;
+    case 10: std::snprintf(buf, sizeof buf, "%d", static_cast<int>(g() % 200000) - 100000); break;
+    default: {
+      static const char* bad[] = {"nan", "-inf", "Infinity", "1e", "0x1p3", "1..2", "+-1", "1,5", "abc",
+                                  "1e999", "-2e308", ".", "+", "1.5x", "e5"};
+      return bad[g() % (sizeof bad / sizeof *bad)];
+    }
+  }
+  return buf;
+}
+
+// A random .xyz text: points with varied spacing, blank and comment lines,
+// CRLF, trailing comments, now and then a long line or a bad one.
+std::string xyz_text(std::mt19937_64& g, std::size_t cols, std::size_t max_line, bool allow_bad) {
+  static const char* space[] = {" ", "  ", "\t", " \t ", "\v", "\f"};
+  std::string text;
+  const std::size_t n = g() % 40;
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned kind = static_cast<unsigned>(g() % 20);
+    std::string line;
+    if (kind == 0) {
+      line = "";
+    } else if (kind == 1) {
+      line = std::string(g() % 3, ' ') + "# comment " + std::to_string(i);
+    } else if (kind == 2) {  // longer than max_line: fine only with an early '#'
+      const bool hash = g() % 2 == 0 || !allow_bad;
+      for (std::size_t k = 0; k < cols; ++k) line += std::to_string(k + i) + " ";
+      line += std::string(hash ? "#" : "") + std::string(max_line + g() % 40, hash ? 'c' : ' ') + "3";
+    } else {
+      std::size_t c = cols;
+      if (allow_bad && kind == 3) c = g() % 2 ? cols + 1 : cols - 1;
+      if (g() % 3 == 0) line += space[g() % 6];
+      for (std::size_t k = 0; k < c; ++k) {
+        if (k) line += space[g() % 6];
+        line += number_text(g, allow_bad && g() % 8 == 0);
+      }
+      if (g() % 4 == 0) line += space[g() % 6];
+      if (g() % 5 == 0) line += "#x";
+      if (line.size() > max_line && line.find('#') >= max_line) line = "# (too long) ";
+    }
+    text += line;
+    if (i + 1 < n || g() % 2) text += g() % 4 == 0 ? "\r\n" : "\n";
+  }
+  return text;
+}
+
+// read_xyz with `layout` on `text` is the oracle's answer: the same doubles,
+// bit for bit, or one InputError line at the oracle's first bad line (or, for
+// too few points, at the last line). Returns what differs, or "".
+std::string against_oracle(const TempDir& t, const std::string& text, int dim, bool weighted,
+                           const io::detail::XyzLayout& layout) {
+  const std::string p = t.file("o.xyz", text);
+  const OracleXyz o = oracle_xyz(text, dim, weighted, layout.max_line);
+  const std::size_t pts = o.coords.size() / static_cast<std::size_t>(dim);
+  const bool error = o.bad_line != 0 || pts < static_cast<std::size_t>(dim) + 1;
+  const std::size_t line = o.bad_line != 0 ? o.bad_line : o.lines;
+  try {
+    const PointSet ps = io::detail::read_xyz(p, dim, weighted, layout);
+    if (error) return "read " + std::to_string(ps.size()) + " points, expected an error at line " + std::to_string(line);
+    if (!same_bits(ps.coords, o.coords) || !same_bits(ps.weights, o.weights))
+      return "other values (" + std::to_string(ps.size()) + " points, expected " + std::to_string(pts) + ")";
+  } catch (const InputError& e) {
+    if (!error) return std::string("unexpected error: ") + e.what();
+    if (e.line() != line) return std::string(e.what()) + " (expected line " + std::to_string(line) + ")";
+    if (std::string(e.what()).find('\n') != std::string::npos) return "a message of several lines";
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("xyz: blocks and pieces of any size read what a line-by-line strtod reader reads") {
+  TempDir t;
+  rc::prop("random text, small blocks and pieces", [&] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const int dim = *rc::gen::inRange(2, 4);
+    const bool weighted = *rc::gen::arbitrary<bool>();
+    io::detail::XyzLayout layout;
+    layout.max_line = *rc::gen::inRange<std::size_t>(60, 200);
+    layout.block = *rc::gen::inRange<std::size_t>(2 * layout.max_line, 3 * layout.max_line);
+    layout.piece = *rc::gen::inRange<std::size_t>(1, 90);
+    std::mt19937_64 g(seed);
+    const std::string text = xyz_text(g, static_cast<std::size_t>(dim) + weighted, layout.max_line, seed % 3 == 0);
+    const std::string diff = against_oracle(t, text, dim, weighted, layout);
+    RC_TAG(oracle_xyz(text, dim, weighted, layout.max_line).bad_line != 0 ? "bad line" : "no bad line");
+    RC_ASSERT(diff == "");
+  });
+}
+
+TEST_CASE("xyz: every block and piece boundary inside the numbers of one file") {
+  TempDir t;
+  std::mt19937_64 g(11);
+  std::string text;
+  do text = xyz_text(g, 3, 64, false);
+  while (text.size() < 600);
+  const OracleXyz o = oracle_xyz(text, 3, false, 64);
+  REQUIRE(o.bad_line == 0);
+  REQUIRE(o.coords.size() >= 3 * 10);
+  for (std::size_t block = 128; block < 128 + 64; ++block)
+    for (std::size_t piece = 1; piece < 48; piece += 3) {
+      INFO("block " << block << " piece " << piece);
+      CHECK(against_oracle(t, text, 3, false, {block, piece, 64}) == "");
+    }
 }
 
 // ---------------------------------------------------------------------------

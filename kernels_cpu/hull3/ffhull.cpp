@@ -12,6 +12,7 @@
 #include <cstring>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -145,49 +146,70 @@ struct Mesh {
 };
 
 // Associated points grouped by triangle: segment k holds pts[lo[k] .. lo[k+1])
-// associated with (in the cone of, and beyond) triangle tri[k]; key[i] is the
-// rounded (p - t0) · ((t1 - t0) × (t2 - t0)) of pts[i] for its triangle, a
-// distance to the triangle's plane (times twice its area) for line 8;
-// xyz[3i..3i+2] its coordinates, carried along so that every pass reads
-// memory in order (the points of a segment are scattered over the input).
+// associated with (in the cone of, and beyond) triangle tri[k];
+// xyz[3i..3i+2] the coordinates of pts[i], carried along so that every pass
+// reads memory in order (the points of a segment are scattered over the
+// input; reading them from the input in every round took 0.08–0.1 s more CPU
+// time on the 10^6 ball, most of it waiting for the loads of the
+// coordinates). Round 0's segments do not carry them: they hold most points
+// (92 % of the 10^6 ball, 82 % of the cube) in only four segments, so round
+// 1 reads the input nearly in order (with prefetching) and the largest
+// buffer of the regrouping is not allocated — 12 MB less peak memory on the
+// 10^6 ball and 17 MB on the cube, for about 0.01 s of CPU time. Line 8's distance
+// key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
+// triangle (t0, t1, t2), is not stored: the round that needs it evaluates the
+// triangle's Plane again, which gives the same double as the test that put
+// the point there (same plane, same operations), at 16 bytes a point less
+// (the key in both buffers of the regrouping).
 struct Segments {
   std::vector<Index> pts;
-  std::vector<double> key;
-  std::vector<double> xyz;
+  std::vector<double> xyz;      // empty: not carried, read from the input
   std::vector<std::size_t> lo;  // size K + 1
   std::vector<std::uint32_t> tri;
   std::size_t count() const { return tri.size(); }
+  const double* coords(const PointSet& input, std::size_t i) const {
+    return xyz.empty() ? input.point(pts[i]) : &xyz[3 * i];
+  }
+  // ahead of a pass over the points in order: a gather from the input (the
+  // loads of the coordinates) need not wait for each miss in turn
+  void prefetch(const PointSet& input, std::size_t i) const {
+    if (xyz.empty()) __builtin_prefetch(input.point(pts[i]));
+  }
 };
+constexpr std::size_t kAhead = 16;  // points prefetched ahead
 
 // The buffers of the rounds, allocated once (fresh allocations every round
 // cost more in page faults than the round's work): the next round's segments
-// and the per-point child codes.
+// and the per-point child codes (a byte: m <= 4 children, or kDropped).
+constexpr std::uint8_t kDropped = 0xff;
 struct Buffers {
   Segments next;
-  std::vector<std::uint32_t> code;
+  std::vector<std::uint8_t> code;
 };
 
 // Regrouping after a round: every point of segment k goes to child c in
-// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
-// coordinates; key: its distance key for the child); child c of segment k is
+// [0, m) of k (classify(k, p, x) -> c, or kNone: dropped; x: its
+// coordinates); child c of segment k is
 // triangle child_tri(k, c). Stable: per-unit counts, a sequential scan in the
-// order (segment, child, unit), a parallel scatter. With `input`, the
-// coordinates are read from the input (round 0: S.xyz is empty). Returns the
-// number of dropped points.
+// order (segment, child, unit), a parallel scatter. The new segments carry
+// the coordinates when `carry` (Segments). Returns the number of dropped
+// points.
 template <class Classify, class ChildTri>
-std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet* input, const Classify& classify,
-                    const ChildTri& child_tri) {
+std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet& input, bool carry,
+                    const Classify& classify, const ChildTri& child_tri) {
   const std::size_t nu = U.seg.size();
-  const auto coords = [&](std::size_t i) { return input ? input->point(S.pts[i]) : &S.xyz[3 * i]; };
+  const auto coords = [&](std::size_t i) { return S.coords(input, i); };
   if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
-  std::uint32_t* code = B.code.data();
+  std::uint8_t* code = B.code.data();
   std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* c = &cnt[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
-        code[i] = classify(U.seg[u], S.pts[i], coords(i), S.key[i]);  // key[i]: now the child's key
-        if (code[i] != kNone) ++c[code[i]];
+        if (i + kAhead < U.hi[u]) S.prefetch(input, i + kAhead);
+        const std::uint32_t ch = classify(U.seg[u], S.pts[i], coords(i));
+        code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
+        if (ch != kNone) ++c[ch];
       }
     }
   });
@@ -207,17 +229,15 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
     }
   N.lo.push_back(pos);
   N.pts.resize(pos);
-  N.key.resize(pos);
-  N.xyz.resize(3 * pos);
+  N.xyz.resize(carry ? 3 * pos : 0);
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* o = &off[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
-        if (code[i] != kNone) {
+        if (code[i] != kDropped) {
           const std::size_t j = o[code[i]]++;
           N.pts[j] = S.pts[i];
-          N.key[j] = S.key[i];
-          std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
+          if (carry) std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
         }
     }
   });
@@ -247,8 +267,9 @@ struct Tests {
     if (sd) pl.set(sd, ps.point(x), ps.point(y));
   }
   // p on the inner side of (t0, t1, t2) — orient3d(t0, t1, t2, p) > 0, i.e.
-  // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0; key = that rounded product
-  bool inner(const Plane& face, const Index* t, Index p, const double* px, double& key) const {
+  // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0
+  bool inner(const Plane& face, const Index* t, Index p, const double* px) const {
+    double key;
     const int r = face.eval(px, key);
     if (fast && r) return r < 0;
     return orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
@@ -258,11 +279,23 @@ struct Tests {
   }
 };
 
-// record: when given (the witness' `beneath`, size n), every point removed
-// early (line 14) gets the triangle whose tetrahedron with s it was proven in.
+// The triangles the construction made, in order (the tetrahedron's four
+// faces, then each round's 3 children of each split triangle), so that a
+// point's early-removal record is one index into it during the rounds (4
+// bytes a point instead of the witness' 12: 8 MB less peak memory on 10^6
+// points; the triangles are few where most points are removed early, and
+// the list is gone before flip-flop). record: when given (size n, kNoFacet),
+// every point removed early (line 14) gets the index in `made` of the
+// triangle whose tetrahedron with s it was proven in.
+struct Made {
+  std::vector<std::uint32_t> record;
+  std::vector<Triangle> made;
+};
+
 template <class Kernel>
 Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
-               const std::array<Index, 4>& tet, ref::Hull3Stats& st, std::array<Index, 3>* record) {
+               const std::array<Index, 4>& tet, ref::Hull3Stats& st, Made* rec) {
+  std::uint32_t* const record = rec ? rec->record.data() : nullptr;
   const std::size_t n = ps.size();
   const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
   const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
@@ -278,6 +311,9 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
           if (M.v[3 * r + j] == M.v[3 * t + (k + 1) % 3] && M.v[3 * r + (j + 1) % 3] == M.v[3 * t + k])
             M.nb[3 * t + k] = r;
 
+  if (rec)
+    for (std::uint32_t t = 0; t < 4; ++t) rec->made.push_back({M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]});
+
   // line 5 (round 0): each point to the cone of a face from s. The faces
   // around d are the 1-3 split of the triangle (a, c, b) by d, seen from s, so
   // line 13's rule picks the wedge around the line sd: (a,c,d), (c,b,d) or
@@ -288,7 +324,6 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
   S.pts.reserve(n - 4);
   for (Index p = 0; p < n; ++p)
     if (p != a && p != b && p != c && p != d) S.pts.push_back(p);
-  S.key.resize(S.pts.size());  // written by round 0's classification
   Buffers B;
   S.lo = {0, S.pts.size()};
   S.tri = {0};
@@ -298,7 +333,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
-    const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t, Index p, const double* x) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -307,11 +342,12 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
         else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
       }
-      if (!X.inner(face[t], &M.v[3 * t], p, x, key)) return t;
-      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      if (!X.inner(face[t], &M.v[3 * t], p, x)) return t;
+      if (record) record[p] = t;  // made[t]: face t
       return kNone;  // line 14: inside the tetrahedron (s, t)
     };
-    st.discarded_early += regroup(S, B, U, 4, &ps, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
+    st.discarded_early +=
+        regroup(S, B, U, 4, ps, false, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
   }
 
   // lines 6-14 in rounds: every triangle with points is split at once
@@ -322,13 +358,20 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     const std::uint32_t T = M.size();
     const Units U = make_units(S.lo);
     // line 8: the furthest point of each triangle by the rounded distance keys
-    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp)
+    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp),
+    // each key from the triangle's Plane (Segments)
     std::vector<Best> ubest(U.seg.size());
     par_for(U.seg.size(), 1, [&](std::size_t ulo, std::size_t uhi) {
       for (std::size_t u = ulo; u < uhi; ++u) {
+        Plane face;
+        X.face_plane(face, &M.v[3 * S.tri[U.seg[u]]]);
         Best bb;
-        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
-          if (better(S.key[i], S.pts[i], bb)) bb = {std::isnan(S.key[i]) ? -HUGE_VAL : S.key[i], S.pts[i]};
+        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
+          double key;
+          if (i + kAhead < U.hi[u]) S.prefetch(ps, i + kAhead);
+          face.eval(S.coords(ps, i), key);
+          if (better(key, S.pts[i], bb)) bb = {std::isnan(key) ? -HUGE_VAL : key, S.pts[i]};
+        }
         ubest[u] = bb;
       }
     });
@@ -365,6 +408,8 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     // per segment: planes (s; v, ta), (s; v, tb), (s; v, tc), then the three
     // new triangles' planes
     std::vector<Plane> planes(6 * K);
+    const std::uint32_t made0 = rec ? static_cast<std::uint32_t>(rec->made.size()) : 0;
+    if (rec) rec->made.resize(made0 + 3 * K);
     par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // new triangles, inner adjacency
       for (std::size_t k = lo; k < hi; ++k) {
         const std::uint32_t t = S.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k), n2 = n1 + 1;
@@ -378,6 +423,10 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         Plane* pl = &planes[6 * k];
         X.side_plane(pl[0], v, ta), X.side_plane(pl[1], v, tb), X.side_plane(pl[2], v, tc);
         X.face_plane(pl[3], &M.v[3 * t]), X.face_plane(pl[4], &M.v[3 * n1]), X.face_plane(pl[5], &M.v[3 * n2]);
+        if (rec) {  // child ch of segment k is made[made0 + 3k + ch]
+          Triangle* mk = &rec->made[made0 + 3 * k];
+          mk[0] = {ta, tb, v}, mk[1] = {tb, tc, v}, mk[2] = {tc, ta, v};
+        }
       }
     });
     par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // outer adjacency
@@ -401,7 +450,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     // lines 10-14: every point to one of the three new cones (line 13's rule,
     // as in the reference's ffhull.cpp), dropped when inside the tetrahedron
     // (s, new triangle)
-    const auto classify = [&](std::uint32_t k, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t k, Index p, const double* x) -> std::uint32_t {
       const Index v = far[k];
       if (p == v) return kNone;  // line 10
       const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
@@ -410,13 +459,13 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x)) return ch;
       // line 14: in the cone of t (the parent's cone, narrowed by the two
       // side tests above) and on the inner side of t: inside (s, t)
-      if (record) record[p] = {M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]};
+      if (record) record[p] = made0 + 3 * k + ch;
       return kNone;
     };
-    const std::size_t dropped = regroup(S, B, U, 3, nullptr, classify, [&](std::size_t k, int ch) {
+    const std::size_t dropped = regroup(S, B, U, 3, ps, true, classify, [&](std::size_t k, int ch) {
       return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
     });
     st.discarded_early += dropped - K;  // the K inserted points are not discarded
@@ -908,8 +957,19 @@ template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
                                        const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
-  if (witness) witness->beneath.assign(ps.size(), {kNoFacet, kNoFacet, kNoFacet});
-  const Mesh M = construct(ps, f, s, sd, tet, st, witness ? witness->beneath.data() : nullptr);
+  std::optional<Made> made;
+  if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
+  const Mesh M = construct(ps, f, s, sd, tet, st, made ? &*made : nullptr);
+  if (witness) {  // the records as the witness holds them: the triangles
+    witness->beneath.resize(ps.size());
+    par_for(ps.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t p = lo; p < hi; ++p) {
+        const std::uint32_t r = made->record[p];
+        witness->beneath[p] = r == kNoFacet ? std::array<Index, 3>{kNoFacet, kNoFacet, kNoFacet} : made->made[r];
+      }
+    });
+    made.reset();
+  }
   clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
   // the reference's polyhedron structure, filled from the flat arrays (same
