@@ -18,10 +18,15 @@ def timed(f):
     t = time.perf_counter(); out = f(); return time.perf_counter() - t, out
 
 
+cube, ball = rng.random((1_000_000, 3)), np.array(flipflop.generate("ball", 1_000_000, seed=1))
+one_thread = lambda p: flipflop.ConvexHull(p, threads=1)
+# threads=1 rows: core for core against Qhull (single-threaded), which load
+# from other processes distorts less than the two-thread runs
 cases = [
-    ("ConvexHull 3D, 10^6 uniform cube", rng.random((1_000_000, 3)), flipflop.ConvexHull, ss.ConvexHull),
-    ("ConvexHull 3D, 10^6 ball", np.array(flipflop.generate("ball", 1_000_000, seed=1)), flipflop.ConvexHull,
-     ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 uniform cube", cube, flipflop.ConvexHull, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 ball", ball, flipflop.ConvexHull, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 uniform cube, threads=1", cube, one_thread, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 ball, threads=1", ball, one_thread, ss.ConvexHull),
 ]
 if not only_hull:
     cases.append(("Delaunay 2D, 10^6 uniform square", rng.random((1_000_000, 2)), flipflop.Delaunay, ss.Delaunay))

@@ -9,6 +9,10 @@ build).
     (hypothesis);
   * certify() rejects flipped, missing and non-regular outputs and accepts
     scipy's correct ones;
+  * the attributes (ConvexHull's neighbors, vertices, equations, volume, area;
+    Delaunay's neighbors and convex_hull), computed in C++, equal to
+    dictionaries and numpy recomputing them from points and simplices, and to
+    scipy's;
   * bad input raises ValueError, never crashes.
 """
 import os
