@@ -64,6 +64,14 @@ def _weights(weights, n: int, what: str) -> Optional[np.ndarray]:
     return w
 
 
+def _threads(threads, what: str) -> int:
+    """0: the runtime's default (oneTBB: every core the process may use)."""
+    t = int(threads)
+    if t < 0:
+        raise ValueError(f"{what}: threads must be 0 (all cores) or positive, got {t}")
+    return t
+
+
 def _native(what: str, f, *args):
     """f(*args), a _flipflop function, with its ValueError (the command
     line's one-line message) prefixed by the caller's name."""
@@ -105,6 +113,10 @@ class ConvexHull:
     strictly extreme vertices only, each exact facet fan-triangulated from
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
+
+    threads: worker threads (0: the runtime's default, every core the
+    process may use); the answer is the same at any count. The GIL is
+    released while computing.
     """
 
     def __init__(self, points, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
@@ -119,15 +131,15 @@ class ConvexHull:
             if strict:
                 raise ValueError("ConvexHull: strict=True applies to 3D hulls")
             attributes = _native("ConvexHull", _flipflop.hull2, a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"),
-                                 int(threads))
+                                 _threads(threads, "ConvexHull"))
         elif strict:
             if backend is not None:
                 _backend(backend, _HULL_BACKENDS[3], "ConvexHull")
-            attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, a, int(threads))
+            attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, a, _threads(threads, "ConvexHull"))
             self.polygons = [np.asarray(p, dtype=np.int64) for p in polys]
         else:
             attributes = _native("ConvexHull", _flipflop.hull3, a, _backend(backend, _HULL_BACKENDS[3], "ConvexHull"),
-                                 int(threads))
+                                 _threads(threads, "ConvexHull"))
         self.simplices, self.vertices, self.neighbors, self.equations, self.volume, self.area = attributes
 
 
@@ -167,7 +179,7 @@ class Delaunay:
         self.ndim = a.shape[1]
         self.simplices, self.redundant = _native(
             "Delaunay", _flipflop.triangulate, a, w, _backend(backend, _DELAUNAY_BACKENDS[a.shape[1]], "Delaunay"),
-            bool(strict), int(threads))
+            bool(strict), _threads(threads, "Delaunay"))
         self.neighbors = _flipflop.neighbors(self.simplices)
         # the boundary facets: each simplex side without a neighbour, its
         # vertices in order with the opposite one left out

@@ -238,6 +238,9 @@ def test_hull_attributes_match_numpy_and_scipy(seed):
     for p in (rng.random((3000, 3)), rng.normal(size=(2000, 3)) * 1e3 + 5e3, rng.random((2000, 2))):
         h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
         check_hull_attributes(p, h)
+        for threads in (1, 2):  # 0, the default: the runtime's thread count; the same answer at any
+            g = flipflop.ConvexHull(p, threads=threads)
+            assert np.array_equal(g.simplices, h.simplices) and np.array_equal(g.equations, h.equations)
         # scipy's neighbors and equations, matched by vertex sets
         mine = {frozenset(x): i for i, x in enumerate(rows(h.simplices))}
         assert len(mine) == len(s.simplices)
@@ -419,6 +422,9 @@ def test_bad_arguments_raise_value_error():
         flipflop.Delaunay(p, weights=np.ones(3))
     with pytest.raises(ValueError):
         flipflop.ConvexHull(p, backend="gpu")
+    for f in (flipflop.ConvexHull, flipflop.Delaunay):
+        with pytest.raises(ValueError, match="threads"):
+            f(p, threads=-1)
     with pytest.raises(ValueError):
         flipflop.certify("hull9", p, [[0, 1, 2]])
     with pytest.raises(ValueError):
