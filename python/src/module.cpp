@@ -298,8 +298,8 @@ std::vector<std::int64_t> hull_neighbors(const std::vector<std::array<Index, K>>
 // only where the true value is not a double. The offset uses the unscaled
 // point. The volume sums signed tetrahedra from the first vertex o (on the
 // hull: every tetrahedron (o, facet) is non-negative, no cancellation);
-// facets of zero area (the canonical hull's on coplanar input) get NaN
-// normals, as numpy's 0/0 would.
+// normals by `normalise`: facets of zero area (the canonical hull's on
+// coplanar input) get NaN normals.
 struct HullMeasures {
   std::vector<double> equations;  // (m, d + 1), row-major
   double volume = 0, area = 0;
@@ -339,6 +339,28 @@ struct Sum {
   double value() const { return s + c; }
 };
 
+// |n| returned and n / |n| written to unit without overflow or underflow in
+// the squares: n is first scaled by the power of two that brings its largest
+// component into [1/2, 1) (exact). A facet of tiny but non-zero area keeps a
+// unit normal; n = 0 (a facet of zero area in floating point) gives NaN, as
+// numpy's 0/0.
+template <int D>
+double normalise(const double (&n)[D], double* unit) {
+  double m = 0;
+  for (int i = 0; i < D; ++i) m = std::max(m, std::fabs(n[i]));
+  if (m == 0) {
+    for (int i = 0; i < D; ++i) unit[i] = std::numeric_limits<double>::quiet_NaN();
+    return 0;
+  }
+  int e = 0;
+  std::frexp(m, &e);
+  double w[D], sq = 0;
+  for (int i = 0; i < D; ++i) w[i] = std::ldexp(n[i], -e), sq += w[i] * w[i];
+  const double l = std::sqrt(sq);
+  for (int i = 0; i < D; ++i) unit[i] = w[i] / l;
+  return std::ldexp(l, e);
+}
+
 HullMeasures hull3_measures(const PointSet& ps, const std::vector<Triangle>& tris, const std::vector<Index>& vertices) {
   const Scaled sc(ps, vertices);
   HullMeasures h;
@@ -348,18 +370,18 @@ HullMeasures hull3_measures(const PointSet& ps, const std::vector<Triangle>& tri
   Sum area, volume;
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const Index a = tris[i][0], b = tris[i][1], c = tris[i][2];
-    const double a0 = sc.at(a, 0) - o0, a1 = sc.at(a, 1) - o1, a2 = sc.at(a, 2) - o2;
-    const double b0 = sc.at(b, 0) - o0, b1 = sc.at(b, 1) - o1, b2 = sc.at(b, 2) - o2;
-    const double c0 = sc.at(c, 0) - o0, c1 = sc.at(c, 1) - o1, c2 = sc.at(c, 2) - o2;
+    const double A[3] = {sc.at(a, 0), sc.at(a, 1), sc.at(a, 2)}, B[3] = {sc.at(b, 0), sc.at(b, 1), sc.at(b, 2)},
+                 C[3] = {sc.at(c, 0), sc.at(c, 1), sc.at(c, 2)};
     // (b - a) x (c - a): outward, twice the facet's area
-    const double u0 = b0 - a0, u1 = b1 - a1, u2 = b2 - a2, v0 = c0 - a0, v1 = c1 - a1, v2 = c2 - a2;
-    const double n0 = u1 * v2 - u2 * v1, n1 = u2 * v0 - u0 * v2, n2 = u0 * v1 - u1 * v0;
-    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
-    area.add(0.5 * len);
-    // det[a - o, b - o, c - o] / 6: the tetrahedron (o, a, b, c)
-    volume.add((a0 * (b1 * c2 - b2 * c1) + a1 * (b2 * c0 - b0 * c2) + a2 * (b0 * c1 - b1 * c0)) / 6);
+    const double u0 = B[0] - A[0], u1 = B[1] - A[1], u2 = B[2] - A[2];
+    const double v0 = C[0] - A[0], v1 = C[1] - A[1], v2 = C[2] - A[2];
+    const double n[3] = {u1 * v2 - u2 * v1, u2 * v0 - u0 * v2, u0 * v1 - u1 * v0};
     double* eq = &h.equations[i * 4];
-    eq[0] = n0 / len, eq[1] = n1 / len, eq[2] = n2 / len;
+    area.add(0.5 * normalise(n, eq));
+    // det[a - o, b - o, c - o] / 6: the tetrahedron (o, a, b, c)
+    const double a0 = A[0] - o0, a1 = A[1] - o1, a2 = A[2] - o2, b0 = B[0] - o0, b1 = B[1] - o1, b2 = B[2] - o2;
+    const double c0 = C[0] - o0, c1 = C[1] - o1, c2 = C[2] - o2;
+    volume.add((a0 * (b1 * c2 - b2 * c1) + a1 * (b2 * c0 - b0 * c2) + a2 * (b0 * c1 - b1 * c0)) / 6);
     const double* pa = ps.point(a);
     eq[3] = -(eq[0] * pa[0] + eq[1] * pa[1] + eq[2] * pa[2]);
   }
@@ -379,13 +401,12 @@ HullMeasures hull2_measures(const PointSet& ps, const std::vector<Index>& cycle)
   Sum perimeter, area;
   for (std::size_t i = 0; i < k; ++i) {
     const Index a = cycle[i], b = cycle[(i + 1) % k];
-    const double a0 = sc.at(a, 0) - o0, a1 = sc.at(a, 1) - o1, b0 = sc.at(b, 0) - o0, b1 = sc.at(b, 1) - o1;
-    const double e0 = b0 - a0, e1 = b1 - a1;
-    const double len = std::sqrt(e0 * e0 + e1 * e1);
-    perimeter.add(len);
-    area.add(0.5 * (a0 * b1 - b0 * a1));
+    const double A[2] = {sc.at(a, 0), sc.at(a, 1)}, B[2] = {sc.at(b, 0), sc.at(b, 1)};
+    const double n[2] = {B[1] - A[1], A[0] - B[0]};  // the edge turned clockwise: outward
     double* eq = &h.equations[i * 3];
-    eq[0] = e1 / len, eq[1] = -e0 / len;  // the edge turned clockwise: outward
+    perimeter.add(normalise(n, eq));
+    const double a0 = A[0] - o0, a1 = A[1] - o1, b0 = B[0] - o0, b1 = B[1] - o1;
+    area.add(0.5 * (a0 * b1 - b0 * a1));
     const double* pa = ps.point(a);
     eq[2] = -(eq[0] * pa[0] + eq[1] * pa[1]);
   }

@@ -198,21 +198,33 @@ def facet_neighbors(simplices):
 def hull_measures(p, simplices):
     """(equations, volume, area) in numpy: unit normal of (b - a) x (c - a)
     (3D) or the edge turned clockwise (2D), offset -n.a, volume and area from
-    the divergence theorem about the first vertex."""
-    o = p[simplices[0, 0]]
+    the divergence theorem about the first vertex; from the points scaled by
+    2^k (exact) with max |p| in [1/2, 1), each normal scaled by 2^j with its
+    largest component in [1/2, 1) before its length is taken (no overflow or
+    underflow short of the result's)."""
+    k = -np.frexp(np.abs(p[np.unique(simplices)]).max())[1]
+    q = np.ldexp(p, k)
+    o = q[simplices[0, 0]]
+    a, b = (q[simplices[:, j]] for j in range(2))
     if p.shape[1] == 3:
-        a, b, c = (p[simplices[:, j]] - o for j in range(3))
+        c = q[simplices[:, 2]]
         n = np.cross(b - a, c - a)
-        area = 0.5 * np.linalg.norm(n, axis=1).sum()
-        volume = np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6
+        area_power, volume_power = 2, 3
+        volume = np.einsum("ij,ij->i", a - o, np.cross(b - o, c - o)).sum() / 6
     else:
-        a, b = (p[simplices[:, j]] - o for j in range(2))
         e = b - a
         n = np.stack([e[:, 1], -e[:, 0]], axis=1)
-        area = np.linalg.norm(e, axis=1).sum()
-        volume = 0.5 * (a[:, 0] * b[:, 1] - b[:, 0] * a[:, 1]).sum()
+        area_power, volume_power = 1, 2
+        volume = 0.5 * ((a - o)[:, 0] * (b - o)[:, 1] - (b - o)[:, 0] * (a - o)[:, 1]).sum()
+    m = np.abs(n).max(axis=1)
+    j = np.frexp(m)[1]
+    w = np.ldexp(n, -j[:, None])
+    length = np.linalg.norm(w, axis=1)
     with np.errstate(invalid="ignore"):  # zero-area facets: NaN normals
-        u = n / np.linalg.norm(n, axis=1)[:, None]
+        u = w / length[:, None]
+    with np.errstate(over="ignore", under="ignore"):  # inf or 0 where the true value is not a double
+        area = np.ldexp(np.ldexp(length, j).sum() * (0.5 if p.shape[1] == 3 else 1.0), -area_power * k)
+        volume = np.ldexp(volume, -volume_power * k)
     offset = -np.einsum("ij,ij->i", u, p[simplices[:, 0]])
     return np.hstack([u, offset[:, None]]), volume, area
 
@@ -227,7 +239,7 @@ def check_hull_attributes(p, h):
         assert np.array_equal(h.simplices[:, 1], np.roll(h.vertices, -1))
     eq, volume, area = hull_measures(p, h.simplices)
     assert h.equations.shape == eq.shape
-    assert np.allclose(h.equations, eq, rtol=1e-12, atol=1e-12 * np.abs(p).max())
+    assert np.allclose(h.equations, eq, rtol=1e-12, atol=1e-12 * np.abs(p).max(), equal_nan=True)
     assert h.volume == pytest.approx(volume, rel=1e-12)
     assert h.area == pytest.approx(area, rel=1e-12)
 
@@ -260,10 +272,8 @@ def test_hull_attributes_on_degenerate_and_strict_input():
     assert np.array_equal(h.neighbors, facet_neighbors(h.simplices))
     assert np.array_equal(h.vertices, np.unique(h.simplices))
     assert h.volume == 64 and h.area == 96
-    eq, _, _ = hull_measures(g, h.simplices)
-    assert np.array_equal(np.isnan(h.equations), np.isnan(eq))
-    ok = ~np.isnan(eq).any(axis=1)
-    assert ok.sum() >= 12 and np.allclose(h.equations[ok], eq[ok])
+    check_hull_attributes(g, h)
+    assert 12 <= (~np.isnan(h.equations).any(axis=1)).sum() < len(h.simplices)  # some facets of zero area
     st_ = flipflop.ConvexHull(g, strict=True)
     check_hull_attributes(g, st_)
     assert st_.volume == 64 and st_.area == 96 and len(st_.vertices) == 8
@@ -287,6 +297,32 @@ def test_hull_measures_at_extreme_magnitudes():
             assert g.volume == np.inf and g.area == np.inf
         else:
             assert g.volume == 0 and g.area == 0
+
+
+def test_hull_normals_of_tiny_facets():
+    # a facet 1e-100 wide beside unit edges: its cross product, 1e-200, would
+    # square to 0 (the normal to 0/0); scaled first, it keeps a unit normal
+    # (2D: an edge 1e-170 long)
+    for d, w in ((2, 1e-170), (3, 1e-100)):
+        p = np.vstack([np.zeros(d), w * np.eye(d)[:-1], np.eye(d)[-1:]])
+        h = flipflop.ConvexHull(p)
+        check_hull_attributes(p, h)
+        assert np.isfinite(h.equations).all()
+        assert np.allclose(np.linalg.norm(h.equations[:, :d], axis=1), 1)
+
+
+@pytest.mark.parametrize("dist", flipflop.distributions())
+def test_hull_attributes_on_every_family(dist):
+    # degenerate families included: duplicates (zero-length hull edges),
+    # coplanar and jittered points (facets of zero or tiny area), 1e+-300
+    p = flipflop.generate(dist, 300, seed=3)
+    try:
+        h = flipflop.ConvexHull(p)
+    except ValueError:  # lower-dimensional families
+        return
+    check_hull_attributes(p, h)
+    if p.shape[1] == 3:
+        check_hull_attributes(p, flipflop.ConvexHull(p, strict=True))
 
 
 @pytest.mark.parametrize("d,n", [(2, 3000), (3, 500), (4, 120)])
