@@ -1,30 +1,48 @@
 """flipflop vs scipy.spatial (Qhull) from Python, whole calls, one process, medians of R runs
-(argv[1], default 3): build/python-venv/bin/python docs/bench/python_vs_scipy.py 3"""
-import statistics, sys, time
+(argv[1], default 3): build/python-venv/bin/python docs/bench/python_vs_scipy.py 3 [hull]
+
+Every attribute both compute eagerly is included (flipflop: certification, neighbors,
+vertices, equations, volume, area). The two libraries' runs alternate (flipflop, scipy,
+flipflop, ...), so that load from other processes, which changes over seconds on a shared
+machine, weighs on both alike; the load average is printed before and after. With "hull"
+as argv[2] only the ConvexHull rows run."""
+import os, statistics, sys, time
 import numpy as np, scipy, scipy.spatial as ss, flipflop
 
 R = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+only_hull = len(sys.argv) > 2 and sys.argv[2] == "hull"
 rng = np.random.default_rng(1)
 
-def med(f):
-    ts = []
-    for _ in range(R):
-        t = time.perf_counter(); out = f(); ts.append(time.perf_counter() - t)
-    return statistics.median(ts), out
 
+def timed(f):
+    t = time.perf_counter(); out = f(); return time.perf_counter() - t, out
+
+
+cube, ball = rng.random((1_000_000, 3)), np.array(flipflop.generate("ball", 1_000_000, seed=1))
+one_thread = lambda p: flipflop.ConvexHull(p, threads=1)
+# threads=1 rows: core for core against Qhull (single-threaded), which load
+# from other processes distorts less than the two-thread runs
+cases = [
+    ("ConvexHull 3D, 10^6 uniform cube", cube, flipflop.ConvexHull, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 ball", ball, flipflop.ConvexHull, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 uniform cube, threads=1", cube, one_thread, ss.ConvexHull),
+    ("ConvexHull 3D, 10^6 ball, threads=1", ball, one_thread, ss.ConvexHull),
+]
+if not only_hull:
+    cases.append(("Delaunay 2D, 10^6 uniform square", rng.random((1_000_000, 2)), flipflop.Delaunay, ss.Delaunay))
+load0 = os.getloadavg()
 rows = []
-for name, pts, ff, sp in [
-    ("ConvexHull 3D, 10^6 uniform cube", rng.random((1_000_000, 3)), flipflop.ConvexHull, ss.ConvexHull),
-    ("ConvexHull 3D, 10^6 ball", None, flipflop.ConvexHull, ss.ConvexHull),
-    ("Delaunay 2D, 10^6 uniform square", rng.random((1_000_000, 2)), flipflop.Delaunay, ss.Delaunay),
-]:
-    if pts is None:
-        pts = flipflop.generate("ball", 1_000_000, seed=1)
-    tf, a = med(lambda: ff(pts))
-    ts, b = med(lambda: sp(pts))
-    same = len(a.simplices) == len(b.simplices)
-    rows.append((name, tf, ts, ts / tf, len(a.simplices), len(b.simplices)))
-print(f"numpy {np.__version__}, scipy {scipy.__version__}, flipflop {flipflop.__version__}, median of {R}")
+for name, pts, ff, sp in cases:
+    tf, ts = [], []
+    for _ in range(R):
+        t, a = timed(lambda: ff(pts)); tf.append(t)
+        t, b = timed(lambda: sp(pts)); ts.append(t)
+    f, s = statistics.median(tf), statistics.median(ts)
+    rows.append((name, f, s, s / f, len(a.simplices), len(b.simplices)))
+load1 = os.getloadavg()
+print(f"numpy {np.__version__}, scipy {scipy.__version__}, flipflop {flipflop.__version__}, median of {R}, "
+      f"alternating; load average (1, 5, 15 min) {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f} before, "
+      f"{load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f} after, {os.cpu_count()} cores")
 print("| call | flipflop | scipy.spatial | scipy / flipflop | simplices (flipflop, scipy) |")
 print("| --- | --- | --- | --- | --- |")
 for n, tf, ts, r, ka, kb in rows:

@@ -32,16 +32,18 @@ _HULL_BACKENDS = {2: ("cpu", "reference"), 3: ("cpu", "reference")}
 _DELAUNAY_BACKENDS = {2: ("cpu", "reference"), 3: ("reference",), 4: ("reference",), 5: ("reference",)}
 
 
-def _points(points, dims: Sequence[int], what: str) -> np.ndarray:
+def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:
     """float64, C-contiguous (no copy when it already is), shape (n, d) with d
-    in dims, finite; ValueError otherwise."""
+    in dims, finite; ValueError otherwise. finite=False leaves the check for
+    NaN and infinity to the compiled call (every _flipflop function makes it,
+    in one pass without a temporary array; _native names the caller)."""
     try:
         a = np.asarray(points, dtype=np.float64)
     except (TypeError, ValueError) as e:
         raise ValueError(f"{what}: points must be numeric: {e}") from None
     if a.ndim != 2 or a.shape[1] not in dims:
         raise ValueError(f"{what}: points must have shape (n, d) with d in {tuple(dims)}, got {a.shape}")
-    if not np.isfinite(a).all():
+    if finite and not np.isfinite(a).all():
         raise ValueError(f"{what}: the points hold NaN or infinite coordinates")
     if a.shape[0] < a.shape[1] + 1:
         raise ValueError(f"{what}: {a.shape[0]} points, at least {a.shape[1] + 1} needed in {a.shape[1]}D")
@@ -60,6 +62,23 @@ def _weights(weights, n: int, what: str) -> Optional[np.ndarray]:
     if not np.isfinite(w).all():
         raise ValueError(f"{what}: the weights hold NaN or infinite values")
     return w
+
+
+def _threads(threads, what: str) -> int:
+    """0: the runtime's default (oneTBB: every core the process may use)."""
+    t = int(threads)
+    if t < 0:
+        raise ValueError(f"{what}: threads must be 0 (all cores) or positive, got {t}")
+    return t
+
+
+def _native(what: str, f, *args):
+    """f(*args), a _flipflop function, with its ValueError (the command
+    line's one-line message) prefixed by the caller's name."""
+    try:
+        return f(*args)
+    except ValueError as e:
+        raise ValueError(f"{what}: {e}") from None
 
 
 def _backend(backend: Optional[str], allowed: Sequence[str], what: str) -> str:
@@ -81,8 +100,11 @@ class ConvexHull:
       vertices   2D: the hull vertices counter-clockwise from the smallest
                  index; 3D: sorted
       equations  (m, d+1) [unit outward normal, offset]: normal.x + offset
-                 <= 0 inside (floating point, from the exact facets)
-      volume, area  (2D: area and perimeter; 3D: volume and surface area)
+                 <= 0 inside (floating point, from the exact facets; NaN
+                 normals for the zero-area facets of degenerate input)
+      volume, area  (2D: area and perimeter; 3D: volume and surface area;
+                 inf or 0 only where the true value is not a double)
+    All are computed once, in the compiled call, from the certified facets.
 
     The canonical answer (default) is flipflop's unique answer under
     Simulation of Simplicity: on degenerate input it may keep points inside
@@ -91,63 +113,34 @@ class ConvexHull:
     strictly extreme vertices only, each exact facet fan-triangulated from
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
+
+    threads: worker threads (0: the runtime's default, every core the
+    process may use); the answer is the same at any count. The GIL is
+    released while computing.
     """
 
     def __init__(self, points, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
-        a = _points(points, (2, 3), "ConvexHull")
+        a = _points(points, (2, 3), "ConvexHull", finite=False)
         d = a.shape[1]
         self.points = a
         self.ndim = d
         self.polygons = None
+        # every attribute comes from the compiled call, computed there in one
+        # pass over the certified facets (python/src/module.cpp: HullMeasures)
         if d == 2:
             if strict:
                 raise ValueError("ConvexHull: strict=True applies to 3D hulls")
-            cycle = _flipflop.hull2(a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"), int(threads))
-            self.vertices = cycle
-            self.simplices = np.stack([cycle, np.roll(cycle, -1)], axis=1)
+            attributes = _native("ConvexHull", _flipflop.hull2, a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"),
+                                 _threads(threads, "ConvexHull"))
         elif strict:
             if backend is not None:
                 _backend(backend, _HULL_BACKENDS[3], "ConvexHull")
-            ext, polys = _flipflop.hull3_strict(a, False)
-            _, tris = _flipflop.hull3_strict(a, True)
-            self.vertices = ext
+            attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, a, _threads(threads, "ConvexHull"))
             self.polygons = [np.asarray(p, dtype=np.int64) for p in polys]
-            self.simplices = np.asarray(tris, dtype=np.int64).reshape(-1, 3)
         else:
-            self.simplices = _flipflop.hull3(a, _backend(backend, _HULL_BACKENDS[3], "ConvexHull"), int(threads))
-            self.vertices = np.unique(self.simplices)
-        self.neighbors = _flipflop.neighbors(np.ascontiguousarray(self.simplices))
-        self._measures()
-
-    def _measures(self) -> None:
-        p = self.points
-        # normals from the points scaled by a power of two (exact), so that
-        # 1e+-300 inputs give unit normals; volume and area overflow to inf
-        # or underflow to 0 where the true value is not a double
-        big = float(np.max(np.abs(p))) if p.size else 1.0
-        shift = -int(np.frexp(big)[1]) if big > 0 else 0
-
-        def scaled(x):
-            return np.ldexp(x, shift)
-        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
-            if self.ndim == 2:
-                q = p[self.vertices]
-                r = np.roll(q, -1, axis=0)
-                self.volume = float(0.5 * np.sum(q[:, 0] * r[:, 1] - r[:, 0] * q[:, 1]))
-                e = r - q
-                self.area = float(np.sum(np.hypot(e[:, 0], e[:, 1])))
-                es = np.roll(scaled(q), -1, axis=0) - scaled(q)
-                n = np.stack([es[:, 1], -es[:, 0]], axis=1)
-                base = q
-            else:
-                a, b, c = (p[self.simplices[:, j]] for j in range(3))
-                cr = np.cross(b - a, c - a)
-                self.area = float(0.5 * np.sum(np.linalg.norm(cr, axis=1)))
-                self.volume = float(np.sum(np.einsum("ij,ij->i", a, np.cross(b, c))) / 6.0)
-                n = np.cross(scaled(b) - scaled(a), scaled(c) - scaled(a))
-                base = a
-            unit = n / np.linalg.norm(n, axis=1)[:, None]
-            self.equations = np.hstack([unit, -np.einsum("ij,ij->i", unit, base)[:, None]])
+            attributes = _native("ConvexHull", _flipflop.hull3, a, _backend(backend, _HULL_BACKENDS[3], "ConvexHull"),
+                                 _threads(threads, "ConvexHull"))
+        self.simplices, self.vertices, self.neighbors, self.equations, self.volume, self.area = attributes
 
 
 class Delaunay:
@@ -179,18 +172,21 @@ class Delaunay:
 
     def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None,
                  threads: int = 0):
-        a = _points(points, (2, 3, 4, 5), "Delaunay")
+        a = _points(points, (2, 3, 4, 5), "Delaunay", finite=False)
         w = _weights(weights, a.shape[0], "Delaunay")
         self.points = a
         self.weights = w
         self.ndim = a.shape[1]
-        self.simplices, self.redundant = _flipflop.triangulate(
-            a, w, _backend(backend, _DELAUNAY_BACKENDS[a.shape[1]], "Delaunay"), bool(strict), int(threads))
+        self.simplices, self.redundant = _native(
+            "Delaunay", _flipflop.triangulate, a, w, _backend(backend, _DELAUNAY_BACKENDS[a.shape[1]], "Delaunay"),
+            bool(strict), _threads(threads, "Delaunay"))
         self.neighbors = _flipflop.neighbors(self.simplices)
-        hull = []
-        for i, j in zip(*np.nonzero(self.neighbors < 0)):
-            hull.append(np.delete(self.simplices[i], j))
-        self.convex_hull = np.array(hull, dtype=np.int64).reshape(-1, self.ndim)
+        # the boundary facets: each simplex side without a neighbour, its
+        # vertices in order with the opposite one left out
+        i, j = np.nonzero(self.neighbors < 0)
+        keep = np.ones((len(i), self.ndim + 1), dtype=bool)
+        keep[np.arange(len(i)), j] = False
+        self.convex_hull = self.simplices[i][keep].reshape(-1, self.ndim)
 
     def find_simplex(self, xi) -> np.ndarray:
         """For each point of xi (shape (..., d)), the index of a simplex that

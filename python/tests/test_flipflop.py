@@ -9,6 +9,10 @@ build).
     (hypothesis);
   * certify() rejects flipped, missing and non-regular outputs and accepts
     scipy's correct ones;
+  * the attributes (ConvexHull's neighbors, vertices, equations, volume, area;
+    Delaunay's neighbors and convex_hull), computed in C++, equal to
+    dictionaries and numpy recomputing them from points and simplices, and to
+    scipy's;
   * bad input raises ValueError, never crashes.
 """
 import os
@@ -170,6 +174,172 @@ def test_certify_accepts_scipy_and_rejects_broken_outputs():
     assert "regular" in r.condition or "orientation" in r.condition or "manifold" in r.condition, r
 
 
+# ---- the attributes against independent computations -------------------------------
+# ConvexHull's neighbors, vertices, equations, volume and area are computed in
+# C++ in one pass over the certified facets (module.cpp), Delaunay's neighbors
+# by bucketing facets under their smallest vertex: here they are recomputed
+# from points and simplices alone, with dictionaries and numpy.
+
+def facet_neighbors(simplices):
+    """neighbors by a dictionary from sorted facets to (simplex, slot)."""
+    k = simplices.shape[1]
+    seen, out = {}, -np.ones_like(simplices)
+    for i, x in enumerate(rows(simplices)):
+        for j in range(k):
+            f = tuple(sorted(x[:j] + x[j + 1:]))
+            if f in seen:
+                a, b = seen.pop(f)
+                out[i, j], out[a, b] = a, i
+            else:
+                seen[f] = (i, j)
+    return out
+
+
+def hull_measures(p, simplices):
+    """(equations, volume, area) in numpy: unit normal of (b - a) x (c - a)
+    (3D) or the edge turned clockwise (2D), offset -n.a, volume and area from
+    the divergence theorem about the first vertex; from the points scaled by
+    2^k (exact) with max |p| in [1/2, 1), each normal scaled by 2^j with its
+    largest component in [1/2, 1) before its length is taken (no overflow or
+    underflow short of the result's)."""
+    k = -np.frexp(np.abs(p[np.unique(simplices)]).max())[1]
+    q = np.ldexp(p, k)
+    o = q[simplices[0, 0]]
+    a, b = (q[simplices[:, j]] for j in range(2))
+    if p.shape[1] == 3:
+        c = q[simplices[:, 2]]
+        n = np.cross(b - a, c - a)
+        area_power, volume_power = 2, 3
+        volume = np.einsum("ij,ij->i", a - o, np.cross(b - o, c - o)).sum() / 6
+    else:
+        e = b - a
+        n = np.stack([e[:, 1], -e[:, 0]], axis=1)
+        area_power, volume_power = 1, 2
+        volume = 0.5 * ((a - o)[:, 0] * (b - o)[:, 1] - (b - o)[:, 0] * (a - o)[:, 1]).sum()
+    m = np.abs(n).max(axis=1)
+    j = np.frexp(m)[1]
+    w = np.ldexp(n, -j[:, None])
+    length = np.linalg.norm(w, axis=1)
+    with np.errstate(invalid="ignore"):  # zero-area facets: NaN normals
+        u = w / length[:, None]
+    with np.errstate(over="ignore", under="ignore"):  # inf or 0 where the true value is not a double
+        area = np.ldexp(np.ldexp(length, j).sum() * (0.5 if p.shape[1] == 3 else 1.0), -area_power * k)
+        volume = np.ldexp(volume, -volume_power * k)
+    offset = -np.einsum("ij,ij->i", u, p[simplices[:, 0]])
+    return np.hstack([u, offset[:, None]]), volume, area
+
+
+def check_hull_attributes(p, h):
+    assert np.array_equal(h.neighbors, facet_neighbors(h.simplices))
+    assert (h.neighbors >= 0).all()  # a closed surface / cycle
+    if p.shape[1] == 3:
+        assert np.array_equal(h.vertices, np.unique(h.simplices))
+    else:  # the cycle: simplices are its consecutive pairs
+        assert np.array_equal(h.simplices[:, 0], h.vertices)
+        assert np.array_equal(h.simplices[:, 1], np.roll(h.vertices, -1))
+    eq, volume, area = hull_measures(p, h.simplices)
+    assert h.equations.shape == eq.shape
+    assert np.allclose(h.equations, eq, rtol=1e-12, atol=1e-12 * np.abs(p).max(), equal_nan=True)
+    assert h.volume == pytest.approx(volume, rel=1e-12)
+    assert h.area == pytest.approx(area, rel=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_hull_attributes_match_numpy_and_scipy(seed):
+    rng = np.random.default_rng(20 + seed)
+    for p in (rng.random((3000, 3)), rng.normal(size=(2000, 3)) * 1e3 + 5e3, rng.random((2000, 2))):
+        h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
+        check_hull_attributes(p, h)
+        for threads in (1, 2):  # 0, the default: the runtime's thread count; the same answer at any
+            g = flipflop.ConvexHull(p, threads=threads)
+            assert np.array_equal(g.simplices, h.simplices) and np.array_equal(g.equations, h.equations)
+        # scipy's neighbors and equations, matched by vertex sets
+        mine = {frozenset(x): i for i, x in enumerate(rows(h.simplices))}
+        assert len(mine) == len(s.simplices)
+        for i, x in enumerate(rows(s.simplices)):
+            k = mine[frozenset(x)]
+            assert np.allclose(h.equations[k], s.equations[i], rtol=1e-9, atol=1e-9 * np.abs(p).max())
+            for j, v in enumerate(x):
+                jj = rows(h.simplices)[k].index(v)
+                assert set(h.simplices[h.neighbors[k, jj]]) == set(s.simplices[s.neighbors[i, j]])
+
+
+def test_hull_attributes_on_degenerate_and_strict_input():
+    # the 5x5x5 grid: the canonical hull's coplanar facets (zero-area
+    # triangles among them have NaN normals, as numpy's 0/0) and the strict view
+    g = np.array([(x, y, z) for x in range(5) for y in range(5) for z in range(5)], dtype=np.float64)
+    h = flipflop.ConvexHull(g)
+    assert np.array_equal(h.neighbors, facet_neighbors(h.simplices))
+    assert np.array_equal(h.vertices, np.unique(h.simplices))
+    assert h.volume == 64 and h.area == 96
+    check_hull_attributes(g, h)
+    assert 12 <= (~np.isnan(h.equations).any(axis=1)).sum() < len(h.simplices)  # some facets of zero area
+    st_ = flipflop.ConvexHull(g, strict=True)
+    check_hull_attributes(g, st_)
+    assert st_.volume == 64 and st_.area == 96 and len(st_.vertices) == 8
+
+
+def test_hull_measures_at_extreme_magnitudes():
+    # computed from points scaled by a power of two: unit normals at any
+    # magnitude; volume and area scaled back, inf or 0 only where the true
+    # value is not a double
+    p = np.random.default_rng(8).integers(-1000, 1000, (300, 3)).astype(np.float64)
+    h = flipflop.ConvexHull(p)
+    for scale, k in ((2.0**-300, 2.0**-300), (2.0**300, 2.0**300), (1e300, None), (1e-300, None)):
+        q = p * scale
+        g = flipflop.ConvexHull(q)
+        assert np.array_equal(g.simplices, h.simplices)
+        assert np.allclose(g.equations[:, :3], h.equations[:, :3], rtol=1e-12, atol=1e-15)
+        if k is not None:  # exact powers of two: the same digits
+            assert g.volume == pytest.approx(h.volume * k**3, rel=1e-12)
+            assert g.area == pytest.approx(h.area * k**2, rel=1e-12)
+        elif scale > 1:
+            assert g.volume == np.inf and g.area == np.inf
+        else:
+            assert g.volume == 0 and g.area == 0
+
+
+def test_hull_normals_of_tiny_facets():
+    # a facet 1e-100 wide beside unit edges: its cross product, 1e-200, would
+    # square to 0 (the normal to 0/0); scaled first, it keeps a unit normal
+    # (2D: an edge 1e-170 long)
+    for d, w in ((2, 1e-170), (3, 1e-100)):
+        p = np.vstack([np.zeros(d), w * np.eye(d)[:-1], np.eye(d)[-1:]])
+        h = flipflop.ConvexHull(p)
+        check_hull_attributes(p, h)
+        assert np.isfinite(h.equations).all()
+        assert np.allclose(np.linalg.norm(h.equations[:, :d], axis=1), 1)
+
+
+@pytest.mark.parametrize("dist", flipflop.distributions())
+def test_hull_attributes_on_every_family(dist):
+    # degenerate families included: duplicates (zero-length hull edges),
+    # coplanar and jittered points (facets of zero or tiny area), 1e+-300
+    p = flipflop.generate(dist, 300, seed=3)
+    try:
+        h = flipflop.ConvexHull(p)
+    except ValueError:  # lower-dimensional families
+        return
+    check_hull_attributes(p, h)
+    if p.shape[1] == 3:
+        check_hull_attributes(p, flipflop.ConvexHull(p, strict=True))
+
+
+@pytest.mark.parametrize("d,n", [(2, 3000), (3, 500), (4, 120)])
+def test_delaunay_neighbors_and_convex_hull_independent(d, n):
+    rng = np.random.default_rng(30 + d)
+    grid = np.array(np.meshgrid(*[range(4 if d < 4 else 3)] * d)).reshape(d, -1).T.astype(np.float64)
+    for p in (rng.random((n, d)), grid):  # random, and cospherical (flat simplices)
+        t = flipflop.Delaunay(p)
+        assert np.array_equal(t.neighbors, facet_neighbors(t.simplices))
+        hull = [[v for l, v in enumerate(t.simplices[i]) if l != j]
+                for i in range(len(t.simplices)) for j in range(d + 1) if t.neighbors[i, j] < 0]
+        assert np.array_equal(t.convex_hull, np.array(hull, dtype=np.int64).reshape(-1, d))
+    s = ss.Delaunay(p := rng.random((n, d)))
+    t = flipflop.Delaunay(p)
+    assert {frozenset(x) for x in rows(t.convex_hull)} == {frozenset(x) for x in rows(s.convex_hull)}
+
+
 # ---- the command line, byte for byte, on every generator family ---------------------
 
 @needs_cli
@@ -260,10 +430,26 @@ def test_instant_flip_matches_a_fresh_triangulation():
     np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]),
 ])
 def test_bad_input_raises_value_error(bad):
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="^ConvexHull: "):
         flipflop.ConvexHull(bad)
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="^Delaunay: "):
         flipflop.Delaunay(bad)
+
+
+def test_non_finite_values_found_anywhere():
+    # the compiled check sums x * 0 in four lanes and a tail: a NaN or an
+    # infinity in every lane and in the tail
+    p = np.random.default_rng(6).random((1001, 3))
+    for i in range(3 * 1001 - 9, 3 * 1001):
+        for bad in (np.nan, np.inf, -np.inf):
+            q = p.copy()
+            q.flat[i] = bad
+            with pytest.raises(ValueError, match="^ConvexHull: the points hold NaN or infinite"):
+                flipflop.ConvexHull(q)
+    w = np.zeros(1001)
+    w[-1] = np.nan
+    with pytest.raises(ValueError, match="weights hold NaN"):
+        flipflop.Delaunay(p[:, :2].copy(), weights=w)
 
 
 def test_bad_arguments_raise_value_error():
@@ -272,6 +458,9 @@ def test_bad_arguments_raise_value_error():
         flipflop.Delaunay(p, weights=np.ones(3))
     with pytest.raises(ValueError):
         flipflop.ConvexHull(p, backend="gpu")
+    for f in (flipflop.ConvexHull, flipflop.Delaunay):
+        with pytest.raises(ValueError, match="threads"):
+            f(p, threads=-1)
     with pytest.raises(ValueError):
         flipflop.certify("hull9", p, [[0, 1, 2]])
     with pytest.raises(ValueError):
