@@ -160,9 +160,10 @@ class Delaunay:
     The canonical answer may hold simplices of zero volume on degenerate
     input (collinear or cospherical points): it is the unique answer under
     Simulation of Simplicity, the one every backend reproduces. strict=True
-    (2D) returns the strict view instead: a regular triangulation of the
-    exact input without zero-area triangles (the grid's 2(k-1)^2 triangles),
-    certified (`dt2 --strict` on the command line).
+    returns the strict view instead: a regular triangulation of the exact
+    input without zero-volume simplices (the 2D grid's 2(k-1)^2 triangles, d!
+    simplices per cube of a grid in d >= 3), certified (`dt2 --strict`,
+    `rtd --strict` on the command line).
 
     backend: 'cpu' (2D only, the default there: the multithreaded kernel of
     kernels_cpu/rt2) or 'reference' (the exact sequential reference: ffRT in

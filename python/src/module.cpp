@@ -46,6 +46,7 @@
 #include "reference/hull3/strict_hull3.hpp"
 #include "reference/rt2/rt2.hpp"
 #include "reference/rt2/strict_rt2.hpp"
+#include "reference/rtd/strict_rtd.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "kernels_cpu/rtd/instant_flip.hpp"
@@ -545,8 +546,6 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
   if (!(backend == "reference" || (backend == "cpu" && d == 2)))
     throw std::invalid_argument("Delaunay backends: 'cpu' (2D), 'reference'; got '" + backend + "'");
-  if (strict && d != 2)
-    throw std::invalid_argument("Delaunay: the strict view (no zero-volume simplex) exists for 2D input only");
   std::vector<std::vector<Index>> simplices;
   std::vector<Triangle> tris;  // d = 2 (not copied into `simplices`: 2 * 10^6 small vectors took 0.2 s)
   std::vector<Index> redundant;
@@ -574,6 +573,11 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       check_certified(certify::rtd(ps, r.simplices), "Delaunay");
       simplices = std::move(r.simplices);
       redundant = std::move(r.redundant);
+      if (strict) {  // `rtd --strict`: certified at the exact level (no zero-volume simplex)
+        simplices = ref::strict_rtd(ps, simplices);
+        check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
+        redundant = non_vertices(ps.size(), simplices);
+      }
     }
   }
   return {d == 2 ? cells_array(tris, 3) : cells_array(simplices, static_cast<std::size_t>(d + 1)),

@@ -496,8 +496,24 @@ def test_strict_delaunay_identical_to_command_line(tmp_path):
     area = [np.cross(p[b] - p[a], p[c] - p[a]) for a, b, c in t.simplices]
     assert min(area) > 0
     assert flipflop.certify("delaunay", p, t.simplices)
-    with pytest.raises(ValueError):
-        flipflop.Delaunay(np.random.default_rng(0).random((20, 3)), strict=True)
+
+
+@needs_cli
+def test_strict_delaunay_3d_identical_to_command_line(tmp_path):
+    # a 4x4x4 grid: the canonical answer has zero-volume tetrahedra; the
+    # strict view 6 per cube, positive volume, what `rtd --strict` writes
+    p = np.array([(x, y, z) for x in range(4) for y in range(4) for z in range(4)], dtype=np.float64)
+    f = tmp_path / "g.xyz"
+    write_xyz(f, p, np.zeros(len(p)))
+    t = flipflop.Delaunay(p, strict=True)
+    code, out, _ = cli("rtd", f, "--dim", "3", "--strict")
+    assert code == 0 and as_text(t.simplices) == out
+    assert len(t.simplices) == 27 * 6
+    vol = [np.linalg.det(p[s[1:]] - p[s[0]]) for s in t.simplices]
+    assert min(vol) > 0
+    assert len(flipflop.Delaunay(p).simplices) > len(t.simplices)
+    assert not flipflop.certify("delaunay", p, flipflop.Delaunay(p).simplices)  # zero volume at the exact level
+    assert flipflop.certify("delaunay", p, t.simplices)
 
 
 @needs_cli
