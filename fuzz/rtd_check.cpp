@@ -22,7 +22,8 @@
 //     and, for d = 2, to ref::rt2_ffrt's; its redundant list is exactly the
 //     non-vertices and its counters obey RT+1's bookkeeping (insertions =
 //     d+1 + placed + 1-(d+1) flips; insertions + redundant - removed = n;
-//     removed = (d+1)-1 flips; the queue runs empty);
+//     removed = (d+1)-1 flips; the queue runs empty); its strict view
+//     (reference/rtd/strict_rtd.hpp) is certified at the exact level;
 //   * the instant flip from T = build_rtd(S ⊕ W) to U, with insertion
 //     events (a redundant point enters by a 1-(d+1) flip when it becomes
 //     non-redundant). Coordinates in general position (no d+1 points on a
@@ -61,6 +62,7 @@
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/rt_incremental.hpp"
+#include "reference/rtd/strict_rtd.hpp"
 
 namespace flipflop::fuzz {
 
@@ -138,6 +140,11 @@ ref::Rtd check_rt_incremental(const PointSet& ps) {
   const ref::Rtd R = must_return(ps, {}, "rtd_incremental", [&] { return ref::rtd_incremental(ps, &st); });
   const certify::Report rep = certify::rtd(ps, R.simplices);
   if (!rep.ok) fail_on(ps, {}, "certify::rtd rejected rtd_incremental: " + rep.message(), describe(R.simplices));
+  {  // the strict view (strict_rtd.hpp): certified at the exact level (no zero-volume simplex)
+    const Simplices view = must_return(ps, {}, "strict_rtd", [&] { return ref::strict_rtd(ps, R.simplices); });
+    const certify::Report rs = certify::rtd(ps, view, certify::Level::exact);
+    if (!rs.ok) fail_on(ps, {}, "certify::rtd (exact) rejected the strict view: " + rs.message(), describe(view));
+  }
   if (test::brute_rtd(ps) != R.simplices)
     fail_on(ps, {}, "rtd_incremental differs from the definition (brute_rtd)",
             "rtd_incremental:\n" + describe(R.simplices) + "brute_rtd:\n" + describe(test::brute_rtd(ps)));
