@@ -95,10 +95,15 @@ Index par_argmax(std::size_t n, const Key& key) {
   std::vector<Best> part(chunks);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
-      Best b;
-      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
+      // `better` within a chunk, whose indices increase: after the first
+      // element only a strictly larger key wins (a NaN key compares false,
+      // like -inf against any best), one comparison an element
+      const std::size_t first = c * kChunk, end = std::min(n, (c + 1) * kChunk);
+      const double k0 = key(static_cast<Index>(first));
+      Best b{std::isnan(k0) ? -HUGE_VAL : k0, static_cast<Index>(first)};
+      for (std::size_t p = first + 1; p < end; ++p) {
         const double k = key(static_cast<Index>(p));
-        if (better(k, static_cast<Index>(p), b)) b = {std::isnan(k) ? -HUGE_VAL : k, static_cast<Index>(p)};
+        if (k > b.key) b = {k, static_cast<Index>(p)};
       }
       part[c] = b;
     }
@@ -210,20 +215,29 @@ std::vector<double> filter_representatives(std::size_t m, const Value& value) {
   std::vector<double> reps(chunks * 3, 0.0);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
-      double big = 0.0, low = 0.0, bad = 0.0;
+      // on the bits (one pass, few branches, all predictable): a finite
+      // value's magnitude orders as its bits without the sign; its lowest
+      // set bit is low_bit_exponent's
+      double low = 0.0, bad = 0.0;
+      std::uint64_t big_bits = 0;
       int low_e = std::numeric_limits<int>::max();
       for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
         const double x = value(i);
-        if (!std::isfinite(x)) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        const std::uint64_t mag = b & ~(std::uint64_t{1} << 63);
+        if (mag >= (std::uint64_t{0x7ff} << 52)) {  // inf or NaN
           bad = x;
           continue;
         }
-        if (std::fabs(x) > std::fabs(big)) big = x;
-        if (x != 0.0) {
+        big_bits = std::max(big_bits, mag);
+        if (mag != 0) {
           const int e = low_bit_exponent(x);
           if (e < low_e) low_e = e, low = x;
         }
       }
+      double big;  // the largest magnitude (the filter depends on magnitudes only)
+      std::memcpy(&big, &big_bits, sizeof big);
       reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
     }
   });
