@@ -355,21 +355,13 @@ struct Made {
 };
 
 template <class Kernel>
-Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s, const double* sd,
                const std::array<Index, 4>& tet, ref::Hull3Stats& st, Made* rec) {
   std::uint32_t* const record = rec ? rec->record.data() : nullptr;
   const std::size_t n = ps.size();
   const bool fast = sd != nullptr && f.bound(4, false) < HUGE_VAL;
-  double m2 = HUGE_VAL;
-  if (fast) {  // (all finite: the filter is enabled)
-    const auto mag = [&](Index p) {
-      const double* x = ps.point(p);
-      return std::fmax(std::fabs(x[0]), std::fmax(std::fabs(x[1]), std::fabs(x[2])));
-    };
-    const double M = std::fmax(mag(par_argmax(n, mag)), std::fmax(std::fabs(sd[0]), std::fmax(std::fabs(sd[1]), std::fabs(sd[2]))));
-    m2 = 2.0 * M;
-  }
-  const Tests<Kernel> X{ps, f, s, sd, fast, m2};
+  // (all finite when fast: the filter is enabled; `largest` covers sd, scanned with the inputs)
+  const Tests<Kernel> X{ps, f, s, sd, fast, fast ? 2.0 * largest : HUGE_VAL};
   const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
   // line 3: the tetrahedron, faces counter-clockwise from outside:
   // 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c)
@@ -1014,12 +1006,13 @@ bool use_rounds(FlipFlopRun run) {
 }
 
 template <class Kernel>
-std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s,
+                                       const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
                                        const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
-  const Mesh M = construct(ps, f, s, sd, tet, st, made ? &*made : nullptr);
+  const Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
   if (witness) {  // the records as the witness holds them: the triangles
     witness->beneath.resize(ps.size());
     par_for(ps.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
@@ -1077,14 +1070,15 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
+  double largest = 0.0;  // the largest coordinate magnitude, the kernel point's included when inside
   const StaticFilter f =
-      parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
-                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
+      parallel_static_filter(ps.coords.size(), [c = ps.coords.data()](std::size_t i) { return c[i]; },
+                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{}, &largest);
   clock.mark("initial tetrahedron and static filter");
-  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
+  if (inside) return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock, s.data(), witness, run);
+  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, st, clock, s.data(), witness, run);
 }
 
 }  // namespace
