@@ -95,10 +95,15 @@ Index par_argmax(std::size_t n, const Key& key) {
   std::vector<Best> part(chunks);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
-      Best b;
-      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
+      // `better` within a chunk, whose indices increase: after the first
+      // element only a strictly larger key wins (a NaN key compares false,
+      // like -inf against any best), one comparison an element
+      const std::size_t first = c * kChunk, end = std::min(n, (c + 1) * kChunk);
+      const double k0 = key(static_cast<Index>(first));
+      Best b{std::isnan(k0) ? -HUGE_VAL : k0, static_cast<Index>(first)};
+      for (std::size_t p = first + 1; p < end; ++p) {
         const double k = key(static_cast<Index>(p));
-        if (better(k, static_cast<Index>(p), b)) b = {std::isnan(k) ? -HUGE_VAL : k, static_cast<Index>(p)};
+        if (k > b.key) b = {k, static_cast<Index>(p)};
       }
       part[c] = b;
     }
@@ -190,50 +195,66 @@ std::vector<Index> par_select(std::size_t n, const Keep& keep) {
 // StaticFilter::for_points over the m values value(0..m) and `extra`, as if
 // they were one input: it depends only on the largest magnitude, the lowest
 // set bit over all values and whether all are finite, so it is computed on a
-// few representatives (per chunk: the value of largest magnitude, the value of
-// lowest bit, a non-finite value if any) plus the extra values given.
-inline int low_bit_exponent(double x) {  // x finite, non-zero: x is a multiple of 2^result
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  const int e = static_cast<int>((b >> 52) & 0x7ff);
-  std::uint64_t m = b & ((std::uint64_t{1} << 52) - 1);
-  if (e == 0) return -1074 + __builtin_ctzll(m);  // subnormal
-  m |= std::uint64_t{1} << 52;
-  return e - 1075 + __builtin_ctzll(m);
-}
+// few representatives (per chunk: the largest magnitude, a value of the lowest
+// set bit, a non-finite value if any) plus the extra values given. The lowest
+// set bit of a finite non-zero x is the L with x a multiple of 2^L: with
+// exponent field e and fraction f, L = e - 1075 + ctz(f + 2^52) for e > 0,
+// -1074 + ctz(f) for subnormals.
 
-// Per chunk of the m values value(0..m): the value of largest magnitude, the
-// value of lowest set bit and a non-finite value if any (0 where none).
+// Per chunk of the m values value(0..m): the largest magnitude, a value of
+// the lowest set bit and a non-finite value if any (0 where none).
 template <class Value>
 std::vector<double> filter_representatives(std::size_t m, const Value& value) {
   const std::size_t chunks = (m + kChunk - 1) / kChunk;
   std::vector<double> reps(chunks * 3, 0.0);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
-      double big = 0.0, low = 0.0, bad = 0.0;
+      // on the bits, without a branch but the rare non-finite one: a finite
+      // value's magnitude orders as its bits without the sign; its lowest
+      // set bit is L (above), written with the subnormal case folded
+      // in (exponent field 0: no implicit bit, the scale of field 1), zeros
+      // mapped to no bit at all
+      double bad = 0.0;
+      std::uint64_t big_bits = 0;
       int low_e = std::numeric_limits<int>::max();
       for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
         const double x = value(i);
-        if (!std::isfinite(x)) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        const std::uint64_t mag = b & ~(std::uint64_t{1} << 63);
+        if (mag >= (std::uint64_t{0x7ff} << 52)) {  // inf or NaN
           bad = x;
           continue;
         }
-        if (std::fabs(x) > std::fabs(big)) big = x;
-        if (x != 0.0) {
-          const int e = low_bit_exponent(x);
-          if (e < low_e) low_e = e, low = x;
-        }
+        big_bits = std::max(big_bits, mag);
+        const int e = static_cast<int>(mag >> 52);
+        const std::uint64_t mant = (mag & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{e != 0} << 52);
+        const int lb = std::max(e, 1) - 1075 + __builtin_ctzll(mant | (std::uint64_t{1} << 63));
+        low_e = std::min(low_e, mag != 0 ? lb : std::numeric_limits<int>::max());
       }
+      // representatives: the largest magnitude and a value of the lowest set
+      // bit, 2^low_e itself (no larger than the value it came from); the
+      // filter depends on magnitudes and that bit only
+      double big;
+      std::memcpy(&big, &big_bits, sizeof big);
+      const double low = low_e == std::numeric_limits<int>::max() ? 0.0 : std::ldexp(1.0, low_e);
       reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
     }
   });
   return reps;
 }
 
+// largest, when given: the largest magnitude among the values and `extra`
+// (from the representatives; no pass of its own)
 template <class Value>
-pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra) {
+pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra,
+                                          double* largest = nullptr) {
   std::vector<double> reps = filter_representatives(m, value);
   reps.insert(reps.end(), extra.begin(), extra.end());
+  if (largest) {
+    *largest = 0.0;
+    for (std::size_t i = 0; i < reps.size(); ++i) *largest = std::fmax(*largest, std::fabs(reps[i]));
+  }
   while (reps.size() % 3) reps.push_back(0.0);
   return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
 }
@@ -243,10 +264,13 @@ pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, con
 // representatives are the weights of as many points (zeros added on either
 // side change neither the magnitudes nor the lowest bit).
 inline pred::StaticFilter parallel_static_filter(const PointSet& ps, const std::vector<double>& extra) {
-  std::vector<double> reps = filter_representatives(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; });
+  // (raw pointers: Values::operator[] asks whether the values are borrowed at every access)
+  const double* coords = ps.coords.data();
+  std::vector<double> reps = filter_representatives(ps.coords.size(), [coords](std::size_t i) { return coords[i]; });
   reps.insert(reps.end(), extra.begin(), extra.end());
   std::vector<double> w;
-  if (ps.weighted) w = filter_representatives(ps.weights.size(), [&](std::size_t i) { return ps.weights[i]; });
+  const double* weights = ps.weights.data();
+  if (ps.weighted) w = filter_representatives(ps.weights.size(), [weights](std::size_t i) { return weights[i]; });
   const std::size_t points = std::max((reps.size() + 2) / 3, w.size());
   reps.resize(3 * points, 0.0);
   w.resize(points, 0.0);

@@ -18,7 +18,10 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -26,6 +29,7 @@
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/parallel.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/hull3_expect.hpp"
 #include "proptests/support/large_n.hpp"
@@ -219,4 +223,39 @@ TEST_CASE("hull3 cpu: the parallel certifier gives the sequential verdict and me
     }
   std::cout << "hull3 parallel certifier: " << runs << " runs, sequential verdicts reproduced (" << rejected
             << " rejections)\n";
+}
+
+// kernels_cpu/parallel.hpp's scan (filter_representatives: per chunk the
+// largest magnitude, the lowest set bit, a non-finite value, read from the
+// bits) must give the filter of the sequential scan over the same values:
+// magnitudes of either sign and of every exponent, zeros, subnormals, and a
+// non-finite value somewhere, over several chunks (kChunk values each).
+TEST_CASE("hull3 cpu: the parallel static-filter scan equals the sequential one", "[hull3_cpu]") {
+  std::mt19937_64 rng(17);
+  for (int round = 0; round < 60; ++round) {
+    const std::size_t n = 1 + rng() % (3 * cpu::kChunk);  // points; 3n values: up to 9 chunks
+    std::vector<double> c(3 * n);
+    const int spread = std::array<int, 4>{2, 40, 600, 2100}[round % 4];  // exponent range: to subnormals
+    for (double& x : c) {
+      const int kind = static_cast<int>(rng() % 16);
+      const double m = static_cast<double>(rng() >> 11) * 0x1p-53 + 0.5;  // [0.5, 1), 53 random bits
+      x = kind == 0 ? 0.0 : std::ldexp(kind % 2 ? -m : m, static_cast<int>(rng() % spread) - spread / 2);
+    }
+    if (round % 5 == 1) c[rng() % c.size()] = std::array<double, 3>{HUGE_VAL, -HUGE_VAL, std::nan("")}[round % 3];
+    if (round % 7 == 3) c[rng() % c.size()] = 0x1p-1074;  // the smallest subnormal
+    const std::vector<double> extra = {0.75, -0x1p-60, 3.0};
+    PointSet ps;
+    ps.dim = 3;
+    ps.coords = c;
+    const pred::StaticFilter seq = pred::StaticFilter::for_points(c.data(), n, 3, nullptr, extra.data(), extra.size());
+    const pred::StaticFilter par = cpu::parallel_static_filter(ps, extra);
+    const pred::StaticFilter par_values =
+        cpu::parallel_static_filter(c.size(), [&](std::size_t i) { return c[i]; }, extra);
+    for (int k = 2; k <= 8; ++k)
+      for (bool lifted : {false, true}) {
+        INFO("round " << round << " n " << n << " k " << k << " lifted " << lifted);
+        CHECK(par.bound(k, lifted) == seq.bound(k, lifted));
+        CHECK(par_values.bound(k, lifted) == seq.bound(k, lifted));
+      }
+  }
 }

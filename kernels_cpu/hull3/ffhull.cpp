@@ -80,11 +80,23 @@ class DoubleKernel final : public ref::KernelPoint {
 // static filter is enabled (every value a multiple of 2^L with 3L >= -1074,
 // 6 (2M)^3 far below 2^1000, static_filter.hpp), the kernel point included.
 // When the filter cannot decide, the caller evaluates the exact SoS predicate.
+//
+// Before that bound, a static one per plane (sb, two thirds of the query's
+// floating-point operations fewer, and it decides nearly every query: the
+// construction's queries are rarely within 10^-10 relative of their plane):
+// when every coordinate of the points queried and of o has magnitude at most
+// M, each rounded difference has |fl(p_i - o_i)| <= 2M (rounding is
+// monotone and 2M is a double), and every operation of the bound above is
+// monotone in its operands, so that bound evaluated in doubles is at most
+// sb = kPlaneErr * (2M perm[0] + 2M perm[1] + 2M perm[2]) evaluated by the
+// same operations in the same order: a determinant beyond sb is beyond the
+// bound. m2 = 2M (HUGE_VAL: no static bound).
 constexpr double kPlaneErr = 0x1p-49;
 struct Plane {
   const double* o = nullptr;
   double m[3] = {0, 0, 0}, perm[3] = {0, 0, 0};
-  void set(const double* O, const double* b, const double* c) {
+  double sb = HUGE_VAL;
+  void set(const double* O, const double* b, const double* c, double m2) {
     o = O;
     const double bx = b[0] - O[0], by = b[1] - O[1], bz = b[2] - O[2];
     const double cx = c[0] - O[0], cy = c[1] - O[1], cz = c[2] - O[2];
@@ -92,11 +104,14 @@ struct Plane {
     m[0] = p0 - q0, m[1] = p1 - q1, m[2] = p2 - q2;
     perm[0] = std::fabs(p0) + std::fabs(q0), perm[1] = std::fabs(p1) + std::fabs(q1);
     perm[2] = std::fabs(p2) + std::fabs(q2);
+    sb = m2 < HUGE_VAL ? kPlaneErr * (m2 * perm[0] + m2 * perm[1] + m2 * perm[2]) : HUGE_VAL;
   }
   // det (rounded) into `det`; its sign when certain, else 0
   int eval(const double* p, double& det) const {
     const double ax = p[0] - o[0], ay = p[1] - o[1], az = p[2] - o[2];
     det = ax * m[0] + ay * m[1] + az * m[2];
+    if (det > sb) return 1;
+    if (det < -sb) return -1;
     const double bound = kPlaneErr * (std::fabs(ax) * perm[0] + std::fabs(ay) * perm[1] + std::fabs(az) * perm[2]);
     return det > bound ? 1 : det < -bound ? -1 : 0;
   }
@@ -136,6 +151,32 @@ std::array<Index, 4> initial_tetrahedron(const PointSet& ps) {
 
 // ---- lines 2-14: the star-shaped polyhedron, in rounds --------------------------
 
+// An allocator whose value-initialisation is default-initialisation: the
+// per-point buffers of the rounds (up to 28 bytes a point) are written by
+// the parallel scatter before they are read, and std::vector's resize would
+// first zero them on one thread — which also takes all their page faults on
+// that thread (a fresh call, e.g. from Python, gets fresh pages).
+template <class T>
+struct NoInit : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = NoInit<U>;
+  };
+  NoInit() = default;
+  template <class U>
+  NoInit(const NoInit<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... A>
+  void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+template <class T>
+using RawVec = std::vector<T, NoInit<T>>;
+
 // The surface under construction: flat arrays, 3 entries per triangle slot.
 // v[3t + k] is vertex k of triangle t (counter-clockwise seen from outside);
 // nb[3t + k] the triangle across its edge v[3t + k] -> v[3t + (k + 1) % 3].
@@ -162,10 +203,11 @@ struct Mesh {
 // the point there (same plane, same operations), at 16 bytes a point less
 // (the key in both buffers of the regrouping).
 struct Segments {
-  std::vector<Index> pts;
-  std::vector<double> xyz;      // empty: not carried, read from the input
+  RawVec<Index> pts;
+  RawVec<double> xyz;           // empty: not carried, read from the input
   std::vector<std::size_t> lo;  // size K + 1
   std::vector<std::uint32_t> tri;
+  std::vector<Index> far;       // per segment: its furthest point (line 8; regroup)
   std::size_t count() const { return tri.size(); }
   const double* coords(const PointSet& input, std::size_t i) const {
     return xyz.empty() ? input.point(pts[i]) : &xyz[3 * i];
@@ -184,16 +226,21 @@ constexpr std::size_t kAhead = 16;  // points prefetched ahead
 constexpr std::uint8_t kDropped = 0xff;
 struct Buffers {
   Segments next;
-  std::vector<std::uint8_t> code;
+  RawVec<std::uint8_t> code;
 };
 
 // Regrouping after a round: every point of segment k goes to child c in
-// [0, m) of k (classify(k, p, x) -> c, or kNone: dropped; x: its
-// coordinates); child c of segment k is
-// triangle child_tri(k, c). Stable: per-unit counts, a sequential scan in the
-// order (segment, child, unit), a parallel scatter. The new segments carry
-// the coordinates when `carry` (Segments). Returns the number of dropped
-// points.
+// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
+// coordinates; key: when kept, its rounded distance key for line 8 in the
+// child triangle, the value the child's Plane gives, i.e. what a pass over
+// the new segment would compute again); child c of segment k is triangle
+// child_tri(k, c). Stable: per-unit counts, a sequential scan in the order
+// (segment, child, unit), a parallel scatter. The new segments carry the
+// coordinates when `carry` (Segments), and their furthest points (line 8,
+// by `better`: the largest key, ties the smallest index, whatever the
+// units) reduced from per-unit maxima taken while classifying — no pass of
+// its own over the points (it was 6 % of the 10^6 ball's profile and one
+// more read of every point a round). Returns the number of dropped points.
 template <class Classify, class ChildTri>
 std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet& input, bool carry,
                     const Classify& classify, const ChildTri& child_tri) {
@@ -202,14 +249,21 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
   if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
   std::uint8_t* code = B.code.data();
   std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
+  std::vector<Best> best(nu * static_cast<std::size_t>(m));
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* c = &cnt[u * m];
+      Best* b = &best[u * m];
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
         if (i + kAhead < U.hi[u]) S.prefetch(input, i + kAhead);
-        const std::uint32_t ch = classify(U.seg[u], S.pts[i], coords(i));
+        double key;
+        const Index p = S.pts[i];
+        const std::uint32_t ch = classify(U.seg[u], p, coords(i), key);
         code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
-        if (ch != kNone) ++c[ch];
+        if (ch != kNone) {
+          ++c[ch];
+          if (better(key, p, b[ch])) b[ch] = {std::isnan(key) ? -HUGE_VAL : key, p};
+        }
       }
     }
   });
@@ -217,14 +271,21 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
   Segments N = std::move(B.next);
   N.lo.clear();
   N.tri.clear();
+  N.far.clear();
   std::size_t pos = 0;
   for (std::size_t k = 0; k < S.count(); ++k)
     for (int c = 0; c < m; ++c) {
       const std::size_t start = pos;
-      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) off[u * m + c] = pos, pos += cnt[u * m + c];
+      Best bb;
+      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) {
+        off[u * m + c] = pos, pos += cnt[u * m + c];
+        const Best& b = best[u * m + c];
+        if (b.i != kNone && better(b.key, b.i, bb)) bb = b;
+      }
       if (pos > start) {
         N.lo.push_back(start);
         N.tri.push_back(child_tri(k, c));
+        N.far.push_back(bb.i);
       }
     }
   N.lo.push_back(pos);
@@ -256,6 +317,7 @@ struct Tests {
   const Kernel& s;
   const double* sd;  // the kernel point's coordinates (DoubleKernel), or null
   bool fast;
+  double m2;  // twice the largest coordinate magnitude of the inputs and sd (Plane's sb), when fast
   // side(x, y, p) = orient3d(x, y, p, s), by the plane (s; x, y) when it decides
   // (px: p's coordinates, a copy)
   int side(const Plane& pl, Index x, Index y, Index p, const double* px) const {
@@ -264,18 +326,18 @@ struct Tests {
     return s.side(x, y, p);
   }
   void side_plane(Plane& pl, Index x, Index y) const {
-    if (sd) pl.set(sd, ps.point(x), ps.point(y));
+    if (sd) pl.set(sd, ps.point(x), ps.point(y), m2);
   }
   // p on the inner side of (t0, t1, t2) — orient3d(t0, t1, t2, p) > 0, i.e.
   // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0
-  bool inner(const Plane& face, const Index* t, Index p, const double* px) const {
-    double key;
+  // (key: the rounded distance, line 8's key in t)
+  bool inner(const Plane& face, const Index* t, Index p, const double* px, double& key) const {
     const int r = face.eval(px, key);
     if (fast && r) return r < 0;
     return orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
   }
   void face_plane(Plane& pl, const Index* t) const {
-    pl.set(ps.point(t[0]), ps.point(t[1]), ps.point(t[2]));
+    pl.set(ps.point(t[0]), ps.point(t[1]), ps.point(t[2]), m2);
   }
 };
 
@@ -293,11 +355,13 @@ struct Made {
 };
 
 template <class Kernel>
-Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s, const double* sd,
                const std::array<Index, 4>& tet, ref::Hull3Stats& st, Made* rec) {
   std::uint32_t* const record = rec ? rec->record.data() : nullptr;
   const std::size_t n = ps.size();
-  const Tests<Kernel> X{ps, f, s, sd, sd != nullptr && f.bound(4, false) < HUGE_VAL};
+  const bool fast = sd != nullptr && f.bound(4, false) < HUGE_VAL;
+  // (all finite when fast: the filter is enabled; `largest` covers sd, scanned with the inputs)
+  const Tests<Kernel> X{ps, f, s, sd, fast, fast ? 2.0 * largest : HUGE_VAL};
   const Index a = tet[0], b = tet[1], c = tet[2], d = tet[3];  // (no structured binding: lambdas capture them)
   // line 3: the tetrahedron, faces counter-clockwise from outside:
   // 0 (a,b,c), 1 (a,c,d), 2 (a,d,b), 3 (b,d,c)
@@ -321,9 +385,17 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
   // face's cone when it is on d's side of the plane (s, x, y) — side(x, y, p)
   // > 0 like side(x, y, d) — else in the cone of (a, b, c).
   Segments S;
-  S.pts.reserve(n - 4);
-  for (Index p = 0; p < n; ++p)
-    if (p != a && p != b && p != c && p != d) S.pts.push_back(p);
+  {  // the inputs but a, b, c, d, increasing: p goes to p less the corners below it
+    std::array<Index, 4> sorted = tet;
+    std::sort(sorted.begin(), sorted.end());
+    S.pts.resize(n - 4);
+    par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t p = lo; p < hi; ++p) {
+        const std::size_t below = (sorted[0] < p) + (sorted[1] < p) + (sorted[2] < p) + (sorted[3] < p);
+        if (p != sorted[0] && p != sorted[1] && p != sorted[2] && p != sorted[3]) S.pts[p - below] = static_cast<Index>(p);
+      }
+    });
+  }
   Buffers B;
   S.lo = {0, S.pts.size()};
   S.tri = {0};
@@ -333,7 +405,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
-    const auto classify = [&](std::uint32_t, Index p, const double* x) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -342,7 +414,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
         if (X.side(dbp, d, b, p, x) > 0) t = X.side(ba, b, a, p, x) > 0 ? 2 : 0;  // wedge (b, a, d)
         else t = X.side(cb, c, b, p, x) > 0 ? 3 : 0;                              // wedge (c, b, d)
       }
-      if (!X.inner(face[t], &M.v[3 * t], p, x)) return t;
+      if (!X.inner(face[t], &M.v[3 * t], p, x, key)) return t;
       if (record) record[p] = t;  // made[t]: face t
       return kNone;  // line 14: inside the tetrahedron (s, t)
     };
@@ -359,29 +431,9 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     const Units U = make_units(S.lo);
     // line 8: the furthest point of each triangle by the rounded distance keys
     // (ties: the smaller index; any point of the segment is correct, ffhull.hpp),
-    // each key from the triangle's Plane (Segments)
-    std::vector<Best> ubest(U.seg.size());
-    par_for(U.seg.size(), 1, [&](std::size_t ulo, std::size_t uhi) {
-      for (std::size_t u = ulo; u < uhi; ++u) {
-        Plane face;
-        X.face_plane(face, &M.v[3 * S.tri[U.seg[u]]]);
-        Best bb;
-        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
-          double key;
-          if (i + kAhead < U.hi[u]) S.prefetch(ps, i + kAhead);
-          face.eval(S.coords(ps, i), key);
-          if (better(key, S.pts[i], bb)) bb = {std::isnan(key) ? -HUGE_VAL : key, S.pts[i]};
-        }
-        ubest[u] = bb;
-      }
-    });
-    std::vector<Index> far(K);
-    for (std::size_t k = 0; k < K; ++k) {
-      Best bb;
-      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u)
-        if (better(ubest[u].key, ubest[u].i, bb)) bb = ubest[u];
-      far[k] = bb.i;
-    }
+    // found by the regrouping that made the segment (regroup)
+    std::vector<Index> far;
+    far.swap(S.far);
     // line 9: 1-3 splits. Segment k's triangle t = (ta, tb, tc) becomes
     // t = (ta, tb, v), T+2k = (tb, tc, v), T+2k+1 = (tc, ta, v): old edge e
     // lives on in child e (t, T+2k, T+2k+1) at position 0.
@@ -450,7 +502,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
     // lines 10-14: every point to one of the three new cones (line 13's rule,
     // as in the reference's ffhull.cpp), dropped when inside the tetrahedron
     // (s, new triangle)
-    const auto classify = [&](std::uint32_t k, Index p, const double* x) -> std::uint32_t {
+    const auto classify = [&](std::uint32_t k, Index p, const double* x, double& key) -> std::uint32_t {
       const Index v = far[k];
       if (p == v) return kNone;  // line 10
       const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
@@ -459,7 +511,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, const Kernel& s, const
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
       const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x)) return ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
       // line 14: in the cone of t (the parent's cone, narrowed by the two
       // side tests above) and on the inner side of t: inside (s, t)
       if (record) record[p] = made0 + 3 * k + ch;
@@ -954,12 +1006,13 @@ bool use_rounds(FlipFlopRun run) {
 }
 
 template <class Kernel>
-std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, const Kernel& s, const double* sd,
+std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s,
+                                       const double* sd,
                                        const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
                                        const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
-  const Mesh M = construct(ps, f, s, sd, tet, st, made ? &*made : nullptr);
+  const Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
   if (witness) {  // the records as the witness holds them: the triangles
     witness->beneath.resize(ps.size());
     par_for(ps.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
@@ -1017,14 +1070,15 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
+  double largest = 0.0;  // the largest coordinate magnitude, the kernel point's included when inside
   const StaticFilter f =
-      parallel_static_filter(ps.coords.size(), [&](std::size_t i) { return ps.coords[i]; },
-                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{});
+      parallel_static_filter(ps.coords.size(), [c = ps.coords.data()](std::size_t i) { return c[i]; },
+                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{}, &largest);
   clock.mark("initial tetrahedron and static filter");
-  if (inside) return hull_with_kernel(ps, f, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
+  if (inside) return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, exact, nullptr, tet, st, clock, s.data(), witness, run);
+  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, st, clock, s.data(), witness, run);
 }
 
 }  // namespace
