@@ -65,6 +65,7 @@
 #include <stdexcept>
 #endif
 
+#include "predicates/err_dd.hpp"
 #include "predicates/expansion.hpp"
 #include "predicates/lambda_filter.hpp"
 #include "predicates/static_filter.hpp"  // filter_detail::det_plain
@@ -1022,6 +1023,37 @@ FF_HD inline int lifted_adaptive(const double* const* p, const double* w) {
   return sign_of<Dbl>(alen, acc);
 }
 
+// The double-double stage (err_dd.hpp) for every K: det T (lambda_filter.hpp:
+// rows d_i = p_i - p_(K-1), with the lifted column l_i = |d_i|^2 - (w_i -
+// w_(K-1)) when w is given) by det_by_minors on ErrDD values. The differences
+// d_ij and w_i - w_(K-1) enter exactly (two_sum: a head and its Two_Diff tail,
+// e = 0), so the only errors are those of the products and sums, each bounded
+// by err_dd.hpp's rules — of order u^2 times the terms of the determinant,
+// where the dynamic filter's are of order u. A near-degenerate call (det of
+// order u times its terms) is decided here whether or not the tails are 0;
+// an exactly degenerate one never is (its computed value is within the bound
+// of 0 by construction). Inside the double window of degree K (lifted) or
+// K - 1 only (Range::fits, checked by the caller: err_dd.hpp's precondition).
+// Returns ±1 when certain, 2 when not (the exact stages decide). Stack:
+// 2^(K-1) + (K-1)^2 ErrDD values of 24 bytes (K = 5: 0.8 KB, K = 8: 4.2 KB).
+template <int K>
+FF_HD inline int lambda_sign_dd(const double* const* p, const double* w) {
+  constexpr int N = K - 1;
+  ErrDD t[N * N];
+  const double* base = p[K - 1];
+  const int ncoord = w ? N - 1 : N;
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < ncoord; ++j) t[i * N + j] = ErrDD::difference(p[i][j], base[j]);
+    if (w) {
+      ErrDD lift = -ErrDD::difference(w[i], w[K - 1]);
+      for (int j = 0; j < ncoord; ++j) lift = lift + t[i * N + j] * t[i * N + j];
+      t[i * N + N - 1] = lift;
+    }
+  }
+  const int s = sign_if_certain(det_by_minors<N, ErrDD>(t));
+  return s != 0 ? s : 2;
+}
+
 // Exact sign of det Λ of K points in the given row order; with `sos`, the
 // Simulation-of-Simplicity sign (rows must then be sorted by increasing,
 // distinct point index).
@@ -1054,11 +1086,11 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
         return sos_search<K>(true, sign_of);
       }
     }
-    int s = 2;
+    int s = lambda_sign_dd<K>(p, w);
     if constexpr (K == 3 || K == 4)
-      if (!w) s = orient_adaptive<K>(p);
+      if (!w && s == 2) s = orient_adaptive<K>(p);
     if constexpr (K == 4 || K == 5)
-      if (w) s = lifted_adaptive<K>(p, w);
+      if (w && s == 2) s = lifted_adaptive<K>(p, w);
     if (s == 2) s = det_translated<Dbl, K>(p, w);
     if (s != 0 || !sos) return s;
     // det Λ = 0: the perturbation's minors on doubles first, expansions

@@ -40,9 +40,11 @@ FF_HD constexpr int popcount_small(unsigned s) {
 }
 
 // Determinant of an N x N matrix of ErrDouble (row-major) by expansion over
-// column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7.
-template <int N>
-FF_HD inline ErrDouble det_by_minors(const ErrDouble* t) {
+// column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7. V may be any
+// value type with a proven running error bound and +, -, * (ErrDD,
+// err_dd.hpp: the same expansion one precision further).
+template <int N, class V = ErrDouble>
+FF_HD inline V det_by_minors(const V* t) {
   static_assert(N >= 1 && N <= 7, "det_by_minors supports N in 1..7");
   if constexpr (N == 1) {
     return t[0];
@@ -50,20 +52,20 @@ FF_HD inline ErrDouble det_by_minors(const ErrDouble* t) {
     return t[0] * t[3] - t[1] * t[2];
   } else {
     constexpr int kSubsets = 1 << N;
-    ErrDouble d[kSubsets];
+    V d[kSubsets];
     for (int j = 0; j < N; ++j) d[1 << j] = t[j];  // row 0, single columns
     // Process subsets in increasing popcount order: subsets of size r use
     // row r-1 and the minors of size r-1.
     for (int r = 2; r <= N; ++r) {
       for (int s = 1; s < kSubsets; ++s) {
         if (popcount_small(static_cast<unsigned>(s)) != r) continue;
-        ErrDouble acc;
+        V acc;
         bool first = true;
         int pos = 0;  // position of column j inside subset s
         for (int j = 0; j < N; ++j) {
           if (!(s & (1 << j))) continue;
           // Laplace along row r-1: sign (-1)^((r-1) + pos)
-          ErrDouble term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
+          V term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
           bool negative = ((r - 1 + pos) & 1) != 0;
           if (first) {
             acc = negative ? -term : term;

@@ -7,7 +7,12 @@
 //   2. semi-static filter per-call bound from the column magnitudes
 //                         (static_filter.hpp);
 //   3. dynamic filter     ErrDouble running error bound (lambda_filter.hpp);
-//   4. exact              expansion arithmetic (exact_expansion.hpp), rows
+//   4. double-double      the same determinant on double-double values with
+//                         a proven running error bound (err_dd.hpp,
+//                         xp::lambda_sign_dd, inside the exact stage's double
+//                         window): decides near-degenerate calls, whose
+//                         determinant is of order u times its terms;
+//      exact              expansion arithmetic (exact_expansion.hpp), rows
 //                         sorted by point index: Shewchuk's adaptive stages
 //                         for orient2d/3d, the exact stage B of power2d/3d
 //                         when the translated coordinates are exact
