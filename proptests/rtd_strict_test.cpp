@@ -400,7 +400,7 @@ TEST_CASE("rtd strict: general position — the view is the canonical answer") {
     }
 }
 
-TEST_CASE("rtd strict: d = 2 is the rt2 view; malformed canonical lists are refused") {
+TEST_CASE("rtd strict: d = 2 is the rt2 view, and malformed canonical lists are refused") {
   const PointSet ps = test::rtd_grid(2, 4);
   const ref::Rtd c = ref::rtd_incremental(ps);
   const auto view = ref::strict_rtd(ps, c.simplices);
