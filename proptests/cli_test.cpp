@@ -415,7 +415,7 @@ TEST_CASE("cli: certify rtd (exact and --canonical) accepts rtd's output and CGA
   }
 }
 
-TEST_CASE("cli: rtd --strict on a 4x4x4 grid: 6 tetrahedra per cube, certified as strict; the canonical answer is not", "[cli]") {
+TEST_CASE("cli: rtd --strict on a 4x4x4 grid: 6 tetrahedra per cube, certified as strict, and the canonical answer is not", "[cli]") {
   TempDir t;
   std::string grid;
   for (int x = 0; x < 4; ++x)
@@ -547,7 +547,7 @@ TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, ba
   }
 }
 
-TEST_CASE("cli: --backend cuda-omp writes the reference's bytes; --backend cuda writes them or says in one line "
+TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend cuda writes them or says in one line "
           "that there is no device",
           "[cli]") {
   TempDir t;
