@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "kernels_cuda/kernel_errors.hpp"
+#include "reference/default_init.hpp"
 
 namespace flipflop::FF_KERNELS_NS::backend {
 
@@ -41,25 +42,7 @@ using Buffer = std::vector<T>;
 // pass over memory that costs as much as a kernel step); on the device an
 // ordinary Buffer.
 template <class T>
-struct DefaultInit : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = DefaultInit<U>;
-  };
-  DefaultInit() = default;
-  template <class U>
-  DefaultInit(const DefaultInit<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... A>
-  void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-template <class T>
-using Scratch = std::vector<T, DefaultInit<T>>;
+using Scratch = UninitVector<T>;  // reference/default_init.hpp
 template <class T>
 const T* to_device(const T* first, std::size_t, Buffer<T>&) {
   return first;

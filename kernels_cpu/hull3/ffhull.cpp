@@ -28,6 +28,7 @@
 #include "reference/certify/certify_hull3_surface.hpp"
 #include "reference/certify/inner_ball.hpp"
 #include "reference/checked.hpp"
+#include "reference/default_init.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/hull3/flip_flop_3d.hpp"
 #include "reference/hull3/polyhedron3.hpp"
@@ -151,31 +152,12 @@ std::array<Index, 4> initial_tetrahedron(const PointSet& ps) {
 
 // ---- lines 2-14: the star-shaped polyhedron, in rounds --------------------------
 
-// An allocator whose value-initialisation is default-initialisation: the
-// per-point buffers of the rounds (up to 28 bytes a point) are written by
-// the parallel scatter before they are read, and std::vector's resize would
-// first zero them on one thread — which also takes all their page faults on
-// that thread (a fresh call, e.g. from Python, gets fresh pages).
+// The per-point buffers of the rounds (up to 28 bytes a point) are written by
+// the parallel scatter before they are read: not zeroed first
+// (reference/default_init.hpp; a fresh call, e.g. from Python, gets fresh
+// pages, whose faults then fall on the writing threads).
 template <class T>
-struct NoInit : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = NoInit<U>;
-  };
-  NoInit() = default;
-  template <class U>
-  NoInit(const NoInit<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... A>
-  void construct(U* p, A&&... a) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-  }
-};
-template <class T>
-using RawVec = std::vector<T, NoInit<T>>;
+using RawVec = UninitVector<T>;
 
 // The surface under construction: flat arrays, 3 entries per triangle slot.
 // v[3t + k] is vertex k of triangle t (counter-clockwise seen from outside);
