@@ -32,13 +32,18 @@ struct Row {
   std::size_t size = 0;
 };
 
-// --run: the row's name starts with one of the prefixes (case-insensitive).
+// --run: the row's name starts with one of the prefixes (case-insensitive); a
+// prefix ending in '$' matches the whole name only ("flipflop:cuda$" chooses
+// flipflop:cuda and not flipflop:cuda-omp).
 inline bool chosen(const Args& a, const std::string& name) {
   if (a.run.empty()) return true;
-  for (const std::string& p : a.run)
-    if (p.size() <= name.size() &&
-        std::equal(p.begin(), p.end(), name.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); }))
-      return true;
+  const auto same = [](char x, char y) { return std::tolower(x) == std::tolower(y); };
+  for (const std::string& p : a.run) {
+    const bool whole = !p.empty() && p.back() == '$';
+    const std::size_t len = whole ? p.size() - 1 : p.size();
+    if (whole ? len == name.size() : len <= name.size())
+      if (std::equal(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(len), name.begin(), same)) return true;
+  }
   return false;
 }
 
