@@ -8,6 +8,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "gen/generate.hpp"
 #include "io/index_io.hpp"
@@ -248,6 +249,7 @@ int run_compute(const ComputeArgs& a) {
   cpu::Hull3Witness hull3_witness;  // filled by the cpu hull3 kernel for its certifier
   std::string counts;
   std::optional<cpu::Rt2Witness> rt2_witness;  // the cpu rt2 kernel's certificate
+  cpu::StageTimes gpu_times;                   // the GPU backends' stages (--stats)
   if (a.kind == "hull2" && algo != "brute") {
     // kernels_cpu/hull2: throw-away and parallel Graham-sorting, byte-identical
     // to the reference
@@ -260,7 +262,9 @@ int run_compute(const ComputeArgs& a) {
     } else if (is_gpu(backend)) {
       // kernels_cuda/hull2: Graham-sorting or -insertion with parallel
       // flip-pop, on thrust
-      cycle = kernels::hull2_gpu(backend, ps, {}, &st, algo);
+      kernels::Hull2GpuOptions o;
+      o.times = &gpu_times;
+      cycle = kernels::hull2_gpu(backend, ps, o, &st, algo);
 #endif
     } else {
       cycle = ref::hull2(ps, algo, &st);
@@ -272,7 +276,7 @@ int run_compute(const ComputeArgs& a) {
   } else if ((a.kind == "rt2" || a.kind == "dt2") && is_gpu(backend)) {
     // kernels_cuda/rt2: ffRT's insertion rounds and parallel flip-flop rounds
     ref::Rt2Stats st;
-    tris = kernels::rt2_gpu(backend, ps, &st);
+    tris = kernels::rt2_gpu(backend, ps, &st, &gpu_times);
     counts = "1-3 flips " + std::to_string(st.flips_1_3) + ", 2-2 flips " + std::to_string(st.flips_2_2) +
              ", 3-1 flips " + std::to_string(st.flips_3_1) + ", discarded early " + std::to_string(st.discarded_early) +
              ", insertion rounds " + std::to_string(st.rounds);
@@ -306,7 +310,7 @@ int run_compute(const ComputeArgs& a) {
   } else if (a.kind == "hull3" && is_gpu(backend)) {
     // kernels_cuda/hull3: ffHull's construction rounds and parallel flip-flop rounds
     ref::Hull3Stats st;
-    tris = kernels::hull3_gpu(backend, ps, &st);
+    tris = kernels::hull3_gpu(backend, ps, &st, &gpu_times);
     counts = hull3_counts(st);
 #endif
   } else if (a.kind == "hull3" && backend == "cpu") {
@@ -384,6 +388,14 @@ int run_compute(const ComputeArgs& a) {
               << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
               << t_certify << " s (canonical); read " << t_read << " s, write " << t_write << " s\n";
     if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
+    if (!gpu_times.stages.empty()) {
+      // the GPU kernels' stages (kernels_cuda/: upload and download timed
+      // apart from the device work)
+      const char* sep = ": stages ";
+      std::cerr << a.kind;
+      for (const auto& [name, s] : gpu_times.stages) std::cerr << std::exchange(sep, ", ") << name << " " << s << " s";
+      std::cerr << "\n";
+    }
   }
   return 0;
 }

@@ -11,6 +11,9 @@ namespace flipflop::kernels_cuda {
 int device_count();  // classify_cuda.cu
 
 inline int require_device() {
+  // line-buffered: a program the device kills (an abort on a sticky CUDA
+  // error) leaves every line it printed before, the case it was in included
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   const int devices = device_count();
   if (devices <= 0) {
     std::printf("no CUDA device: skipped\n");

@@ -34,8 +34,14 @@ std::string outcome(F&& f) {
 
 }  // namespace
 
-int main() {
+// hull2_cuda_test [FAMILY N]: every case, or only those of one family and
+// size (to rerun the case a failure names, e.g. under compute-sanitizer). Each
+// case is announced before it runs ("case ..."), so the last line of a
+// program the device kills names the case that failed.
+int main(int argc, char** argv) {
   kernels_cuda::require_device();
+  const std::string only_family = argc > 2 ? argv[1] : "";
+  const std::size_t only_n = argc > 2 ? std::stoul(argv[2]) : 0;
   bool ok = true;
   kernels::Hull2GpuOptions tiny;
   tiny.throw_away = false;
@@ -43,7 +49,9 @@ int main() {
   std::size_t cases = 0;
   for (const std::string& fam : gen::distributions()) {
     if (gen::dimension_of(fam) != 2) continue;
+    if (!only_family.empty() && fam != only_family) continue;
     for (std::size_t n : {3, 7, 30, 200, 2000, 50000, 1000000}) {
+      if (only_n && n != only_n) continue;
       gen::Options g;
       g.seed = 11 + n;
       const PointSet ps = gen::generate(fam, n, g);
@@ -52,6 +60,8 @@ int main() {
         if (n > 50000 && !o.throw_away) continue;
         for (bool insert : {false, true}) {
           const std::string want = insert ? outcome([&] { return ref::hull2_graham_insert(ps); }) : expect;
+          std::printf("case %s %zu throw_away=%d chunk=%zu %s\n", fam.c_str(), n, o.throw_away, o.chunk,
+                      insert ? "graham-insert" : "graham-sort");
           const bool same = outcome([&] {
                               return insert ? kernels_cuda::hull2_graham_insert(ps, o)
                                             : kernels_cuda::hull2_graham_sort(ps, o);
@@ -65,6 +75,8 @@ int main() {
       }
     }
   }
+  if (!only_family.empty()) return ok ? 0 : 1;
+  std::printf("case disk 10000000 against the cpu kernel\n");
   const PointSet big = gen::generate("disk", 10000000, {});
   const bool same = outcome([&] { return kernels_cuda::hull2_graham_sort(big); }) ==
                     outcome([&] { return cpu::hull2_graham_sort(big); });

@@ -9,8 +9,10 @@
 #       except glibc's and the driver's into .devrun/ (ignored by git through
 #       .git/info/exclude; carried with the call). BUILD was configured with
 #       -DFLIPFLOP_CUDA_ALGORITHMS=ON (make cuda).
-#   kernels_cuda/lent_gpu.sh check [all|tests|bench]   (there, in the repository
-#       root; all: the four steps, tests: 1-3, bench: 1 and 4)
+#   kernels_cuda/lent_gpu.sh check [STEPS]   (there, in the repository root;
+#       STEPS: comma-separated, of tests,bench,sanitizer,scaling,stages;
+#       the first four by default, in that order — most wanted first, should
+#       the call's time run out)
 #       1. the device, the CPU;
 #       2. the GPU test programs (kernels_cuda/*_cuda_test.cpp): byte-identical
 #          to the reference over the generator families, degenerate ones too;
@@ -20,7 +22,9 @@
 #          flipflop:cuda (with and without transfers) next to flipflop:cpu,
 #          Qhull and CGAL on that machine's CPU, medians of 3 (CSV); then
 #          flipflop:cpu on 10^6 points pinned to 1, 2, 4, 8 and 16 cores.
-#       Logs and CSV under $OUT; one summary line per step on stdout.
+#       5. (stages) the GPU kernels' time by stage on 10^7 points.
+#       Logs and CSV under $OUT; one summary line per step on stdout. LG_TESTS,
+#       LG_SANITIZE, LG_BENCH (space-separated names) narrow steps 2-4.
 set -u
 mode=${1:-check}
 here=$(pwd)
@@ -42,10 +46,13 @@ if [ "$mode" = bundle ]; then
       esac
     done
   done
+  # one compressed archive: the call's working tree is limited to 64 MiB
+  (cd "$B" && tar cJf ../devrun.tar.xz . && rm -rf ./* && mv ../devrun.tar.xz .)
   grep -qx '/.devrun/' .git/info/exclude 2>/dev/null || echo '/.devrun/' >> .git/info/exclude
   du -sh "$B"
   exit 0
 fi
+[ -f "$B/devrun.tar.xz" ] && (cd "$B" && tar xJf devrun.tar.xz && rm devrun.tar.xz)
 
 : "${OUT:=/tmp/lent_gpu_out}"
 mkdir -p "$OUT"
@@ -61,19 +68,31 @@ if ! "$ff" --help > /dev/null 2> "$OUT/start.log"; then
   echo "flipflop does not start here:"; cat "$OUT/start.log"; ldd "$ff"; exit 1
 fi
 
-what=${2:-all}
-if [ "$what" != bench ]; then
+run_tests() {
 echo "== GPU test programs (byte-identical to the reference)"
-for t in classify predicates hull2 rt2 hull3; do
+for t in ${LG_TESTS:-classify predicates hull2 rt2 hull3}; do
   s=$(date +%s%N)
-  timeout 150 "$B/${t}_cuda_test" > "$OUT/test_$t.log" 2>&1
+  timeout 100 "$B/${t}_cuda_test" > "$OUT/test_$t.log" 2>&1
   rc=$?
   e=$(( ($(date +%s%N) - s) / 1000000 ))
   step "${t}_cuda_test" "rc=$rc  $(grep -c '^ok' "$OUT/test_$t.log") ok, $(grep -c '^FAIL' "$OUT/test_$t.log") FAIL, $e ms"
   grep -m5 -E '^FAIL|rror|what\(\)' "$OUT/test_$t.log"
+  # a program the device killed: its last announced case ("case FAMILY N ...")
+  # again, alone, under memcheck, for the kernel and the fault
+  last=$(grep '^case ' "$OUT/test_$t.log" | tail -1)
+  if [ $rc -ne 0 ] && [ $rc -ne 1 ] && [ $rc -ne 77 ] && [ -n "$last" ]; then
+    set -- $last
+    echo "  last case: $last; under compute-sanitizer memcheck:"
+    timeout 120 compute-sanitizer --tool memcheck --show-backtrace device "$B/${t}_cuda_test" "$2" "$3" \
+      > "$OUT/memcheck_$t.log" 2>&1
+    grep -m12 -E 'Invalid|Illegal|illegal|Error|at 0x|in .*\(|Program hit|Saved host' "$OUT/memcheck_$t.log" | cut -c1-300
+  fi
 done
 cat "$OUT"/test_*.log > "$OUT/tests.log" && rm -f "$OUT"/test_*.log
+cat "$OUT"/memcheck_*.log > "$OUT/memcheck.log" 2>/dev/null; rm -f "$OUT"/memcheck_*.log
+}
 
+run_sanitizer() {
 echo "== compute-sanitizer (flipflop --backend cuda, small inputs)"
 tmp=$(mktemp -d)
 "$ff" gen disk 1000 --seed 5 -o "$tmp/p2.xyz"
@@ -83,21 +102,25 @@ tmp=$(mktemp -d)
 for tool in memcheck racecheck synccheck; do
   for job in "hull2 $tmp/p2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz"; do
     set -- $job
-    timeout 100 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$1" "$2" --backend cuda -o "$tmp/out" \
+    case " ${LG_SANITIZE:-hull2 hull3 rt2} " in *" $1 "*) ;; *) continue ;; esac
+    timeout 60 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$1" "$2" --backend cuda -o "$tmp/out" \
       >> "$OUT/sanitizer.log" 2>&1
     rc=$?
     step "compute-sanitizer --tool $tool: $1" "rc=$rc $(tail -1 "$OUT/sanitizer.log")"
-    "$ff" "$1" "$2" --backend reference -o "$tmp/ref" 2>/dev/null
-    cmp -s "$tmp/out" "$tmp/ref" || step "  output of $1 under $tool" "differs from --backend reference"
+    if [ $rc -eq 0 ]; then
+      "$ff" "$1" "$2" --backend reference -o "$tmp/ref" 2>/dev/null
+      cmp -s "$tmp/out" "$tmp/ref" || step "  output of $1 under $tool" "differs from --backend reference"
+    fi
   done
 done
 rm -rf "$tmp"
-fi
-[ "$what" = tests ] && exit 0
+}
 
+run_bench() {
 echo "== benchmarks (medians of 3; CSV in \$OUT/bench.csv)"
 : > "$OUT/bench.csv"
 bench() {
+  case " ${LG_BENCH:-hull3 hull2 rt2 dt2} " in *" $1 "*) ;; *) return ;; esac
   echo "# flipflop bench $*" >> "$OUT/bench.csv"
   timeout 200 "$ff" bench "$@" --reps 3 --csv >> "$OUT/bench.csv" 2>> "$OUT/bench.err"
   echo "rc=$? flipflop bench $*"
@@ -106,6 +129,23 @@ bench hull3 --dist ball --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipfl
 bench hull2 --dist disk --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,qhull,cgal'
 bench rt2 --dist square --n 10000000 --weights 0,1e-5 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'
 bench dt2 --dist square --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'
+cat "$OUT/bench.csv"
+}
+
+run_stages() {
+echo "== the GPU kernels' stages (flipflop ... --backend cuda --stats, the second of two runs)"
+tmp=$(mktemp -d)
+for job in "hull3 ball" "hull2 disk" "rt2 square --weights 0,1e-5"; do
+  set -- $job
+  kind=$1; shift
+  "$ff" gen "$@" 10000000 --seed 1 -o "$tmp/in.npy" 2>> "$OUT/bench.err" || continue
+  for rep in 1 2; do timeout 60 "$ff" "$kind" "$tmp/in.npy" --backend cuda --stats -o "$tmp/out" 2> "$tmp/stats"; done
+  cat "$tmp/stats" | tee -a "$OUT/stages.log"
+done
+rm -rf "$tmp"
+}
+
+run_scaling() {
 echo "== flipflop:cpu scaling with cores (taskset; CSV in \$OUT/scaling.csv)"
 : > "$OUT/scaling.csv"
 for job in "hull3 --dist ball" "rt2 --dist square --weights 0,1e-5" "dt2 --dist square"; do
@@ -115,4 +155,8 @@ for job in "hull3 --dist ball" "rt2 --dist square --weights 0,1e-5" "dt2 --dist 
       2>> "$OUT/bench.err" | tail -1 >> "$OUT/scaling.csv"
   done
 done
-cat "$OUT/bench.csv" "$OUT/scaling.csv"
+cat "$OUT/scaling.csv"
+}
+
+steps=${2:-tests,bench,sanitizer,scaling}
+for step_name in ${steps//,/ }; do "run_$step_name"; done

@@ -814,8 +814,11 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
   const thrust::counting_iterator<uint32_t> first(0);
   Box box{};
   step(n, [&](auto policy) {
-    box = thrust::transform_reduce(policy, first, first + n, PointBox{raw(B.xy_in)}, PointBox{raw(B.xy_in)}(0),
-                                   BoxUnion());
+    // the initial value is made on the host: the empty box (BoxUnion's
+    // identity; every coordinate is finite), never a point read from the
+    // buffer, which is device memory in the CUDA build
+    const Box empty{{HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL}};
+    box = thrust::transform_reduce(policy, first, first + n, PointBox{raw(B.xy_in)}, empty, BoxUnion());
   });
   step(n, [&](auto policy) {
     thrust::transform(policy, first, first + n, B.keys.begin(), MortonKey{raw(B.xy_in), box});
