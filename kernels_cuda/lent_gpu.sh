@@ -98,15 +98,16 @@ tmp=$(mktemp -d)
 "$ff" gen disk 1000 --seed 5 -o "$tmp/p2.xyz"
 "$ff" gen ball 1000 --seed 5 -o "$tmp/p3.xyz"
 "$ff" gen square 1000 --seed 5 --weights 0,1e-5 -o "$tmp/w2.xyz"
+"$ff" gen tiny2 50000 --seed 5 -o "$tmp/t2.xyz"  # subnormals: the exact stage inside the throw-away
 : > "$OUT/sanitizer.log"
 for tool in memcheck racecheck synccheck; do
-  for job in "hull2 $tmp/p2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz"; do
+  for job in "hull2 $tmp/p2.xyz" "hull2 $tmp/t2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz"; do
     set -- $job
     case " ${LG_SANITIZE:-hull2 hull3 rt2} " in *" $1 "*) ;; *) continue ;; esac
     timeout 60 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$1" "$2" --backend cuda -o "$tmp/out" \
       >> "$OUT/sanitizer.log" 2>&1
     rc=$?
-    step "compute-sanitizer --tool $tool: $1" "rc=$rc $(tail -1 "$OUT/sanitizer.log")"
+    step "compute-sanitizer --tool $tool: $1 $(basename "$2")" "rc=$rc $(tail -1 "$OUT/sanitizer.log")"
     if [ $rc -eq 0 ]; then
       "$ff" "$1" "$2" --backend reference -o "$tmp/ref" 2>/dev/null
       cmp -s "$tmp/out" "$tmp/ref" || step "  output of $1 under $tool" "differs from --backend reference"

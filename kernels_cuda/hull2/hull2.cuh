@@ -504,8 +504,17 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
         for (Index v : poly) centre[j] += ps.point(v)[j] / static_cast<double>(poly.size());
     }
     const NotInside keep{o, inner_box(ps, poly, centre), disk, ring, static_cast<int>(poly.size())};
+    // the keep flags in one pass (a plain transform: the predicates' exact
+    // stage, 42 KB of stack per thread on the device, runs there), then a
+    // compaction over the flags. Run as one copy_if with NotInside as its
+    // predicate, CUB's select kernel wrote out of its shared memory on the
+    // H100 whenever many calls reached the exact stage (tiny2: wrong hulls
+    // from 200 points, an illegal instruction at 10^6; compute-sanitizer:
+    // "Invalid __shared__ write" in DeviceSelectSweepKernel<..., NotInside>).
+    char* flag = thrust::raw_pointer_cast(b_above.data());
     step(n, [&](auto policy) {
-      s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, surv, keep) - surv);
+      thrust::transform(policy, first, first + n, flag, keep);
+      s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, flag, surv, IsSet()) - surv);
     });
   } else {
     step(n, [&](auto policy) { thrust::sequence(policy, surv, surv + n); });
