@@ -59,6 +59,12 @@ void run_step(std::size_t n, Step&& step) {
   else
     step(thrust::omp::par);
 }
+// run_step for a step whose caller does not read its result on the host
+// before the next step (for_each, fill): the same as run_step here.
+template <std::size_t ParallelFrom, class Step>
+void run_step_async(std::size_t n, Step&& step) {
+  run_step<ParallelFrom>(n, std::forward<Step>(step));
+}
 // every step issued so far has finished (a stage clock's mark follows it)
 inline void sync() {}
 // the host is the device: always there
@@ -83,6 +89,16 @@ std::vector<T> to_host(Buffer<T>& b, std::size_t count) {
 template <std::size_t ParallelFrom, class Step>
 void run_step(std::size_t, Step&& step) {
   step(thrust::device);
+}
+// thrust's default device policy blocks the host until each algorithm has
+// finished; par_nosync returns after the launch. Every step runs on the
+// default stream, so the next step (or copy to the host) still starts after
+// this one: only the host's wait, and the idle device while the host issues
+// the next launch, are saved. For steps whose result the host does not read
+// (an algorithm that returns a value, e.g. copy_if's end, still waits).
+template <std::size_t ParallelFrom, class Step>
+void run_step_async(std::size_t, Step&& step) {
+  step(thrust::cuda::par_nosync);
 }
 inline void sync() { cudaDeviceSynchronize(); }
 // kernels::NoDeviceError ("<who>: no CUDA device") unless one is usable

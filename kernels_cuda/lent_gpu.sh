@@ -21,7 +21,8 @@
 #       4. flipflop bench hull3|hull2|rt2|dt2 on 10^7 points:
 #          flipflop:cuda (with and without transfers) next to flipflop:cpu,
 #          Qhull and CGAL on that machine's CPU, medians of 3 (CSV); then
-#          flipflop:cpu on 10^6 points pinned to 1, 2, 4, 8 and 16 cores.
+#          flipflop:cpu on 10^6 points pinned to 1, 2, 4, 8 and 16 cores
+#          (rt2/dt2 with the parallel insertions' rows).
 #       5. (stages) the GPU kernels' time by stage on 10^7 points.
 #       Logs and CSV under $OUT; one summary line per step on stdout. LG_TESTS,
 #       LG_SANITIZE, LG_BENCH (space-separated names) narrow steps 2-4.
@@ -152,8 +153,13 @@ echo "== flipflop:cpu scaling with cores (taskset; CSV in \$OUT/scaling.csv)"
 for job in "hull3 --dist ball" "rt2 --dist square --weights 0,1e-5" "dt2 --dist square"; do
   for cores in 0 0-1 0-3 0-7 0-15; do
     echo "# $job --n 1000000, cores $cores" >> "$OUT/scaling.csv"
-    timeout 60 taskset -c $cores "$ff" bench $job --n 1000000 --reps 3 --csv --run 'flipflop:cpu$' \
-      2>> "$OUT/bench.err" | tail -1 >> "$OUT/scaling.csv"
+    # rt2/dt2: the parallel insertions (territories, batches) next to the
+    # default sequential one — which of them to make the default on many
+    # cores is what this measures
+    rows='flipflop:cpu$'
+    case $job in rt2*|dt2*) rows='flipflop:cpu$,flipflop:territories,flipflop:batches' ;; esac
+    timeout 120 taskset -c $cores "$ff" bench $job --n 1000000 --reps 3 --csv --run "$rows" \
+      2>> "$OUT/bench.err" | tail -n +2 >> "$OUT/scaling.csv"
   done
 done
 cat "$OUT/scaling.csv"

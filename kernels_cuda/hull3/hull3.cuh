@@ -4,7 +4,7 @@
 // namespace it implements; helpers live in FF_KERNELS_NS::hull3_detail.
 //
 // Every step is a thrust primitive (for_each over an index range,
-// transform_reduce, copy_if, sort_by_key, reduce_by_key, remove_if, count,
+// transform_reduce, copy_if, sort_by_key, reduce_by_key, remove_if,
 // sort) over a __host__ __device__ functor reading flat arrays (structure of
 // arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
 // counter-clockwise seen from outside) and tn[3t + k] (the slot across its
@@ -52,7 +52,6 @@
 #endif
 
 #include <thrust/copy.h>
-#include <thrust/count.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
 #include <thrust/fill.h>
@@ -121,14 +120,14 @@ auto raw(V& b) {
 template <class F>
 void for_n(std::size_t n, const F& f) {
   if (n == 0) return;
-  backend::run_step<kParallelFrom>(
+  backend::run_step_async<kParallelFrom>(
       n, [&](auto policy) { thrust::for_each_n(policy, thrust::counting_iterator<std::size_t>(0), n, f); });
 }
 
 template <class T>
 void fill_n(T* p, std::size_t n, T value) {
   if (n == 0) return;
-  backend::run_step<kParallelFrom>(n, [&](auto policy) { thrust::fill_n(policy, p, n, value); });
+  backend::run_step_async<kParallelFrom>(n, [&](auto policy) { thrust::fill_n(policy, p, n, value); });
 }
 
 // The temporary storage of the steps that need some (scans, sorts,
@@ -656,6 +655,26 @@ struct Won {
 
 // The codes of applied operations (for the counters).
 enum : uint8_t { kLost = 0, kDid22 = 1, kDid31 = 2, kNewLabel = 3, kOldLabel = 4 };
+// A round's applied operations by kind, from one reduction over the codes
+// (one pass and one wait of the host per round instead of one per kind).
+struct OpCounts {
+  std::size_t flips_2_2 = 0, flips_3_1 = 0, new_labels = 0;
+};
+struct CountOp {
+  FF_HD OpCounts operator()(uint8_t code) const {
+    OpCounts c;
+    c.flips_2_2 = code == kDid22, c.flips_3_1 = code == kDid31, c.new_labels = code == kNewLabel;
+    return c;
+  }
+};
+struct AddCounts {
+  FF_HD OpCounts operator()(const OpCounts& x, const OpCounts& y) const {
+    OpCounts c;
+    c.flips_2_2 = x.flips_2_2 + y.flips_2_2, c.flips_3_1 = x.flips_3_1 + y.flips_3_1;
+    c.new_labels = x.new_labels + y.new_labels;
+    return c;
+  }
+};
 
 // Step 4: the winning flips rewrite their own triangle slots (vertices, inner
 // adjacency; the outer entries keep the *old* neighbour ids for step 5) and
@@ -1003,9 +1022,10 @@ class Hull3 {
       for_n(M, Repair{cand, raw(B_.action), ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
                       raw(B_.stamp_t), round});
       for_n(M, ResetClaims{raw(B_.op_tri), raw(B_.claim)});
-      st_.flips_2_2 += count(M, kDid22);
-      st_.flips_3_1 += count(M, kDid31);
-      st_.labelled_non_extreme += count(M, kNewLabel);
+      const OpCounts c = count(M);
+      st_.flips_2_2 += c.flips_2_2;
+      st_.flips_3_1 += c.flips_3_1;
+      st_.labelled_non_extreme += c.new_labels;
     }
     // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left
     std::size_t reflex = 0, labelled = 0;
@@ -1048,10 +1068,11 @@ class Hull3 {
     });
     return kept;
   }
-  std::size_t count(std::size_t M, uint8_t code) {
-    std::size_t c = 0;
+  OpCounts count(std::size_t M) {
+    OpCounts c;
     uint8_t* won = raw(B_.won);
-    run_with(B_.temp, M, [&](auto policy) { c = thrust::count(policy, won, won + M, code); });
+    run_with(B_.temp, M,
+             [&](auto policy) { c = thrust::transform_reduce(policy, won, won + M, CountOp{}, OpCounts{}, AddCounts{}); });
     return c;
   }
 
