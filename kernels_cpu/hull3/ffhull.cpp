@@ -174,14 +174,17 @@ struct Mesh {
 // reads memory in order (the points of a segment are scattered over the
 // input; reading them from the input in every round took 0.08–0.1 s more CPU
 // time on the 10^6 ball, most of it waiting for the loads of the
-// coordinates). The segments of rounds 0 and 1 do not carry them: they hold
-// most points (round 0's: 92 % of the 10^6 ball, 82 % of the cube; round
-// 1's: 70 % and 34 %) in only 4 and 12 segments, each in increasing index
-// order (the regrouping is stable), so rounds 1 and 2 read the input in 4 and
-// 12 ordered sweeps (with prefetching), and the copy is made by round 2's
-// regrouping, of the 41 % (ball) and 8 % (cube) of the points left — the
-// largest buffers of the rounds not allocated (issue 11's memory bound:
-// twice the input plus the output; README, 3D hull). Line 8's distance
+// coordinates). Round 0's segments do not carry them: they hold most points
+// (92 % of the 10^6 ball, 82 % of the cube) in only four segments, so round
+// 1 reads the input nearly in order (with prefetching) and the largest
+// buffer of the regrouping is not allocated — 12 MB less peak memory on the
+// 10^6 ball and 17 MB on the cube, for about 0.01 s of CPU time. Carrying
+// them from round 2's regrouping on instead (round 2 reading the input in
+// 12 sweeps) took 8 MB more off the 10^6 ball's peak but made the rounds'
+// classification 1.5x as costly (`perf`: 0.59 -> 0.88 s of samples over
+// five runs; flipflop:cpu 0.39 -> 0.51 s, median of 3, load 5), so it is
+// not done; the carried segments are regrouped in place instead (regroup).
+// Line 8's distance
 // key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
 // triangle (t0, t1, t2), is not stored: the round that needs it evaluates the
 // triangle's Plane again, which gives the same double as the test that put
@@ -241,7 +244,9 @@ struct Buffers {
 // positions below the group's start belong to groups already read, those
 // from it on to its copy. The result is the out-of-place scatter's, element
 // for element; the second carried copy of the coordinates (9.9 MB for round
-// 2 of the 10^6 ball) becomes a copy of a group (about 1.5 MB).
+// 2 of the 10^6 ball) becomes a copy of a group (about 1.5 MB), and the
+// indices of round 1 (whose coordinates come from the input) are regrouped
+// in place too (its four segments: a quarter of them copied, not all).
 template <class Classify, class ChildTri>
 std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet& input, bool carry,
                     const Classify& classify, const ChildTri& child_tri) {
@@ -554,8 +559,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
       if (record) record[p] = made0 + 3 * k + ch;
       return kNone;
     };
-    // (carried from round 2's regrouping on: Segments)
-    const std::size_t dropped = regroup(S, B, U, 3, ps, st.rounds >= 2, classify, [&](std::size_t k, int ch) {
+    const std::size_t dropped = regroup(S, B, U, 3, ps, true, classify, [&](std::size_t k, int ch) {
       return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
     });
     st.discarded_early += dropped - K;  // the K inserted points are not discarded
