@@ -182,7 +182,7 @@ struct Mesh {
 // them from round 2's regrouping on instead (round 2 reading the input in
 // 12 sweeps) took 8 MB more off the 10^6 ball's peak but made the rounds'
 // classification 1.5x as costly (`perf`: 0.59 -> 0.88 s of samples over
-// five runs; flipflop:cpu 0.39 -> 0.51 s, median of 3, load 5), so it is
+// five runs; flipflop:cpu 0.40 -> 0.51 s, median of 3, load 5), so it is
 // not done; the carried segments are regrouped in place instead (regroup).
 // Line 8's distance
 // key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
