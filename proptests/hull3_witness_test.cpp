@@ -73,7 +73,7 @@ bool check_accepts(const PointSet& ps, const Check& check) {
     check(r.tris == plain);
     check(r.w.facets == r.tris);
     check(r.w.tet == first.w.tet && r.w.facet == first.w.facet && r.w.beneath == first.w.beneath &&
-          r.w.ball == first.w.ball);
+          r.w.made == first.w.made && r.w.ball == first.w.ball);
     check(r.w.beneath.size() == ps.size());
     for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
       const certify::Report rep = cpu::certify_hull3_witnessed(ps, r.tris, level, r.w, t);
@@ -244,8 +244,13 @@ TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3
   const auto x = [&](Index q) { return ps.point(q)[0]; };
   Index p = 0;
   while (!r.w.has_record(p)) ++p;
-  const std::array<Index, 3> rec = r.w.beneath[p];
+  const Triangle rec = r.w.record(p);
   cpu::Hull3Witness w = r.w;
+  // p's record replaced by triangle t (appended to the witness' triangles)
+  const auto set_record = [](cpu::Hull3Witness& v, Index q, const Triangle& t) {
+    v.beneath[q] = static_cast<std::uint32_t>(v.made.size());
+    v.made.push_back(t);
+  };
   SECTION("a tetrahedron that does not hold the point") {
     // a record point right of s gets a record all of whose corners lie left
     // of s (with a margin, in doubles): the closed tetrahedron with s lies in
@@ -254,7 +259,7 @@ TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3
     while (right < ps.size() && !(r.w.has_record(right) && x(right) > sx + 0.1)) ++right;
     const auto left_of_s = [&](Index q) {
       if (!r.w.has_record(q)) return false;
-      for (Index c : r.w.beneath[q])
+      for (Index c : r.w.record(q))
         if (!(x(c) < sx - 0.1)) return false;
       return true;
     };
@@ -266,7 +271,7 @@ TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3
     expect(w, right, "does not hold the point", certify::Level::exact);
   }
   SECTION("a tetrahedron turned inside out (s outside the record's plane)") {
-    std::swap(w.beneath[p][1], w.beneath[p][2]);
+    set_record(w, p, {rec[0], rec[2], rec[1]});
     expect(w, p, "does not hold the point");
   }
   SECTION("a triangle whose cone from s holds the point, nearer to s than the point") {
@@ -316,30 +321,34 @@ TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3
     REQUIRE(found);
     for (Index c : rec2) {
       REQUIRE(dist(c) < 0.6 * dist(far));
-      w.beneath[c] = {cpu::kNoFacet, cpu::kNoFacet, cpu::kNoFacet};
+      w.beneath[c] = cpu::kNoFacet;
       w.facet[c] = cone_of(ck, r.tris, c);
     }
     REQUIRE(witnessed(ps, r.tris, w).ok);  // the corners anchored by facets: still the same hull
-    w.beneath[far] = rec2;
+    set_record(w, far, rec2);
     expect(w, far, "not strictly on the inner side of the record's plane");
     expect(w, far, "not strictly on the inner side of the record's plane", certify::Level::exact);
   }
   SECTION("a corner that has a record itself") {
     Index q = 0;
     while (q == p || !r.w.has_record(q)) ++q;
-    w.beneath[p][0] = q;
+    set_record(w, p, {q, rec[1], rec[2]});
     expect(w, p, "which is itself certified by a record");
   }
   SECTION("a repeated corner, the point as a corner, a corner out of range") {
-    w.beneath[p][1] = rec[0];
+    set_record(w, p, {rec[0], rec[0], rec[2]});
     expect(w, p, "repeats a point");
-    w.beneath[p] = {rec[0], rec[1], p};
+    set_record(w, p, {rec[0], rec[1], p});
     expect(w, p, "repeats a point");
-    w.beneath[p] = {rec[0], static_cast<Index>(ps.size()), rec[2]};
+    set_record(w, p, {rec[0], static_cast<Index>(ps.size()), rec[2]});
     expect(w, p, "names point " + std::to_string(ps.size()) + " but the input has");
   }
+  SECTION("a record naming a triangle the witness does not have") {
+    w.beneath[p] = static_cast<std::uint32_t>(w.made.size());
+    expect(w, p, "names triangle " + std::to_string(w.made.size()) + " but the witness has");
+  }
   SECTION("a record dropped: no facet, no record, no ball") {
-    w.beneath[p] = {cpu::kNoFacet, cpu::kNoFacet, cpu::kNoFacet};
+    w.beneath[p] = cpu::kNoFacet;
     REQUIRE(witnessed(ps, r.tris, w).condition == "witness-facet");
   }
   SECTION("records for the wrong number of points") {
@@ -362,7 +371,7 @@ TEST_CASE("hull3 witness: a record for one of the interior point's points is rej
     for (Index t : r.w.tet) {
       if (ck.is_vertex[t] || found) continue;
       Index q = 0;  // a record whose corners are not t
-      while (q < ps.size() && !(r.w.has_record(q) && std::count(r.w.beneath[q].begin(), r.w.beneath[q].end(), t) == 0))
+      while (q < ps.size() && !(r.w.has_record(q) && std::count(r.w.record(q).begin(), r.w.record(q).end(), t) == 0))
         ++q;
       if (q == ps.size()) continue;
       INFO("seed " << seed << ", point " << t);

@@ -75,7 +75,11 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
     // inner side of (a, b, c) follows from them), a, b, c anchored (no record
     // of their own); why this suffices: certify_hull3.hpp
     auto check_record = [&](Index p) -> Report {
-      const Triangle t{w.beneath[p][0], w.beneath[p][1], w.beneath[p][2]};
+      if (w.beneath[p] >= w.made.size())
+        return Report::fail("witness-tetrahedron", "point " + std::to_string(p) + " is not a vertex and its record " +
+                                                       "names triangle " + std::to_string(w.beneath[p]) +
+                                                       " but the witness has " + std::to_string(w.made.size()));
+      const Triangle t = w.record(p);
       const auto fail = [&](const std::string& why) {
         return Report::fail("witness-tetrahedron", "point " + std::to_string(p) + " is not a vertex and its record " +
                                                        tri_str(t) + " " + why);

@@ -20,7 +20,8 @@
 //   input-dimension .. convex-edge   certify::hull3's (certify_hull3.cpp), with
 //                        s the centroid of the witness' four points
 // then per non-vertex p, by the certificate it carries:
-//   witness-tetrahedron  (no facet, a record (a, b, c)) a, b, c are input
+//   witness-tetrahedron  (no facet, a record: an index into the witness'
+//                        triangles `made`, which must exist, naming (a, b, c)) a, b, c are input
 //                        indices, distinct and not p; none of them has a
 //                        record itself; p is not one of s's four points; and
 //                        p is strictly inside the tetrahedron (s, a, b, c)

@@ -178,7 +178,13 @@ struct Mesh {
 // (92 % of the 10^6 ball, 82 % of the cube) in only four segments, so round
 // 1 reads the input nearly in order (with prefetching) and the largest
 // buffer of the regrouping is not allocated — 12 MB less peak memory on the
-// 10^6 ball and 17 MB on the cube, for about 0.01 s of CPU time. Line 8's distance
+// 10^6 ball and 17 MB on the cube, for about 0.01 s of CPU time. Carrying
+// them from round 2's regrouping on instead (round 2 reading the input in
+// 12 sweeps) took 8 MB more off the 10^6 ball's peak but made the rounds'
+// classification 1.5x as costly (`perf`: 0.59 -> 0.88 s of samples over
+// five runs; flipflop:cpu 0.40 -> 0.51 s, median of 3, load 5), so it is
+// not done; the carried segments are regrouped in place instead (regroup).
+// Line 8's distance
 // key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
 // triangle (t0, t1, t2), is not stored: the round that needs it evaluates the
 // triangle's Plane again, which gives the same double as the test that put
@@ -202,13 +208,15 @@ struct Segments {
 };
 constexpr std::size_t kAhead = 16;  // points prefetched ahead
 
-// The buffers of the rounds, allocated once (fresh allocations every round
-// cost more in page faults than the round's work): the next round's segments
-// and the per-point child codes (a byte: m <= 4 children, or kDropped).
+// The buffers of the rounds: the per-point child codes (a byte: m <= 4
+// children, or kDropped), and the copy of a group of segments the in-place
+// regrouping reads from (regroup), both allocated once (fresh allocations
+// every round cost more in page faults than the round's work).
 constexpr std::uint8_t kDropped = 0xff;
 struct Buffers {
-  Segments next;
   RawVec<std::uint8_t> code;
+  RawVec<Index> tmp_pts;
+  RawVec<double> tmp_xyz;
 };
 
 // Regrouping after a round: every point of segment k goes to child c in
@@ -218,11 +226,27 @@ struct Buffers {
 // the new segment would compute again); child c of segment k is triangle
 // child_tri(k, c). Stable: per-unit counts, a sequential scan in the order
 // (segment, child, unit), a parallel scatter. The new segments carry the
-// coordinates when `carry` (Segments), and their furthest points (line 8,
-// by `better`: the largest key, ties the smallest index, whatever the
-// units) reduced from per-unit maxima taken while classifying — no pass of
-// its own over the points (it was 6 % of the 10^6 ball's profile and one
-// more read of every point a round). Returns the number of dropped points.
+// coordinates when `carry` (Segments; once carried, always), and their
+// furthest points (line 8, by `better`: the largest key, ties the smallest
+// index, whatever the units) reduced from per-unit maxima taken while
+// classifying — no pass of its own over the points (it was 6 % of the 10^6
+// ball's profile and one more read of every point a round). Returns the
+// number of dropped points.
+//
+// Memory (issue 11: peak at most twice the input plus the output). The
+// segments that do not carry coordinates are scattered into fresh arrays and
+// the old ones freed at once. The segments that carry them are regrouped in
+// place: a child's points only move towards the front (the children of
+// segment k start at most where k started, as points are only dropped), so
+// the segments are taken in groups of consecutive segments of about an
+// eighth of the points (or one larger segment), each group copied to
+// Buffers::tmp and scattered from there into the same arrays — the
+// positions below the group's start belong to groups already read, those
+// from it on to its copy. The result is the out-of-place scatter's, element
+// for element; the second carried copy of the coordinates (9.9 MB for round
+// 2 of the 10^6 ball) becomes a copy of a group (about 1.5 MB), and the
+// indices of round 1 (whose coordinates come from the input) are regrouped
+// in place too (its four segments: a quarter of them copied, not all).
 template <class Classify, class ChildTri>
 std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet& input, bool carry,
                     const Classify& classify, const ChildTri& child_tri) {
@@ -250,10 +274,9 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
     }
   });
   std::vector<std::size_t> off(nu * static_cast<std::size_t>(m));
-  Segments N = std::move(B.next);
-  N.lo.clear();
-  N.tri.clear();
-  N.far.clear();
+  std::vector<std::size_t> lo;
+  std::vector<std::uint32_t> tri;
+  std::vector<Index> far;
   std::size_t pos = 0;
   for (std::size_t k = 0; k < S.count(); ++k)
     for (int c = 0; c < m; ++c) {
@@ -265,28 +288,65 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
         if (b.i != kNone && better(b.key, b.i, bb)) bb = b;
       }
       if (pos > start) {
-        N.lo.push_back(start);
-        N.tri.push_back(child_tri(k, c));
-        N.far.push_back(bb.i);
+        lo.push_back(start);
+        tri.push_back(child_tri(k, c));
+        far.push_back(bb.i);
       }
     }
-  N.lo.push_back(pos);
-  N.pts.resize(pos);
-  N.xyz.resize(carry ? 3 * pos : 0);
-  par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
-    for (std::size_t u = ulo; u < uhi; ++u) {
-      std::size_t* o = &off[u * m];
-      for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
-        if (code[i] != kDropped) {
-          const std::size_t j = o[code[i]]++;
-          N.pts[j] = S.pts[i];
-          if (carry) std::memcpy(&N.xyz[3 * j], coords(i), 3 * sizeof(double));
-        }
-    }
-  });
+  lo.push_back(pos);
   const std::size_t dropped = S.pts.size() - pos;
-  B.next = std::move(S);
-  S = std::move(N);
+  // the scatter of units [u0, u1) reading point i at from_pts[i - base],
+  // from_xyz[3 (i - base)] (from_xyz null: from the input)
+  const auto scatter = [&](std::size_t u0, std::size_t u1, const Index* from_pts, const double* from_xyz,
+                           std::size_t base, Index* to_pts, double* to_xyz) {
+    par_for(u1 - u0, 1, [&](std::size_t ulo, std::size_t uhi) {
+      for (std::size_t u = u0 + ulo; u < u0 + uhi; ++u) {
+        std::size_t* o = &off[u * m];
+        for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i)
+          if (code[i] != kDropped) {
+            const std::size_t j = o[code[i]]++;
+            to_pts[j] = from_pts[i - base];
+            if (to_xyz) {
+              if (!from_xyz && i + kAhead < U.hi[u] && code[i + kAhead] != kDropped)
+                __builtin_prefetch(input.point(from_pts[i + kAhead - base]));
+              std::memcpy(&to_xyz[3 * j], from_xyz ? &from_xyz[3 * (i - base)] : input.point(from_pts[i - base]),
+                          3 * sizeof(double));
+            }
+          }
+      }
+    });
+  };
+  if (S.count() == 1) {  // round 0: one segment, into fresh arrays; the old ones are freed
+    Segments N;
+    N.pts.resize(pos);
+    N.xyz.resize(carry ? 3 * pos : 0);
+    scatter(0, nu, S.pts.data(), nullptr, 0, N.pts.data(), carry ? N.xyz.data() : nullptr);
+    S.pts = std::move(N.pts);
+    S.xyz = std::move(N.xyz);
+  } else {  // in place, a group of segments at a time (coordinates from the input: into a fresh array)
+    const bool from_input = S.xyz.empty();
+    RawVec<double> fresh(from_input && carry ? 3 * pos : 0);
+    double* to_xyz = from_input ? (carry ? fresh.data() : nullptr) : S.xyz.data();
+    const std::size_t group = std::max(S.pts.size() / 8, kChunk);
+    for (std::size_t k0 = 0, k1; k0 < S.count(); k0 = k1) {
+      for (k1 = k0 + 1; k1 < S.count() && S.lo[k1 + 1] - S.lo[k0] <= group;) ++k1;
+      const std::size_t base = S.lo[k0], len = S.lo[k1] - base;
+      if (B.tmp_pts.size() < len) B.tmp_pts.resize(len);
+      if (!from_input && B.tmp_xyz.size() < 3 * len) B.tmp_xyz.resize(3 * len);
+      par_for(len, kChunk, [&](std::size_t lo_, std::size_t hi_) {
+        std::memcpy(&B.tmp_pts[lo_], &S.pts[base + lo_], (hi_ - lo_) * sizeof(Index));
+        if (!from_input) std::memcpy(&B.tmp_xyz[3 * lo_], &S.xyz[3 * (base + lo_)], 3 * (hi_ - lo_) * sizeof(double));
+      });
+      scatter(U.first[k0], U.first[k1], B.tmp_pts.data(), from_input ? nullptr : B.tmp_xyz.data(), base,
+              S.pts.data(), to_xyz);
+    }
+    S.pts.resize(pos);
+    if (from_input) S.xyz = std::move(fresh);
+    else S.xyz.resize(3 * pos);
+  }
+  S.lo = std::move(lo);
+  S.tri = std::move(tri);
+  S.far = std::move(far);
   return dropped;
 }
 
@@ -325,10 +385,10 @@ struct Tests {
 
 // The triangles the construction made, in order (the tetrahedron's four
 // faces, then each round's 3 children of each split triangle), so that a
-// point's early-removal record is one index into it during the rounds (4
-// bytes a point instead of the witness' 12: 8 MB less peak memory on 10^6
-// points; the triangles are few where most points are removed early, and
-// the list is gone before flip-flop). record: when given (size n, kNoFacet),
+// point's early-removal record is one index into it (4 bytes a point instead
+// of a triangle's 12: 8 MB less memory on 10^6 points; the triangles are few
+// where most points are removed early). Both are handed to the witness as
+// they are (Hull3Witness::beneath, made). record: when given (size n, kNoFacet),
 // every point removed early (line 14) gets the index in `made` of the
 // triangle whose tetrahedron with s it was proven in.
 struct Made {
@@ -967,7 +1027,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t p = lo; p < hi; ++p) {
       if (P.deg[p] != 0) continue;
-      if (ball.strictly_inside(ps.point(static_cast<Index>(p)))) w.beneath[p] = {kNoFacet, kNoFacet, kNoFacet};
+      if (ball.strictly_inside(ps.point(static_cast<Index>(p)))) w.beneath[p] = kNoFacet;
       else if (!w.has_record(p)) w.facet[p] = rank[locate(static_cast<Index>(p))];
     }
   });
@@ -995,14 +1055,9 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
   const Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
-  if (witness) {  // the records as the witness holds them: the triangles
-    witness->beneath.resize(ps.size());
-    par_for(ps.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
-      for (std::size_t p = lo; p < hi; ++p) {
-        const std::uint32_t r = made->record[p];
-        witness->beneath[p] = r == kNoFacet ? std::array<Index, 3>{kNoFacet, kNoFacet, kNoFacet} : made->made[r];
-      }
-    });
+  if (witness) {  // the records as they are: indices into the triangles made
+    witness->beneath = std::move(made->record);
+    witness->made = std::move(made->made);
     made.reset();
   }
   clock.mark("construction rounds");

@@ -36,16 +36,25 @@ struct Hull3Witness {
   // vertices, for points with a record in `beneath` and, when `ball`, for
   // points strictly inside the inner ball.
   std::vector<std::uint32_t> facet;
-  // Per input point (or empty: no records): the early-removal record, three
-  // input indices (a, b, c) of a triangle of the surface under construction
-  // (counter-clockwise seen from outside, so s is on its inner side) such that
-  // the point lies strictly inside the tetrahedron (s, a, b, c) under the
-  // perturbation: in the triangle's cone from s and on the inner side of its
-  // plane, the two facts the kernel's removal test established. a, b, c are
-  // vertices of that surface, hence never removed early themselves (they carry
-  // no record). {kNoFacet, kNoFacet, kNoFacet} where there is no record.
-  std::vector<std::array<Index, 3>> beneath;
-  bool has_record(std::size_t p) const { return !beneath.empty() && beneath[p][0] != kNoFacet; }
+  // Per input point (or empty: no records): its early-removal record, the
+  // index in `made` of a triangle (a, b, c) of the surface under
+  // construction (counter-clockwise seen from outside, so s is on its inner
+  // side) such that the point lies strictly inside the tetrahedron
+  // (s, a, b, c) under the perturbation: in the triangle's cone from s and on
+  // the inner side of its plane, the two facts the kernel's removal test
+  // established. a, b, c are vertices of that surface, hence never removed
+  // early themselves (they carry no record). kNoFacet where there is no
+  // record. An index (4 bytes a point) rather than the triangle (12): the
+  // triangles are few where most points are removed early (10^6 ball:
+  // 32 k triangles for 1 M points), and the records are the construction's
+  // own, handed over without a pass (issue 11's memory bound).
+  std::vector<std::uint32_t> beneath;
+  // The triangles the construction made, in order (ffhull.cpp: Made); the
+  // records index it.
+  std::vector<Triangle> made;
+  bool has_record(std::size_t p) const { return !beneath.empty() && beneath[p] != kNoFacet; }
+  // the record of p (has_record(p), beneath[p] < made.size())
+  const Triangle& record(std::size_t p) const { return made[beneath[p]]; }
   // The certifier builds the inner ball of the facets (reference/certify/
   // inner_ball.hpp, verified exactly) and accepts a non-vertex without a
   // facet when it lies strictly inside that ball.
