@@ -81,13 +81,32 @@ struct ErrDD {
   }
 };
 
-FF_HD inline ErrDD operator+(const ErrDD& a, const ErrDD& b) {
+// The value parts of a + b and a * b (the rules above), shared with the
+// a-priori-bounded DD of dd_filter.hpp: (h, l) and the rounded intermediates
+// the running bound is made of.
+FF_HD inline void dd_add_parts(double ah, double al, double bh, double bl, double& h, double& l,
+                               double& t2, double& t3) {
   double s = 0.0, t = 0.0;
-  xp::Dbl::two_sum(a.h, b.h, s, t);
-  const double t2 = a.l + b.l;
-  const double t3 = t + t2;
+  xp::Dbl::two_sum(ah, bh, s, t);
+  t2 = al + bl;
+  t3 = t + t2;
+  xp::Dbl::two_sum(s, t3, h, l);
+}
+FF_HD inline void dd_mul_parts(double ah, double al, double bh, double bl, double& h, double& l,
+                               double& c1, double& c2, double& c, double& t3) {
+  double p = 0.0, q = 0.0;
+  xp::Dbl::two_product(ah, bh, p, q);
+  c1 = ah * bl;
+  c2 = al * bh;
+  c = c1 + c2;
+  t3 = q + c;
+  xp::Dbl::two_sum(p, t3, h, l);
+}
+
+FF_HD inline ErrDD operator+(const ErrDD& a, const ErrDD& b) {
+  double t2 = 0.0, t3 = 0.0;
   ErrDD r;
-  xp::Dbl::two_sum(s, t3, r.h, r.l);
+  dd_add_parts(a.h, a.l, b.h, b.l, r.h, r.l, t2, t3);
   r.e = a.e + b.e + ErrDD::kU * (std::fabs(t2) + std::fabs(t3)) + ErrDD::kEta4;
   return r;
 }
@@ -102,14 +121,9 @@ FF_HD inline ErrDD operator-(const ErrDD& a) {
 FF_HD inline ErrDD operator-(const ErrDD& a, const ErrDD& b) { return a + (-b); }
 
 FF_HD inline ErrDD operator*(const ErrDD& a, const ErrDD& b) {
-  double p = 0.0, q = 0.0;
-  xp::Dbl::two_product(a.h, b.h, p, q);
-  const double c1 = a.h * b.l;
-  const double c2 = a.l * b.h;
-  const double c = c1 + c2;
-  const double t3 = q + c;
+  double c1 = 0.0, c2 = 0.0, c = 0.0, t3 = 0.0;
   ErrDD r;
-  xp::Dbl::two_sum(p, t3, r.h, r.l);
+  dd_mul_parts(a.h, a.l, b.h, b.l, r.h, r.l, c1, c2, c, t3);
   const double ma = std::fabs(a.h) + std::fabs(a.l), mb = std::fabs(b.h) + std::fabs(b.l);
   r.e = (ma * b.e + mb * a.e + a.e * b.e) + std::fabs(a.l) * std::fabs(b.l) +
         ErrDD::kU * ((std::fabs(c1) + std::fabs(c2)) + (std::fabs(c) + std::fabs(t3))) +

@@ -7,8 +7,9 @@
 // triangulation of 10^7 points, whose determinants are far below the
 // per-input bound — the per-call semi-static filter (the same determinant,
 // its bound from this call's own magnitudes) is tried, still inline; what
-// neither decides goes to the out-of-line staged predicate (predicates.hpp:
-// dynamic filter, exact expansion stage, Simulation of Simplicity). Same
+// neither decides goes to the out-of-line rest of the staged predicate
+// (predicates.hpp, after_filters: double-double or dynamic filter, exact
+// expansion stage, Simulation of Simplicity; the filters are not rerun). Same
 // answers as pred::orient2d(f, ...) etc. — the filters only decide sooner, and
 // never on an exactly degenerate determinant (|det| > bound implies the sign).
 //
@@ -25,14 +26,14 @@ inline int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
   const double* p[3] = {a.x, b.x, c.x};
   if (const int s = static_sign<3>(f, p, nullptr)) return s;
   if (const int s = semi_static_sign<3>(p, nullptr)) return s;
-  return pred::orient2d(f, a, b, c);
+  return pred::after_filters::orient2d(a, b, c);
 }
 
 inline int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d) {
   const double* p[4] = {a.x, b.x, c.x, d.x};
   if (const int s = static_sign<4>(f, p, nullptr)) return s;
   if (const int s = semi_static_sign<4>(p, nullptr)) return s;
-  return pred::orient3d(f, a, b, c, d);
+  return pred::after_filters::orient3d(a, b, c, d);
 }
 
 inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
@@ -40,7 +41,7 @@ inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
   const double w[4] = {a.w, b.w, c.w, d.w};
   if (const int s = static_sign<4>(f, p, w)) return s;
   if (const int s = semi_static_sign<4>(p, w)) return s;
-  return pred::power2d(f, a, b, c, d);
+  return pred::after_filters::power2d(a, b, c, d);
 }
 
 inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
@@ -48,7 +49,7 @@ inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   if (const int s = static_sign<5>(f, p, w)) return s;
   if (const int s = semi_static_sign<5>(p, w)) return s;
-  return pred::power3d(f, a, b, c, d, e);
+  return pred::after_filters::power3d(a, b, c, d, e);
 }
 
 }  // namespace flipflop::pred::fast

@@ -50,6 +50,25 @@ FF_HD inline V det_by_minors(const V* t) {
     return t[0];
   } else if constexpr (N == 2) {
     return t[0] * t[3] - t[1] * t[2];
+  } else if constexpr (N == 3 || N == 4) {
+    // The loop below written out (the same operations in the same order, so
+    // the same values: for the double-double types of err_dd.hpp and
+    // dd_filter.hpp the loop's subset bookkeeping cost more than the
+    // arithmetic). m2(a, b): the level-2 minor on columns a < b (row 1);
+    // m3(a, b, c): level 3 (row 2) on columns a < b < c.
+    auto m2 = [t](int a, int b) { return -(t[N + a] * t[b]) + t[N + b] * t[a]; };
+    if constexpr (N == 3) {
+      const V m01 = m2(0, 1), m02 = m2(0, 2), m12 = m2(1, 2);
+      return (t[6] * m12 - t[7] * m02) + t[8] * m01;
+    } else {
+      const V m01 = m2(0, 1), m02 = m2(0, 2), m03 = m2(0, 3);
+      const V m12 = m2(1, 2), m13 = m2(1, 3), m23 = m2(2, 3);
+      const V d012 = (t[8] * m12 - t[9] * m02) + t[10] * m01;
+      const V d013 = (t[8] * m13 - t[9] * m03) + t[11] * m01;
+      const V d023 = (t[8] * m23 - t[10] * m03) + t[11] * m02;
+      const V d123 = (t[9] * m23 - t[10] * m13) + t[11] * m12;
+      return ((-(t[12] * d123) + t[13] * d023) - t[14] * d013) + t[15] * d012;
+    }
   } else {
     constexpr int kSubsets = 1 << N;
     V d[kSubsets];

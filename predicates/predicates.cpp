@@ -349,6 +349,31 @@ int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   return lambda_sign_staged<5>(&f, id, p, w);
 }
 
+namespace after_filters {
+int orient2d(Pt a, Pt b, Pt c) {
+  const PointId id[3] = {a.id, b.id, c.id};
+  const double* p[3] = {a.x, b.x, c.x};
+  return lambda_sign_after_filters<3>(id, p, static_cast<const double*>(nullptr));
+}
+int orient3d(Pt a, Pt b, Pt c, Pt d) {
+  const PointId id[4] = {a.id, b.id, c.id, d.id};
+  const double* p[4] = {a.x, b.x, c.x, d.x};
+  return lambda_sign_after_filters<4>(id, p, static_cast<const double*>(nullptr));
+}
+int power2d(WPt a, WPt b, WPt c, WPt d) {
+  const PointId id[4] = {a.id, b.id, c.id, d.id};
+  const double* p[4] = {a.x, b.x, c.x, d.x};
+  const double w[4] = {a.w, b.w, c.w, d.w};
+  return lambda_sign_after_filters<4>(id, p, w);
+}
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e) {
+  const PointId id[5] = {a.id, b.id, c.id, d.id, e.id};
+  const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
+  const double w[5] = {a.w, b.w, c.w, d.w, e.w};
+  return lambda_sign_after_filters<5>(id, p, w);
+}
+}  // namespace after_filters
+
 bool collinear3_exact(const double* a, const double* b, const double* c) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;

@@ -199,6 +199,16 @@ int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d);
 int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d);
 int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e);
 
+// The same after the static and semi-static filters (staged.hpp,
+// lambda_sign_after_filters): fast.hpp runs those two inline and calls these
+// only when both have failed.
+namespace after_filters {
+int orient2d(Pt a, Pt b, Pt c);
+int orient3d(Pt a, Pt b, Pt c, Pt d);
+int power2d(WPt a, WPt b, WPt c, WPt d);
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e);
+}  // namespace after_filters
+
 // ---- Each stage alone (benchmarks and tests) --------------------------------
 // On the Λ-matrix of k points (2 <= k <= 8), p[i] the coordinates of point i,
 // `w` the weights (lifted matrix, k >= 3) or null, as for lambda_sign. Rows

@@ -6,7 +6,10 @@
 //                         StaticFilter of the input is given;
 //   2. semi-static filter per-call bound from the column magnitudes
 //                         (static_filter.hpp);
-//   3. dynamic filter     ErrDouble running error bound (lambda_filter.hpp);
+//   3. double-double filter (k <= 5) a priori bounded (dd_filter.hpp):
+//                         decides near-degenerate calls; where it ran and
+//                         failed the next stage is 4;
+//      dynamic filter     ErrDouble running error bound (lambda_filter.hpp);
 //   4. double-double      the same determinant on double-double values with
 //                         a proven running error bound (err_dd.hpp,
 //                         xp::lambda_sign_dd, inside the exact stage's double
@@ -29,6 +32,7 @@
 
 #include <type_traits>
 
+#include "predicates/dd_filter.hpp"
 #include "predicates/exact_expansion.hpp"
 #include "predicates/lambda_filter.hpp"
 #include "predicates/static_filter.hpp"
@@ -83,6 +87,24 @@ FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* co
   return parity * xp::lambda_exact<K>(sp, w ? sw : nullptr, sos);
 }
 
+// The default path after the static and semi-static filters (fast.hpp calls
+// it when both have failed inline). For 3 <= K <= 5 the double-double filter
+// (dd_filter.hpp) comes first; where it ran (inside its window) and could not
+// decide, the dynamic filter is skipped: its error bound, of order u times the
+// terms, is far above the double-double one (u^2 times the column bounds), so
+// it would fail too — undecided calls there are (near-)zero determinants.
+template <int K, class Id>
+FF_HD inline int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w) {
+  if (repeated_id(K, ids)) return 0;
+  if constexpr (K >= 3 && K <= 5) {
+    const int s = dd_filter_sign<K>(p, w);
+    if (s == 1 || s == -1) return s;
+    if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+  }
+  if (const int s = lambda_sign_filter<K>(p, w)) return s;
+  return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+}
+
 // The whole default path for K points. `f` may be null (no static filter);
 // `ids` may be null (exact sign, may be 0).
 template <int K, class Id>
@@ -92,8 +114,7 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
   if (f)
     if (const int s = static_sign<K>(*f, p, w)) return s;
   if (const int s = semi_static_sign<K>(p, w)) return s;
-  if (const int s = lambda_sign_filter<K>(p, w)) return s;
-  return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+  return lambda_sign_after_filters<K>(ids, p, w);
 }
 
 // Calls f(std::integral_constant<int, K>{}) for the run-time k, 2 <= k <= 8
