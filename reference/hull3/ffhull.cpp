@@ -34,16 +34,27 @@ struct Functional {
   ErrDouble fa[3];
 };
 
-ErrDouble approx_value(const Functional& f, const double* p) {
-  return f.fa[0] * ErrDouble(p[0]) + f.fa[1] * ErrDouble(p[1]) + f.fa[2] * ErrDouble(p[2]);
+ErrDouble approx_value(const ErrDouble* fa, const double* p) {
+  return fa[0] * ErrDouble(p[0]) + fa[1] * ErrDouble(p[1]) + fa[2] * ErrDouble(p[2]);
+}
+
+// sign(f·p - f·q) when the filter (coefficients fa with their error bounds) is
+// certain, else 0.
+int filtered_compare(const ErrDouble* fa, const double* p, const double* q) {
+  return pred::sign_if_certain(approx_value(fa, p) - approx_value(fa, q));
+}
+
+// sign(f·p - f·q) in exact arithmetic (GMP).
+int exact_compare(const ex::Dyadic* f, const double* p, const double* q) {
+  ex::Dyadic sum;
+  for (int j = 0; j < 3; ++j) sum = ex::add(sum, ex::mul(f[j], ex::sub(ex::to_dyadic(p[j]), ex::to_dyadic(q[j]))));
+  return ex::sign(sum);
 }
 
 // sign(f·p - f·q), exactly: the filter first, GMP when it cannot decide.
 int compare(const Functional& f, const double* p, const double* q) {
-  if (int s = pred::sign_if_certain(approx_value(f, p) - approx_value(f, q))) return s;
-  ex::Dyadic sum;
-  for (int j = 0; j < 3; ++j) sum = ex::add(sum, ex::mul(f.f[j], ex::sub(ex::to_dyadic(p[j]), ex::to_dyadic(q[j]))));
-  return ex::sign(sum);
+  if (int s = filtered_compare(f.fa, p, q)) return s;
+  return exact_compare(f.f, p, q);
 }
 
 // Exact ties of f·p are broken by the perturbation: for indices i < j the
@@ -84,22 +95,32 @@ Functional negate(Functional f) {
   return f;
 }
 
+// u × v on filtered doubles
+void cross_approx(const ErrDouble* ua, const ErrDouble* va, ErrDouble* out) {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    out[k] = ua[i] * va[j] - ua[j] * va[i];
+  }
+}
+
 // u × v of exact vectors given as dyadics (with their filtered doubles).
 Functional cross(const ex::Dyadic* u, const ErrDouble* ua, const ex::Dyadic* v, const ErrDouble* va) {
   Functional f;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     f.f[k] = ex::sub(ex::mul(u[i], v[j]), ex::mul(u[j], v[i]));
-    f.fa[k] = ua[i] * va[j] - ua[j] * va[i];
   }
+  cross_approx(ua, va, f.fa);
   return f;
 }
 
+void difference_approx(const PointSet& ps, Index b, Index a, ErrDouble* da) {
+  for (int k = 0; k < 3; ++k) da[k] = ErrDouble(ps.point(b)[k]) - ErrDouble(ps.point(a)[k]);
+}
+
 void difference(const PointSet& ps, Index b, Index a, ex::Dyadic* d, ErrDouble* da) {
-  for (int k = 0; k < 3; ++k) {
-    d[k] = ex::sub(ex::to_dyadic(ps.point(b)[k]), ex::to_dyadic(ps.point(a)[k]));
-    da[k] = ErrDouble(ps.point(b)[k]) - ErrDouble(ps.point(a)[k]);
-  }
+  for (int k = 0; k < 3; ++k) d[k] = ex::sub(ex::to_dyadic(ps.point(b)[k]), ex::to_dyadic(ps.point(a)[k]));
+  difference_approx(ps, b, a, da);
 }
 
 // The outward normal (b - a) × (c - a) of a triangle counter-clockwise seen from
@@ -113,6 +134,32 @@ Functional outward_normal(const PointSet& ps, const Triangle& t) {
   return cross(u, ua, v, va);
 }
 
+// The same normal for line 8's comparisons, with its exact (GMP) coefficients
+// made only when the filter cannot decide a comparison: the filter decides
+// nearly all of them, and making the dyadic normal of every new triangle
+// eagerly was about a tenth of the reference's time on thin spherical shells
+// (perf, 2026-11-27). The comparisons' results are the same.
+struct LazyNormal {
+  Triangle t{};
+  ErrDouble fa[3];
+};
+
+LazyNormal lazy_outward_normal(const PointSet& ps, const Triangle& t) {
+  LazyNormal n;
+  n.t = t;
+  ErrDouble ua[3], va[3];
+  difference_approx(ps, t[1], t[0], ua);
+  difference_approx(ps, t[2], t[0], va);
+  cross_approx(ua, va, n.fa);
+  return n;
+}
+
+// sign(N·p - N·q) for the outward normal N of n.t, exactly.
+int compare(const PointSet& ps, const LazyNormal& n, const double* p, const double* q) {
+  if (int s = filtered_compare(n.fa, p, q)) return s;
+  return exact_compare(outward_normal(ps, n.t).f, p, q);
+}
+
 int orient(const PointSet& ps, Index a, Index b, Index c, Index p) {
   return pred::orient3d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}, {p, ps.point(p)});
 }
@@ -122,7 +169,7 @@ int orient(const PointSet& ps, Index a, Index b, Index c, Index p) {
 struct Cones {
   std::vector<std::vector<Index>> pts;
   std::vector<Index> far;
-  std::vector<Functional> normal;
+  std::vector<LazyNormal> normal;
   void grow(std::size_t slots) {
     if (pts.size() < slots) {
       pts.resize(slots);
@@ -148,7 +195,7 @@ poly::Polyhedron3 construct_polyhedron(const PointSet& ps, const KernelPoint& s,
   auto start_triangle = [&](std::uint32_t t) {
     K.pts[t].clear();
     K.far[t] = kNoPoint;
-    if (opt.furthest) K.normal[t] = outward_normal(ps, P.tri[t]);
+    if (opt.furthest) K.normal[t] = lazy_outward_normal(ps, P.tri[t]);
   };
   // Associates p with triangle t (p ∈ C_s(t)); lines 13-14: discards p when it
   // lies on the same side of t as s (inside the tetrahedron s + t).
@@ -166,7 +213,7 @@ poly::Polyhedron3 construct_polyhedron(const PointSet& ps, const KernelPoint& s,
       K.far[t] = p;
       return;
     }
-    const int cmp = compare(K.normal[t], ps.point(p), ps.point(f));
+    const int cmp = compare(ps, K.normal[t], ps.point(p), ps.point(f));
     if (cmp > 0 || (cmp == 0 && p < f)) K.far[t] = p;  // line 8; exact ties: the smaller index
   };
   for (std::uint32_t t = 0; t < 4; ++t) start_triangle(t);
