@@ -15,7 +15,9 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -24,7 +26,9 @@
 #include "peers/peers.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/ffhull_inputs.hpp"
+#include "proptests/support/predicate_inputs.hpp"
 #include "proptests/support/rc_scaled.hpp"
+#include "predicates/predicates.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -322,6 +326,56 @@ TEST_CASE("ffhull: flip_flop_3d rejects surfaces that are not star-shaped sphere
                                    {tet[1], tet[3], tet[2]}},
                               s));
   REQUIRE_THROWS_AS(ref::centroid_kernel(family("coplanar3", 10, 1), 0, 1, 2, 3), std::invalid_argument);
+}
+
+// ---- the kernel point's per-input bound (rational_kernel.cpp) ----------------------
+// RationalKernel::side() decides by a static bound before the exact mixed
+// predicate. Inputs at that bound's edge: planes (a, b, c) through or within
+// a few ulps of s (c the point reflection 2s - a rounded, b anything), at unit,
+// 1e±300 and subnormal magnitudes, and sets whose largest magnitude M is
+// reached by a point other than a, b, c. Every sign must be GMP's.
+TEST_CASE("ffhull: the kernel point's static bound gives the GMP sign near and on its planes", "[ffhull]") {
+  rc::prop("side() equals mixed_sign in GMP", [] {
+    // coordinates up to M = 2^scale in magnitude; the kernel's sources near
+    // alternate corners of the cube [-M, M]^3, so the query differences reach
+    // 2M as the bound assumes
+    const int scale = *rc::gen::element(0, -1070, -600, -300, 300, 500, 1020);
+    const double M = std::ldexp(1.0, scale);
+    auto corner = [&](double sign) { return sign * M * (0.75 + 0.25 * std::fabs(test::gen_unit())); };
+    PointSet ps;
+    ps.dim = 3;
+    const double signs[12] = {-1, -1, -1, 1, 1, -1, 1, -1, 1, -1, 1, 1};
+    for (double sg : signs) ps.coords.push_back(corner(sg));
+    const std::size_t n = 4 + static_cast<std::size_t>(*rc::gen::inRange(3, 12));
+    for (std::size_t i = 4; i < n; ++i)
+      for (int j = 0; j < 3; ++j) ps.coords.push_back(M * test::gen_unit());
+    if (scale < 1000 && *rc::gen::weightedElement<int>({{4, 0}, {1, 1}}))  // the largest magnitude elsewhere
+      ps.coords.insert(ps.coords.end(), {std::ldexp(1.0, scale + 20), 0.0, 0.0});
+    const double* src[4] = {ps.point(0), ps.point(1), ps.point(2), ps.point(3)};
+    RC_PRE(pred::orient3d_exact(src[0], src[1], src[2], src[3]) != 0);
+    const ref::RationalKernel s(ps, pred::RationalPoint::centroid(src, 4, 3));
+    // c = 2s - a (rounded, nudged) for four a: the planes (a, b, c) pass within
+    // ulps of s; then every b, and for contrast one ordinary triple per a
+    const std::size_t m = ps.size();
+    std::array<Index, 4> as{};
+    for (Index& a : as) {
+      a = static_cast<Index>(*rc::gen::inRange<std::size_t>(0, m));
+      for (int j = 0; j < 3; ++j) ps.coords.push_back(test::gen_nudged(2.0 * s.point().approx[j].v - ps.point(a)[j]));
+    }
+    for (double v : ps.coords) RC_PRE(std::isfinite(v));
+    const ref::RationalKernel s2(ps, s.point());  // the same point, SoS index after the c's
+    auto check = [&](Index a, Index b, Index c) {
+      const pred::MixedRow rows[4] = {{a, ps.point(a), nullptr}, {b, ps.point(b), nullptr},
+                                      {c, ps.point(c), nullptr}, {s2.id(), nullptr, &s2.point()}};
+      RC_ASSERT(s2.side(a, b, c) == pred::mixed_sign(4, rows, true, pred::Mode::gmp));
+    };
+    for (std::size_t k = 0; k < as.size(); ++k) {
+      const Index a = as[k], c = static_cast<Index>(m + k);
+      for (Index b = 0; b < static_cast<Index>(m); ++b)
+        if (b != a) check(a, b, c);
+      if ((a + 1) % m != (a + 2) % m) check(a, static_cast<Index>((a + 1) % m), static_cast<Index>((a + 2) % m));
+    }
+  });
 }
 
 // ---- measurements (hidden: run with the tag [.bench]) ------------------------------

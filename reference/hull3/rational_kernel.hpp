@@ -46,6 +46,8 @@ class RationalKernel : public KernelPoint {
   const PointSet* ps_;
   pred::RationalPoint p_;
   pred::PointId id_;
+  double q_[3];         // the filter's double coordinates of s
+  double static_bound_;  // side()'s per-input bound (rational_kernel.cpp); +inf: none
 };
 
 // The exact centroid of the input points a, b, c, d (a kernel point of the
