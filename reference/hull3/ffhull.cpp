@@ -12,6 +12,7 @@
 #include "predicates/err_double.hpp"
 #include "predicates/exact.hpp"
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/canonical.hpp"
 #include "reference/checked.hpp"
 #include "reference/dimension.hpp"
@@ -160,8 +161,11 @@ int compare(const PointSet& ps, const LazyNormal& n, const double* p, const doub
   return exact_compare(outward_normal(ps, n.t).f, p, q);
 }
 
-int orient(const PointSet& ps, Index a, Index b, Index c, Index p) {
-  return pred::orient3d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}, {p, ps.point(p)});
+// orient3d under SoS, the per-input static filter (thesis §6.4.2) first.
+int orient(const PointSet& ps, const pred::StaticFilter& f, Index a, Index b, Index c, Index p) {
+  const double* x[4] = {ps.point(a), ps.point(b), ps.point(c), ps.point(p)};
+  if (const int r = pred::static_sign<4>(f, x, nullptr)) return r;  // |det| above the bound: SoS irrelevant
+  return pred::orient3d({a, x[0]}, {b, x[1]}, {c, x[2]}, {p, x[3]});
 }
 
 // The constructing stage's per-triangle data: the points associated to each
@@ -191,6 +195,7 @@ poly::Polyhedron3 construct_polyhedron(const PointSet& ps, const KernelPoint& s,
     throw std::invalid_argument("ffHull: the kernel point is not inside the initial tetrahedron: " + why);
   Cones K;
   K.grow(P.tri.size());
+  const pred::StaticFilter filter = pred::StaticFilter::for_points(ps.coords.data(), n, 3);
   std::mt19937_64 rng(opt.seed);
   auto start_triangle = [&](std::uint32_t t) {
     K.pts[t].clear();
@@ -202,7 +207,7 @@ poly::Polyhedron3 construct_polyhedron(const PointSet& ps, const KernelPoint& s,
   auto associate = [&](std::uint32_t t, Index p) {
     const Triangle& T = P.tri[t];
     FF_CHECK(poly::in_cone(s, T[0], T[1], T[2], p), "ffHull: a point associated with a triangle outside its cone");
-    if (opt.discard_inside && orient(ps, T[0], T[1], T[2], p) > 0) {
+    if (opt.discard_inside && orient(ps, filter, T[0], T[1], T[2], p) > 0) {
       if (stats) ++stats->discarded_early;
       return;
     }

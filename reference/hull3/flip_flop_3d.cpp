@@ -25,7 +25,9 @@ constexpr Index kNoVertex = ~Index{0};
 // side of (a, b, c) counter-clockwise seen from outside.
 int orient(const State& st, Index a, Index b, Index c, Index p) {
   const PointSet& ps = *st.ps;
-  return pred::orient3d({a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}, {p, ps.point(p)});
+  const double* x[4] = {ps.point(a), ps.point(b), ps.point(c), ps.point(p)};
+  if (const int r = pred::static_sign<4>(st.filter, x, nullptr)) return r;  // |det| above the bound: SoS irrelevant
+  return pred::orient3d({a, x[0]}, {b, x[1]}, {c, x[2]}, {p, x[3]});
 }
 
 // The induced subcomplex of e = ab (line 5): triangles (a, b, c) and (b, a, d).
@@ -93,6 +95,7 @@ State make_state(const PointSet& ps, const KernelPoint& s, poly::Polyhedron3 P) 
   st.s = &s;
   st.labelled.assign(P.n, 0);  // line 1: all vertices "unknown"
   st.removed.assign(P.n, 0);
+  st.filter = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), 3);
   st.P = std::move(P);
   return st;
 }

@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/static_filter.hpp"
 #include "reference/hull3/hull3_stats.hpp"
 #include "reference/hull3/kernel_point.hpp"
 #include "reference/hull3/polyhedron3.hpp"
@@ -66,6 +67,7 @@ struct State {
   poly::Polyhedron3 P;
   std::vector<std::uint8_t> labelled;  // per index: labelled non-extreme (line 18)
   std::vector<std::uint8_t> removed;   // per index: removed by a 3-1 flip (never comes back)
+  pred::StaticFilter filter;           // per input (thesis §6.4.2's precomputed bound): orient3d's first stage
 };
 
 // Line 1: all vertices labelled "unknown". Does not check star-shapedness.
