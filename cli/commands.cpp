@@ -350,6 +350,7 @@ int run_compute(const ComputeArgs& a) {
                                           : certify::rt2(ps, tris, certify::Level::canonical);
   const double t_certify = seconds_since(t1);
   rt2_witness.reset();
+  hull3_witness = cpu::Hull3Witness{};  // (per point 8 bytes, freed before the output is formatted)
   if (!r.ok) throw InternalError("the " + a.kind + " result failed certification: " + r.message());
 
   // The strict views are derived from the certified canonical answer; the
@@ -366,11 +367,13 @@ int run_compute(const ComputeArgs& a) {
   }
   progress.stage("writing " + (a.out.empty() ? std::string("the result") : a.out));
   const auto t2 = Clock::now();
-  std::vector<std::vector<Index>> cells;
-  if (strict_hull) cells = strict.facets;
-  else if (a.kind == "hull2") cells = {cycle};
-  else
-    for (const Triangle& t : tris) cells.push_back({t[0], t[1], t[2]});
+  std::vector<std::vector<Index>> cells;  // (not for the index format, written from the result itself)
+  if (fmt != io::Format::index) {
+    if (strict_hull) cells = strict.facets;
+    else if (a.kind == "hull2") cells = {cycle};
+    else
+      for (const Triangle& t : tris) cells.push_back({t[0], t[1], t[2]});
+  }
   const std::vector<Index> redundant =
       a.kind == "rt2" && fmt == io::Format::svg ? non_vertices(ps.size(), cells) : std::vector<Index>{};
   write_result_file(

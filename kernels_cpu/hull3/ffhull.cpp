@@ -18,6 +18,11 @@
 #include <thread>
 #include <utility>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
 #include "kernels_cpu/parallel.hpp"
 #include "kernels_cpu/stage_times.hpp"
 #include "kernels_cpu/tsan.hpp"
@@ -175,15 +180,17 @@ struct Mesh {
 // input; reading them from the input in every round took 0.08–0.1 s more CPU
 // time on the 10^6 ball, most of it waiting for the loads of the
 // coordinates). Round 0's segments do not carry them: they hold most points
-// (92 % of the 10^6 ball, 82 % of the cube) in only four segments, so round
-// 1 reads the input nearly in order (with prefetching) and the largest
-// buffer of the regrouping is not allocated — 12 MB less peak memory on the
-// 10^6 ball and 17 MB on the cube, for about 0.01 s of CPU time. Carrying
-// them from round 2's regrouping on instead (round 2 reading the input in
-// 12 sweeps) took 8 MB more off the 10^6 ball's peak but made the rounds'
-// classification 1.5x as costly (`perf`: 0.59 -> 0.88 s of samples over
-// five runs; flipflop:cpu 0.40 -> 0.51 s, median of 3, load 5), so it is
-// not done; the carried segments are regrouped in place instead (regroup).
+// (92 % of the 10^6 ball, 82 % of the cube) in only four segments, so
+// rounds 1 and 2 read the input nearly in order (with prefetching; both on
+// round 0's four segments, construct) and the largest buffers of the
+// regrouping are not allocated: the first carried copy is of the points
+// round 2 keeps. Carrying them from round 1's regrouping instead cost 16.8
+// MB on the 10^6 ball (699 k points; its peak 6.8 MB above issue 11's bound); carrying
+// them from round 2's regrouping with round 2 reading the input in its own
+// order (12 sweeps) made the rounds' classification 1.5x as costly (`perf`:
+// 0.59 -> 0.88 s of samples over five runs; flipflop:cpu 0.40 -> 0.51 s,
+// median of 3, load 5). The carried segments are regrouped in place
+// (regroup).
 // Line 8's distance
 // key of a point, the rounded (p - t0) · ((t1 - t0) × (t2 - t0)) for its
 // triangle (t0, t1, t2), is not stored: the round that needs it evaluates the
@@ -208,7 +215,21 @@ struct Segments {
 };
 constexpr std::size_t kAhead = 16;  // points prefetched ahead
 
-// The buffers of the rounds: the per-point child codes (a byte: m <= 4
+// The whole pages of [p + used, p + cap) (bytes; the unused tail of an array
+// we own) go back to the kernel, which maps zeros there when they are
+// touched again; the allocation itself stays (no free: see regroup).
+inline void release_tail(void* p, std::size_t used, std::size_t cap) {
+#ifdef __linux__
+  static const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t lo = (a + used + page - 1) & ~(page - 1), hi = (a + cap) & ~(page - 1);
+  if (p && hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+#else
+  (void)p, (void)used, (void)cap;
+#endif
+}
+
+// The buffers of the rounds: the per-point child codes (a byte: m <= 9
 // children, or kDropped), and the copy of a group of segments the in-place
 // regrouping reads from (regroup), both allocated once (fresh allocations
 // every round cost more in page faults than the round's work).
@@ -219,8 +240,56 @@ struct Buffers {
   RawVec<double> tmp_xyz;
 };
 
+// The classification pass of a regrouping: B.code[i] per point (its child,
+// or kDropped), and per unit u and child c the number of points kept cnt[u m
+// + c] and their furthest point best[u m + c].
+struct Classified {
+  std::vector<std::size_t> cnt;
+  std::vector<Best> best;
+  // child c of segment k over its units: the furthest point, and the count
+  Best child(const Units& U, std::size_t k, std::uint32_t c, int m, std::size_t& count) const {
+    Best bb;
+    count = 0;
+    for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) {
+      count += cnt[u * m + c];
+      const Best& b = best[u * m + c];
+      if (b.i != kNone && better(b.key, b.i, bb)) bb = b;
+    }
+    return bb;
+  }
+};
+template <class Classify>
+Classified classify_units(const Segments& S, Buffers& B, const Units& U, int m, const PointSet& input,
+                          const Classify& classify) {
+  const std::size_t nu = U.seg.size();
+  if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
+  std::uint8_t* code = B.code.data();
+  Classified r{std::vector<std::size_t>(nu * static_cast<std::size_t>(m), 0),
+               std::vector<Best>(nu * static_cast<std::size_t>(m))};
+  par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
+    for (std::size_t u = ulo; u < uhi; ++u) {
+      std::size_t* c = &r.cnt[u * m];
+      Best* b = &r.best[u * m];
+      const auto cl = classify(U.seg[u]);
+      for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
+        if (i + kAhead < U.hi[u]) S.prefetch(input, i + kAhead);
+        double key;
+        const Index p = S.pts[i];
+        const std::uint32_t ch = cl(i, p, S.coords(input, i), key);
+        code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
+        if (ch != kNone) {
+          ++c[ch];
+          if (better(key, p, b[ch])) b[ch] = {std::isnan(key) ? -HUGE_VAL : key, p};
+        }
+      }
+    }
+  });
+  return r;
+}
+
 // Regrouping after a round: every point of segment k goes to child c in
-// [0, m) of k (classify(k, p, x, key) -> c, or kNone: dropped; x: its
+// [0, m) of k (classify(k) is made once per unit of segment k and gives
+// cl(i, p, x, key) -> c, or kNone: dropped, for point p at position i; x: its
 // coordinates; key: when kept, its rounded distance key for line 8 in the
 // child triangle, the value the child's Plane gives, i.e. what a pass over
 // the new segment would compute again); child c of segment k is triangle
@@ -251,28 +320,9 @@ template <class Classify, class ChildTri>
 std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointSet& input, bool carry,
                     const Classify& classify, const ChildTri& child_tri) {
   const std::size_t nu = U.seg.size();
-  const auto coords = [&](std::size_t i) { return S.coords(input, i); };
-  if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
-  std::uint8_t* code = B.code.data();
-  std::vector<std::size_t> cnt(nu * static_cast<std::size_t>(m), 0);
-  std::vector<Best> best(nu * static_cast<std::size_t>(m));
-  par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
-    for (std::size_t u = ulo; u < uhi; ++u) {
-      std::size_t* c = &cnt[u * m];
-      Best* b = &best[u * m];
-      for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
-        if (i + kAhead < U.hi[u]) S.prefetch(input, i + kAhead);
-        double key;
-        const Index p = S.pts[i];
-        const std::uint32_t ch = classify(U.seg[u], p, coords(i), key);
-        code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
-        if (ch != kNone) {
-          ++c[ch];
-          if (better(key, p, b[ch])) b[ch] = {std::isnan(key) ? -HUGE_VAL : key, p};
-        }
-      }
-    }
-  });
+  const Classified cl = classify_units(S, B, U, m, input, classify);
+  const std::uint8_t* code = B.code.data();
+  const std::vector<std::size_t>& cnt = cl.cnt;
   std::vector<std::size_t> off(nu * static_cast<std::size_t>(m));
   std::vector<std::size_t> lo;
   std::vector<std::uint32_t> tri;
@@ -281,12 +331,9 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
   for (std::size_t k = 0; k < S.count(); ++k)
     for (int c = 0; c < m; ++c) {
       const std::size_t start = pos;
-      Best bb;
-      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) {
-        off[u * m + c] = pos, pos += cnt[u * m + c];
-        const Best& b = best[u * m + c];
-        if (b.i != kNone && better(b.key, b.i, bb)) bb = b;
-      }
+      for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) off[u * m + c] = pos, pos += cnt[u * m + c];
+      std::size_t count;
+      const Best bb = cl.child(U, k, static_cast<std::uint32_t>(c), m, count);
       if (pos > start) {
         lo.push_back(start);
         tri.push_back(child_tri(k, c));
@@ -343,12 +390,40 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
     S.pts.resize(pos);
     if (from_input) S.xyz = std::move(fresh);
     else S.xyz.resize(3 * pos);
+    // The pages of the dropped points (and of the buffers past this
+    // round's size) go back to the kernel: otherwise they stay resident. On
+    // the 10^6 sphere shell of thickness 1e-4 nearly every point is kept
+    // until round 11, and the 24 MB of carried coordinates stayed resident
+    // through the rounds that split the most triangles (12-14), where the
+    // construction's peak is (issue 11's memory bound). Not shrink_to_fit:
+    // freeing a large block raises glibc's mmap threshold to its size, and
+    // the mesh's and the records' growth then fragmented the heap (about
+    // 40 MB of free but resident holes on that shell).
+    release_tail(S.pts.data(), pos * sizeof(Index), S.pts.capacity() * sizeof(Index));
+    release_tail(S.xyz.data(), 3 * pos * sizeof(double), S.xyz.capacity() * sizeof(double));
+    release_tail(B.code.data(), pos, B.code.size());
+    const std::size_t next = std::max(pos / 8, kChunk);  // about the next round's group
+    release_tail(B.tmp_pts.data(), next * sizeof(Index), B.tmp_pts.size() * sizeof(Index));
+    release_tail(B.tmp_xyz.data(), 3 * next * sizeof(double), B.tmp_xyz.size() * sizeof(double));
   }
   S.lo = std::move(lo);
   S.tri = std::move(tri);
   S.far = std::move(far);
   return dropped;
 }
+
+// A round's 1-3 splits (line 9; construct): segment k's triangle tri[k] is
+// split at far[k]; old_v its corners before; its children are tri[k], T + 2k
+// and T + 2k + 1 (T: the number of slots before), made[made0 + 3k + c] the
+// record's copy of child c.
+struct Split {
+  std::vector<std::uint32_t> tri;
+  std::vector<Index> far, old_v;
+  std::uint32_t T = 0, made0 = 0;
+  std::uint32_t child(std::size_t k, std::uint32_t c) const {
+    return c == 0 ? tri[k] : T + 2 * static_cast<std::uint32_t>(k) + c - 1;
+  }
+};
 
 // The predicates of the construction, through the plane filters when `fast`
 // (a double kernel point and an enabled static filter), else exactly.
@@ -447,7 +522,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
-    const auto classify = [&](std::uint32_t, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify0 = [&](std::size_t, Index p, const double* x, double& key) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -460,38 +535,36 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
       if (record) record[p] = t;  // made[t]: face t
       return kNone;  // line 14: inside the tetrahedron (s, t)
     };
-    st.discarded_early +=
-        regroup(S, B, U, 4, ps, false, classify, [](std::size_t, int ch) { return std::uint32_t(ch); });
+    st.discarded_early += regroup(
+        S, B, U, 4, ps, false, [&](std::uint32_t) { return classify0; },
+        [](std::size_t, int ch) { return std::uint32_t(ch); });
   }
 
   // lines 6-14 in rounds: every triangle with points is split at once
   std::vector<std::uint32_t> rank;  // per slot: its segment in this round, or kNone
-  while (S.count() > 0) {
+  // line 9: a round's 1-3 splits. Segment k's triangle t = tri[k] = (ta, tb,
+  // tc) becomes t = (ta, tb, v), T+2k = (tb, tc, v), T+2k+1 = (tc, ta, v)
+  // with v = far[k] (line 8: its furthest point by the rounded distance keys,
+  // ties the smaller index, found by the regrouping that made the segment;
+  // any point of the segment is correct, ffhull.hpp): old edge e lives on in
+  // child e (t, T+2k, T+2k+1) at position 0.
+  const auto split = [&](Split& R) {
     ++st.rounds;
-    const std::size_t K = S.count();
-    const std::uint32_t T = M.size();
-    const Units U = make_units(S.lo);
-    // line 8: the furthest point of each triangle by the rounded distance keys
-    // (ties: the smaller index; any point of the segment is correct, ffhull.hpp),
-    // found by the regrouping that made the segment (regroup)
-    std::vector<Index> far;
-    far.swap(S.far);
-    // line 9: 1-3 splits. Segment k's triangle t = (ta, tb, tc) becomes
-    // t = (ta, tb, v), T+2k = (tb, tc, v), T+2k+1 = (tc, ta, v): old edge e
-    // lives on in child e (t, T+2k, T+2k+1) at position 0.
+    const std::size_t K = R.tri.size();
+    const std::uint32_t T = R.T = M.size();
     M.v.resize(3 * (T + 2 * K));
     M.nb.resize(3 * (T + 2 * K));
     rank.resize(T + 2 * K, kNone);
-    std::vector<Index> old_v(3 * K);
+    R.old_v.resize(3 * K);
     std::vector<std::uint32_t> old_nb(3 * K);
     std::vector<std::uint8_t> old_pos(3 * K);
     par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // read the old state
       for (std::size_t k = lo; k < hi; ++k) {
-        const std::uint32_t t = S.tri[k];
+        const std::uint32_t t = R.tri[k];
         rank[t] = static_cast<std::uint32_t>(k);
         for (int e = 0; e < 3; ++e) {
           const std::uint32_t m = M.nb[3 * t + e];
-          old_v[3 * k + e] = M.v[3 * t + e];
+          R.old_v[3 * k + e] = M.v[3 * t + e];
           old_nb[3 * k + e] = m;
           int j = 0;
           while (M.nb[3 * m + j] != t) ++j;
@@ -499,33 +572,27 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
         }
       }
     });
-    // per segment: planes (s; v, ta), (s; v, tb), (s; v, tc), then the three
-    // new triangles' planes
-    std::vector<Plane> planes(6 * K);
-    const std::uint32_t made0 = rec ? static_cast<std::uint32_t>(rec->made.size()) : 0;
-    if (rec) rec->made.resize(made0 + 3 * K);
+    R.made0 = rec ? static_cast<std::uint32_t>(rec->made.size()) : 0;
+    if (rec) rec->made.resize(R.made0 + 3 * K);
     par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // new triangles, inner adjacency
       for (std::size_t k = lo; k < hi; ++k) {
-        const std::uint32_t t = S.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k), n2 = n1 + 1;
-        const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2], v = far[k];
+        const std::uint32_t t = R.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k), n2 = n1 + 1;
+        const Index ta = R.old_v[3 * k], tb = R.old_v[3 * k + 1], tc = R.old_v[3 * k + 2], v = R.far[k];
         M.v[3 * t + 2] = v;
         M.v[3 * n1] = tb, M.v[3 * n1 + 1] = tc, M.v[3 * n1 + 2] = v;
         M.v[3 * n2] = tc, M.v[3 * n2 + 1] = ta, M.v[3 * n2 + 2] = v;
         M.nb[3 * t + 1] = n1, M.nb[3 * t + 2] = n2;    // b->v | v->b, v->a | a->v
         M.nb[3 * n1 + 1] = n2, M.nb[3 * n1 + 2] = t;   // c->v | v->c, v->b | b->v
         M.nb[3 * n2 + 1] = t, M.nb[3 * n2 + 2] = n1;   // a->v | v->a, v->c | c->v
-        Plane* pl = &planes[6 * k];
-        X.side_plane(pl[0], v, ta), X.side_plane(pl[1], v, tb), X.side_plane(pl[2], v, tc);
-        X.face_plane(pl[3], &M.v[3 * t]), X.face_plane(pl[4], &M.v[3 * n1]), X.face_plane(pl[5], &M.v[3 * n2]);
         if (rec) {  // child ch of segment k is made[made0 + 3k + ch]
-          Triangle* mk = &rec->made[made0 + 3 * k];
+          Triangle* mk = &rec->made[R.made0 + 3 * k];
           mk[0] = {ta, tb, v}, mk[1] = {tb, tc, v}, mk[2] = {tc, ta, v};
         }
       }
     });
     par_for(K, 64, [&](std::size_t lo, std::size_t hi) {  // outer adjacency
       for (std::size_t k = lo; k < hi; ++k) {
-        const std::uint32_t t = S.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k);
+        const std::uint32_t t = R.tri[k], n1 = T + 2 * static_cast<std::uint32_t>(k);
         const std::uint32_t child[3] = {t, n1, n1 + 1};
         for (int e = 0; e < 3; ++e) {
           const std::uint32_t m = old_nb[3 * k + e];
@@ -539,30 +606,104 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
         }
       }
     });
-    for (std::size_t k = 0; k < K; ++k) rank[S.tri[k]] = kNone;
+    for (std::size_t k = 0; k < K; ++k) rank[R.tri[k]] = kNone;
     st.insertions += K;
-    // lines 10-14: every point to one of the three new cones (line 13's rule,
-    // as in the reference's ffhull.cpp), dropped when inside the tetrahedron
-    // (s, new triangle)
-    const auto classify = [&](std::uint32_t k, Index p, const double* x, double& key) -> std::uint32_t {
-      const Index v = far[k];
+  };
+  // lines 10-14: every point of segment k of round R to one of the three new
+  // cones (line 13's rule, as in the reference's ffhull.cpp), dropped when
+  // inside the tetrahedron (s, new triangle). The planes (s; v, ta),
+  // (s; v, tb), (s; v, tc) and the three new triangles' are set up here,
+  // once per unit of the segment (regroup), not stored per segment: that was
+  // 384 bytes per split triangle, 42 MB in round 13 of the 10^6 sphere shell
+  // of thickness 1e-4 (issue 11's memory bound); a unit is at most kChunk
+  // points of one segment, so a large segment sets them up once per kChunk
+  // points and a small one once, as before.
+  const auto classifier = [&](const Split& R, std::uint32_t k) {
+    const Index v = R.far[k], ta = R.old_v[3 * k], tb = R.old_v[3 * k + 1], tc = R.old_v[3 * k + 2];
+    const std::uint32_t t[3] = {R.child(k, 0), R.child(k, 1), R.child(k, 2)};
+    std::array<Plane, 6> pl;
+    X.side_plane(pl[0], v, ta), X.side_plane(pl[1], v, tb), X.side_plane(pl[2], v, tc);
+    X.face_plane(pl[3], &M.v[3 * t[0]]), X.face_plane(pl[4], &M.v[3 * t[1]]), X.face_plane(pl[5], &M.v[3 * t[2]]);
+    return [&X, &M, &R, record, k, v, ta, tb, tc, pl](std::size_t, Index p, const double* x,
+                                                       double& key) -> std::uint32_t {
       if (p == v) return kNone;  // line 10
-      const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
-      const Plane* pl = &planes[6 * k];
       std::uint32_t ch;
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
       else ch = X.side(pl[2], v, tc, p, x) > 0 ? 2 : 1;
-      const std::uint32_t t = ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + (ch - 1);
-      if (!X.inner(pl[3 + ch], &M.v[3 * t], p, x, key)) return ch;
-      // line 14: in the cone of t (the parent's cone, narrowed by the two
-      // side tests above) and on the inner side of t: inside (s, t)
-      if (record) record[p] = made0 + 3 * k + ch;
+      if (!X.inner(pl[3 + ch], &M.v[3 * R.child(k, ch)], p, x, key)) return ch;
+      // line 14: in the cone of the child (the parent's cone, narrowed by the
+      // two side tests above) and on its inner side: inside (s, child)
+      if (record) record[p] = R.made0 + 3 * k + ch;
       return kNone;
     };
-    const std::size_t dropped = regroup(S, B, U, 3, ps, true, classify, [&](std::size_t k, int ch) {
-      return ch == 0 ? S.tri[k] : T + 2 * static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(ch - 1);
-    });
-    st.discarded_early += dropped - K;  // the K inserted points are not discarded
+  };
+  while (S.count() > 0) {
+    Split R;
+    R.tri = S.tri;
+    R.far.swap(S.far);
+    split(R);
+    const std::size_t K = R.tri.size();
+    const Units U = make_units(S.lo);
+    if (!S.xyz.empty()) {
+      const std::size_t dropped =
+          regroup(S, B, U, 3, ps, true, [&](std::uint32_t k) { return classifier(R, k); },
+                  [&](std::size_t k, int ch) { return R.child(k, static_cast<std::uint32_t>(ch)); });
+      st.discarded_early += dropped - K;  // the K inserted points are not discarded
+      continue;
+    }
+    // Round 1 (the segments of round 0, coordinates not carried) and round 2
+    // in one regrouping (issue 11's memory bound): the first regrouping that
+    // carries coordinates allocates them for every point it keeps (16.8 MB
+    // for round 1's 699 k points of the 10^6 ball, 9.9 MB for the 413 k
+    // round 2 keeps), so it is round 2's, on
+    // the points in round 1's order — four sweeps over the input, where
+    // round 2's own order would be twelve (measured 1.5x the rounds'
+    // classification when round 2 read the input so). Pass 1 classifies round
+    // 1 (codes, counts and furthest points, as regroup's first pass), which
+    // gives round 1's children — the segments its regrouping would make, in
+    // its order — and so round 2's splits; pass 2 classifies every point kept
+    // by round 1 for round 2 in its child's segment, child 3 c1 + c2, and the
+    // scatter puts it where two regroupings would: segments in the order
+    // (round-1 segment, c1, c2), each stable. Every decision is the one the
+    // two rounds make in turn.
+    const std::size_t before = S.pts.size();
+    const Classified c1 = classify_units(S, B, U, 3, ps, [&](std::uint32_t k) { return classifier(R, k); });
+    Split R2;
+    std::vector<std::uint32_t> seg2(3 * K, kNone);  // (k, c1) -> its segment in round 2
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < K; ++k)
+      for (std::uint32_t c = 0; c < 3; ++c) {
+        std::size_t count = 0;
+        const Best bb = c1.child(U, k, c, 3, count);
+        if (count == 0) continue;
+        seg2[3 * k + c] = static_cast<std::uint32_t>(R2.tri.size());
+        R2.tri.push_back(R.child(k, c));
+        R2.far.push_back(bb.i);
+        kept += count;
+      }
+    st.discarded_early += before - kept - K;
+    if (R2.tri.empty()) {  // nothing left
+      S = Segments{};
+      break;
+    }
+    split(R2);
+    const std::uint8_t* code1 = B.code.data();
+    using Classifier = decltype(classifier(R2, 0));
+    const std::size_t dropped = regroup(
+        S, B, U, 9, ps, true,
+        [&](std::uint32_t k) {
+          std::array<std::optional<Classifier>, 3> cl;
+          for (std::uint32_t c = 0; c < 3; ++c)
+            if (seg2[3 * k + c] != kNone) cl[c].emplace(classifier(R2, seg2[3 * k + c]));
+          return [code1, cl](std::size_t i, Index p, const double* x, double& key) -> std::uint32_t {
+            const std::uint8_t c = code1[i];  // read before regroup writes the new code of i
+            if (c == kDropped) return kNone;
+            const std::uint32_t ch = (*cl[c])(i, p, x, key);
+            return ch == kNone ? kNone : 3 * c + ch;
+          };
+        },
+        [&](std::size_t k, int c) { return R2.child(seg2[3 * k + c / 3], static_cast<std::uint32_t>(c % 3)); });
+    st.discarded_early += dropped - (before - kept) - R2.tri.size();
   }
   return M;
 }
@@ -582,8 +723,11 @@ class FlipFlop {
 
   void run() {
     using Action = ref::ff3::Action;
-    const std::vector<Queued> E = all_edges();
-    std::deque<Queued> Q(E.begin(), E.end());  // line 2
+    // line 2, straight into the queue: a vector of the edges copied into it
+    // stayed alive beside it for the whole run (12 bytes an edge, 15 MB on
+    // the 10^6 sphere shell of thickness 1e-4, where flip-flop's is the peak)
+    std::deque<Queued> Q;
+    all_edges(Q);
     while (!Q.empty()) {  // line 3
       const auto [u, w, hint] = Q.front();  // line 4
       Q.pop_front();
@@ -664,7 +808,8 @@ class FlipFlop {
   // does not depend on the thread count.
   void run_rounds() {
     using Action = ref::ff3::Action;
-    std::vector<Queued> cand = all_edges();  // line 2
+    std::vector<Queued> cand;
+    all_edges(cand);  // line 2
     std::vector<std::atomic<std::uint32_t>> slot_claim(P_.tri.size()), vertex_claim(P_.n);
     par_for(slot_claim.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t t = lo; t < hi; ++t) slot_claim[t].store(kNone, std::memory_order_relaxed);
@@ -790,13 +935,13 @@ class FlipFlop {
     std::uint32_t hint;  // a slot near the edge when it was queued
   };
   // every edge, in the order of ref::poly::edges, with its slot as the hint
-  std::vector<Queued> all_edges() const {
-    std::vector<Queued> E;
+  // every edge once (line 2), in slot order, into `to` (a container with push_back)
+  template <class To>
+  void all_edges(To& to) const {
     for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
       if (P_.alive[t])
         for (int k = 0; k < 3; ++k)
-          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) E.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
-    return E;
+          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) to.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
   }
   struct Checked {  // a candidate of a round: its edge (e, twin f), quad, decision, claimed slots
     ref::poly::DEdge e, f;
@@ -1054,7 +1199,7 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
                                        const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
-  const Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
+  Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
   if (witness) {  // the records as they are: indices into the triangles made
     witness->beneath = std::move(made->record);
     witness->made = std::move(made->made);
@@ -1078,6 +1223,7 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
       P.corner[M.v[3 * t + k]] = t;
       ++P.deg[M.v[3 * t + k]];
     }
+  M = Mesh{};  // copied into P: 24 bytes a slot less during flip-flop and the witness
   if constexpr (FF_CHECKED)
     FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
   // line 15: flip-flop (Algorithm 6)
