@@ -492,8 +492,17 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
           if (M.v[3 * r + j] == M.v[3 * t + (k + 1) % 3] && M.v[3 * r + (j + 1) % 3] == M.v[3 * t + k])
             M.nb[3 * t + k] = r;
 
-  if (rec)
+  // Every insertion adds two slots and three made triangles: at most 2n - 4
+  // slots and 3n - 8 made. Reserved once — address space only, a page is
+  // resident when first written — so these arrays never grow by copying (a
+  // doubling held the old and the new array at once: peak memory, issue 11).
+  const std::size_t max_slots = 2 * n - 4;
+  M.v.reserve(3 * max_slots);
+  M.nb.reserve(3 * max_slots);
+  if (rec) {
+    rec->made.reserve(3 * n - 8);
     for (std::uint32_t t = 0; t < 4; ++t) rec->made.push_back({M.v[3 * t], M.v[3 * t + 1], M.v[3 * t + 2]});
+  }
 
   // line 5 (round 0): each point to the cone of a face from s. The faces
   // around d are the 1-3 split of the triangle (a, c, b) by d, seen from s, so
@@ -542,6 +551,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
 
   // lines 6-14 in rounds: every triangle with points is split at once
   std::vector<std::uint32_t> rank;  // per slot: its segment in this round, or kNone
+  rank.reserve(max_slots);
   // line 9: a round's 1-3 splits. Segment k's triangle t = tri[k] = (ta, tb,
   // tc) becomes t = (ta, tb, v), T+2k = (tb, tc, v), T+2k+1 = (tc, ta, v)
   // with v = far[k] (line 8: its furthest point by the rounded distance keys,
