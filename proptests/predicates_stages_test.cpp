@@ -10,8 +10,10 @@
 // Properties:
 //   (a) each filter — static (a StaticFilter built on the call's points, on a
 //       superset of them, or on the points with one more coordinate), semi-static,
-//       dynamic — returns 0 or the GMP sign; on uniform input each decides
-//       nearly every call (the filters are not vacuous);
+//       dynamic, and fast.hpp's orient2d/3d filters (plain_filters: the static
+//       filter, then the permanent bound) — returns 0 or the GMP sign; on
+//       uniform input each decides nearly every call (the filters are not
+//       vacuous); the typed default path (fast.hpp) equals GMP with SoS;
 //   (b) stage::expansion == stage::gmp (exact sign, may be 0);
 //   (b') the adaptive stages alone (xp::orient_adaptive for orient2d/3d,
 //       xp::lifted_adaptive for power2d/3d) and the SoS search on double
@@ -25,7 +27,9 @@
 //       stage from answering there: a bound weakened by a factor 4 was caught);
 //       it decides most near-degenerate calls (not vacuous); the same for
 //       the double-double filter with the a-priori bound (pred::dd_filter_sign,
-//       k = 3..5: 2, 0 or GMP's sign, never a sign where det Λ = 0);
+//       k = 3..5: 2, 0 or GMP's sign, never a sign where det Λ = 0), in
+//       both instantiations (plain and FMA: stage::dd_filter), also on inputs
+//       scaled to the edges of its window, with the typed default path;
 //   (c) stage::expansion_sos == stage::gmp_sos for distinct ids (never 0), the
 //       whole staged path (lambda_sign with the input's StaticFilter, where that
 //       has a finite bound) too; all 0 for a repeated id;
