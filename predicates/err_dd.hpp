@@ -84,7 +84,7 @@ struct ErrDD {
 // The value parts of a + b and a * b (the rules above), shared with the
 // a-priori-bounded DD of dd_filter.hpp: (h, l) and the rounded intermediates
 // the running bound is made of.
-FF_HD inline void dd_add_parts(double ah, double al, double bh, double bl, double& h, double& l,
+FF_HD FF_FORCEINLINE void dd_add_parts(double ah, double al, double bh, double bl, double& h, double& l,
                                double& t2, double& t3) {
   double s = 0.0, t = 0.0;
   xp::Dbl::two_sum(ah, bh, s, t);

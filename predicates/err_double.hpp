@@ -47,6 +47,17 @@
 #else
 #define FF_DEVICE_NOINLINE
 #endif
+// FF_FORCEINLINE: always inlined by the host compilers (GCC, clang). The
+// FMA entry points of predicates.cpp compile the double-double filter inside
+// a function with __attribute__((target("fma"))): only code inlined there is
+// compiled with the fused multiply-add, so the filter's pieces must be
+// inlined (an out-of-line copy would be compiled for the default target and
+// call the library's fma). Plain inline in CUDA compilations.
+#if defined(__CUDACC__) || !defined(__GNUC__)
+#define FF_FORCEINLINE inline
+#else
+#define FF_FORCEINLINE inline __attribute__((always_inline))
+#endif
 
 namespace flipflop::pred {
 

@@ -6,7 +6,9 @@
 // to each other than the input's extent, e.g. the power tests of a Delaunay
 // triangulation of 10^7 points, whose determinants are far below the
 // per-input bound — the per-call semi-static filter (the same determinant,
-// its bound from this call's own magnitudes) is tried, still inline; what
+// its bound from this call's own magnitudes; for orient2d/3d the permanent
+// bound of plain_filters, with the static filter's determinant) is tried,
+// still inline; what
 // neither decides goes to the out-of-line rest of the staged predicate
 // (predicates.hpp, after_filters: double-double or dynamic filter, exact
 // expansion stage, Simulation of Simplicity; the filters are not rerun). Same
@@ -24,16 +26,14 @@ namespace flipflop::pred::fast {
 
 inline int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
   const double* p[3] = {a.x, b.x, c.x};
-  if (const int s = static_sign<3>(f, p, nullptr)) return s;
-  if (const int s = semi_static_sign<3>(p, nullptr)) return s;
-  return pred::after_filters::orient2d(a, b, c);
+  if (const int s = plain_filters<3>(f, p)) return s;
+  return pred::after_filters::orient2d(a, b, c, f.dd_window());
 }
 
 inline int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d) {
   const double* p[4] = {a.x, b.x, c.x, d.x};
-  if (const int s = static_sign<4>(f, p, nullptr)) return s;
-  if (const int s = semi_static_sign<4>(p, nullptr)) return s;
-  return pred::after_filters::orient3d(a, b, c, d);
+  if (const int s = plain_filters<4>(f, p)) return s;
+  return pred::after_filters::orient3d(a, b, c, d, f.dd_window());
 }
 
 inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
@@ -41,7 +41,7 @@ inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
   const double w[4] = {a.w, b.w, c.w, d.w};
   if (const int s = static_sign<4>(f, p, w)) return s;
   if (const int s = semi_static_sign<4>(p, w)) return s;
-  return pred::after_filters::power2d(a, b, c, d);
+  return pred::after_filters::power2d(a, b, c, d, f.dd_window());
 }
 
 inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
@@ -49,7 +49,7 @@ inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   if (const int s = static_sign<5>(f, p, w)) return s;
   if (const int s = semi_static_sign<5>(p, w)) return s;
-  return pred::after_filters::power3d(a, b, c, d, e);
+  return pred::after_filters::power3d(a, b, c, d, e, f.dd_window());
 }
 
 }  // namespace flipflop::pred::fast

@@ -39,36 +39,46 @@ FF_HD constexpr int popcount_small(unsigned s) {
   return c;
 }
 
-// Determinant of an N x N matrix of ErrDouble (row-major) by expansion over
-// column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7. V may be any
-// value type with a proven running error bound and +, -, * (ErrDD,
-// err_dd.hpp: the same expansion one precision further).
-template <int N, class V = ErrDouble>
-FF_HD inline V det_by_minors(const V* t) {
-  static_assert(N >= 1 && N <= 7, "det_by_minors supports N in 1..7");
+// The Laplace expansion below for N <= 4, written out (the same operations in
+// the same order, so the same values: for the double-double types of err_dd.hpp
+// and dd_filter.hpp the loop's subset bookkeeping cost more than the
+// arithmetic), and always inlined (FF_FORCEINLINE: dd_filter.hpp's FMA
+// instantiation must be compiled inside its caller). det_minor2(a, b): the
+// level-2 minor on columns a < b (rows 0, 1); d012 etc.: level 3 (row 2).
+template <int N, class V>
+FF_HD FF_FORCEINLINE V det_minor2(const V* t, int a, int b) {
+  return -(t[N + a] * t[b]) + t[N + b] * t[a];
+}
+template <int N, class V>
+FF_HD FF_FORCEINLINE V det_small(const V* t) {
+  static_assert(N >= 1 && N <= 4, "det_small supports N in 1..4");
   if constexpr (N == 1) {
     return t[0];
   } else if constexpr (N == 2) {
     return t[0] * t[3] - t[1] * t[2];
-  } else if constexpr (N == 3 || N == 4) {
-    // The loop below written out (the same operations in the same order, so
-    // the same values: for the double-double types of err_dd.hpp and
-    // dd_filter.hpp the loop's subset bookkeeping cost more than the
-    // arithmetic). m2(a, b): the level-2 minor on columns a < b (row 1);
-    // m3(a, b, c): level 3 (row 2) on columns a < b < c.
-    auto m2 = [t](int a, int b) { return -(t[N + a] * t[b]) + t[N + b] * t[a]; };
-    if constexpr (N == 3) {
-      const V m01 = m2(0, 1), m02 = m2(0, 2), m12 = m2(1, 2);
-      return (t[6] * m12 - t[7] * m02) + t[8] * m01;
-    } else {
-      const V m01 = m2(0, 1), m02 = m2(0, 2), m03 = m2(0, 3);
-      const V m12 = m2(1, 2), m13 = m2(1, 3), m23 = m2(2, 3);
-      const V d012 = (t[8] * m12 - t[9] * m02) + t[10] * m01;
-      const V d013 = (t[8] * m13 - t[9] * m03) + t[11] * m01;
-      const V d023 = (t[8] * m23 - t[10] * m03) + t[11] * m02;
-      const V d123 = (t[9] * m23 - t[10] * m13) + t[11] * m12;
-      return ((-(t[12] * d123) + t[13] * d023) - t[14] * d013) + t[15] * d012;
-    }
+  } else if constexpr (N == 3) {
+    const V m01 = det_minor2<N>(t, 0, 1), m02 = det_minor2<N>(t, 0, 2), m12 = det_minor2<N>(t, 1, 2);
+    return (t[6] * m12 - t[7] * m02) + t[8] * m01;
+  } else {
+    const V m01 = det_minor2<N>(t, 0, 1), m02 = det_minor2<N>(t, 0, 2), m03 = det_minor2<N>(t, 0, 3);
+    const V m12 = det_minor2<N>(t, 1, 2), m13 = det_minor2<N>(t, 1, 3), m23 = det_minor2<N>(t, 2, 3);
+    const V d012 = (t[8] * m12 - t[9] * m02) + t[10] * m01;
+    const V d013 = (t[8] * m13 - t[9] * m03) + t[11] * m01;
+    const V d023 = (t[8] * m23 - t[10] * m03) + t[11] * m02;
+    const V d123 = (t[9] * m23 - t[10] * m13) + t[11] * m12;
+    return ((-(t[12] * d123) + t[13] * d023) - t[14] * d013) + t[15] * d012;
+  }
+}
+
+// Determinant of an N x N matrix of ErrDouble (row-major) by expansion over
+// column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7. V may be any
+// value type with a proven running error bound and +, -, * (ErrDD,
+// err_dd.hpp: the same expansion one precision further). N <= 4: det_small.
+template <int N, class V = ErrDouble>
+FF_HD inline V det_by_minors(const V* t) {
+  static_assert(N >= 1 && N <= 7, "det_by_minors supports N in 1..7");
+  if constexpr (N <= 4) {
+    return det_small<N, V>(t);
   } else {
     constexpr int kSubsets = 1 << N;
     V d[kSubsets];

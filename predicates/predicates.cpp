@@ -349,30 +349,107 @@ int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   return lambda_sign_staged<5>(&f, id, p, w);
 }
 
+// The FMA instantiation of the double-double filter (dd_filter.hpp, Fma =
+// true) on an x86-64 host: compiled inside functions with
+// __attribute__((target("fma"))) — GCC and clang inline the default-target
+// callees into them, FF_FORCEINLINE makes sure of the filter's pieces — and
+// chosen per call by __builtin_cpu_supports("fma") (a load and a bit test;
+// false before libgcc's constructor has run, then the plain instantiation
+// answers, with the same signs). This file is compiled with
+// -ffp-contract=off (predicates/CMakeLists.txt): inside a target("fma")
+// function the compilers would otherwise fuse a * b + c wherever they find
+// it, and Veltkamp's split (xp::Dbl::two_product, reached from the exact
+// stage), the error-free transformations and the proven bounds all assume
+// every operation rounded on its own. With -mfma (__FMA__) the FMA
+// instantiation is the only one; elsewhere (other architectures, nvcc) the
+// plain one.
+#if defined(__FMA__)
+#define FLIPFLOP_FMA_ALWAYS 1
+#elif (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__CUDACC__)
+#define FLIPFLOP_FMA_DISPATCH 1
+#endif
+
+bool host_fma() {
+#if defined(FLIPFLOP_FMA_ALWAYS)
+  return true;
+#elif defined(FLIPFLOP_FMA_DISPATCH)
+  return __builtin_cpu_supports("fma");
+#else
+  return false;
+#endif
+}
+
+namespace {
+#if defined(FLIPFLOP_FMA_DISPATCH)
+template <int K>
+__attribute__((target("fma"))) int after_filters_fma(const PointId* id, const double* const* p,
+                                                     const double* w, bool window) {
+  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window);
+}
+template <int K>
+__attribute__((target("fma"))) int dd_filter_fma(const double* const* p, const double* w) {
+  return dd_filter_sign<K, true>(p, w);
+}
+#endif
+template <int K>
+int after_filters_any(const PointId* id, const double* const* p, const double* w, bool window) {
+#if defined(FLIPFLOP_FMA_ALWAYS)
+  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window);
+#else
+#if defined(FLIPFLOP_FMA_DISPATCH)
+  if (__builtin_cpu_supports("fma")) return after_filters_fma<K>(id, p, w, window);
+#endif
+  return lambda_sign_after_filters<K, PointId, false>(id, p, w, window);
+#endif
+}
+}  // namespace
+
 namespace after_filters {
-int orient2d(Pt a, Pt b, Pt c) {
+int orient2d(Pt a, Pt b, Pt c, bool dd_window) {
   const PointId id[3] = {a.id, b.id, c.id};
   const double* p[3] = {a.x, b.x, c.x};
-  return lambda_sign_after_filters<3>(id, p, static_cast<const double*>(nullptr));
+  return after_filters_any<3>(id, p, nullptr, dd_window);
 }
-int orient3d(Pt a, Pt b, Pt c, Pt d) {
+int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window) {
   const PointId id[4] = {a.id, b.id, c.id, d.id};
   const double* p[4] = {a.x, b.x, c.x, d.x};
-  return lambda_sign_after_filters<4>(id, p, static_cast<const double*>(nullptr));
+  return after_filters_any<4>(id, p, nullptr, dd_window);
 }
-int power2d(WPt a, WPt b, WPt c, WPt d) {
+int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window) {
   const PointId id[4] = {a.id, b.id, c.id, d.id};
   const double* p[4] = {a.x, b.x, c.x, d.x};
   const double w[4] = {a.w, b.w, c.w, d.w};
-  return lambda_sign_after_filters<4>(id, p, w);
+  return after_filters_any<4>(id, p, w, dd_window);
 }
-int power3d(WPt a, WPt b, WPt c, WPt d, WPt e) {
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window) {
   const PointId id[5] = {a.id, b.id, c.id, d.id, e.id};
   const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
-  return lambda_sign_after_filters<5>(id, p, w);
+  return after_filters_any<5>(id, p, w, dd_window);
 }
 }  // namespace after_filters
+
+namespace stage {
+// The double-double filter alone, its plain or its FMA instantiation (the
+// latter through the target("fma") clone where the host has FMA, else the
+// same code with the library's fma: the same signs either way).
+int dd_filter(int k, const double* const* p, const double* w, bool fma) {
+  if (k < 3 || k > 5) throw std::invalid_argument("stage::dd_filter: k = 3..5");
+  check_k(k, w);
+  auto run = [&](auto K) {
+    constexpr int Kv = decltype(K)::value;
+    if constexpr (Kv >= 3 && Kv <= 5) {
+      if (!fma) return dd_filter_sign<Kv, false>(p, w);
+#if defined(FLIPFLOP_FMA_DISPATCH)
+      if (__builtin_cpu_supports("fma")) return dd_filter_fma<Kv>(p, w);
+#endif
+      return dd_filter_sign<Kv, true>(p, w);
+    }
+    return 2;
+  };
+  return with_k(k, run);
+}
+}  // namespace stage
 
 bool collinear3_exact(const double* a, const double* b, const double* c) {
   for (int i = 0; i < 3; ++i) {

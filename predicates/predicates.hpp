@@ -199,15 +199,21 @@ int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d);
 int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d);
 int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e);
 
-// The same after the static and semi-static filters (staged.hpp,
-// lambda_sign_after_filters): fast.hpp runs those two inline and calls these
-// only when both have failed.
+// The same after the static and semi-static (or permanent) filters
+// (staged.hpp, lambda_sign_after_filters): fast.hpp runs those inline and
+// calls these only when they have failed. `dd_window`: the input's
+// StaticFilter::dd_window(). On an x86-64 host with FMA (checked once per
+// call by __builtin_cpu_supports) the double-double filter runs in its FMA
+// instantiation (dd_filter.hpp): the same signs, fewer instructions.
 namespace after_filters {
-int orient2d(Pt a, Pt b, Pt c);
-int orient3d(Pt a, Pt b, Pt c, Pt d);
-int power2d(WPt a, WPt b, WPt c, WPt d);
-int power3d(WPt a, WPt b, WPt c, WPt d, WPt e);
+int orient2d(Pt a, Pt b, Pt c, bool dd_window);
+int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window);
+int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window);
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window);
 }  // namespace after_filters
+
+// Whether after_filters uses the FMA instantiation on this host.
+bool host_fma();
 
 // ---- Each stage alone (benchmarks and tests) --------------------------------
 // On the Λ-matrix of k points (2 <= k <= 8), p[i] the coordinates of point i,
@@ -220,6 +226,7 @@ namespace stage {
 int static_filter(const StaticFilter& f, int k, const double* const* p, const double* w);
 int semi_static(int k, const double* const* p, const double* w);   // bound from this call's magnitudes
 int dynamic(int k, const double* const* p, const double* w);       // ErrDouble running bound
+int dd_filter(int k, const double* const* p, const double* w, bool fma);  // k = 3..5; 2: outside its window
 int expansion(int k, const double* const* p, const double* w);     // exact, expansion arithmetic
 int expansion_sos(int k, const PointId* ids, const double* const* p, const double* w);
 int gmp(int k, const double* const* p, const double* w);           // exact, GMP (the oracle)

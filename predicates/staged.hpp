@@ -5,7 +5,9 @@
 //   1. static filter      per-input bound (static_filter.hpp), when a
 //                         StaticFilter of the input is given;
 //   2. semi-static filter per-call bound from the column magnitudes
-//                         (static_filter.hpp);
+//                         (static_filter.hpp); for orient2d/3d with a
+//                         static filter, the permanent bound of
+//                         plain_filters instead (Shewchuk's errbound A);
 //   3. double-double filter (k <= 5) a priori bounded (dd_filter.hpp):
 //                         decides near-degenerate calls; where it ran and
 //                         failed the next stage is 4;
@@ -93,11 +95,16 @@ FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* co
 // decide, the dynamic filter is skipped: its error bound, of order u times the
 // terms, is far above the double-double one (u^2 times the column bounds), so
 // it would fail too — undecided calls there are (near-)zero determinants.
-template <int K, class Id>
-FF_HD inline int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w) {
+// `window`: every input value is known to lie in the double-double filter's
+// window (StaticFilter::dd_window()); Fma: dd_filter_sign's choice of
+// two_product (predicates.cpp instantiates it inside a target("fma")
+// function on a host with FMA, hence FF_FORCEINLINE).
+template <int K, class Id, bool Fma = false>
+FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w,
+                                                   bool window = false) {
   if (repeated_id(K, ids)) return 0;
   if constexpr (K >= 3 && K <= 5) {
-    const int s = dd_filter_sign<K>(p, w);
+    const int s = dd_filter_sign<K, Fma>(p, w, window);
     if (s == 1 || s == -1) return s;
     if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
   }
@@ -111,10 +118,18 @@ template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p,
                                     const double* w) {
   if (repeated_id(K, ids)) return 0;
+  if constexpr (K == 3 || K == 4) {
+    // orient2d, orient3d: the static and the permanent filter in one
+    // evaluation (static_filter.hpp, plain_filters)
+    if (f && !w) {
+      if (const int s = plain_filters<K>(*f, p)) return s;
+      return lambda_sign_after_filters<K>(ids, p, w, f->dd_window());
+    }
+  }
   if (f)
     if (const int s = static_sign<K>(*f, p, w)) return s;
   if (const int s = semi_static_sign<K>(p, w)) return s;
-  return lambda_sign_after_filters<K>(ids, p, w);
+  return lambda_sign_after_filters<K>(ids, p, w, f && f->dd_window());
 }
 
 // Calls f(std::integral_constant<int, K>{}) for the run-time k, 2 <= k <= 8

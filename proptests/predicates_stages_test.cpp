@@ -10,8 +10,10 @@
 // Properties:
 //   (a) each filter — static (a StaticFilter built on the call's points, on a
 //       superset of them, or on the points with one more coordinate), semi-static,
-//       dynamic — returns 0 or the GMP sign; on uniform input each decides
-//       nearly every call (the filters are not vacuous);
+//       dynamic, and fast.hpp's orient2d/3d filters (plain_filters: the static
+//       filter, then the permanent bound) — returns 0 or the GMP sign; on
+//       uniform input each decides nearly every call (the filters are not
+//       vacuous); the typed default path (fast.hpp) equals GMP with SoS;
 //   (b) stage::expansion == stage::gmp (exact sign, may be 0);
 //   (b') the adaptive stages alone (xp::orient_adaptive for orient2d/3d,
 //       xp::lifted_adaptive for power2d/3d) and the SoS search on double
@@ -25,7 +27,9 @@
 //       stage from answering there: a bound weakened by a factor 4 was caught);
 //       it decides most near-degenerate calls (not vacuous); the same for
 //       the double-double filter with the a-priori bound (pred::dd_filter_sign,
-//       k = 3..5: 2, 0 or GMP's sign, never a sign where det Λ = 0);
+//       k = 3..5: 2, 0 or GMP's sign, never a sign where det Λ = 0), in
+//       both instantiations (plain and FMA: stage::dd_filter), also on inputs
+//       scaled to the edges of its window, with the typed default path;
 //   (c) stage::expansion_sos == stage::gmp_sos for distinct ids (never 0), the
 //       whole staged path (lambda_sign with the input's StaticFilter, where that
 //       has a finite bound) too; all 0 for a repeated id;
@@ -66,6 +70,7 @@
 
 #include "predicates/exact.hpp"
 #include "predicates/exact_expansion.hpp"
+#include "predicates/fast.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/staged.hpp"
 #include "predicates/static_filter.hpp"
@@ -134,6 +139,34 @@ StaticFilter filter_on(const Instance& in, bool lifted) {
 int gmp(const Call& c) { return stage::gmp(c.k, c.p, c.w); }
 int gmp_sos(const Call& c) { return stage::gmp_sos(c.k, c.ids, c.p, c.w); }
 
+// The filters of fast.hpp's orient2d/orient3d (static_filter.hpp,
+// plain_filters: the static filter, then the permanent bound or the
+// semi-static filter) for plain k = 3, 4; 0 elsewhere.
+int plain_filters_of(const StaticFilter& f, const Call& c) {
+  if (c.w) return 0;
+  if (c.k == 3) return pred::plain_filters<3>(f, c.p);
+  if (c.k == 4) return pred::plain_filters<4>(f, c.p);
+  return 0;
+}
+
+// The typed default path of fast.hpp (what the kernels call) with SoS, where
+// the call's shape is one of its four predicates (orient2d/3d, power2d/3d);
+// the path with the static filter `f` and, for orient2d/3d and power2d/3d,
+// after_filters with the double-double window taken from f.dd_window().
+std::optional<int> typed_sos(const StaticFilter& f, const Call& c) {
+  namespace fast = flipflop::pred::fast;
+  using flipflop::pred::Pt;
+  using flipflop::pred::WPt;
+  const PointId* id = c.ids;
+  auto pt = [&](int i) { return Pt{id[i], c.p[i]}; };
+  auto wpt = [&](int i) { return WPt{id[i], c.p[i], c.w[i]}; };
+  if (!c.w && c.k == 3) return fast::orient2d(f, pt(0), pt(1), pt(2));
+  if (!c.w && c.k == 4) return fast::orient3d(f, pt(0), pt(1), pt(2), pt(3));
+  if (c.w && c.k == 4) return fast::power2d(f, wpt(0), wpt(1), wpt(2), wpt(3));
+  if (c.w && c.k == 5) return fast::power3d(f, wpt(0), wpt(1), wpt(2), wpt(3), wpt(4));
+  return std::nullopt;
+}
+
 // det T in plain doubles, exactly as the static and semi-static filters
 // evaluate it (static_filter.hpp).
 double plain_det(const Call& c) {
@@ -183,7 +216,7 @@ int floor_half(int s) { return s >= 0 ? s / 2 : -((-s + 1) / 2); }
 
 // ---- tallies printed after a property (as kernels_test.cpp) ----------------------------
 struct Tally {
-  long calls = 0, by_static = 0, by_semi = 0, by_dynamic = 0, zeros = 0, dbl = 0;
+  long calls = 0, by_static = 0, by_semi = 0, by_dynamic = 0, zeros = 0, dbl = 0, by_plain = 0;
 };
 
 }  // namespace
@@ -238,16 +271,31 @@ void filter_property(Shape sh, Family fam) {
     RC_ASSERT(s_static == 0 || s_static == g);
     RC_ASSERT(s_semi == 0 || s_semi == g);
     RC_ASSERT(s_dyn == 0 || s_dyn == g);
+    // fast.hpp's orient2d/orient3d filters (the permanent bound where the
+    // static one is enabled) and the typed default path with this filter
+    const int s_plain = plain_filters_of(f, c);
+    RC_LOG() << "plain filters " << s_plain << "\n";
+    RC_ASSERT(s_plain == 0 || s_plain == g);
+    if (const std::optional<int> typed = typed_sos(f, c)) RC_ASSERT(*typed == gmp_sos(c));
     ++t.calls;
     t.by_static += s_static != 0;
     t.by_semi += s_semi != 0;
     t.by_dynamic += s_dyn != 0;
+    t.by_plain += s_plain != 0;
     t.zeros += g == 0;
   });
   if (t.calls == 0) return;  // Catch ran another section this time
-  std::printf("filters %-32s %-20s calls %6ld decided: static %6ld semi %6ld dynamic %6ld (exact 0: %ld)\n",
+  std::printf("filters %-32s %-20s calls %6ld decided: static %6ld semi %6ld dynamic %6ld "
+              "static+permanent %6ld (exact 0: %ld)\n",
               shape_name(sh).c_str(), family_name(fam), t.calls, t.by_static, t.by_semi,
-              t.by_dynamic, t.zeros);
+              t.by_dynamic, t.by_plain, t.zeros);
+  // The permanent bound is not vacuous: with the static one before it, it
+  // decides at least the near-degenerate orient2d/orient3d calls the
+  // semi-static filter decides (the permanent is at most N! times the
+  // product of the column maxima, and its constant, (6) in
+  // static_filter.hpp, is below the semi-static one's).
+  if (!sh.lifted && (sh.k == 3 || sh.k == 4) && fam == Family::near_degenerate)
+    CHECK(t.by_plain >= t.by_semi);
   // Not vacuous: on uniform input every filter decides nearly every call.
   if (fam == Family::uniform) {
     CHECK(4 * t.by_static >= 3 * t.calls);  // k = 8 lifted: ~90%
@@ -469,31 +517,88 @@ Instance gen_dense_zero(const Spec& spec) {
   return in;
 }
 
+// A scale 2^s that moves the instance's largest |value| to just below or
+// above 2^150, or its smallest non-zero |value| to just above or below
+// 2^-150 (the edges of the double-double window); 0 for an all-zero input.
+int window_edge_scale(const Instance& in) {
+  double mx = 0.0, mn = HUGE_VAL;
+  auto see = [&](double v, int weight_degree) {
+    const double a = std::fabs(v);
+    if (a == 0.0 || !std::isfinite(a)) return;
+    // a weight scales as the square of the coordinates (scaled())
+    const double e = std::ilogb(a) / static_cast<double>(weight_degree);
+    mx = std::max(mx, e);
+    mn = std::min(mn, e);
+  };
+  for (double v : in.x) see(v, 1);
+  for (double v : in.w) see(v, 2);
+  if (mn == HUGE_VAL) return 0;
+  const int jitter = *rc::gen::inRange(-2, 2);
+  return *rc::gen::arbitrary<bool>() ? 149 - static_cast<int>(std::floor(mx)) + jitter
+                                     : -150 - static_cast<int>(std::floor(mn)) + jitter;
+}
+
 struct DdTally {
   long calls = 0, decided = 0, zeros = 0;
   long filter_calls = 0, filter_decided = 0;  // dd_filter_sign (k = 3..5)
+  long fma_decided = 0, kahan = 0;            // its FMA instantiation; orient2d, exact differences
+  long typed = 0;                             // typed default path calls (fast.hpp)
 };
 
 // 2 (undecided) or GMP's sign, never 0; undecided where det Λ = 0. The
 // double-double filter with the a-priori bound (dd_filter.hpp, k = 3..5): 2
 // (outside its window), 0 (undecided) or GMP's sign, never a sign where
 // det Λ = 0.
+// Both instantiations of the filter (stage::dd_filter: plain, and FMA —
+// through the target("fma") clone where the host has FMA) are checked the
+// same way; they compute the same values (dd_filter.hpp) except on orient2d
+// with exact differences, which the FMA one decides by Kahan's determinant:
+// there it decides every call with det != 0 and never one with det = 0. The
+// typed default path (fast.hpp) with the input's StaticFilter, which tells
+// after_filters whether the input lies in the window, equals GMP with SoS.
+// `tally`: count the call in the non-vacuity tallies (not for the inputs
+// scaled to the window's edges: there the running bound's absolute terms,
+// 2^-1072 per operation, can exceed a degree-7 determinant near 2^-1050).
 template <int K>
-void check_dd(const Call& c, DdTally& t) {
+void check_dd(const Call& c, DdTally& t, bool tally) {
   if constexpr (K >= 3 && K <= 5) {
     const int f = pred::dd_filter_sign<K>(c.p, c.w);
+    const int f_plain = stage::dd_filter(K, c.p, c.w, false);
+    const int f_fma = stage::dd_filter(K, c.p, c.w, true);
     const int gf = gmp(c);
-    RC_LOG() << "gmp " << gf << ", double-double filter " << f << "\n";
+    RC_LOG() << "gmp " << gf << ", double-double filter " << f << ", plain " << f_plain << ", FMA "
+             << f_fma << " (host FMA " << pred::host_fma() << ")\n";
     RC_ASSERT((f == 2 || f == 0 || f == gf));
-    t.filter_calls += f != 2 && gf != 0;
-    t.filter_decided += f == 1 || f == -1;
+    RC_ASSERT(f_plain == f);
+    RC_ASSERT((f_fma == 2 || f_fma == 0 || f_fma == gf));
+    RC_ASSERT((f_fma == 2) == (f == 2));
+    if (f == 1 || f == -1) RC_ASSERT(f_fma == f);
+    if (K == 3 && !c.w && f != 2) {
+      bool exact_differences = true;
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+          double h = 0.0, l = 0.0;
+          xp::Dbl::two_sum(c.p[i][j], -c.p[2][j], h, l);
+          exact_differences = exact_differences && l == 0.0;
+        }
+      if (exact_differences) {
+        RC_ASSERT(f_fma == gf);  // Kahan: every sign, and 0 exactly when det = 0
+        ++t.kahan;
+      }
+    }
+    if (tally) {
+      t.filter_calls += f != 2 && gf != 0;
+      t.filter_decided += f == 1 || f == -1;
+      t.fma_decided += f_fma == 1 || f_fma == -1;
+    }
   }
   if (!in_window(c)) return;
-  ++t.calls;
   const int g = gmp(c);
   const int s = xp::lambda_sign_dd<K>(c.p, c.w);
   RC_LOG() << "gmp " << g << ", double-double stage " << s << "\n";
   RC_ASSERT((s == 2 || s == g));
+  if (!tally) return;
+  ++t.calls;
   t.decided += s != 2;
   t.zeros += g == 0;
 }
@@ -505,19 +610,43 @@ void dd_property(Shape sh, std::optional<Family> fam) {
   // cases, to keep the test case under 5 s in Release
   prop_scaled(shape_name(sh) + ", " + fname, sh.k >= 6 ? 4 : 1, [&] {
     const Spec spec = spec_of(sh);
-    const Instance in = fam ? gen_instance(spec, *fam) : gen_dense_zero(spec);
+    Instance in = fam ? gen_instance(spec, *fam) : gen_dense_zero(spec);
+    // a quarter of the cases scaled towards an edge of the double-double
+    // window (0 or 2^-150 <= |v| < 2^150, dd_filter.hpp), across it or not
+    // (kept only where every scaled value is finite: GMP takes no infinities)
+    bool at_edge = false;
+    // (two booleans: gen::inRange's draws grow with the size, and would scale
+    // the small-size cases more often, skewing the unscaled ones' tallies)
+    const bool scale_a = *rc::gen::arbitrary<bool>(), scale_b = *rc::gen::arbitrary<bool>();
+    if (scale_a && scale_b) {
+      const Instance sc = scaled(in, window_edge_scale(in));
+      bool finite = true;
+      for (double v : sc.x) finite = finite && std::isfinite(v);
+      for (double v : sc.w) finite = finite && std::isfinite(v);
+      if (finite) {
+        in = sc;
+        at_edge = true;
+      }
+    }
     RC_LOG() << describe(spec, in);
     const Call c = call_of(in, sh.lifted);
     with_k(c.k, [&](auto K) {
-      check_dd<decltype(K)::value>(c, t);
+      check_dd<decltype(K)::value>(c, t, !at_edge);
       return 0;
     });
+    const StaticFilter f = filter_on(in, sh.lifted);
+    if (const std::optional<int> typed = typed_sos(f, c)) {
+      RC_LOG() << "input in the double-double window " << f.dd_window() << ", typed path " << *typed
+               << "\n";
+      RC_ASSERT(*typed == gmp_sos(c));
+      ++t.typed;
+    }
   });
   if (t.calls == 0) return;  // Catch ran another section this time
   std::printf("double-double %-32s %-28s calls %6ld decided %6ld (exact 0: %ld); "
-              "a-priori filter: det != 0 %ld, decided %ld\n",
+              "a-priori filter: det != 0 %ld, decided %ld (FMA %ld; Kahan's %ld); typed path %ld\n",
               shape_name(sh).c_str(), fname.c_str(), t.calls, t.decided, t.zeros, t.filter_calls,
-              t.filter_decided);
+              t.filter_decided, t.fma_decided, t.kahan, t.typed);
   // The a-priori filter is not vacuous either: of the near-degenerate calls
   // with det Λ != 0 (2000 cases) it decides all for k = 3 and lifted k = 4,
   // 85 % (orient3d), 90 % (power3d), 50 % (orient4d: the second-order
@@ -717,7 +846,11 @@ void check_static(const Instance& in, bool lifted) {
   RC_LOG() << describe(spec_of({in.k, lifted}), in) << "bound " << f.bound(c.k, lifted)
            << ", det in doubles " << plain_det(c) << ", static " << s << ", gmp " << g << "\n";
   RC_ASSERT(s == 0 || s == g);
+  const int s_plain = plain_filters_of(f, c);
+  RC_LOG() << "plain filters (static, permanent) " << s_plain << "\n";
+  RC_ASSERT(s_plain == 0 || s_plain == g);
   RC_ASSERT(pred::lambda_sign(&f, c.k, c.ids, c.p, c.w, Mode::filtered) == gmp_sos(c));
+  if (const std::optional<int> typed = typed_sos(f, c)) RC_ASSERT(*typed == gmp_sos(c));
 }
 
 }  // namespace
