@@ -12,7 +12,7 @@
 #include "predicates/err_double.hpp"
 #include "predicates/exact.hpp"
 #include "predicates/predicates.hpp"
-#include "predicates/static_filter.hpp"
+#include "predicates/fast.hpp"
 #include "reference/canonical.hpp"
 #include "reference/checked.hpp"
 #include "reference/dimension.hpp"
@@ -163,9 +163,7 @@ int compare(const PointSet& ps, const LazyNormal& n, const double* p, const doub
 
 // orient3d under SoS, the per-input static filter (thesis §6.4.2) first.
 int orient(const PointSet& ps, const pred::StaticFilter& f, Index a, Index b, Index c, Index p) {
-  const double* x[4] = {ps.point(a), ps.point(b), ps.point(c), ps.point(p)};
-  if (const int r = pred::static_sign<4>(f, x, nullptr)) return r;  // |det| above the bound: SoS irrelevant
-  return pred::orient3d({a, x[0]}, {b, x[1]}, {c, x[2]}, {p, x[3]});
+  return pred::fast::orient3d(f, {a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}, {p, ps.point(p)});
 }
 
 // The constructing stage's per-triangle data: the points associated to each

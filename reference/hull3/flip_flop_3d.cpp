@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "predicates/fast.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/canonical.hpp"
 #include "reference/checked.hpp"
@@ -25,9 +26,7 @@ constexpr Index kNoVertex = ~Index{0};
 // side of (a, b, c) counter-clockwise seen from outside.
 int orient(const State& st, Index a, Index b, Index c, Index p) {
   const PointSet& ps = *st.ps;
-  const double* x[4] = {ps.point(a), ps.point(b), ps.point(c), ps.point(p)};
-  if (const int r = pred::static_sign<4>(st.filter, x, nullptr)) return r;  // |det| above the bound: SoS irrelevant
-  return pred::orient3d({a, x[0]}, {b, x[1]}, {c, x[2]}, {p, x[3]});
+  return pred::fast::orient3d(st.filter, {a, ps.point(a)}, {b, ps.point(b)}, {c, ps.point(c)}, {p, ps.point(p)});
 }
 
 // The induced subcomplex of e = ab (line 5): triangles (a, b, c) and (b, a, d).
