@@ -9,8 +9,12 @@
 #       except glibc's and the driver's into .devrun/ (ignored by git through
 #       .git/info/exclude; carried with the call). BUILD was configured with
 #       -DFLIPFLOP_CUDA_ALGORITHMS=ON (make cuda).
+#   kernels_cuda/lent_gpu.sh bundle BUILD BASE   as above, and BASE (another
+#       build's flipflop, e.g. before a change) as .devrun/flipflop_base for
+#       the step ab.
 #   kernels_cuda/lent_gpu.sh check [STEPS]   (there, in the repository root;
-#       STEPS: comma-separated, of tests,bench,sanitizer,scaling,stages;
+#       STEPS: comma-separated, of tests,bench,sanitizer,scaling,stages,ab,
+#       profile;
 #       the first four by default, in that order — most wanted first, should
 #       the call's time run out)
 #       1. the device, the CPU;
@@ -24,6 +28,11 @@
 #          flipflop:cpu on 10^6 points pinned to 1, 2, 4, 8 and 16 cores
 #          (rt2/dt2 with the parallel insertions' rows).
 #       5. (stages) the GPU kernels' time by stage on 10^7 points.
+#       6. (ab) hull3 on 10^7 ball points, this build's flipflop:cuda rows
+#          against flipflop_base's, runs alternating; then the time by step
+#          of each (FLIPFLOP_GPU_STEPS=1 --stats, the second run of two).
+#       7. (profile) Nsight Compute: the GPU time per kernel of one hull3
+#          run on 10^6 ball points (ncu --print-summary per-kernel).
 #       Logs and CSV under $OUT; one summary line per step on stdout. LG_TESTS,
 #       LG_SANITIZE, LG_BENCH (space-separated names) narrow steps 2-4.
 set -u
@@ -32,8 +41,9 @@ here=$(pwd)
 B=$here/.devrun
 
 if [ "$mode" = bundle ]; then
-  build=${2:?usage: lent_gpu.sh bundle BUILD}
+  build=${2:?usage: lent_gpu.sh bundle BUILD [BASE]}
   rm -rf "$B" && mkdir -p "$B/lib"
+  [ -z "${3:-}" ] || strip -o "$B/flipflop_base" "$3" || exit 1
   progs="flipflop"
   for t in classify predicates hull2 rt2 hull3; do progs="$progs ${t}_cuda_test"; done
   for p in $progs; do
@@ -73,7 +83,7 @@ run_tests() {
 echo "== GPU test programs (byte-identical to the reference)"
 for t in ${LG_TESTS:-classify predicates hull2 rt2 hull3}; do
   s=$(date +%s%N)
-  timeout 100 "$B/${t}_cuda_test" > "$OUT/test_$t.log" 2>&1
+  timeout "${LG_TEST_TIMEOUT:-100}" "$B/${t}_cuda_test" > "$OUT/test_$t.log" 2>&1
   rc=$?
   e=$(( ($(date +%s%N) - s) / 1000000 ))
   step "${t}_cuda_test" "rc=$rc  $(grep -c '^ok' "$OUT/test_$t.log") ok, $(grep -c '^FAIL' "$OUT/test_$t.log") FAIL, $e ms"
@@ -163,6 +173,44 @@ for job in "hull3 --dist ball" "rt2 --dist square --weights 0,1e-5" "dt2 --dist 
   done
 done
 cat "$OUT/scaling.csv"
+}
+
+run_ab() {
+echo "== hull3, 10^7 ball: flipflop:cuda of this build (new) and of flipflop_base (base), alternating"
+[ -x "$B/flipflop_base" ] || { echo "no flipflop_base in the bundle"; return; }
+tmp=$(mktemp -d)
+"$ff" gen ball 10000000 --seed 1 -o "$tmp/in.npy"
+: > "$OUT/ab.csv"
+for rep in 1 2; do
+  for v in new base; do
+    bin=$ff; [ $v = base ] && bin=$B/flipflop_base
+    echo "# $v, pass $rep" >> "$OUT/ab.csv"
+    timeout 60 "$bin" bench hull3 --dist ball --n 10000000 --reps 5 --csv --run 'flipflop:cuda$,flipflop:cuda:' \
+      2>> "$OUT/bench.err" >> "$OUT/ab.csv"
+  done
+done
+cat "$OUT/ab.csv"
+for v in new base; do
+  bin=$ff; [ $v = base ] && bin=$B/flipflop_base
+  for rep in 1 2; do
+    FLIPFLOP_GPU_STEPS=1 timeout 60 "$bin" hull3 "$tmp/in.npy" --backend cuda --stats -o "$tmp/out_$v" 2> "$tmp/stats"
+  done
+  echo "$v: $(cat "$tmp/stats")" | tee -a "$OUT/stages.log"
+done
+cmp -s "$tmp/out_new" "$tmp/out_base" && echo "outputs of new and base identical" || echo "OUTPUTS OF NEW AND BASE DIFFER"
+rm -rf "$tmp"
+}
+
+run_profile() {
+echo "== Nsight Compute: GPU time per kernel, flipflop hull3 --backend cuda, 10^6 ball"
+tmp=$(mktemp -d)
+"$ff" gen ball 1000000 --seed 1 -o "$tmp/in.npy"
+ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | tail -1)
+[ -n "$ncu" ] || { echo "no ncu here"; return; }
+timeout 150 "$ncu" --metrics gpu__time_duration.sum --print-summary per-kernel \
+  "$ff" hull3 "$tmp/in.npy" --backend cuda -o "$tmp/out" > "$OUT/ncu.txt" 2>&1
+echo "rc=$? (ncu.txt: $(wc -l < "$OUT/ncu.txt") lines)"
+rm -rf "$tmp"
 }
 
 steps=${2:-tests,bench,sanitizer,scaling}

@@ -73,12 +73,15 @@
 
 #include <cuda/atomic>
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
+#include <cub/device/device_select.cuh>
+#include <thrust/system/cuda/error.h>
 #include <cuda_runtime_api.h>
 #endif
 
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -211,6 +214,90 @@ std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& 
                                  out);
   });
   return m;
+}
+
+// ---- counts that stay on the device (the flip-flop rounds) ----------------------
+// A flip-flop round's sizes (its candidates, its operations) are needed by its
+// own steps only, not by the host: on the device they stay in device memory,
+// written by a selection and read by the steps' threads, so that the host
+// waits once per round (for the operation count that decides the end)
+// instead of after every selection. In the OpenMP build the steps have
+// finished when the next one starts, and the count is read directly.
+
+// f(i) for i in [0, *count): *count was written by an earlier step and is at
+// most bound. On the device one thread per i < bound, each testing
+// i < *count; in the OpenMP build one per i < *count.
+template <class F>
+struct UpTo {
+  F f;
+  const uint32_t* count;
+  FF_HD void operator()(std::size_t i) const {
+    if (i < *count) f(i);
+  }
+};
+template <class F>
+void for_upto(std::size_t bound, const uint32_t* count, const F& f) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  (void)bound;
+  for_n(*count, f);
+#else
+  for_n(bound, UpTo<F>{f, count});
+#endif
+}
+
+// a(i) then b(i) in one pass over i: the same as a pass of a then a pass of b
+// where no b(j) reads or writes what an a(i) writes or reads, for j != i.
+template <class A, class B>
+struct Then {
+  A a;
+  B b;
+  FF_HD void operator()(std::size_t i) const {
+    a(i);
+    b(i);
+  }
+};
+
+template <class Pred>
+struct PredUpTo {
+  Pred pred;
+  const uint32_t* count;  // null: every i < bound
+  FF_HD bool operator()(uint32_t i) const { return (count == nullptr || i < *count) && pred(i); }
+};
+
+// select() over [0, *count) (count written by an earlier step, at most bound;
+// null: over [0, bound)), its result's size left in *selected where the next
+// steps read it; the host does not wait for it on the device.
+template <class Pred>
+void select_upto(TempStorage& temp, std::size_t bound, const uint32_t* count, uint32_t* out, const Pred& pred,
+                 uint32_t* selected) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  *selected = static_cast<uint32_t>(select(temp, count ? *count : bound, out, pred));
+#else
+  const PredUpTo<Pred> p{pred, count};
+  const thrust::counting_iterator<uint32_t> first(0);
+  const auto items = static_cast<std::int64_t>(bound);
+  std::size_t bytes = 0;
+  cudaError_t err = cub::DeviceSelect::If(nullptr, bytes, first, out, selected, items, p);
+  if (err == cudaSuccess) {
+    // stream-ordered: a later step that gets this block from `temp` runs after this one
+    char* storage = temp.allocate(static_cast<std::ptrdiff_t>(bytes));
+    err = cub::DeviceSelect::If(storage, bytes, first, out, selected, items, p);
+    temp.deallocate(storage, bytes);
+  }
+  if (err != cudaSuccess) throw thrust::system_error(err, thrust::cuda_category(), "hull3: cub::DeviceSelect::If");
+#endif
+}
+
+// A count written by the device steps, on the host (a wait for them there).
+inline uint32_t read_count(const uint32_t* count) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  return *count;
+#else
+  uint32_t h = 0;
+  const cudaError_t err = cudaMemcpy(&h, count, sizeof h, cudaMemcpyDeviceToHost);
+  if (err != cudaSuccess) throw thrust::system_error(err, thrust::cuda_category(), "hull3: reading a count");
+  return h;
+#endif
 }
 
 template <class T>
@@ -655,24 +742,15 @@ struct Won {
 
 // The codes of applied operations (for the counters).
 enum : uint8_t { kLost = 0, kDid22 = 1, kDid31 = 2, kNewLabel = 3, kOldLabel = 4 };
-// A round's applied operations by kind, from one reduction over the codes
-// (one pass and one wait of the host per round instead of one per kind).
-struct OpCounts {
-  std::size_t flips_2_2 = 0, flips_3_1 = 0, new_labels = 0;
-};
+// The applied operations by kind, added up over the rounds on the device
+// (counts[0] 2-2 flips, [1] 3-1 flips, [2] new labels) and read once at the end.
 struct CountOp {
-  FF_HD OpCounts operator()(uint8_t code) const {
-    OpCounts c;
-    c.flips_2_2 = code == kDid22, c.flips_3_1 = code == kDid31, c.new_labels = code == kNewLabel;
-    return c;
-  }
-};
-struct AddCounts {
-  FF_HD OpCounts operator()(const OpCounts& x, const OpCounts& y) const {
-    OpCounts c;
-    c.flips_2_2 = x.flips_2_2 + y.flips_2_2, c.flips_3_1 = x.flips_3_1 + y.flips_3_1;
-    c.new_labels = x.new_labels + y.new_labels;
-    return c;
+  const uint8_t* won;
+  unsigned long long* counts;
+  FF_HD void operator()(std::size_t r) const {
+    const uint8_t code = won[r];
+    const int k = code == kDid22 ? 0 : code == kDid31 ? 1 : code == kNewLabel ? 2 : -1;
+    if (k >= 0) Atomic<unsigned long long>(counts[k]).fetch_add(1ull, cuda::memory_order_relaxed);
   }
 };
 
@@ -903,6 +981,9 @@ struct Buffers {
   Scratch<uint32_t> cand, ops, op_tri;
   Scratch<uint8_t> action, won;
   Scratch<Index> inner;
+  // a round's candidate and operation counts; the operations by kind
+  Scratch<uint32_t> counts;
+  Scratch<unsigned long long> op_counts;
 
   Buffers(std::size_t n, std::size_t max_tri) {
     pid.resize(n), ptri.resize(n), pkey.resize(n), drop.resize(n);
@@ -916,6 +997,7 @@ struct Buffers {
     const std::size_t max_edges = 3 * max_tri / 2;
     cand.resize(max_edges), ops.resize(max_edges), op_tri.resize(3 * max_edges);
     action.resize(max_edges), won.resize(max_edges), inner.resize(max_edges);
+    counts.resize(2), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
     fill_n(raw(deg), n, uint32_t{0});
     fill_n(raw(labelled), n, uint32_t{0});
@@ -926,9 +1008,10 @@ struct Buffers {
 class Hull3 {
  public:
   // xyz: the coordinates where the steps read them (backend::to_device)
+  // steps: null, or the clock that times every step (see step())
   Hull3(const PointSet& ps, const double* xyz, const std::array<Index, 4>& tet, const std::array<double, 3>& s,
-        Buffers& B, ref::Hull3Stats& st)
-      : n_(ps.size()), tet_(tet), B_(B), st_(st) {
+        Buffers& B, ref::Hull3Stats& st, cpu::StageClock* steps)
+      : n_(ps.size()), tet_(tet), B_(B), st_(st), steps_(steps) {
     g_.xyz = xyz;
     // the per-input filter over the coordinates where they are (one reduction)
     // and the kernel point's
@@ -961,6 +1044,7 @@ class Hull3 {
     std::size_t kept = compact(m);
     st_.discarded_early += m - kept;
     m = kept;
+    step("construction: round 0");
     // lines 6-14 in rounds: every triangle with points is split at once
     while (m > 0) {
       ++st_.rounds;
@@ -975,15 +1059,19 @@ class Hull3 {
                                          .first -
                                      raw(B_.seg_tri));
       });
+      step("construction: sort, furthest points");
       const uint32_t T = T_;
       for_n(K, SplitRead{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_v), raw(B_.old_nb),
                          raw(B_.old_pos)});
       for_n(K, SplitWrite{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.far), raw(B_.old_v), T});
       for_n(K, SplitOuter{raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_nb), raw(B_.old_pos), T});
+      step("construction: split");
       for_n(m, Reassociate{g_, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid, {ptri, pkey, drop}});
       for_n(K, ResetRank{raw(B_.seg_tri), raw(B_.rank)});
+      step("construction: re-association");
       T_ += 2 * static_cast<uint32_t>(K);
       kept = compact(m);
+      step("construction: compaction");
       st_.insertions += K;
       st_.discarded_early += m - kept - K;  // the K inserted points are not discarded
       m = kept;
@@ -1001,12 +1089,45 @@ class Hull3 {
     uint32_t* tn = raw(B_.tn);
     uint32_t* cand = raw(B_.cand);
     uint32_t* ops = raw(B_.ops);
+    // a round's candidate and operation counts, in device memory (see for_upto)
+    uint32_t* n_cand = raw(B_.counts);
+    uint32_t* n_ops = n_cand + 1;
+    unsigned long long* op_counts = raw(B_.op_counts);
+    fill_n(op_counts, 3, 0ull);
+    // the candidates and operations of a round: at most one directed half per
+    // edge, 3T / 2 on the closed surface of T (or fewer live) slots
+    const std::size_t E = 3 * T / 2;
+    step("flip-flop: set-up");
     bool all = true;  // line 2: every edge
     for (uint32_t round = 1;; ++round) {
-      const std::size_t C = select(B_.temp, 3 * T, cand,
-                                   IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all});
-      for_n(C, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled), cand, raw(B_.action), raw(B_.inner)});
-      const std::size_t M = select(B_.temp, C, ops, HasAction{raw(B_.action)});
+      select_upto(B_.temp, 3 * T, nullptr, cand,
+                  IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all}, n_cand);
+      step("flip-flop: candidates");
+      for_upto(E, n_cand, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled), cand, raw(B_.action), raw(B_.inner)});
+      step("flip-flop: decision");
+      select_upto(B_.temp, E, n_cand, ops, HasAction{raw(B_.action)}, n_ops);
+      step("flip-flop: operations");
+      // steps 3-5 (a round without operations runs them over none); step 4's
+      // test (Won) reads only claims, which Apply does not write, and Repair
+      // reads no claims: each pair is one pass (Then)
+      const ClaimTriangles tris{tv, tn, cand, raw(B_.action), raw(B_.inner)};
+      for_upto(E, n_ops, Claim{tris, ops, raw(B_.claim), raw(B_.op_tri)});
+      step("flip-flop: claim");
+      for_upto(E, n_ops,
+               Then<Won, Apply>{Won{cand, ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)},
+                                Apply{tris, ops, raw(B_.op_tri), tv, tn, raw(B_.alive), raw(B_.partner),
+                                      raw(B_.stamp_t), raw(B_.stamp_v), raw(B_.deg), raw(B_.labelled), raw(B_.won),
+                                      round}});
+      step("flip-flop: apply");
+      for_upto(E, n_ops,
+               Then<Then<Repair, ResetClaims>, CountOp>{
+                   {Repair{cand, raw(B_.action), ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
+                           raw(B_.stamp_t), round},
+                    ResetClaims{raw(B_.op_tri), raw(B_.claim)}},
+                   CountOp{raw(B_.won), op_counts}});
+      step("flip-flop: repair");
+      const std::size_t M = read_count(n_ops);  // the round's one wait of the host
+      step("flip-flop: operation count");
       if (M == 0) {
         if (all) break;  // a round over every edge decided nothing: the end
         all = true;
@@ -1014,19 +1135,12 @@ class Hull3 {
       }
       all = false;
       ++st_.rounds;
-      const ClaimTriangles tris{tv, tn, cand, raw(B_.action), raw(B_.inner)};
-      for_n(M, Claim{tris, ops, raw(B_.claim), raw(B_.op_tri)});
-      for_n(M, Won{cand, ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)});
-      for_n(M, Apply{tris, ops, raw(B_.op_tri), tv, tn, raw(B_.alive), raw(B_.partner), raw(B_.stamp_t), raw(B_.stamp_v),
-                     raw(B_.deg), raw(B_.labelled), raw(B_.won), round});
-      for_n(M, Repair{cand, raw(B_.action), ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
-                      raw(B_.stamp_t), round});
-      for_n(M, ResetClaims{raw(B_.op_tri), raw(B_.claim)});
-      const OpCounts c = count(M);
-      st_.flips_2_2 += c.flips_2_2;
-      st_.flips_3_1 += c.flips_3_1;
-      st_.labelled_non_extreme += c.new_labels;
     }
+    unsigned long long c[3];
+    thrust::copy(B_.op_counts.begin(), B_.op_counts.begin() + 3, c);
+    st_.flips_2_2 += c[0];
+    st_.flips_3_1 += c[1];
+    st_.labelled_non_extreme += c[2];
     // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left
     std::size_t reflex = 0, labelled = 0;
     run_with(B_.temp, 3 * T, [&](auto policy) {
@@ -1039,6 +1153,7 @@ class Hull3 {
                                           LabelledVertex{raw(B_.deg), raw(B_.labelled)}, std::size_t{0},
                                           thrust::plus<std::size_t>());
     });
+    step("flip-flop: final check");
     if (reflex || labelled)
       throw std::logic_error("hull3 (kernels): flip-flop ended with " + std::to_string(reflex) + " reflex edges and " +
                              std::to_string(labelled) + " non-extreme vertices");
@@ -1068,18 +1183,21 @@ class Hull3 {
     });
     return kept;
   }
-  OpCounts count(std::size_t M) {
-    OpCounts c;
-    uint8_t* won = raw(B_.won);
-    run_with(B_.temp, M,
-             [&](auto policy) { c = thrust::transform_reduce(policy, won, won + M, CountOp{}, OpCounts{}, AddCounts{}); });
-    return c;
+  // With FLIPFLOP_GPU_STEPS set (and --stats), every step of the
+  // construction and flip-flop rounds is a stage of its own, summed over the
+  // rounds, timed after a wait for the device (for attribution only: the
+  // waits themselves cost time); otherwise nothing.
+  void step(const char* name) {
+    if (!steps_) return;
+    backend::sync();
+    steps_->mark(name);
   }
 
   std::size_t n_;
   std::array<Index, 4> tet_;
   Buffers& B_;
   ref::Hull3Stats& st_;
+  cpu::StageClock* steps_;
   Geo g_{};
   uint32_t T_ = 0;
 };
@@ -1148,12 +1266,14 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
     return out;
   }
   return on_device(n, [&] {
-    Hull3 h(ps, xyz, tet, s, *B, st);
+    // the construction and flip-flop by step (Hull3::step), or as two stages
+    const bool by_step = clock.on() && std::getenv("FLIPFLOP_GPU_STEPS") != nullptr;
+    Hull3 h(ps, xyz, tet, s, *B, st, by_step ? &clock : nullptr);
     clock.mark("tetrahedron");
     h.construct();  // lines 2-14
-    clock.mark("construction");
+    if (!by_step) clock.mark("construction");
     h.flip_flop();  // line 15
-    clock.mark("flip-flop");
+    if (!by_step) clock.mark("flip-flop");
     backend::Buffer<Tri> tris;
     const std::size_t F = h.output(tris);
     clock.mark("output");
