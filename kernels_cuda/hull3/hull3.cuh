@@ -4,8 +4,8 @@
 // namespace it implements; helpers live in FF_KERNELS_NS::hull3_detail.
 //
 // Every step is a thrust primitive (for_each over an index range,
-// transform_reduce, copy_if, sort_by_key, reduce_by_key, remove_if,
-// sort) over a __host__ __device__ functor reading flat arrays (structure of
+// transform_reduce, copy_if, remove_if, sort; on the device the flip-flop
+// rounds' selections by cub::DeviceSelect::If) over a __host__ __device__ functor reading flat arrays (structure of
 // arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
 // counter-clockwise seen from outside) and tn[3t + k] (the slot across its
 // edge tv[3t + k] -> tv[3t + (k + 1) % 3]), as in §6.4.1 ("an array of
@@ -31,11 +31,12 @@
 //    whose predicates (pred::mixed_sign, GMP) do not run on the device: that
 //    rare case runs the exact reference ref::hull3_ffhull on the host.
 //  * lines 5-14 in rounds (§6.4.1, "four major GPU kernels"): round 0
-//    associates every point with a face of the tetrahedron; every round sorts
-//    the points by triangle (sort_by_key), takes per triangle the furthest
-//    point by a keyed reduction (reduce_by_key over the rounded orient(p, t),
-//    §6.4.1's "second technique"; any point beyond t in its cone is correct,
-//    kernels_cpu/hull3/ffhull.hpp), splits every such triangle 1-3 (its own
+//    associates every point with a face of the tetrahedron; every round takes
+//    per triangle the furthest point — the largest rounded orient(p, t),
+//    §6.4.1's "second technique", ties to the smaller index; any point beyond
+//    t in its cone is correct, kernels_cpu/hull3/ffhull.hpp — by an atomic
+//    maximum over the points in place (no sort of the points by triangle),
+//    lists the triangles with points in slot order, splits each 1-3 (its own
 //    slot and slots T + 2k, T + 2k + 1 for its rank k among the round's
 //    triangles: disjoint writes), repairs the adjacency in a separate pass
 //    (§6.4.1: "a separate kernel is necessary here"), re-associates every
@@ -72,6 +73,7 @@
 #endif
 
 #include <cuda/atomic>
+#include <cuda/std/bit>
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
 #include <cub/device/device_select.cuh>
 #include <thrust/system/cuda/error.h>
@@ -361,9 +363,6 @@ struct BestOf {
     return x.id < y.id ? x : y;
   }
 };
-struct MakeBest {
-  FF_HD Best operator()(const thrust::tuple<double, Index>& t) const { return {thrust::get<0>(t), thrust::get<1>(t)}; }
-};
 
 // Line 1's keys (kernels_cpu/hull3/ffhull.cpp's approximations): mode 0: -x,
 // 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|.
@@ -446,6 +445,58 @@ struct AssociateRound0 {
   }
 };
 
+// Line 8: per triangle t with points, its furthest point — BestOf's order
+// (the larger key, ties: the smaller index) — in two passes over the points
+// in place: the largest key's bits by atomic maximum, then the smallest index
+// among the points of that key by atomic minimum. The triangles with points
+// are then listed in slot order (select), each given its rank k, its point
+// far[k], and its entries emptied for later rounds.
+
+// The order of doubles as unsigned integers: x < y exactly when
+// ordered_key(x) < ordered_key(y), for keys (never NaN; -0 taken as +0, which
+// it equals); 0 is below every key's (a triangle without points).
+FF_HD inline unsigned long long ordered_key(double x) {
+  const unsigned long long u = cuda::std::bit_cast<unsigned long long>(x == 0 ? 0.0 : x);
+  return u >> 63 ? ~u : u | (1ull << 63);
+}
+struct FurthestKey {
+  const uint32_t* ptri;
+  const double* pkey;
+  unsigned long long* best_key;
+  FF_HD void operator()(std::size_t i) const {
+    const unsigned long long k = ordered_key(pkey[i]);
+    Atomic<unsigned long long> b(best_key[ptri[i]]);
+    // a key not above the current maximum leaves it (most, after the first few)
+    if (k > b.load(cuda::memory_order_relaxed)) b.fetch_max(k, cuda::memory_order_relaxed);
+  }
+};
+struct FurthestId {
+  const uint32_t* ptri;
+  const double* pkey;
+  const Index* pid;
+  const unsigned long long* best_key;
+  Index* best_id;
+  FF_HD void operator()(std::size_t i) const {
+    const uint32_t t = ptri[i];
+    if (ordered_key(pkey[i]) == best_key[t]) Atomic<Index>(best_id[t]).fetch_min(pid[i], cuda::memory_order_relaxed);
+  }
+};
+struct HasPoints {
+  const unsigned long long* best_key;
+  FF_HD bool operator()(uint32_t t) const { return best_key[t] != 0; }
+};
+struct TakeFurthest {
+  const uint32_t* seg_tri;
+  unsigned long long* best_key;
+  Index* best_id;
+  Index* far;
+  FF_HD void operator()(std::size_t k) const {
+    const uint32_t t = seg_tri[k];
+    far[k] = best_id[t];
+    best_key[t] = 0, best_id[t] = kNone;
+  }
+};
+
 // Line 9, first pass: the round's triangles read their old state (vertices,
 // neighbours, and the position of the shared edge in each neighbour) and
 // publish their rank k.
@@ -479,12 +530,12 @@ struct SplitWrite {
   Index* tv;
   uint32_t* tn;
   const uint32_t* seg_tri;
-  const Best* far;
+  const Index* far;
   const Index* old_v;
   uint32_t T;
   FF_HD void operator()(std::size_t k) const {
     const uint32_t t = seg_tri[k], n1 = T + 2 * static_cast<uint32_t>(k), n2 = n1 + 1;
-    const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2], v = far[k].id;
+    const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2], v = far[k];
     tv[3 * t + 2] = v;
     tv[3 * n1] = tb, tv[3 * n1 + 1] = tc, tv[3 * n1 + 2] = v;
     tv[3 * n2] = tc, tv[3 * n2 + 1] = ta, tv[3 * n2 + 2] = v;
@@ -529,7 +580,7 @@ struct Reassociate {
   Geo g;
   const Index* tv;
   const uint32_t* rank;
-  const Best* far;
+  const Index* far;
   const Index* old_v;
   uint32_t T;
   const Index* pid;
@@ -537,7 +588,7 @@ struct Reassociate {
   FF_HD void operator()(std::size_t i) const {
     const Index p = pid[i];
     const uint32_t t = out.ptri[i], k = rank[t];
-    const Index v = far[k].id;
+    const Index v = far[k];
     if (p == v) {
       out.drop[i] = 1;
       return;
@@ -971,7 +1022,10 @@ struct Buffers {
   Scratch<uint8_t> alive;
   // construction rounds: per slot its rank in the round; per split triangle
   Scratch<uint32_t> rank, seg_tri;
-  Scratch<Best> far;
+  Scratch<Index> far;
+  // per slot: the largest key's bits and the smallest index of that key among its points
+  Scratch<unsigned long long> best_key;
+  Scratch<Index> best_id;
   Scratch<Index> old_v;
   Scratch<uint32_t> old_nb;
   Scratch<uint8_t> old_pos;
@@ -989,6 +1043,7 @@ struct Buffers {
     pid.resize(n), ptri.resize(n), pkey.resize(n), drop.resize(n);
     tv.resize(3 * max_tri), tn.resize(3 * max_tri), alive.resize(max_tri);
     rank.resize(max_tri), seg_tri.resize(n), far.resize(n);
+    best_key.resize(max_tri), best_id.resize(max_tri);
     old_v.resize(3 * n), old_nb.resize(3 * n), old_pos.resize(3 * n);
     claim.resize(max_tri), partner.resize(max_tri), stamp_t.resize(max_tri);
     deg.resize(n), labelled.resize(n), stamp_v.resize(n);
@@ -999,6 +1054,8 @@ struct Buffers {
     action.resize(max_edges), won.resize(max_edges), inner.resize(max_edges);
     counts.resize(2), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
+    fill_n(raw(best_key), max_tri, 0ull);
+    fill_n(raw(best_id), max_tri, kNone);
     fill_n(raw(deg), n, uint32_t{0});
     fill_n(raw(labelled), n, uint32_t{0});
     fill_n(raw(stamp_v), n, uint32_t{0});
@@ -1048,18 +1105,12 @@ class Hull3 {
     // lines 6-14 in rounds: every triangle with points is split at once
     while (m > 0) {
       ++st_.rounds;
-      std::size_t K = 0;
-      run_with(B_.temp, m, [&](auto policy) {
-        thrust::sort_by_key(policy, ptri, ptri + m, thrust::make_zip_iterator(thrust::make_tuple(pid, pkey)));
-        // line 8: per triangle the furthest point (keyed arg-max reduction)
-        const auto values = thrust::make_transform_iterator(
-            thrust::make_zip_iterator(thrust::make_tuple(pkey, pid)), MakeBest());
-        K = static_cast<std::size_t>(thrust::reduce_by_key(policy, ptri, ptri + m, values, raw(B_.seg_tri),
-                                                           raw(B_.far), thrust::equal_to<uint32_t>(), BestOf())
-                                         .first -
-                                     raw(B_.seg_tri));
-      });
-      step("construction: sort, furthest points");
+      // line 8 (see FurthestKey)
+      for_n(m, FurthestKey{ptri, pkey, raw(B_.best_key)});
+      for_n(m, FurthestId{ptri, pkey, pid, raw(B_.best_key), raw(B_.best_id)});
+      const std::size_t K = select(B_.temp, T_, raw(B_.seg_tri), HasPoints{raw(B_.best_key)});
+      for_n(K, TakeFurthest{raw(B_.seg_tri), raw(B_.best_key), raw(B_.best_id), raw(B_.far)});
+      step("construction: furthest points");
       const uint32_t T = T_;
       for_n(K, SplitRead{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_v), raw(B_.old_nb),
                          raw(B_.old_pos)});
