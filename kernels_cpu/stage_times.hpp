@@ -29,8 +29,6 @@ struct StageTimes {
 class StageClock {
  public:
   explicit StageClock(StageTimes* times) : times_(times), last_(std::chrono::steady_clock::now()) {}
-  // whether the stages are recorded at all
-  bool on() const { return times_ != nullptr; }
   void mark(const char* name) {
     if (!times_) return;
     const auto now = std::chrono::steady_clock::now();

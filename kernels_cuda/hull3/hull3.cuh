@@ -1290,7 +1290,8 @@ auto on_device(std::size_t n, F&& f) -> decltype(f()) {
   }
 }
 
-std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::StageClock& clock) {
+// by_step: the construction and flip-flop by step (Hull3::step), else as two stages
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::StageClock& clock, bool by_step) {
   const std::size_t n = ps.size();
   if (ps.dim != 3 || n < 4) {
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
@@ -1317,8 +1318,6 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
     return out;
   }
   return on_device(n, [&] {
-    // the construction and flip-flop by step (Hull3::step), or as two stages
-    const bool by_step = clock.on() && std::getenv("FLIPFLOP_GPU_STEPS") != nullptr;
     Hull3 h(ps, xyz, tet, s, *B, st, by_step ? &clock : nullptr);
     clock.mark("tetrahedron");
     h.construct();  // lines 2-14
@@ -1342,7 +1341,8 @@ std::vector<Triangle> hull3_ffhull(const PointSet& ps, ref::Hull3Stats* stats, c
   backend::require_device("hull3 ffhull");
   ref::Hull3Stats st;
   cpu::StageClock clock(times);
-  std::vector<Triangle> out = hull3_detail::compute(ps, st, clock);
+  const bool by_step = times != nullptr && std::getenv("FLIPFLOP_GPU_STEPS") != nullptr;
+  std::vector<Triangle> out = hull3_detail::compute(ps, st, clock, by_step);
   if (stats) *stats = st;
   return out;
 }
