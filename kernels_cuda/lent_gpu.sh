@@ -189,6 +189,9 @@ for rep in 1 2; do
       2>> "$OUT/bench.err" >> "$OUT/ab.csv"
   done
 done
+echo "# the CPU peers on this machine, the same input" >> "$OUT/ab.csv"
+timeout 90 "$ff" bench hull3 --dist ball --n 10000000 --reps 3 --csv --run 'flipflop:cpu$,qhull' \
+  2>> "$OUT/bench.err" >> "$OUT/ab.csv"
 cat "$OUT/ab.csv"
 for v in new base; do
   bin=$ff; [ $v = base ] && bin=$B/flipflop_base
