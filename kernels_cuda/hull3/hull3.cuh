@@ -219,12 +219,12 @@ std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& 
 }
 
 // ---- counts that stay on the device (the flip-flop rounds) ----------------------
-// A flip-flop round's sizes (its candidates, its operations) are needed by its
-// own steps only, not by the host: on the device they stay in device memory,
-// written by a selection and read by the steps' threads, so that the host
-// waits once per round (for the operation count that decides the end)
-// instead of after every selection. In the OpenMP build the steps have
-// finished when the next one starts, and the count is read directly.
+// A flip-flop round's operation count is needed by its own steps, and by the
+// host only to see whether the round did anything: on the device it stays in
+// device memory, written by the selection and read by the steps' threads, so
+// that the host waits once per round, after its last step, instead of after
+// the selection too. In the OpenMP build the steps have finished when the
+// next one starts, and the count is read directly.
 
 // f(i) for i in [0, *count): *count was written by an earlier step and is at
 // most bound. On the device one thread per i < bound, each testing
@@ -259,25 +259,15 @@ struct Then {
   }
 };
 
+// select() with its result's size left in *selected, where the next steps
+// read it; the host does not wait for it on the device.
 template <class Pred>
-struct PredUpTo {
-  Pred pred;
-  const uint32_t* count;  // null: every i < bound
-  FF_HD bool operator()(uint32_t i) const { return (count == nullptr || i < *count) && pred(i); }
-};
-
-// select() over [0, *count) (count written by an earlier step, at most bound;
-// null: over [0, bound)), its result's size left in *selected where the next
-// steps read it; the host does not wait for it on the device.
-template <class Pred>
-void select_upto(TempStorage& temp, std::size_t bound, const uint32_t* count, uint32_t* out, const Pred& pred,
-                 uint32_t* selected) {
+void select_async(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& p, uint32_t* selected) {
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-  *selected = static_cast<uint32_t>(select(temp, count ? *count : bound, out, pred));
+  *selected = static_cast<uint32_t>(select(temp, n, out, p));
 #else
-  const PredUpTo<Pred> p{pred, count};
   const thrust::counting_iterator<uint32_t> first(0);
-  const auto items = static_cast<std::int64_t>(bound);
+  const auto items = static_cast<std::int64_t>(n);
   std::size_t bytes = 0;
   cudaError_t err = cub::DeviceSelect::If(nullptr, bytes, first, out, selected, items, p);
   if (err == cudaSuccess) {
@@ -678,23 +668,27 @@ FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
 }
 
 // Lines 5-19 for the edge e: the action and the vertex it concerns
-// (ff3::decide, line by line).
+// (ff3::decide, line by line), in action[e] and inner[e]; kNoAction for an
+// edge that is not a candidate (step 1, tested here: one thread per edge slot,
+// no list of candidates).
 struct Decide {
   Geo g;
   const Index* tv;
   const uint32_t* tn;
   const uint32_t* deg;
   const uint32_t* labelled;
-  const uint32_t* cand;
+  IsCandidate candidate;
   uint8_t* action;
   Index* inner;
   FF_HD bool s_in_tetrahedron(const Quad& q, int o) const {
     return g.side(q.a, q.b, q.c) == o && -g.side(q.a, q.b, q.d) == o && g.side(q.a, q.c, q.d) == o &&
            -g.side(q.b, q.c, q.d) == o;
   }
-  FF_HD void operator()(std::size_t i) const {
-    const Quad q = quad_of(tv, tn, cand[i]);
+  FF_HD void operator()(std::size_t e) const {
+    const std::size_t i = e;
     action[i] = kNoAction;
+    if (!candidate(static_cast<uint32_t>(e))) return;
+    const Quad q = quad_of(tv, tn, static_cast<uint32_t>(e));
     Index x = kNone;  // line 5: the labelled vertex of smallest index
     const Index vs[4] = {q.a, q.b, q.c, q.d};
     for (int r = 0; r < 4; ++r)
@@ -741,18 +735,17 @@ struct HasAction {
   FF_HD bool operator()(uint32_t i) const { return action[i] != kNoAction; }
 };
 
-// The triangles of T_e for the decision of candidate i (kNone-padded).
+// The triangles of T_e for the decision of edge i (kNone-padded).
 struct ClaimTriangles {
   const Index* tv;
   const uint32_t* tn;
-  const uint32_t* cand;
   const uint8_t* action;
   const Index* inner;
   FF_HD void operator()(uint32_t i, uint32_t out[3]) const {
     out[0] = out[1] = out[2] = kNone;
     const uint8_t act = action[i];
     if (act == kLabel) return;
-    const Quad q = quad_of(tv, tn, cand[i]);
+    const Quad q = quad_of(tv, tn, i);
     out[0] = q.t, out[1] = q.t2;
     if (act == kFlip31V || act == kFlip31D)  // the third triangle around the removed vertex
       out[2] = tn[3 * q.t + (inner[i] == q.a ? prev3(q.k) : next3(q.k))];
@@ -771,13 +764,12 @@ struct Claim {
     uint32_t* t = op_tri + 3 * r;
     tris(i, t);
     for (int j = 0; j < 3; ++j)
-      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).fetch_min(tris.cand[i], cuda::memory_order_relaxed);
+      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).fetch_min(i, cuda::memory_order_relaxed);
   }
 };
 
 // Step 4's test: won[r] = 1 when every claim of op r holds (labels: always).
 struct Won {
-  const uint32_t* cand;
   const uint32_t* ops;
   const uint32_t* op_tri;
   const uint32_t* claim;
@@ -786,7 +778,7 @@ struct Won {
     const uint32_t* t = op_tri + 3 * r;
     uint8_t ok = 1;
     for (int j = 0; j < 3; ++j)
-      if (t[j] != kNone && claim[t[j]] != cand[ops[r]]) ok = 0;
+      if (t[j] != kNone && claim[t[j]] != ops[r]) ok = 0;
     won[r] = ok;
   }
 };
@@ -834,7 +826,7 @@ struct Apply {
       Atomic<uint32_t>(stamp_v[x]).store(round, cuda::memory_order_relaxed);
       return;
     }
-    const Quad q = quad_of(tv, tn, tris.cand[i]);
+    const Quad q = quad_of(tv, tn, i);
     if (act == kFlip22V || act == kFlip22D) {
       // lines 13 / 15: (a, b, c), (b, a, d) -> (a, d, c), (d, b, c)
       const uint32_t n_bc = tn[3 * q.t + next3(q.k)], n_ca = tn[3 * q.t + prev3(q.k)];
@@ -895,8 +887,6 @@ struct Apply {
 // in their own live slots. Reads only vertices, alive and partner, which
 // step 5 does not write.
 struct Repair {
-  const uint32_t* cand;
-  const uint8_t* action;
   const uint32_t* ops;
   const uint8_t* won;
   const Index* tv;
@@ -923,7 +913,7 @@ struct Repair {
   }
   FF_HD void operator()(std::size_t r) const {
     if (won[r] != kDid22 && won[r] != kDid31) return;
-    const uint32_t e = cand[ops[r]];
+    const uint32_t e = ops[r];
     const uint32_t t = e / 3;
     if (won[r] == kDid31) {
       for (uint32_t q = 0; q < 3; ++q) link(t, q);
@@ -1032,10 +1022,10 @@ struct Buffers {
   // flip-flop: per slot, per vertex, per candidate edge
   Scratch<uint32_t> claim, partner, stamp_t;
   Scratch<uint32_t> deg, labelled, stamp_v;
-  Scratch<uint32_t> cand, ops, op_tri;
+  Scratch<uint32_t> ops, op_tri;
   Scratch<uint8_t> action, won;
   Scratch<Index> inner;
-  // a round's candidate and operation counts; the operations by kind
+  // a round's operation count; the operations by kind
   Scratch<uint32_t> counts;
   Scratch<unsigned long long> op_counts;
 
@@ -1047,12 +1037,12 @@ struct Buffers {
     old_v.resize(3 * n), old_nb.resize(3 * n), old_pos.resize(3 * n);
     claim.resize(max_tri), partner.resize(max_tri), stamp_t.resize(max_tri);
     deg.resize(n), labelled.resize(n), stamp_v.resize(n);
-    // candidates: one directed half per edge; ops also lists the live slots
-    // at the output
+    // operations: at most one per edge (its directed half with the smaller
+    // tail); ops also lists the live slots at the output
     const std::size_t max_edges = 3 * max_tri / 2;
-    cand.resize(max_edges), ops.resize(max_edges), op_tri.resize(3 * max_edges);
-    action.resize(max_edges), won.resize(max_edges), inner.resize(max_edges);
-    counts.resize(2), op_counts.resize(3);
+    ops.resize(max_edges), op_tri.resize(3 * max_edges), won.resize(max_edges);
+    action.resize(3 * max_tri), inner.resize(3 * max_tri);  // per edge slot
+    counts.resize(1), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
     fill_n(raw(best_key), max_tri, 0ull);
     fill_n(raw(best_id), max_tri, kNone);
@@ -1138,41 +1128,39 @@ class Hull3 {
     for_n(3 * T, CountDegree{raw(B_.tv), raw(B_.deg)});  // line 1: labels are all 0 ("unknown")
     Index* tv = raw(B_.tv);
     uint32_t* tn = raw(B_.tn);
-    uint32_t* cand = raw(B_.cand);
     uint32_t* ops = raw(B_.ops);
-    // a round's candidate and operation counts, in device memory (see for_upto)
-    uint32_t* n_cand = raw(B_.counts);
-    uint32_t* n_ops = n_cand + 1;
+    // the round's operation count, in device memory (see for_upto)
+    uint32_t* n_ops = raw(B_.counts);
     unsigned long long* op_counts = raw(B_.op_counts);
     fill_n(op_counts, 3, 0ull);
-    // the candidates and operations of a round: at most one directed half per
-    // edge, 3T / 2 on the closed surface of T (or fewer live) slots
+    // a round's operations: at most one per edge (one directed half each),
+    // 3T / 2 on the closed surface of T (or fewer live) slots
     const std::size_t E = 3 * T / 2;
     step("flip-flop: set-up");
     bool all = true;  // line 2: every edge
     for (uint32_t round = 1;; ++round) {
-      select_upto(B_.temp, 3 * T, nullptr, cand,
-                  IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all}, n_cand);
-      step("flip-flop: candidates");
-      for_upto(E, n_cand, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled), cand, raw(B_.action), raw(B_.inner)});
+      // steps 1-2 in one pass over the edge slots, then the edges with an action
+      for_n(3 * T, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled),
+                          IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all},
+                          raw(B_.action), raw(B_.inner)});
       step("flip-flop: decision");
-      select_upto(B_.temp, E, n_cand, ops, HasAction{raw(B_.action)}, n_ops);
+      select_async(B_.temp, 3 * T, ops, HasAction{raw(B_.action)}, n_ops);
       step("flip-flop: operations");
       // steps 3-5 (a round without operations runs them over none); step 4's
       // test (Won) reads only claims, which Apply does not write, and Repair
       // reads no claims: each pair is one pass (Then)
-      const ClaimTriangles tris{tv, tn, cand, raw(B_.action), raw(B_.inner)};
+      const ClaimTriangles tris{tv, tn, raw(B_.action), raw(B_.inner)};
       for_upto(E, n_ops, Claim{tris, ops, raw(B_.claim), raw(B_.op_tri)});
       step("flip-flop: claim");
       for_upto(E, n_ops,
-               Then<Won, Apply>{Won{cand, ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)},
+               Then<Won, Apply>{Won{ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)},
                                 Apply{tris, ops, raw(B_.op_tri), tv, tn, raw(B_.alive), raw(B_.partner),
                                       raw(B_.stamp_t), raw(B_.stamp_v), raw(B_.deg), raw(B_.labelled), raw(B_.won),
                                       round}});
       step("flip-flop: apply");
       for_upto(E, n_ops,
                Then<Then<Repair, ResetClaims>, CountOp>{
-                   {Repair{cand, raw(B_.action), ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
+                   {Repair{ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
                            raw(B_.stamp_t), round},
                     ResetClaims{raw(B_.op_tri), raw(B_.claim)}},
                    CountOp{raw(B_.won), op_counts}});
