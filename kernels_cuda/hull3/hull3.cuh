@@ -5,8 +5,8 @@
 //
 // Every step is a thrust primitive (for_each over an index range,
 // transform_reduce, copy_if, remove_if, sort; on the device the flip-flop
-// rounds' selections by cub::DeviceSelect::If) over a __host__ __device__ functor reading flat arrays (structure of
-// arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
+// rounds' selections by cub::DeviceSelect::If) over a __host__ __device__
+// functor reading flat arrays (structure of arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
 // counter-clockwise seen from outside) and tn[3t + k] (the slot across its
 // edge tv[3t + k] -> tv[3t + (k + 1) % 3]), as in §6.4.1 ("an array of
 // triangles, each containing the indices of its three vertices and the
@@ -684,11 +684,10 @@ struct Decide {
     return g.side(q.a, q.b, q.c) == o && -g.side(q.a, q.b, q.d) == o && g.side(q.a, q.c, q.d) == o &&
            -g.side(q.b, q.c, q.d) == o;
   }
-  FF_HD void operator()(std::size_t e) const {
-    const std::size_t i = e;
+  FF_HD void operator()(std::size_t i) const {  // i: the edge slot e
     action[i] = kNoAction;
-    if (!candidate(static_cast<uint32_t>(e))) return;
-    const Quad q = quad_of(tv, tn, static_cast<uint32_t>(e));
+    if (!candidate(static_cast<uint32_t>(i))) return;
+    const Quad q = quad_of(tv, tn, static_cast<uint32_t>(i));
     Index x = kNone;  // line 5: the labelled vertex of smallest index
     const Index vs[4] = {q.a, q.b, q.c, q.d};
     for (int r = 0; r < 4; ++r)
