@@ -321,24 +321,95 @@ struct Geo {
     if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
     return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], n, s);
   }
-  // p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
-  FF_HD bool in_cone(Index a, Index b, Index c, Index p) const {
-    const int o = side(a, b, c);
-    return side(a, b, p) == o && side(b, c, p) == o && side(c, a, p) == o;
+};
+
+// ---- §6.4.2's two passes -----------------------------------------------------------
+// The thesis splits every GPU kernel that may need exact arithmetic in two:
+// the exact stage's code takes many registers and much local memory, which
+// limits how many threads run at once, so a first kernel does the fast
+// arithmetic only and tests it with precomputed error bounds, and a second,
+// with only the threads that failed active, does the exact work. Here the first pass's signs come from
+// FastSigns — the per-input static filter alone (static_filter.hpp, its bound
+// precomputed once per input: Geo::filter), inlined, no call into the staged
+// path — and a thread whose every sign it decided writes its result; one with
+// an undecided sign writes only a mark. The second pass (ExactSigns: Geo's
+// whole staged path, SoS included) runs the same decision for the marked
+// items only. Both passes run the one decision function (a template over the
+// signs), so the result is the one-pass result: the fast signs it uses are
+// the exact ones (the filter returns a sign only when it is certain).
+
+// The static filter's signs; 0 where it cannot decide, and then `undecided`.
+struct FastSigns {
+  const Geo& g;
+  bool undecided = false;
+  FF_HD int certain(int r) {
+    undecided |= r == 0;
+    return r;
   }
-  // p beyond the triangle t (orient3d(t0, t1, t2, p) < 0, never 0 under SoS);
-  // key: the rounded (p - t0) · ((t1 - t0) × (t2 - t0)), > 0 beyond, the
-  // volume |orient(p, t)| of §6.4.1's furthest point (NaN: -inf)
-  FF_HD bool beyond(const Index* t, Index p, double& key) const {
-    const double *o = P(t[0]), *b = P(t[1]), *c = P(t[2]), *q = P(p);
-    const double bx = b[0] - o[0], by = b[1] - o[1], bz = b[2] - o[2];
-    const double cx = c[0] - o[0], cy = c[1] - o[1], cz = c[2] - o[2];
-    const double k = (q[0] - o[0]) * (by * cz - bz * cy) + (q[1] - o[1]) * (bz * cx - bx * cz) +
-                     (q[2] - o[2]) * (bx * cy - by * cx);
-    key = k == k ? k : -HUGE_VAL;
-    return orient(t[0], t[1], t[2], p) < 0;
+  FF_HD int orient(Index a, Index b, Index c, Index d) {
+    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
+    return certain(pred::static_sign<4>(g.filter, p, nullptr));
+  }
+  FF_HD int side(Index a, Index b, Index c) {
+    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.s};
+    return certain(pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
+// Geo's signs (every one certain).
+struct ExactSigns {
+  const Geo& g;
+  static constexpr bool undecided = false;
+  FF_HD int orient(Index a, Index b, Index c, Index d) const { return g.orient(a, b, c, d); }
+  FF_HD int side(Index a, Index b, Index c) const { return g.side(a, b, c); }
+};
+
+// p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
+template <class S>
+FF_HD bool in_cone(S& sg, Index a, Index b, Index c, Index p) {
+  const int o = sg.side(a, b, c);
+  return sg.side(a, b, p) == o && sg.side(b, c, p) == o && sg.side(c, a, p) == o;
+}
+
+// p beyond the triangle t (orient3d(t0, t1, t2, p) < 0, never 0 under SoS);
+// key: the rounded (p - t0) · ((t1 - t0) × (t2 - t0)), > 0 beyond, the
+// volume |orient(p, t)| of §6.4.1's furthest point (NaN: -inf)
+template <class S>
+FF_HD bool beyond(S& sg, const Index* t, Index p, double& key) {
+  const Geo& g = sg.g;
+  const double *o = g.P(t[0]), *b = g.P(t[1]), *c = g.P(t[2]), *q = g.P(p);
+  const double bx = b[0] - o[0], by = b[1] - o[1], bz = b[2] - o[2];
+  const double cx = c[0] - o[0], cy = c[1] - o[1], cz = c[2] - o[2];
+  const double k = (q[0] - o[0]) * (by * cz - bz * cy) + (q[1] - o[1]) * (bz * cx - bx * cz) +
+                   (q[2] - o[2]) * (bx * cy - by * cx);
+  key = k == k ? k : -HUGE_VAL;
+  return sg.orient(t[0], t[1], t[2], p) < 0;
+}
+
+// The two passes over [0, n) of a decision F: F::decide(i, signs) computes
+// item i's result with the given signs, F::write(i, result) stores it,
+// F::mark(i) marks an item the first pass could not decide and
+// F::marked(i) finds it in the second. kExact: which pass.
+template <class F, bool kExact>
+struct Pass {
+  F f;
+  FF_HD void operator()(std::size_t i) const {
+    if constexpr (kExact) {
+      if (!f.marked(i)) return;
+      ExactSigns sg{f.g};
+      f.write(i, f.decide(i, sg));
+    } else {
+      FastSigns sg{f.g};
+      const auto r = f.decide(i, sg);
+      if (sg.undecided) f.mark(i);
+      else f.write(i, r);
+    }
+  }
+};
+template <class F>
+void two_passes(std::size_t n, const F& f) {
+  for_n(n, Pass<F, false>{f});
+  for_n(n, Pass<F, true>{f});
+}
 
 // ---- arg-max reductions -----------------------------------------------------------
 struct Best {
@@ -392,16 +463,32 @@ Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
 
 // Where a point of the construction goes: point i (index p) associated with
 // triangle t, dropped when beneath it (line 14), with its distance key.
+// In two passes (see Pass): the first pass marks a point it cannot place
+// with drop = kUndecidedDrop and leaves its triangle as it was; the second
+// pass places exactly the marked points. Compaction follows both.
+struct Assoc {
+  uint32_t t;
+  double key;
+  uint8_t drop;
+};
+constexpr uint8_t kUndecidedDrop = 2;
 struct PointSlots {
   uint32_t* ptri;
   double* pkey;
   uint8_t* drop;
-  FF_HD void associate(const Geo& g, const Index* tv, std::size_t i, Index p, uint32_t t) const {
-    double key;
-    drop[i] = !g.beyond(tv + 3 * t, p, key);
-    ptri[i] = t;
-    pkey[i] = key;
+  template <class S>
+  FF_HD Assoc associate(S& sg, const Index* tv, Index p, uint32_t t) const {
+    Assoc r{t, 0.0, 0};
+    r.drop = !beyond(sg, tv + 3 * t, p, r.key);
+    return r;
   }
+  FF_HD void write(std::size_t i, const Assoc& r) const {
+    drop[i] = r.drop;
+    ptri[i] = r.t;
+    pkey[i] = r.key;
+  }
+  FF_HD void mark(std::size_t i) const { drop[i] = kUndecidedDrop; }
+  FF_HD bool marked(std::size_t i) const { return drop[i] == kUndecidedDrop; }
 };
 
 struct NotTetrahedron {
@@ -421,18 +508,22 @@ struct AssociateRound0 {
   Index a, b, c, d;
   const Index* pid;
   PointSlots out;
-  FF_HD void operator()(std::size_t i) const {
+  template <class S>
+  FF_HD Assoc decide(std::size_t i, S& sg) const {
     const Index p = pid[i];
     uint32_t t;
-    if (g.side(d, a, p) > 0) {
-      if (g.side(d, c, p) < 0) t = g.side(a, c, p) > 0 ? 1 : 0;  // wedge (a, c, d)
-      else t = g.side(c, b, p) > 0 ? 3 : 0;                       // wedge (c, b, d)
+    if (sg.side(d, a, p) > 0) {
+      if (sg.side(d, c, p) < 0) t = sg.side(a, c, p) > 0 ? 1 : 0;  // wedge (a, c, d)
+      else t = sg.side(c, b, p) > 0 ? 3 : 0;                        // wedge (c, b, d)
     } else {
-      if (g.side(d, b, p) > 0) t = g.side(b, a, p) > 0 ? 2 : 0;  // wedge (b, a, d)
-      else t = g.side(c, b, p) > 0 ? 3 : 0;                       // wedge (c, b, d)
+      if (sg.side(d, b, p) > 0) t = sg.side(b, a, p) > 0 ? 2 : 0;  // wedge (b, a, d)
+      else t = sg.side(c, b, p) > 0 ? 3 : 0;                        // wedge (c, b, d)
     }
-    out.associate(g, tv, i, p, t);
+    return out.associate(sg, tv, p, t);
   }
+  FF_HD void write(std::size_t i, const Assoc& r) const { out.write(i, r); }
+  FF_HD void mark(std::size_t i) const { out.mark(i); }
+  FF_HD bool marked(std::size_t i) const { return out.marked(i); }
 };
 
 // Line 8: per triangle t with points, its furthest point — BestOf's order
@@ -575,21 +666,22 @@ struct Reassociate {
   uint32_t T;
   const Index* pid;
   PointSlots out;
-  FF_HD void operator()(std::size_t i) const {
+  template <class S>
+  FF_HD Assoc decide(std::size_t i, S& sg) const {
     const Index p = pid[i];
     const uint32_t t = out.ptri[i], k = rank[t];
     const Index v = far[k];
-    if (p == v) {
-      out.drop[i] = 1;
-      return;
-    }
+    if (p == v) return Assoc{t, 0.0, 1};
     const Index ta = old_v[3 * k], tb = old_v[3 * k + 1], tc = old_v[3 * k + 2];
     uint32_t ch;
-    if (g.side(v, ta, p) > 0) ch = g.side(v, tb, p) < 0 ? 0 : 1;
-    else ch = g.side(v, tc, p) > 0 ? 2 : 1;
+    if (sg.side(v, ta, p) > 0) ch = sg.side(v, tb, p) < 0 ? 0 : 1;
+    else ch = sg.side(v, tc, p) > 0 ? 2 : 1;
     const uint32_t u = ch == 0 ? t : T + 2 * k + (ch - 1);
-    out.associate(g, tv, i, p, u);
+    return out.associate(sg, tv, p, u);
   }
+  FF_HD void write(std::size_t i, const Assoc& r) const { out.write(i, r); }
+  FF_HD void mark(std::size_t i) const { out.mark(i); }
+  FF_HD bool marked(std::size_t i) const { return out.marked(i); }
 };
 
 struct ResetRank {
@@ -630,7 +722,9 @@ struct IsSet {
 // The end is confirmed by a round over all edges that decides nothing, and
 // then checked as the reference does (no reflex edge, no labelled vertex).
 
-enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel };
+// kUndecided: the first pass of Decide could not decide the edge (Pass); the
+// second pass replaces it before anything reads the actions.
+enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel, kUndecided };
 
 struct IsCandidate {
   const Index* tv;
@@ -670,7 +764,11 @@ FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
 // Lines 5-19 for the edge e: the action and the vertex it concerns
 // (ff3::decide, line by line), in action[e] and inner[e]; kNoAction for an
 // edge that is not a candidate (step 1, tested here: one thread per edge slot,
-// no list of candidates).
+// no list of candidates). In two passes (Pass; two_passes).
+struct Decision {
+  uint8_t action;
+  Index inner;
+};
 struct Decide {
   Geo g;
   const Index* tv;
@@ -680,53 +778,53 @@ struct Decide {
   IsCandidate candidate;
   uint8_t* action;
   Index* inner;
-  FF_HD bool s_in_tetrahedron(const Quad& q, int o) const {
-    return g.side(q.a, q.b, q.c) == o && -g.side(q.a, q.b, q.d) == o && g.side(q.a, q.c, q.d) == o &&
-           -g.side(q.b, q.c, q.d) == o;
+  template <class S>
+  FF_HD static bool s_in_tetrahedron(S& sg, const Quad& q, int o) {
+    return sg.side(q.a, q.b, q.c) == o && -sg.side(q.a, q.b, q.d) == o && sg.side(q.a, q.c, q.d) == o &&
+           -sg.side(q.b, q.c, q.d) == o;
   }
-  FF_HD void operator()(std::size_t i) const {  // i: the edge slot e
-    action[i] = kNoAction;
-    if (!candidate(static_cast<uint32_t>(i))) return;
+  template <class S>
+  FF_HD Decision decide(std::size_t i, S& sg) const {  // i: the edge slot e
+    if (!candidate(static_cast<uint32_t>(i))) return {kNoAction, kNone};
     const Quad q = quad_of(tv, tn, static_cast<uint32_t>(i));
     Index x = kNone;  // line 5: the labelled vertex of smallest index
     const Index vs[4] = {q.a, q.b, q.c, q.d};
     for (int r = 0; r < 4; ++r)
       if (labelled[vs[r]] && vs[r] < x) x = vs[r];
-    const int o = g.orient(q.a, q.b, q.c, q.d);
+    const int o = sg.orient(q.a, q.b, q.c, q.d);
     const bool reflex = o < 0;  // §6.1: d beyond abc (s is beneath every triangle)
-    if (!reflex && x == kNone) return;
+    if (!reflex && x == kNone) return {kNoAction, kNone};
     // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
     int a_in = -1;
     Index in31 = kNone;
     if (deg[q.a] == 3) {
-      a_in = g.in_cone(q.b, q.c, q.d, q.a);
+      a_in = in_cone(sg, q.b, q.c, q.d, q.a);
       if (a_in) in31 = q.a;
     }
-    if (in31 == kNone && deg[q.b] == 3 && g.in_cone(q.a, q.c, q.d, q.b)) in31 = q.b;
+    if (in31 == kNone && deg[q.b] == 3 && in_cone(sg, q.a, q.c, q.d, q.b)) in31 = q.b;
     if (in31 != kNone) {  // line 8
-      inner[i] = in31;
-      if (labelled[in31]) action[i] = kFlip31D;
-      else if (reflex) action[i] = kFlip31V;
-      return;
+      if (labelled[in31]) return {kFlip31D, in31};
+      return {reflex ? kFlip31V : kNoAction, in31};
     }
     // line 11: C_s(T_e) convex
-    if (a_in < 0) a_in = g.in_cone(q.b, q.c, q.d, q.a);
-    const bool b_in = !a_in && g.in_cone(q.a, q.c, q.d, q.b);
+    if (a_in < 0) a_in = in_cone(sg, q.b, q.c, q.d, q.a);
+    const bool b_in = !a_in && in_cone(sg, q.a, q.c, q.d, q.b);
     if (!a_in && !b_in) {
-      if (x == kNone) {
-        if (reflex) action[i] = kFlip22V;  // lines 12-13
-      } else if ((x == q.a || x == q.b) && !s_in_tetrahedron(q, o)) {
-        action[i] = kFlip22D;  // lines 14-15
-      }
-      return;
+      if (x == kNone) return {reflex ? kFlip22V : kNoAction, kNone};  // lines 12-13
+      if ((x == q.a || x == q.b) && !s_in_tetrahedron(sg, q, o)) return {kFlip22D, kNone};  // lines 14-15
+      return {kNoAction, kNone};
     }
     // lines 16-18: label the inner endpoint (Lemma 6.5)
     const Index in = a_in ? q.a : q.b;
-    if (!labelled[in] && reflex) {
-      action[i] = kLabel;
-      inner[i] = in;
-    }
+    if (!labelled[in] && reflex) return {kLabel, in};
+    return {kNoAction, kNone};
   }
+  FF_HD void write(std::size_t i, const Decision& r) const {
+    action[i] = r.action;
+    if (r.action != kNoAction) inner[i] = r.inner;  // read for the actions only
+  }
+  FF_HD void mark(std::size_t i) const { action[i] = kUndecided; }
+  FF_HD bool marked(std::size_t i) const { return action[i] == kUndecided; }
 };
 
 struct HasAction {
@@ -1086,7 +1184,7 @@ class Hull3 {
     uint8_t* drop = raw(B_.drop);
     // lines 2, 5, 14 (round 0)
     std::size_t m = select(B_.temp, n_, pid, NotTetrahedron{a, b, c, d});
-    for_n(m, AssociateRound0{g_, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
+    two_passes(m, AssociateRound0{g_, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
     std::size_t kept = compact(m);
     st_.discarded_early += m - kept;
     m = kept;
@@ -1106,7 +1204,7 @@ class Hull3 {
       for_n(K, SplitWrite{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.far), raw(B_.old_v), T});
       for_n(K, SplitOuter{raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_nb), raw(B_.old_pos), T});
       step("construction: split");
-      for_n(m, Reassociate{g_, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid, {ptri, pkey, drop}});
+      two_passes(m, Reassociate{g_, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid, {ptri, pkey, drop}});
       for_n(K, ResetRank{raw(B_.seg_tri), raw(B_.rank)});
       step("construction: re-association");
       T_ += 2 * static_cast<uint32_t>(K);
@@ -1139,9 +1237,9 @@ class Hull3 {
     bool all = true;  // line 2: every edge
     for (uint32_t round = 1;; ++round) {
       // steps 1-2 in one pass over the edge slots, then the edges with an action
-      for_n(3 * T, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled),
-                          IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all},
-                          raw(B_.action), raw(B_.inner)});
+      two_passes(3 * T, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled),
+                               IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all},
+                               raw(B_.action), raw(B_.inner)});
       step("flip-flop: decision");
       select_async(B_.temp, 3 * T, ops, HasAction{raw(B_.action)}, n_ops);
       step("flip-flop: operations");
