@@ -81,6 +81,7 @@
 #include "kernels_cuda/device_predicates.cuh"
 #include "kernels_cuda/hull2/hull2.hpp"
 #include "kernels_cuda/static_filter.cuh"
+#include "kernels_cuda/two_pass.cuh"
 #include "kernels_cpu/stage_times.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/certify/ball_test.hpp"
@@ -103,6 +104,46 @@ struct Orient {
     return dev::orient2d(&f, a, at(xy, a), b, at(xy, b), c, at(xy, c));
   }
 };
+
+// §6.4.2's two passes (kernels_cuda/two_pass.cuh) for the functors that test
+// every point: the first pass's signs are the per-input static filter's alone
+// (its bound precomputed once per input, Orient::f), 0 where it cannot decide
+// (a comparison of equal coordinates included: the perturbation decides it);
+// the second pass's the whole staged path.
+struct FastSigns : dev::Undecided {
+  const Orient& o;
+  FF_HD explicit FastSigns(const Orient& orient) : o(orient) {}
+  FF_HD int orient(Index a, Index b, Index c) {
+    const double* p[3] = {at(o.xy, a), at(o.xy, b), at(o.xy, c)};
+    return certain(pred::static_sign<3>(o.f, p, nullptr));
+  }
+  FF_HD int compare(Index a, Index b, int coord) {  // dev::compare_sos
+    const double x = at(o.xy, a)[coord], y = at(o.xy, b)[coord];
+    return certain(x < y ? -1 : y < x ? 1 : 0);
+  }
+};
+struct ExactSigns {
+  const Orient& o;
+  static constexpr bool undecided = false;
+  FF_HD int orient(Index a, Index b, Index c) const { return o(a, b, c); }
+  FF_HD int compare(Index a, Index b, int coord) const {
+    return dev::compare_sos(a, at(o.xy, a), b, at(o.xy, b), coord);
+  }
+};
+// The signs of a decision on the input points, for dev::Pass.
+struct OnOrient {
+  Orient o;
+  FF_HD FastSigns fast() const { return FastSigns(o); }
+  FF_HD ExactSigns exact() const { return ExactSigns{o}; }
+};
+// f's two passes over [0, n) (step's policy)
+template <class Policy, class F>
+void two_passes(Policy policy, std::size_t n, const F& f) {
+  const thrust::counting_iterator<std::size_t> k0(0);
+  thrust::for_each(policy, k0, k0 + n, dev::Pass<F, false>{f});
+  thrust::for_each(policy, k0, k0 + n, dev::Pass<F, true>{f});
+}
+constexpr char kUndecidedFlag = 2;  // a char flag's mark (0, 1: results)
 
 // ---- step 1: the extreme points in 8 directions ------------------------------
 // Directions counter-clockwise from -x: 0 min x, 1 min x+y, 2 min y, 3 max x-y,
@@ -167,23 +208,29 @@ struct InnerBox {
 // by the fan from poly[0]: a binary search for the wedge poly[0] poly[k]
 // poly[k+1] holding i and one edge test, O(log h) SoS orient2d calls. A
 // vertex of the polygon is kept (orient2d with a repeated index is 0).
-struct NotInside {
-  Orient o;
+// In two passes: keep[i] = 1 or 0.
+struct NotInside : OnOrient {
   InnerBox box;
   certify::BallTest<2> disk;
   const Index* poly;
   int h;
-  FF_HD bool operator()(Index i) const {
-    if (box.strictly_inside(at(o.xy, i)) || disk.strictly_inside(at(o.xy, i))) return false;
-    if (o(poly[0], poly[1], i) <= 0 || o(poly[0], poly[h - 1], i) >= 0) return true;
+  char* keep;
+  template <class S>
+  FF_HD char decide(std::size_t k, S& sg) const {
+    const Index i = static_cast<Index>(k);
+    if (box.strictly_inside(at(o.xy, i)) || disk.strictly_inside(at(o.xy, i))) return 0;
+    if (sg.orient(poly[0], poly[1], i) <= 0 || sg.orient(poly[0], poly[h - 1], i) >= 0) return 1;
     int lo = 1, hi = h - 1;  // orient(v0, v_lo, i) > 0 > orient(v0, v_hi, i)
     while (hi - lo > 1) {
       const int mid = (lo + hi) / 2;
-      if (o(poly[0], poly[mid], i) > 0) lo = mid;
+      if (sg.orient(poly[0], poly[mid], i) > 0) lo = mid;
       else hi = mid;
     }
-    return o(poly[lo], poly[hi], i) <= 0;
+    return sg.orient(poly[lo], poly[hi], i) <= 0 ? 1 : 0;
   }
+  FF_HD void write(std::size_t k, char r) const { keep[k] = r; }
+  FF_HD void mark(std::size_t k) const { keep[k] = kUndecidedFlag; }
+  FF_HD bool marked(std::size_t k) const { return keep[k] == kUndecidedFlag; }
 };
 
 // ---- step 2: sort keys -------------------------------------------------------
@@ -199,10 +246,18 @@ struct XKey {
 };
 
 // ---- step 3: S_a ---------------------------------------------------------------
-struct Above {
-  Orient o;
+// In two passes: out[k] = 1 when pts[k] is above v_l v_r, else 0.
+struct Above : OnOrient {
   Index vl, vr;
-  FF_HD char operator()(Index i) const { return o(vl, vr, i) > 0 ? 1 : 0; }
+  const Index* pts;
+  char* out;
+  template <class S>
+  FF_HD char decide(std::size_t k, S& sg) const {
+    return sg.orient(vl, vr, pts[k]) > 0 ? 1 : 0;
+  }
+  FF_HD void write(std::size_t k, char r) const { out[k] = r; }
+  FF_HD void mark(std::size_t k) const { out[k] = kUndecidedFlag; }
+  FF_HD bool marked(std::size_t k) const { return out[k] == kUndecidedFlag; }
 };
 struct IsSet {
   FF_HD bool operator()(char c) const { return c != 0; }
@@ -286,11 +341,19 @@ struct NotEnd {
   Index vl, vr;
   FF_HD bool operator()(Index i) const { return i != vl && i != vr; }
 };
-// lines 4-6: P = <v_l, v_r>; below v_l v_r: edge 0 (v_l -> v_r), above: edge 1
-struct FirstEdge {
-  Orient o;
+// lines 4-6: P = <v_l, v_r>; below v_l v_r: edge 0 (v_l -> v_r), above: edge 1.
+// In two passes: eid[k] for the point pts[k] (2: the first pass's mark).
+struct FirstEdge : OnOrient {
   Index vl, vr;
-  FF_HD Index operator()(Index u) const { return o(vl, vr, u) < 0 ? 0 : 1; }
+  const Index* pts;
+  Index* eid;
+  template <class S>
+  FF_HD Index decide(std::size_t k, S& sg) const {
+    return sg.orient(vl, vr, pts[k]) < 0 ? 0 : 1;
+  }
+  FF_HD void write(std::size_t k, Index r) const { eid[k] = r; }
+  FF_HD void mark(std::size_t k) const { eid[k] = 2; }
+  FF_HD bool marked(std::size_t k) const { return eid[k] == 2; }
 };
 // line 9: each edge's point to insert — the farthest from the edge's line by
 // the rounded cross product (any associated point keeps the polygon x-monotone
@@ -335,10 +398,11 @@ struct Splice {  // line 10: P' = ... p, r, q ...
 // lines 12-17: the new edge of u (p -> r when u.x lies between p.x and r.x,
 // else r -> q, signs of the differences under the perturbation), kept when u
 // is beyond it, else dropped (inside the triangle p r q); inserted points go.
-// Writes the new edge id, or kDropped.
+// Writes the new edge id, or kDropped; in two passes (kUndecidedEdge: the
+// first pass's mark).
 constexpr Index kDropped = 0xffffffffu;
-struct Reassociate {
-  Orient o;
+constexpr Index kUndecidedEdge = 0xfffffffeu;
+struct Reassociate : OnOrient {
   const Index* P;
   std::size_t m;
   const unsigned long long* best;
@@ -348,20 +412,21 @@ struct Reassociate {
   const Index* pts;
   const Index* eid;
   Index* eid2;
-  FF_HD void operator()(std::size_t k) const {
+  template <class S>
+  FF_HD Index decide(std::size_t k, S& sg) const {
     const Index u = pts[k], e = eid[k];
     const Index r = bid_point(best[e]);
-    if (u == r) {
-      eid2[k] = kDropped;
-      return;
-    }
+    if (u == r) return kDropped;
     const Index p = P[e];
-    const int sp = dev::compare_sos(u, at(o.xy, u), p, at(o.xy, p), 0);
-    const int sr = dev::compare_sos(u, at(o.xy, u), r, at(o.xy, r), 0);
+    const int sp = sg.compare(u, p, 0);
+    const int sr = sg.compare(u, r, 0);
     const std::size_t ne = sp * sr <= 0 ? pos[e] : pos[e] + 1;
-    const bool beyond = o(P2[ne], P2[(ne + 1) % m2], u) < 0;
-    eid2[k] = beyond ? static_cast<Index>(ne) : kDropped;
+    const bool beyond = sg.orient(P2[ne], P2[(ne + 1) % m2], u) < 0;
+    return beyond ? static_cast<Index>(ne) : kDropped;
   }
+  FF_HD void write(std::size_t k, Index r) const { eid2[k] = r; }
+  FF_HD void mark(std::size_t k) const { eid2[k] = kUndecidedEdge; }
+  FF_HD bool marked(std::size_t k) const { return eid2[k] == kUndecidedEdge; }
 };
 struct Kept {
   FF_HD bool operator()(Index e) const { return e != kDropped; }
@@ -503,17 +568,17 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
       else
         for (Index v : poly) centre[j] += ps.point(v)[j] / static_cast<double>(poly.size());
     }
-    const NotInside keep{o, inner_box(ps, poly, centre), disk, ring, static_cast<int>(poly.size())};
-    // the keep flags in one pass (a plain transform: the predicates' exact
-    // stage, 42 KB of stack per thread on the device, runs there), then a
-    // compaction over the flags. Run as one copy_if with NotInside as its
+    char* flag = thrust::raw_pointer_cast(b_above.data());
+    const NotInside keep{{o}, inner_box(ps, poly, centre), disk, ring, static_cast<int>(poly.size()), flag};
+    // the keep flags in two passes (the predicates' exact stage, 42 KB of
+    // stack per thread on the device, in the second), then a compaction over
+    // the flags. Run as one copy_if with NotInside as its
     // predicate, CUB's select kernel wrote out of its shared memory on the
     // H100 whenever many calls reached the exact stage (tiny2: wrong hulls
     // from 200 points, an illegal instruction at 10^6; compute-sanitizer:
     // "Invalid __shared__ write" in DeviceSelectSweepKernel<..., NotInside>).
-    char* flag = thrust::raw_pointer_cast(b_above.data());
     step(n, [&](auto policy) {
-      thrust::transform(policy, first, first + n, flag, keep);
+      two_passes(policy, n, keep);
       s = static_cast<std::size_t>(thrust::copy_if(policy, first, first + n, flag, surv, IsSet()) - surv);
     });
   } else {
@@ -548,7 +613,7 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
     char* above = thrust::raw_pointer_cast(b_above.data());
     std::size_t nb = 0, na = 0;
     step(s, [&](auto policy) {
-      thrust::transform(policy, surv + 1, surv + s - 1, above + 1, Above{o, vl, vr});
+      two_passes(policy, s > 2 ? s - 2 : 0, Above{{o}, vl, vr, surv + 1, above + 1});
       nb = static_cast<std::size_t>(thrust::copy_if(policy, surv + 1, surv + s - 1, above + 1, P + 1, IsClear()) -
                                     (P + 1));
       using RevIdx = thrust::reverse_iterator<Index*>;
@@ -579,7 +644,7 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
     std::size_t live = 0;
     step(s, [&](auto policy) {  // lines 2-6
       live = static_cast<std::size_t>(thrust::copy_if(policy, surv, surv + s, pts2, NotEnd{vl, vr}) - pts2);
-      thrust::transform(policy, pts2, pts2 + live, eid, FirstEdge{o, vl, vr});
+      two_passes(policy, live, FirstEdge{{o}, vl, vr, pts2, eid});
     });
     std::swap(pts, pts2);
     b_poly[0] = vl;
@@ -598,7 +663,7 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
       std::size_t left = 0;
       step(std::max(live, m), [&](auto policy) {
         thrust::for_each(policy, k0, k0 + m, Splice{P, best, pos, P2});  // line 10
-        thrust::for_each(policy, k0, k0 + live, Reassociate{o, P, m, best, pos, P2, m2, pts, eid, eid2});
+        two_passes(policy, live, Reassociate{{o}, P, m, best, pos, P2, m2, pts, eid, eid2});
         auto in = thrust::make_zip_iterator(thrust::make_tuple(pts, eid2));
         auto out = thrust::make_zip_iterator(thrust::make_tuple(pts2, eid));
         left = static_cast<std::size_t>(thrust::copy_if(policy, in, in + live, eid2, out, Kept()) - out);

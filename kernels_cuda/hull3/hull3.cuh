@@ -99,6 +99,7 @@
 #include "kernels_cuda/backend.cuh"
 #include "kernels_cuda/static_filter.cuh"
 #include "kernels_cuda/device_predicates.cuh"
+#include "kernels_cuda/two_pass.cuh"
 #include "kernels_cuda/hull3/hull3.hpp"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "predicates/predicates.hpp"
@@ -323,29 +324,13 @@ struct Geo {
   }
 };
 
-// ---- §6.4.2's two passes -----------------------------------------------------------
-// The thesis splits every GPU kernel that may need exact arithmetic in two:
-// the exact stage's code takes many registers and much local memory, which
-// limits how many threads run at once, so a first kernel does the fast
-// arithmetic only and tests it with precomputed error bounds, and a second,
-// with only the threads that failed active, does the exact work. Here the first pass's signs come from
-// FastSigns — the per-input static filter alone (static_filter.hpp, its bound
-// precomputed once per input: Geo::filter), inlined, no call into the staged
-// path — and a thread whose every sign it decided writes its result; one with
-// an undecided sign writes only a mark. The second pass (ExactSigns: Geo's
-// whole staged path, SoS included) runs the same decision for the marked
-// items only. Both passes run the one decision function (a template over the
-// signs), so the result is the one-pass result: the fast signs it uses are
-// the exact ones (the filter returns a sign only when it is certain).
-
-// The static filter's signs; 0 where it cannot decide, and then `undecided`.
-struct FastSigns {
+// ---- §6.4.2's two passes (kernels_cuda/two_pass.cuh) ------------------------------
+// The first pass's signs: the per-input static filter alone (static_filter.hpp,
+// its bound precomputed once per input: Geo::filter), inlined, no call into
+// the staged path; 0 where it cannot decide.
+struct FastSigns : dev::Undecided {
   const Geo& g;
-  bool undecided = false;
-  FF_HD int certain(int r) {
-    undecided |= r == 0;
-    return r;
-  }
+  FF_HD explicit FastSigns(const Geo& geo) : g(geo) {}
   FF_HD int orient(Index a, Index b, Index c, Index d) {
     const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
     return certain(pred::static_sign<4>(g.filter, p, nullptr));
@@ -355,12 +340,18 @@ struct FastSigns {
     return certain(pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
-// Geo's signs (every one certain).
+// The second pass's: Geo's (every one certain).
 struct ExactSigns {
   const Geo& g;
   static constexpr bool undecided = false;
   FF_HD int orient(Index a, Index b, Index c, Index d) const { return g.orient(a, b, c, d); }
   FF_HD int side(Index a, Index b, Index c) const { return g.side(a, b, c); }
+};
+// The signs of a decision on Geo, for dev::Pass.
+struct OnGeo {
+  Geo g;
+  FF_HD FastSigns fast() const { return FastSigns(g); }
+  FF_HD ExactSigns exact() const { return ExactSigns{g}; }
 };
 
 // p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
@@ -385,30 +376,10 @@ FF_HD bool beyond(S& sg, const Index* t, Index p, double& key) {
   return sg.orient(t[0], t[1], t[2], p) < 0;
 }
 
-// The two passes over [0, n) of a decision F: F::decide(i, signs) computes
-// item i's result with the given signs, F::write(i, result) stores it,
-// F::mark(i) marks an item the first pass could not decide and
-// F::marked(i) finds it in the second. kExact: which pass.
-template <class F, bool kExact>
-struct Pass {
-  F f;
-  FF_HD void operator()(std::size_t i) const {
-    if constexpr (kExact) {
-      if (!f.marked(i)) return;
-      ExactSigns sg{f.g};
-      f.write(i, f.decide(i, sg));
-    } else {
-      FastSigns sg{f.g};
-      const auto r = f.decide(i, sg);
-      if (sg.undecided) f.mark(i);
-      else f.write(i, r);
-    }
-  }
-};
 template <class F>
 void two_passes(std::size_t n, const F& f) {
-  for_n(n, Pass<F, false>{f});
-  for_n(n, Pass<F, true>{f});
+  for_n(n, dev::Pass<F, false>{f});
+  for_n(n, dev::Pass<F, true>{f});
 }
 
 // ---- arg-max reductions -----------------------------------------------------------
@@ -463,7 +434,7 @@ Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
 
 // Where a point of the construction goes: point i (index p) associated with
 // triangle t, dropped when beneath it (line 14), with its distance key.
-// In two passes (see Pass): the first pass marks a point it cannot place
+// In two passes (two_pass.cuh): the first pass marks a point it cannot place
 // with drop = kUndecidedDrop and leaves its triangle as it was; the second
 // pass places exactly the marked points. Compaction follows both.
 struct Assoc {
@@ -502,8 +473,7 @@ struct NotTetrahedron {
 // around the line sd; within the wedge of face (x, y, d) the point is in that
 // face's cone when it is on d's side of the plane (s, x, y), else in the cone
 // of (a, b, c). Line 14: dropped when beneath its face.
-struct AssociateRound0 {
-  Geo g;
+struct AssociateRound0 : OnGeo {
   const Index* tv;
   Index a, b, c, d;
   const Index* pid;
@@ -657,8 +627,7 @@ struct SplitOuter {
 // (line 13: the cone of abc is split by the planes (s, v, a), (s, v, b),
 // (s, v, c), as in reference/hull3/ffhull.cpp), dropped when it is the
 // inserted point (line 10) or beneath its new triangle (line 14).
-struct Reassociate {
-  Geo g;
+struct Reassociate : OnGeo {
   const Index* tv;
   const uint32_t* rank;
   const Index* far;
@@ -722,7 +691,7 @@ struct IsSet {
 // The end is confirmed by a round over all edges that decides nothing, and
 // then checked as the reference does (no reflex edge, no labelled vertex).
 
-// kUndecided: the first pass of Decide could not decide the edge (Pass); the
+// kUndecided: the first pass of Decide could not decide the edge (two_pass.cuh); the
 // second pass replaces it before anything reads the actions.
 enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel, kUndecided };
 
@@ -764,13 +733,12 @@ FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
 // Lines 5-19 for the edge e: the action and the vertex it concerns
 // (ff3::decide, line by line), in action[e] and inner[e]; kNoAction for an
 // edge that is not a candidate (step 1, tested here: one thread per edge slot,
-// no list of candidates). In two passes (Pass; two_passes).
+// no list of candidates). In two passes (two_pass.cuh).
 struct Decision {
   uint8_t action;
   Index inner;
 };
-struct Decide {
-  Geo g;
+struct Decide : OnGeo {
   const Index* tv;
   const uint32_t* tn;
   const uint32_t* deg;
@@ -1184,7 +1152,7 @@ class Hull3 {
     uint8_t* drop = raw(B_.drop);
     // lines 2, 5, 14 (round 0)
     std::size_t m = select(B_.temp, n_, pid, NotTetrahedron{a, b, c, d});
-    two_passes(m, AssociateRound0{g_, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
+    two_passes(m, AssociateRound0{{g_}, raw(B_.tv), a, b, c, d, pid, {ptri, pkey, drop}});
     std::size_t kept = compact(m);
     st_.discarded_early += m - kept;
     m = kept;
@@ -1204,7 +1172,8 @@ class Hull3 {
       for_n(K, SplitWrite{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.far), raw(B_.old_v), T});
       for_n(K, SplitOuter{raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_nb), raw(B_.old_pos), T});
       step("construction: split");
-      two_passes(m, Reassociate{g_, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid, {ptri, pkey, drop}});
+      two_passes(m, Reassociate{{g_}, raw(B_.tv), raw(B_.rank), raw(B_.far), raw(B_.old_v), T, pid,
+                                {ptri, pkey, drop}});
       for_n(K, ResetRank{raw(B_.seg_tri), raw(B_.rank)});
       step("construction: re-association");
       T_ += 2 * static_cast<uint32_t>(K);
@@ -1237,7 +1206,7 @@ class Hull3 {
     bool all = true;  // line 2: every edge
     for (uint32_t round = 1;; ++round) {
       // steps 1-2 in one pass over the edge slots, then the edges with an action
-      two_passes(3 * T, Decide{g_, tv, tn, raw(B_.deg), raw(B_.labelled),
+      two_passes(3 * T, Decide{{g_}, tv, tn, raw(B_.deg), raw(B_.labelled),
                                IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all},
                                raw(B_.action), raw(B_.inner)});
       step("flip-flop: decision");

@@ -121,6 +121,7 @@
 #include "kernels_cuda/device_predicates.cuh"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
+#include "kernels_cuda/two_pass.cuh"
 #include "predicates/rational_point.hpp"
 #include "reference/rt2/ffrt.hpp"
 #include "reference/rt2/rt2.hpp"
@@ -197,15 +198,8 @@ struct Geo {
     return (sorted ? 1 : -1) * pred::xp::lambda_exact_mixed<3>(r, true);
   }
 
-  // tri::orient: orient2d under SoS of three vertices, at most one of them v
-  // (cyclic rotations keep the sign; orient(a, b, v) := orient(b, a, s)).
-  FF_HD int orient(Index a, Index b, Index c) const {
-    if (a == n) {
-      a = b, b = c, c = n;
-    } else if (b == n) {
-      b = a, a = c, c = n;
-    }
-    if (c == n) return orient_kernel(b, a);
+  // orient2d under SoS of three real vertices
+  FF_HD int orient_real(Index a, Index b, Index c) const {
     return dev::orient2d(nullptr, id[a], P(a), id[b], P(b), id[c], P(c));
   }
 
@@ -217,18 +211,77 @@ struct Geo {
     const double ww[4] = {w[a], w[b], w[c], w[d]};
     return dev::power2d(nullptr, ids, p, ww);
   }
+};
 
-  // §2.2 local regularity of the edge a -> b with link c (left), d (right):
-  // tri::locally_regular.
-  FF_HD bool locally_regular(Index a, Index b, Index c, Index d) const {
-    if (c == n || d == n) return true;  // one virtual triangle
-    if (a == n || b == n) {             // two virtual triangles: F1 = pc, F2 = pd
-      const Index p = b == n ? a : b;
-      return orient(p, d, c) == orient_kernel(p, d);
-    }
-    return power(a, b, c, d) < 0;
+// ---- §6.4.2's two passes (kernels_cuda/two_pass.cuh) ----------------------------
+// The signs a decision asks for: orient_kernel(x, y), orient_real(a, b, c),
+// power(a, b, c, d) as Geo's. The first pass's (FastSigns) are filters only,
+// each a forward error bound on the double evaluation: the per-call
+// semi-static filter (static_filter.hpp) for orient2d and power2d of input
+// points, the ErrDouble filter on the kernel point's rounded value for
+// orient_kernel; 0 where a filter cannot decide. The second pass's
+// (ExactSigns) are Geo's whole staged path.
+struct FastSigns : dev::Undecided {
+  const Geo& g;
+  FF_HD explicit FastSigns(const Geo& geo) : g(geo) {}
+  FF_HD Index n() const { return g.n; }
+  FF_HD int orient_kernel(Index x, Index y) {
+    const double *px = g.P(x), *py = g.P(y);
+    const pred::ErrDouble rows[6] = {pred::ErrDouble(px[0]), pred::ErrDouble(px[1]), pred::ErrDouble(py[0]),
+                                     pred::ErrDouble(py[1]), g.kapprox[0], g.kapprox[1]};
+    return certain(pred::lambda_sign_filter_err<3>(rows));
+  }
+  FF_HD int orient_real(Index a, Index b, Index c) {
+    const double* p[3] = {g.P(a), g.P(b), g.P(c)};
+    return certain(pred::semi_static_sign<3>(p, nullptr));
+  }
+  FF_HD int power(Index a, Index b, Index c, Index d) {
+    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
+    const double ww[4] = {g.w[a], g.w[b], g.w[c], g.w[d]};
+    return certain(pred::semi_static_sign<4>(p, ww));
   }
 };
+struct ExactSigns {
+  const Geo& g;
+  static constexpr bool undecided = false;
+  FF_HD Index n() const { return g.n; }
+  FF_HD int orient_kernel(Index x, Index y) const { return g.orient_kernel(x, y); }
+  FF_HD int orient_real(Index a, Index b, Index c) const { return g.orient_real(a, b, c); }
+  FF_HD int power(Index a, Index b, Index c, Index d) const { return g.power(a, b, c, d); }
+};
+// The signs of a decision on Geo, for dev::Pass.
+struct OnGeo {
+  Geo g;
+  FF_HD FastSigns fast() const { return FastSigns(g); }
+  FF_HD ExactSigns exact() const { return ExactSigns{g}; }
+};
+
+// tri::orient: orient2d under SoS of three vertices, at most one of them v
+// (cyclic rotations keep the sign; orient(a, b, v) := orient(b, a, s)).
+template <class S>
+FF_HD int orient(S& sg, Index a, Index b, Index c) {
+  const Index n = sg.n();
+  if (a == n) {
+    a = b, b = c, c = n;
+  } else if (b == n) {
+    b = a, a = c, c = n;
+  }
+  if (c == n) return sg.orient_kernel(b, a);
+  return sg.orient_real(a, b, c);
+}
+
+// §2.2 local regularity of the edge a -> b with link c (left), d (right):
+// tri::locally_regular.
+template <class S>
+FF_HD bool locally_regular(S& sg, Index a, Index b, Index c, Index d) {
+  const Index n = sg.n();
+  if (c == n || d == n) return true;  // one virtual triangle
+  if (a == n || b == n) {             // two virtual triangles: F1 = pc, F2 = pd
+    const Index p = b == n ? a : b;
+    return orient(sg, p, d, c) == sg.orient_kernel(p, d);
+  }
+  return sg.power(a, b, c, d) < 0;
+}
 
 // ---- the triangulation --------------------------------------------------------
 struct Mesh {
@@ -341,41 +394,48 @@ struct Link13 {
 
 // After a round: the point's new triangle when its triangle changed in round
 // `epoch` (1-3, 2-2 or 3-1 flip), then §5.3's early discard when the new
-// triangle is real and proves the point redundant.
-struct Relocate {
-  Geo g;
+// triangle is real and proves the point redundant. In two passes over the
+// active list (two_pass.cuh): the result is the point's new loc, kNil when it
+// stays; a point the first pass cannot place keeps its loc (the second pass
+// reads it) and is marked in pending[i], which is 0 again after the second
+// pass (all of it is 0 between calls).
+struct Relocate : OnGeo {
   Mesh m;
+  const uint32_t* active;
   uint32_t* loc;
+  uint8_t* pending;
   uint32_t epoch;
-  FF_HD void operator()(uint32_t p) const {
+  template <class S>
+  FF_HD uint32_t decide(std::size_t i, S& sg) const {
+    const uint32_t p = active[i];
     uint32_t t = loc[p];
-    if (t >= kDiscarded || m.stamp[t] != epoch) return;  // discarded in an earlier flip round
+    if (t >= kDiscarded || m.stamp[t] != epoch) return kNil;  // discarded in an earlier flip round
     switch (m.kind[t]) {
       case kSplit: {  // ffrt.cpp insert_points: the rays r->a, r->b, r->c split the old triangle
         const uint32_t t1 = m.partner[t], t2 = t1 + 1;
         const Index a = m.tv[3 * t], b = m.tv[3 * t + 1], r = m.tv[3 * t + 2], c = m.tv[3 * t1 + 1];
-        if (r == p) {
-          loc[p] = kInserted;
-          return;
-        }
-        if (g.orient(r, b, p) < 0)
-          t = g.orient(r, a, p) > 0 ? t : t2;
+        if (r == p) return kInserted;
+        if (orient(sg, r, b, p) < 0)
+          t = orient(sg, r, a, p) > 0 ? t : t2;
         else
-          t = g.orient(r, c, p) < 0 ? t1 : t2;
+          t = orient(sg, r, c, p) < 0 ? t1 : t2;
         break;
       }
       case kPair:  // the new edge is 3t+1, from corner 2 to corner 0 of both
-        if (g.orient(m.tv[3 * t + 2], m.tv[3 * t], p) < 0) t = m.partner[t];
+        if (orient(sg, m.tv[3 * t + 2], m.tv[3 * t], p) < 0) t = m.partner[t];
         break;
       case kMerged: t = m.partner[t]; break;
       default: break;
     }
-    if (m.is_real(t) && g.power(m.tv[3 * t], m.tv[3 * t + 1], m.tv[3 * t + 2], p) < 0) {
-      loc[p] = kDiscarded;
-      return;
-    }
-    loc[p] = t;
+    if (m.is_real(t) && sg.power(m.tv[3 * t], m.tv[3 * t + 1], m.tv[3 * t + 2], p) < 0) return kDiscarded;
+    return t;
   }
+  FF_HD void write(std::size_t i, uint32_t r) const {
+    if (r != kNil) loc[active[i]] = r;
+    if (pending[i]) pending[i] = 0;
+  }
+  FF_HD void mark(std::size_t i) const { pending[i] = 1; }
+  FF_HD bool marked(std::size_t i) const { return pending[i] != 0; }
 };
 
 struct StillActive {
@@ -388,18 +448,24 @@ struct IsDiscarded {
 };
 
 // Initial location (§5.3): the triangle of the initial four containing p.
-struct LocateInitial {
-  Geo g;
+// In two passes over the active list (kNil in loc: the first pass's mark).
+struct LocateInitial : OnGeo {
   Mesh m;
+  const uint32_t* active;
   uint32_t* loc;
-  FF_HD void operator()(uint32_t p) const {
+  template <class S>
+  FF_HD uint32_t decide(std::size_t i, S& sg) const {
+    const uint32_t p = active[i];
     uint32_t t = 0;
     for (; t < 3; ++t) {
       const Index* x = m.tv + 3 * t;
-      if (g.orient(x[0], x[1], p) > 0 && g.orient(x[1], x[2], p) > 0 && g.orient(x[2], x[0], p) > 0) break;
+      if (orient(sg, x[0], x[1], p) > 0 && orient(sg, x[1], x[2], p) > 0 && orient(sg, x[2], x[0], p) > 0) break;
     }
-    loc[p] = t;  // the last one when none of the first three contains p
+    return t;  // the last one when none of the first three contains p
   }
+  FF_HD void write(std::size_t i, uint32_t t) const { loc[active[i]] = t; }
+  FF_HD void mark(std::size_t i) const { loc[active[i]] = kNil; }
+  FF_HD bool marked(std::size_t i) const { return loc[active[i]] == kNil; }
 };
 
 // ---- flip-flop rounds (Algorithm 5) ------------------------------------------------
@@ -413,16 +479,23 @@ struct MarkListed {
 // Lines 5-19 for candidate j = edge 3t+i of the listed triangle t = list[j/3]
 // (skipped when the twin's triangle is listed too and smaller: the edge is
 // checked once), the reference's decide(): the action in act[j], its vertex in
-// inner[j]; an action claims the triangles it would touch.
-struct Decide {
-  Geo g;
+// inner[j]; an action claims the triangles it would touch. In two passes
+// (two_pass.cuh; kUndecided in act[j]: the first pass's mark), the claims
+// made by the pass that decides.
+constexpr uint8_t kUndecided = 4;
+struct Decision {
+  uint8_t act;
+  uint32_t x;
+};
+struct Decide : OnGeo {
   Mesh m;
   const uint32_t* list;
   uint8_t* act;
   uint32_t* inner;
   uint32_t epoch;
 
-  FF_HD uint8_t decide(uint32_t t, int i, uint32_t& x_out) const {
+  template <class S>
+  FF_HD uint8_t decide_edge(S& sg, uint32_t t, int i, uint32_t& x_out) const {
     const uint32_t o = m.opp[3 * t + i], u = o / 3;
     if (m.in_list[u] == epoch && u < t) return kNone;
     const Index a = m.tv[3 * t + nx(i)], b = m.tv[3 * t + pv(i)], c = m.tv[3 * t + i], dd = m.tv[o];
@@ -433,46 +506,53 @@ struct Decide {
       if (q[k] != g.n && m.label[q[k]] && q[k] < x) x = q[k];
     // line 6: a 3-1 edge (tri::classify)
     Index inner31 = kNil;
-    if (m.deg[a] == 3 && g.orient(b, c, dd) > 0) inner31 = a;
+    if (m.deg[a] == 3 && orient(sg, b, c, dd) > 0) inner31 = a;
     int at_a = 2;
     if (inner31 == kNil && m.deg[b] == 3) {
-      at_a = g.orient(c, a, dd);
+      at_a = orient(sg, c, a, dd);
       if (at_a > 0) inner31 = b;
     }
     if (inner31 != kNil) {
       x_out = inner31;
-      if (m.label[inner31] || !g.locally_regular(a, b, c, dd)) return kFlip31;  // lines 7-9
+      if (m.label[inner31] || !locally_regular(sg, a, b, c, dd)) return kFlip31;  // lines 7-9
       return kNone;
     }
-    if (at_a == 2) at_a = g.orient(c, a, dd);
-    const int at_b = g.orient(dd, b, c);
+    if (at_a == 2) at_a = orient(sg, c, a, dd);
+    const int at_b = orient(sg, dd, b, c);
     if (at_a > 0 && at_b > 0) {  // line 11: a 2-2 flippable edge
-      if (x == kNil) return g.locally_regular(a, b, c, dd) ? kNone : kFlip22;  // lines 12-13
+      if (x == kNil) return locally_regular(sg, a, b, c, dd) ? kNone : kFlip22;  // lines 12-13
       return x == a || x == b ? kFlip22 : kNone;                                // lines 14-15
     }
     // lines 16-18: unflippable; the reflex corner lies in the triangle of the other three
     const Index r = at_a < 0 ? a : b;
-    if (!m.label[r] && !g.locally_regular(a, b, c, dd)) {
+    if (!m.label[r] && !locally_regular(sg, a, b, c, dd)) {
       x_out = r;
       return kLabel;
     }
     return kNone;
   }
 
-  FF_HD void operator()(uint32_t j) const {
+  template <class S>
+  FF_HD Decision decide(std::size_t j, S& sg) const {
+    const uint32_t t = list[j / 3];
+    Decision r{kNone, kNil};
+    if (m.alive[t]) r.act = decide_edge(sg, t, static_cast<int>(j % 3), r.x);
+    return r;
+  }
+  FF_HD void write(std::size_t j, const Decision& r) const {
+    act[j] = r.act;
+    inner[j] = r.x;
+    if (r.act == kNone) return;
     const uint32_t t = list[j / 3];
     const int i = static_cast<int>(j % 3);
-    uint32_t x = kNil;
-    const uint8_t a = m.alive[t] ? decide(t, i, x) : kNone;
-    act[j] = a;
-    inner[j] = x;
-    if (a == kNone) return;
-    const uint64_t key = claim_key(epoch, j);
+    const uint64_t key = claim_key(epoch, static_cast<uint32_t>(j));
     const uint32_t u = m.opp[3 * t + i] / 3;
     atomic_fetch_min(m.claim + t, key);
     atomic_fetch_min(m.claim + u, key);
-    if (a == kFlip31) atomic_fetch_min(m.claim + m.third(t, i, x), key);
+    if (r.act == kFlip31) atomic_fetch_min(m.claim + m.third(t, i, r.x), key);
   }
+  FF_HD void mark(std::size_t j) const { act[j] = kUndecided; }
+  FF_HD bool marked(std::size_t j) const { return act[j] == kUndecided; }
 };
 
 // The decided candidates of a round, as the later passes read them.
@@ -757,6 +837,13 @@ void for_range(std::size_t count, const F& f) {
   step(count, [&](auto policy) { thrust::for_each(policy, first, first + count, f); });
 }
 
+// f's two passes over [0, count) (two_pass.cuh)
+template <class F>
+void two_passes(std::size_t count, const F& f) {
+  for_range(count, dev::Pass<F, false>{f});
+  for_range(count, dev::Pass<F, true>{f});
+}
+
 template <class T>
 T read_one(backend::Buffer<T>& b, std::size_t i) {
   return static_cast<T>(b[i]);
@@ -769,7 +856,7 @@ struct Buffers {
   // triangle slots (cap) and half-edges (3 cap)
   backend::Buffer<Index> tv;
   backend::Buffer<uint32_t> opp, remap, stamp, partner, in_list, list, list2, inner, offset;
-  backend::Buffer<uint8_t> alive, kind, act;
+  backend::Buffer<uint8_t> alive, kind, act, pending;  // pending: per active point (Relocate)
   backend::Buffer<uint64_t> claim, best;
 };
 
@@ -794,7 +881,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
     B.xy_in.resize(2 * n), B.xy.resize(2 * n), B.w.resize(n);
     if (ps.weighted) B.w_in.resize(n);
     B.order.resize(n), B.rank.resize(n), B.keys.resize(n), B.deg.resize(n + 1), B.label.resize(n + 1);
-    B.loc.resize(n), B.active.resize(n), B.active2.resize(n), B.winners.resize(n);
+    B.loc.resize(n), B.active.resize(n), B.active2.resize(n), B.winners.resize(n), B.pending.resize(n);
     B.tv.resize(3 * cap), B.opp.resize(3 * cap), B.remap.resize(3 * cap);
     B.stamp.resize(cap), B.partner.resize(cap), B.in_list.resize(cap);
     B.list.resize(list_cap), B.list2.resize(list_cap), B.inner.resize(3 * cap), B.offset.resize(3 * cap + 1);
@@ -853,6 +940,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
     thrust::fill(policy, B.best.begin(), B.best.end(), ~uint64_t{0});
     thrust::fill(policy, B.deg.begin(), B.deg.end(), 0u);
     thrust::fill(policy, B.label.begin(), B.label.end(), 0u);
+    thrust::fill(policy, B.pending.begin(), B.pending.end(), uint8_t{0});
   });
   {
     // tri::make_initial: (a, b, c) and, for each edge p -> q, the virtual (q, p, v)
@@ -878,9 +966,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
       n_active = static_cast<std::size_t>(
           thrust::copy_if(policy, first, first + n, B.active.begin(), NotInitial{a0, b0, c0}) - B.active.begin());
     });
-    step(n_active, [&](auto policy) {
-      thrust::for_each(policy, B.active.begin(), B.active.begin() + n_active, LocateInitial{g, m, raw(B.loc)});
-    });
+    two_passes(n_active, LocateInitial{{g}, m, raw(B.active), raw(B.loc)});
   }
   uint32_t slots = 4;
   uint32_t epoch = 0;
@@ -896,7 +982,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
       step(listed, [&](auto policy) {
         thrust::for_each(policy, B.list.begin(), B.list.begin() + listed, MarkListed{raw(B.in_list), epoch});
       });
-      for_range(nc, Decide{g, m, raw(B.list), raw(B.act), raw(B.inner), epoch});
+      two_passes(nc, Decide{{g}, m, raw(B.list), raw(B.act), raw(B.inner), epoch});
       const Candidates cands{m, raw(B.list), raw(B.act), raw(B.inner), epoch};
       for_range(nc, Won{cands});
       for_range(nc, Apply{cands});
@@ -912,9 +998,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
       st.flips_2_2 += f22, st.flips_3_1 += f31, st.labelled_redundant += lab, st.candidates += nc;
       actions += checked;
       if (f22 + f31 > 0 && n_active > 0)
-        step(n_active, [&](auto policy) {
-          thrust::for_each(policy, B.active.begin(), B.active.begin() + n_active, Relocate{g, m, raw(B.loc), epoch});
-        });
+        two_passes(n_active, Relocate{{g}, m, raw(B.active), raw(B.loc), raw(B.pending), epoch});
       // the next list: counts, exclusive scan, writes, sort + unique
       std::size_t pushed = 0;
       step(nc, [&](auto policy) {
@@ -962,9 +1046,7 @@ inline std::vector<Triangle> run(const PointSet& ps, ref::Rt2Stats* stats, cpu::
     for_range(k, Link13{m, raw(B.list), epoch});
     slots += static_cast<uint32_t>(2 * k);
     st.flips_1_3 += k;
-    step(n_active, [&](auto policy) {
-      thrust::for_each(policy, B.active.begin(), B.active.begin() + n_active, Relocate{g, m, raw(B.loc), epoch});
-    });
+    two_passes(n_active, Relocate{{g}, m, raw(B.active), raw(B.loc), raw(B.pending), epoch});
     clock.mark("insertion rounds");
     flip_flop(3 * k);
     clock.mark("flip-flop");

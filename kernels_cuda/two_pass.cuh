@@ -1,0 +1,63 @@
+// two_pass.cuh — thesis §6.4.2's split of a kernel that may need exact
+// arithmetic into two passes, for the kernels of kernels_cuda/ (hull2, hull3).
+//
+// The thesis splits every GPU kernel that may need exact arithmetic in two:
+// the exact stage's code takes many registers and much local memory (here
+// the staged predicates' expansion buffers, 27-94 KB of stack frame per
+// thread, predicates/exact_expansion.hpp), which limits how many threads run
+// at once, so a first kernel does the fast arithmetic only and tests it with
+// precomputed error bounds, and a second, with only the threads that failed
+// active, does the exact work.
+//
+// A decision F of item i, in two passes over [0, n):
+//   F::decide(i, signs) -> R   the item's result, its predicates asked of
+//                              `signs`;
+//   F::fast(), F::exact()      the two kinds of signs: fast() a filter that
+//                              returns a sign only when it is certain and
+//                              otherwise 0 and sets its `undecided`; exact()
+//                              the whole staged path (undecided is false);
+//   F::write(i, r)             stores the result;
+//   F::mark(i), F::marked(i)   the first pass's mark on an item it could
+//                              not decide, and the second pass's test. The
+//                              mark lives in the result's own array, as a
+//                              value no result has; the first pass writes
+//                              nothing else for a marked item, so the second
+//                              reads the item's inputs as they were.
+// Both passes run the one decide(): every sign the fast pass uses is the
+// exact one, so a decided item's result is the one-pass result, and a marked
+// item gets exactly that result in the second pass.
+#pragma once
+
+#include <cstddef>
+
+#include "predicates/predicates.hpp"
+
+namespace flipflop::dev {
+
+// The fast signs' common part: a filter's result, 0 recorded as undecided.
+struct Undecided {
+  bool undecided = false;
+  FF_HD int certain(int r) {
+    undecided |= r == 0;
+    return r;
+  }
+};
+
+template <class F, bool kExact>
+struct Pass {
+  F f;
+  FF_HD void operator()(std::size_t i) const {
+    if constexpr (kExact) {
+      if (!f.marked(i)) return;
+      auto signs = f.exact();
+      f.write(i, f.decide(i, signs));
+    } else {
+      auto signs = f.fast();
+      const auto r = f.decide(i, signs);
+      if (signs.undecided) f.mark(i);
+      else f.write(i, r);
+    }
+  }
+};
+
+}  // namespace flipflop::dev
