@@ -1,9 +1,10 @@
 // two_pass.cuh — thesis §6.4.2's split of a kernel that may need exact
-// arithmetic into two passes, for the kernels of kernels_cuda/ (hull2, hull3).
+// arithmetic into two passes, for the kernels of kernels_cuda/ (hull2, hull3,
+// rt2).
 //
 // The thesis splits every GPU kernel that may need exact arithmetic in two:
 // the exact stage's code takes many registers and much local memory (here
-// the staged predicates' expansion buffers, 27-94 KB of stack frame per
+// the staged predicates' expansion buffers, 42-198 KB of stack frame per
 // thread, predicates/exact_expansion.hpp), which limits how many threads run
 // at once, so a first kernel does the fast arithmetic only and tests it with
 // precomputed error bounds, and a second, with only the threads that failed
@@ -20,7 +21,9 @@
 //   F::mark(i), F::marked(i)   the first pass's mark on an item it could
 //                              not decide, and the second pass's test. The
 //                              mark lives in the result's own array, as a
-//                              value no result has; the first pass writes
+//                              value no result has, or where the result
+//                              array is also an input (rt2's relocation) in
+//                              an array of its own; the first pass writes
 //                              nothing else for a marked item, so the second
 //                              reads the item's inputs as they were.
 // Both passes run the one decide(): every sign the fast pass uses is the

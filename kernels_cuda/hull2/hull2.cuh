@@ -246,18 +246,22 @@ struct XKey {
 };
 
 // ---- step 3: S_a ---------------------------------------------------------------
-// In two passes: out[k] = 1 when pts[k] is above v_l v_r, else 0.
-struct Above : OnOrient {
+// In two passes: out[k] = 1 when pts[k] is above v_l v_r (orient2d > 0,
+// never 0 for a point other than v_l and v_r), else 0; 2: the first pass's
+// mark. Step 3's S_a (char flags) and Algorithm 4's first edges (lines 4-6:
+// below v_l v_r edge 0, v_l -> v_r; above edge 1).
+template <class T>
+struct AboveLine : OnOrient {
   Index vl, vr;
   const Index* pts;
-  char* out;
+  T* out;
   template <class S>
-  FF_HD char decide(std::size_t k, S& sg) const {
+  FF_HD T decide(std::size_t k, S& sg) const {
     return sg.orient(vl, vr, pts[k]) > 0 ? 1 : 0;
   }
-  FF_HD void write(std::size_t k, char r) const { out[k] = r; }
-  FF_HD void mark(std::size_t k) const { out[k] = kUndecidedFlag; }
-  FF_HD bool marked(std::size_t k) const { return out[k] == kUndecidedFlag; }
+  FF_HD void write(std::size_t k, T r) const { out[k] = r; }
+  FF_HD void mark(std::size_t k) const { out[k] = 2; }
+  FF_HD bool marked(std::size_t k) const { return out[k] == 2; }
 };
 struct IsSet {
   FF_HD bool operator()(char c) const { return c != 0; }
@@ -340,20 +344,6 @@ struct WiderX {
 struct NotEnd {
   Index vl, vr;
   FF_HD bool operator()(Index i) const { return i != vl && i != vr; }
-};
-// lines 4-6: P = <v_l, v_r>; below v_l v_r: edge 0 (v_l -> v_r), above: edge 1.
-// In two passes: eid[k] for the point pts[k] (2: the first pass's mark).
-struct FirstEdge : OnOrient {
-  Index vl, vr;
-  const Index* pts;
-  Index* eid;
-  template <class S>
-  FF_HD Index decide(std::size_t k, S& sg) const {
-    return sg.orient(vl, vr, pts[k]) < 0 ? 0 : 1;
-  }
-  FF_HD void write(std::size_t k, Index r) const { eid[k] = r; }
-  FF_HD void mark(std::size_t k) const { eid[k] = 2; }
-  FF_HD bool marked(std::size_t k) const { return eid[k] == 2; }
 };
 // line 9: each edge's point to insert — the farthest from the edge's line by
 // the rounded cross product (any associated point keeps the polygon x-monotone
@@ -613,7 +603,7 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
     char* above = thrust::raw_pointer_cast(b_above.data());
     std::size_t nb = 0, na = 0;
     step(s, [&](auto policy) {
-      two_passes(policy, s > 2 ? s - 2 : 0, Above{{o}, vl, vr, surv + 1, above + 1});
+      two_passes(policy, s > 2 ? s - 2 : 0, AboveLine<char>{{o}, vl, vr, surv + 1, above + 1});
       nb = static_cast<std::size_t>(thrust::copy_if(policy, surv + 1, surv + s - 1, above + 1, P + 1, IsClear()) -
                                     (P + 1));
       using RevIdx = thrust::reverse_iterator<Index*>;
@@ -644,7 +634,7 @@ inline std::vector<Index> hull2_run(const PointSet& ps, const kernels::Hull2GpuO
     std::size_t live = 0;
     step(s, [&](auto policy) {  // lines 2-6
       live = static_cast<std::size_t>(thrust::copy_if(policy, surv, surv + s, pts2, NotEnd{vl, vr}) - pts2);
-      two_passes(policy, live, FirstEdge{{o}, vl, vr, pts2, eid});
+      two_passes(policy, live, AboveLine<Index>{{o}, vl, vr, pts2, eid});  // lines 4-6
     });
     std::swap(pts, pts2);
     b_poly[0] = vl;
