@@ -115,6 +115,8 @@ using std::uint8_t;
 constexpr uint32_t kNone = ~uint32_t{0};
 // OpenMP build: below this many items a step runs on one thread (backend.cuh).
 constexpr std::size_t kParallelFrom = std::size_t{1} << 12;
+// The flip-flop rounds issued between two waits of the host (Hull3::flip_flop).
+constexpr uint32_t kRoundsPerWait = 8;
 
 // The raw pointer to a buffer's elements (std::vector or device_vector).
 template <class V>
@@ -221,11 +223,12 @@ std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& 
 
 // ---- counts that stay on the device (the flip-flop rounds) ----------------------
 // A flip-flop round's operation count is needed by its own steps, and by the
-// host only to see whether the round did anything: on the device it stays in
-// device memory, written by the selection and read by the steps' threads, so
-// that the host waits once per round, after its last step, instead of after
-// the selection too. In the OpenMP build the steps have finished when the
-// next one starts, and the count is read directly.
+// host only to see whether the rounds have ended: on the device it stays in
+// device memory, written by the selection and read by the steps' threads, and
+// the rounds' state that depends on it (RoundState) is kept there too, so
+// that the host waits only once every few rounds (kRoundsPerWait). In the
+// OpenMP build the steps have finished when the next one starts, and the
+// count is read directly.
 
 // f(i) for i in [0, *count): *count was written by an earlier step and is at
 // most bound. On the device one thread per i < bound, each testing
@@ -281,13 +284,14 @@ void select_async(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& p
 #endif
 }
 
-// A count written by the device steps, on the host (a wait for them there).
-inline uint32_t read_count(const uint32_t* count) {
+// A value written by the device steps, on the host (a wait for them there).
+template <class T>
+T read_back(const T* value) {
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-  return *count;
+  return *value;
 #else
-  uint32_t h = 0;
-  const cudaError_t err = cudaMemcpy(&h, count, sizeof h, cudaMemcpyDeviceToHost);
+  T h{};
+  const cudaError_t err = cudaMemcpy(&h, value, sizeof h, cudaMemcpyDeviceToHost);
   if (err != cudaSuccess) throw thrust::system_error(err, thrust::cuda_category(), "hull3: reading a count");
   return h;
 #endif
@@ -665,10 +669,19 @@ struct IsSet {
 
 // ---- flip-flop (Algorithm 6) in parallel rounds -----------------------------------
 // A round (§6.4.1, "a checking kernel and a flipping kernel"):
-//  1. candidates: the edges (one directed half each, the one with the
-//     smaller tail) of triangles changed in the previous round, or incident
-//     to a vertex labelled in it (the Q of lines 9, 13, 15, 19 — a superset);
-//     the first round, and a last round that confirms the end, take all;
+//  1. candidates (IsCandidate): the edges (one directed half each, the one
+//     with the smaller tail) whose decision may differ from the previous
+//     round's, a superset of the Q of lines 9, 13, 15, 19: the decision of
+//     edge ab with triangles abc and bad reads those two triangles, the labels
+//     of a, b, c, d and the degrees of a and b, so the candidates are the
+//     edges with a triangle changed in the previous round, or with a, b, c or
+//     d labelled or of changed degree in it (Apply stamps those vertices), and
+//     the edges whose action of the previous round lost its claims. Any other
+//     edge decided "no action" last round and would again. The first round,
+//     and a last round that confirms the end, take all edges. (With the
+//     triangles' changes and the edges' own labels alone, the losers and the
+//     changes seen through c, d and the degrees waited for a round over all
+//     edges: 116 rounds with operations on 10^6 ball points instead of 68.)
 //  2. check (lines 5-19): decide() below, ff3::decide of
 //     reference/hull3/flip_flop_3d.cpp on the state at the start of the round;
 //  3. claim: a flip labels the triangles of its induced subcomplex T_e (2-2:
@@ -695,20 +708,54 @@ struct IsSet {
 // second pass replaces it before anything reads the actions.
 enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel, kUndecided };
 
+// What the host's loop over the rounds kept on the host when it waited for
+// every round's count; now in device memory, updated at the end of each round
+// (EndRound) from the round's operation count.
+struct RoundState {
+  uint32_t all;     // this round's candidates are all edges (line 2; after a round without operations)
+  uint32_t done;    // a round over all edges decided nothing: the end; the rounds after it do nothing
+  uint32_t rounds;  // the rounds with operations (Hull3Stats::rounds)
+};
+struct EndRound {
+  const uint32_t* n_ops;
+  RoundState* state;
+  FF_HD void operator()(std::size_t) const {
+    RoundState& s = *state;
+    if (s.done) return;
+    if (*n_ops == 0) {
+      if (s.all) s.done = 1;  // line 2's round found nothing: the end (Theorem 6.12)
+      s.all = 1;              // else: a round over all edges confirms it
+      return;
+    }
+    s.all = 0;
+    ++s.rounds;
+  }
+};
+
 struct IsCandidate {
   const Index* tv;
   const uint32_t* tn;
   const uint8_t* alive;
   const uint32_t* stamp_t;
   const uint32_t* stamp_v;
+  const uint8_t* action;  // the previous round's decisions (read by slot e's own thread only)
   uint32_t prev;  // the previous round
-  bool all;
+  const RoundState* state;  // written only by EndRound, between rounds
   FF_HD bool operator()(uint32_t e) const {
+    if (state->done) return false;  // a round issued after the end: no operations
     const uint32_t t = e / 3, k = e % 3;
     if (!alive[t]) return false;
     const Index u = tv[e], w = tv[3 * t + next3(k)];
     if (!(u < w)) return false;
-    return all || stamp_t[t] == prev || stamp_t[tn[e]] == prev || stamp_v[u] == prev || stamp_v[w] == prev;
+    if (state->all) return true;
+    // an action last round that lost its claims, or won (then its slot changed)
+    if (action[e] != kNoAction) return true;
+    const uint32_t t2 = tn[e];
+    if (stamp_t[t] == prev || stamp_t[t2] == prev || stamp_v[u] == prev || stamp_v[w] == prev) return true;
+    // the opposite vertices c, d: their labels are read (line 5)
+    uint32_t j = 0;
+    while (j < 2 && tv[3 * t2 + j] != w) ++j;
+    return stamp_v[tv[3 * t + prev3(k)]] == prev || stamp_v[tv[3 * t2 + prev3(j)]] == prev;
   }
 };
 
@@ -881,6 +928,8 @@ struct Apply {
   uint32_t* labelled;
   uint8_t* won;
   uint32_t round;
+  // a vertex whose label or degree changed this round (other flips may stamp it too)
+  FF_HD void stamp(Index v) const { Atomic<uint32_t>(stamp_v[v]).store(round, cuda::memory_order_relaxed); }
   FF_HD void operator()(std::size_t r) const {
     if (!won[r]) return;
     const uint32_t i = ops[r];
@@ -888,7 +937,7 @@ struct Apply {
     if (act == kLabel) {
       const Index x = tris.inner[i];
       won[r] = Atomic<uint32_t>(labelled[x]).exchange(1u, cuda::memory_order_relaxed) ? kOldLabel : kNewLabel;
-      Atomic<uint32_t>(stamp_v[x]).store(round, cuda::memory_order_relaxed);
+      stamp(x);
       return;
     }
     const Quad q = quad_of(tv, tn, i);
@@ -910,6 +959,7 @@ struct Apply {
       Atomic<uint32_t>(deg[q.b]).fetch_sub(1u, cuda::memory_order_relaxed);
       Atomic<uint32_t>(deg[q.c]).fetch_add(1u, cuda::memory_order_relaxed);
       Atomic<uint32_t>(deg[q.d]).fetch_add(1u, cuda::memory_order_relaxed);
+      for (const Index v : {q.a, q.b, q.c, q.d}) stamp(v);
       won[r] = kDid22;
       return;
     }
@@ -940,6 +990,7 @@ struct Apply {
     Atomic<uint32_t>(deg[u[0]]).fetch_sub(1u, cuda::memory_order_relaxed);
     Atomic<uint32_t>(deg[w[0]]).fetch_sub(1u, cuda::memory_order_relaxed);
     Atomic<uint32_t>(deg[w[s1]]).fetch_sub(1u, cuda::memory_order_relaxed);
+    for (const Index v : {u[0], w[0], w[s1]}) stamp(v);
     won[r] = kDid31;
   }
 };
@@ -1090,8 +1141,9 @@ struct Buffers {
   Scratch<uint32_t> ops, op_tri;
   Scratch<uint8_t> action, won;
   Scratch<Index> inner;
-  // a round's operation count; the operations by kind
+  // a round's operation count; the rounds' state; the operations by kind
   Scratch<uint32_t> counts;
+  Scratch<RoundState> state;
   Scratch<unsigned long long> op_counts;
 
   Buffers(std::size_t n, std::size_t max_tri) {
@@ -1107,7 +1159,7 @@ struct Buffers {
     const std::size_t max_edges = 3 * max_tri / 2;
     ops.resize(max_edges), op_tri.resize(3 * max_edges), won.resize(max_edges);
     action.resize(3 * max_tri), inner.resize(3 * max_tri);  // per edge slot
-    counts.resize(1), op_counts.resize(3);
+    counts.resize(1), state.resize(1), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
     fill_n(raw(best_key), max_tri, 0ull);
     fill_n(raw(best_id), max_tri, kNone);
@@ -1199,15 +1251,24 @@ class Hull3 {
     uint32_t* n_ops = raw(B_.counts);
     unsigned long long* op_counts = raw(B_.op_counts);
     fill_n(op_counts, 3, 0ull);
+    RoundState* state = raw(B_.state);
+    fill_n(state, 1, RoundState{1, 0, 0});  // line 2: every edge
     // a round's operations: at most one per edge (one directed half each),
     // 3T / 2 on the closed surface of T (or fewer live) slots
     const std::size_t E = 3 * T / 2;
     step("flip-flop: set-up");
-    bool all = true;  // line 2: every edge
+    // The host issues the rounds without waiting for them, and reads their
+    // state once every kRoundsPerWait rounds: a wait leaves the device idle
+    // for a round trip and the next launch (68 rounds on 10^7 ball points),
+    // while a round issued after the end costs its launches and one pass over
+    // the edge slots that writes "no action" (IsCandidate). The stamps still
+    // name every issued round, so a round's candidates are the ones it had
+    // when the host waited for every round.
     for (uint32_t round = 1;; ++round) {
       // steps 1-2 in one pass over the edge slots, then the edges with an action
       two_passes(3 * T, Decide{{g_}, tv, tn, raw(B_.deg), raw(B_.labelled),
-                               IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v), round - 1, all},
+                               IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v),
+                                           raw(B_.action), round - 1, state},
                                raw(B_.action), raw(B_.inner)});
       step("flip-flop: decision");
       select_async(B_.temp, 3 * T, ops, HasAction{raw(B_.action)}, n_ops);
@@ -1231,15 +1292,14 @@ class Hull3 {
                     ResetClaims{raw(B_.op_tri), raw(B_.claim)}},
                    CountOp{raw(B_.won), op_counts}});
       step("flip-flop: repair");
-      const std::size_t M = read_count(n_ops);  // the round's one wait of the host
-      step("flip-flop: operation count");
-      if (M == 0) {
-        if (all) break;  // a round over every edge decided nothing: the end
-        all = true;
-        continue;
+      for_n(1, EndRound{n_ops, state});
+      if (round % kRoundsPerWait != 0) continue;
+      const RoundState now = read_back(state);  // the host's one wait in kRoundsPerWait rounds
+      step("flip-flop: round state");
+      if (now.done) {
+        st_.rounds += now.rounds;
+        break;
       }
-      all = false;
-      ++st_.rounds;
     }
     unsigned long long c[3];
     thrust::copy(B_.op_counts.begin(), B_.op_counts.begin() + 3, c);
