@@ -143,7 +143,7 @@ void two_passes(Policy policy, std::size_t n, const F& f) {
   thrust::for_each(policy, k0, k0 + n, dev::Pass<F, false>{f});
   thrust::for_each(policy, k0, k0 + n, dev::Pass<F, true>{f});
 }
-constexpr char kUndecidedFlag = 2;  // a char flag's mark (0, 1: results)
+constexpr char kUndecidedFlag = 2;  // the mark of a 0/1 result (char flags; AboveLine's edge ids)
 
 // ---- step 1: the extreme points in 8 directions ------------------------------
 // Directions counter-clockwise from -x: 0 min x, 1 min x+y, 2 min y, 3 max x-y,
@@ -247,9 +247,9 @@ struct XKey {
 
 // ---- step 3: S_a ---------------------------------------------------------------
 // In two passes: out[k] = 1 when pts[k] is above v_l v_r (orient2d > 0,
-// never 0 for a point other than v_l and v_r), else 0; 2: the first pass's
-// mark. Step 3's S_a (char flags) and Algorithm 4's first edges (lines 4-6:
-// below v_l v_r edge 0, v_l -> v_r; above edge 1).
+// never 0 for a point other than v_l and v_r), else 0; kUndecidedFlag: the
+// first pass's mark. Step 3's S_a (char flags) and Algorithm 4's first edges
+// (lines 4-6: below v_l v_r edge 0, v_l -> v_r; above edge 1).
 template <class T>
 struct AboveLine : OnOrient {
   Index vl, vr;
@@ -260,8 +260,8 @@ struct AboveLine : OnOrient {
     return sg.orient(vl, vr, pts[k]) > 0 ? 1 : 0;
   }
   FF_HD void write(std::size_t k, T r) const { out[k] = r; }
-  FF_HD void mark(std::size_t k) const { out[k] = 2; }
-  FF_HD bool marked(std::size_t k) const { return out[k] == 2; }
+  FF_HD void mark(std::size_t k) const { out[k] = static_cast<T>(kUndecidedFlag); }
+  FF_HD bool marked(std::size_t k) const { return out[k] == static_cast<T>(kUndecidedFlag); }
 };
 struct IsSet {
   FF_HD bool operator()(char c) const { return c != 0; }

@@ -732,6 +732,24 @@ struct EndRound {
   }
 };
 
+// The edge e = 3t + k, a = tv[e] -> b: triangles t = (a, b, c) and
+// t2 = (b, a, d), the edge at position j of t2.
+struct Quad {
+  uint32_t t, k, t2, j;
+  Index a, b, c, d;
+};
+
+FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
+  Quad q;
+  q.t = e / 3, q.k = e % 3;
+  q.a = tv[e], q.b = tv[3 * q.t + next3(q.k)], q.c = tv[3 * q.t + prev3(q.k)];
+  q.t2 = tn[e];
+  q.j = 0;
+  while (q.j < 2 && tv[3 * q.t2 + q.j] != q.b) ++q.j;
+  q.d = tv[3 * q.t2 + prev3(q.j)];
+  return q;
+}
+
 struct IsCandidate {
   const Index* tv;
   const uint32_t* tn;
@@ -753,29 +771,10 @@ struct IsCandidate {
     const uint32_t t2 = tn[e];
     if (stamp_t[t] == prev || stamp_t[t2] == prev || stamp_v[u] == prev || stamp_v[w] == prev) return true;
     // the opposite vertices c, d: their labels are read (line 5)
-    uint32_t j = 0;
-    while (j < 2 && tv[3 * t2 + j] != w) ++j;
-    return stamp_v[tv[3 * t + prev3(k)]] == prev || stamp_v[tv[3 * t2 + prev3(j)]] == prev;
+    const Quad q = quad_of(tv, tn, e);
+    return stamp_v[q.c] == prev || stamp_v[q.d] == prev;
   }
 };
-
-// The edge e = 3t + k, a = tv[e] -> b: triangles t = (a, b, c) and
-// t2 = (b, a, d), the edge at position j of t2.
-struct Quad {
-  uint32_t t, k, t2, j;
-  Index a, b, c, d;
-};
-
-FF_HD inline Quad quad_of(const Index* tv, const uint32_t* tn, uint32_t e) {
-  Quad q;
-  q.t = e / 3, q.k = e % 3;
-  q.a = tv[e], q.b = tv[3 * q.t + next3(q.k)], q.c = tv[3 * q.t + prev3(q.k)];
-  q.t2 = tn[e];
-  q.j = 0;
-  while (q.j < 2 && tv[3 * q.t2 + q.j] != q.b) ++q.j;
-  q.d = tv[3 * q.t2 + prev3(q.j)];
-  return q;
-}
 
 // Lines 5-19 for the edge e: the action and the vertex it concerns
 // (ff3::decide, line by line), in action[e] and inner[e]; kNoAction for an
