@@ -28,6 +28,8 @@
 #include "kernels_cuda/hull2/hull2.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/family_sweep.hpp"
+#include "proptests/support/large_n.hpp"
+#include "proptests/support/omp_threads.hpp"
 #include "proptests/support/outcome.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/certify/certify.hpp"
@@ -125,6 +127,56 @@ TEST_CASE("hull2 cuda-omp: deterministic sweep over the families, sizes and opti
   INFO("cases " << cases << ", rejected " << rejected);
   REQUIRE(cases > 0);
   REQUIRE(rejected < cases);
+}
+
+// Every family above the 16384 items from which a step runs on several
+// threads (kParallelFrom): with the default options, and without the
+// throw-away in chunks of 3, so that the chunked passes and Algorithm 2's
+// atomic-minimum labels (lines 5-12) run over every point.
+TEST_CASE("hull2 cuda-omp: large inputs of every family equal the reference, certified", "[hull2_cuda_omp][long]") {
+  kernels::Hull2GpuOptions tiny;
+  tiny.throw_away = false;
+  tiny.chunk = 3;
+  for (const std::string& fam : test::families(2)) {
+    gen::Options g;
+    g.seed = 11;
+    g.thickness = 0.01;
+    const PointSet ps = gen::generate(fam, 100000, g);
+    INFO(fam);
+    for (Algo a : kAlgos) {
+      const std::string expect = ref_text(ps, a);
+      for (const kernels::Hull2GpuOptions& o : {kernels::Hull2GpuOptions{}, tiny}) {
+        ref::Hull2Stats st;
+        REQUIRE(omp_text(ps, o, &st, a) == expect);
+        if (!is_error(expect)) REQUIRE(st.polygon_vertices - st.flips_2_1 == st.hull_vertices);
+      }
+    }
+    if (!is_error(ref_text(ps)))
+      REQUIRE(certify::hull2(ps, kernels_omp::hull2_graham_sort(ps, {}), certify::Level::canonical).ok);
+  }
+}
+
+// 16 OpenMP threads, as on the many-core machines that run this build (CI
+// and the development VM have 2; see hull3_cuda_omp_test.cpp): more
+// boundaries between the threads' ranges, where Algorithm 2's labels of
+// neighbouring vertices meet. Without the throw-away in chunks of 3, so that
+// every pass runs over many points. Several runs in Release, one under
+// ThreadSanitizer (make tsan).
+TEST_CASE("hull2 cuda-omp: 16 OpenMP threads give the reference's output", "[hull2_cuda_omp]") {
+  kernels::Hull2GpuOptions tiny;
+  tiny.throw_away = false;
+  tiny.chunk = 3;
+  for (const char* fam : {"disk", "circle"}) {
+    gen::Options g;
+    g.seed = 5;
+    const PointSet ps = gen::generate(fam, test::large_n(100000, 40000), g);
+    INFO(fam);
+    for (Algo a : kAlgos) {
+      const std::string expect = ref_text(ps, a);
+      for (std::size_t run = 0; run < test::large_n(3, 1); ++run)
+        REQUIRE(test::with_omp_threads(16, [&] { return omp_text(ps, tiny, nullptr, a); }) == expect);
+    }
+  }
 }
 
 TEST_CASE("hull2 cuda-omp: input that does not span the plane is rejected with the reference's message",

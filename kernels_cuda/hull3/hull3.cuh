@@ -87,6 +87,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -142,6 +143,9 @@ void fill_n(T* p, std::size_t n, T value) {
 // reductions), allocated by thrust through this allocator: a freed block is
 // kept and handed out again, so the rounds reuse the first rounds' storage
 // instead of allocating (cudaMalloc / cudaFree on the device) every round.
+// Locked: thrust's OpenMP sort allocates its merges' temporary arrays from
+// inside its parallel region, one call per thread (ThreadSanitizer reported
+// the unlocked maps racing in the output's sort at 4 threads, make tsan).
 class TempStorage {
  public:
   using value_type = char;
@@ -153,6 +157,7 @@ class TempStorage {
     for (auto& [p, bytes] : used_) release(p);
   }
   char* allocate(std::ptrdiff_t bytes) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     char* p;
     const auto it = free_.lower_bound(bytes);
     if (it != free_.end()) {
@@ -175,6 +180,7 @@ class TempStorage {
     return p;
   }
   void deallocate(char* p, std::size_t) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const auto it = used_.find(p);
     free_.emplace(it->second, p);
     used_.erase(it);
@@ -188,6 +194,7 @@ class TempStorage {
     delete[] p;
 #endif
   }
+  std::mutex mutex_;
   std::multimap<std::ptrdiff_t, char*> free_;
   std::map<char*, std::ptrdiff_t> used_;
 };
