@@ -3,7 +3,7 @@
 #   make test   set up, build, run the whole test suite through ctest
 BUILD ?= build
 JOBS  ?= $(shell nproc)
-PKGS  := cmake g++ make clang libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
+PKGS  := cmake g++ make clang lld libomp-14-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev libtbb-dev \
          libqhull-dev qhull-bin catch2 librapidcheck-dev libcli11-dev python3-meshio python3-numpy \
          python3-venv python3-pip python3-scipy python3-pytest python3-hypothesis ccache
 
