@@ -15,4 +15,13 @@ int device_count() {
   return count;
 }
 
+std::size_t stack_limit() {
+  std::size_t bytes = 0;
+  if (cudaDeviceGetLimit(&bytes, cudaLimitStackSize) != cudaSuccess) {
+    cudaGetLastError();
+    return 0;
+  }
+  return bytes;
+}
+
 }  // namespace flipflop::kernels_cuda

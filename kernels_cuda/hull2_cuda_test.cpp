@@ -83,5 +83,6 @@ int main(int argc, char** argv) {
   std::printf("%s disk n=10^7 against the cpu kernel\n", same ? "ok  " : "FAIL");
   ok = same && ok;
   std::printf("%s %zu cases against the reference\n", ok ? "ok  " : "FAIL", cases);
+  kernels_cuda::report_stack_limit("after the kernels");
   return ok ? 0 : 1;
 }

@@ -71,5 +71,6 @@ int main() {
   flat.dim = 3;
   flat.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0};
   ok = check("coplanar (rejected)", flat) && ok;
+  kernels_cuda::report_stack_limit("after the kernels");
   return ok ? 0 : 1;
 }

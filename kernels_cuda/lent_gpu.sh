@@ -88,6 +88,7 @@ for t in ${LG_TESTS:-classify predicates hull2 rt2 hull3}; do
   e=$(( ($(date +%s%N) - s) / 1000000 ))
   step "${t}_cuda_test" "rc=$rc  $(grep -c '^ok' "$OUT/test_$t.log") ok, $(grep -c '^FAIL' "$OUT/test_$t.log") FAIL, $e ms"
   grep -m5 -E '^FAIL|rror|what\(\)' "$OUT/test_$t.log"
+  grep 'per-thread stack limit' "$OUT/test_$t.log" | sed 's/^/  /'
   # a program the device killed: its last announced case ("case FAMILY N ...")
   # again, alone, under memcheck, for the kernel and the fault
   last=$(grep '^case ' "$OUT/test_$t.log" | tail -1)

@@ -7,8 +7,8 @@
 //
 // One thread per call runs pred::lambda_sign_staged<K> (predicates/staged.hpp):
 // every stage, the exact one and SoS included, on the device. Stack: the exact
-// stage's buffers (exact_expansion.hpp, "Stack per call") are the kernel's
-// frame; on the device the XDbl minors are sums over permutations
+// stage's buffers (exact_expansion.hpp, "Stack per call": calls of their
+// own on the device, the deepest chain is the thread's stack); on the device the XDbl minors are sums over permutations
 // (xp::MinorX), on the host (OpenMP build) Laplace levels (xp::MinorLaplace):
 // the two builds run the same code otherwise.
 #pragma once

@@ -73,5 +73,6 @@ int main() {
   line.coords = {0, 0, 1, 1, 2, 2, 3, 3, -1, -1};
   const std::string rejected = cuda_text(line);
   ok = report("collinear input rejected like the reference", test::is_error(rejected) && rejected == test::ref_text(line)) && ok;
+  kernels_cuda::report_stack_limit("after the kernels");
   return ok ? 0 : 1;
 }

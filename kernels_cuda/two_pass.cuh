@@ -4,8 +4,10 @@
 //
 // The thesis splits every GPU kernel that may need exact arithmetic in two:
 // the exact stage's code takes many registers and much local memory (here
-// the staged predicates' expansion buffers, 42-198 KB of stack frame per
-// thread, predicates/exact_expansion.hpp), which limits how many threads run
+// the staged predicates' expansion buffers: 25-34 KB of stack per thread
+// along the deepest chain of calls of a kernel, 42-198 KB before each
+// expansion stage became a call of its own; predicates/exact_expansion.hpp,
+// "Stack per call"), which limits how many threads run
 // at once, so a first kernel does the fast arithmetic only and tests it with
 // precomputed error bounds, and a second, with only the threads that failed
 // active, does the exact work.

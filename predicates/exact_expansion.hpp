@@ -43,18 +43,27 @@
 // are at most (2098 D + 23)/52 + 2: cap_x(D), D <= K + 1 for a K x K minor.
 //
 // Stack per call (bytes, the buffers below; K = number of rows):
-//   Λ entries: K^2 entries of entry_cap (Dbl 28 x 8 B, XDbl 50 x 16 B; K = 5:
-//   5.6 KB / 20 KB). Laplace minors: 2 levels of C(K, K/2) expansions of
-//   minor_cap components — Dbl (44 x 8 B): K = 4 4.3 KB, K = 5 7.1 KB, K = 8
-//   50 KB; XDbl on the host (cap_x(K+1) x 16 B): K = 4 39 KB, K = 5 78 KB,
-//   K = 8 820 KB (inside the 4 MB of a TBB or OpenMP worker; only inputs
-//   outside the double window get there). XDbl on the device, permutations:
-//   about 11 cap_x(K+1) x 16 B (K = 5: 43 KB). The SoS memo: 2^(2K-1) bytes
-//   (K = 5: 512 B, K = 8: 32 KB). Measured kernel frames (ptxas, sm_90, one
-//   thread running lambda_sign_staged<K>, kernels_cuda/predicates_device.cuh):
-//   K = 3 42 KB, K = 4 82 KB, K = 5 107 KB — the driver raises the per-thread
-//   stack limit at launch; a kernel should run the exact stage as a separate
-//   pass over the few undecided calls (thesis §6.4.2), as classify.cuh does.
+//   Λ entries: K^2 entries of raw_entry_cap (K <= 5: 8 components; Dbl 8 B,
+//   XDbl 16 B: 1.6 KB / 3.2 KB at K = 5); T of K + 1 points, K^2 entries of
+//   entry_cap (8K - 6, Dbl at most 28: K = 4 3.6 KB / 6.7 KB). Laplace minors:
+//   2 levels of C(K, K/2) expansions of minor_cap components — Dbl (44 x 8 B):
+//   K = 4 4.3 KB, K = 5 7.1 KB, K = 8 50 KB; XDbl on the host
+//   (cap_x(K+1) x 16 B): K = 4 39 KB, K = 5 78 KB, K = 8 820 KB (inside the
+//   4 MB of a TBB or OpenMP worker; only inputs outside the double window get
+//   there). XDbl on the device, permutations (MinorX): 7 cap_x(K+1) x 16 B
+//   (K = 5: 27 KB). The SoS memo: 2^(2K-1) bytes (K = 5: 512 B, K = 8: 32 KB).
+//   On the device each expansion stage is a call of its own
+//   (FF_DEVICE_NOINLINE: det_translated, sos_expansions, pulled_expansions,
+//   mixed_expansions, the minors), so a thread's stack is the deepest chain
+//   of calls, not the sum of every branch's buffers: the device compiler
+//   gives every local array of a function its own slot. Measured (PTX local
+//   depots along the deepest call chain, sm_90, one thread per call of
+//   lambda_exact_sorted<K>): K = 3 25 KB, K = 4 32 KB, K = 5 40 KB, against
+//   42, 91 and 122 KB with the stages inlined into one frame, 11-cap
+//   permutation buffers and 50-component entries. The driver raises the
+//   per-thread stack limit at launch to the deepest chain, and reserves it
+//   for every thread the device can hold; a kernel runs the exact stage as a
+//   separate pass over the few undecided calls (thesis §6.4.2, two_pass.cuh).
 #pragma once
 
 #include <cstddef>
@@ -74,17 +83,24 @@ namespace flipflop::pred::xp {
 
 constexpr int kCapD = 44;
 FF_HD constexpr int cap_x(int k) { return (2098 * k + 23) / 52 + 3; }
-// Components of one Λ or T entry (K <= 8). Without compression an entry has
+// Components of one entry of a k x k matrix: Λ of k points (raw) or T of
+// k + 1 points (translated), K <= 8 points. Without compression an entry has
 // at most as many components as the terms it sums (sum_zeroelim and compress
-// never lengthen): raw lifted |x|^2 - w <= 2(K-2) + 1 = 13, centroid sum <= 8,
-// translated lifted |d|^2 - (w_i - w_k) <= 8(K-2) + 2 = 50 (each d_j^2 of a
-// two-component difference <= 8). Dbl compresses to the window's length bound
-// (expansion.hpp): values below 2^(2(E+ + 1) + 3), grid 2^(2 L-), D >= 4 for a
-// lifted entry: (1900/4 + 3 + 2148/4)/52 + 2 < 22 <= 28. XDbl has no window:
-// the term count, 50.
+// never lengthen): raw coordinates and the 1-column 1, lifted |x|^2 - w
+// <= 2(k-2) + 1 (13 at k = 8), centroid sum <= 8 (RationalPoint: at most 8
+// points); translated differences <= 2, lifted |d|^2 - (w_i - w_k)
+// <= 8(k-1) + 2 (each d_j^2 of a two-component difference <= 8; 50 at k = 7).
+// Dbl compresses to the window's length bound (expansion.hpp): values below
+// 2^(2(E+ + 1) + 3), grid 2^(2 L-), D >= 4 for a lifted entry:
+// (1900/4 + 3 + 2148/4)/52 + 2 < 22 <= 28. XDbl has no window: the term count.
+// entry_cap bounds both kinds (LambdaX's default), raw_entry_cap the raw Λ.
 template <class A>
-FF_HD constexpr int entry_cap() {
-  return A::kExtended ? 50 : 28;
+FF_HD constexpr int entry_cap(int k) {
+  return A::kExtended || 8 * k - 6 < 28 ? 8 * k - 6 : 28;
+}
+template <class A>
+FF_HD constexpr int raw_entry_cap(int k) {
+  return 2 * k - 3 > 8 ? 2 * k - 3 : 8;
 }
 
 FF_HD inline int ctz64(std::uint64_t x) {
@@ -160,14 +176,18 @@ FF_HD inline int non_finite_input() {
 #endif
 }
 
-// One entry of Λ: a short expansion.
-template <class A>
+// One entry of Λ: a short expansion of at most Cap components.
+template <class A, int Cap>
 struct Entry {
   using T = typename A::T;
-  static constexpr int kCap = entry_cap<A>();
+  static constexpr int kCap = Cap;
   int n = 1;
   T c[kCap];
-  FF_HD Entry() { c[0] = A::zero(); }
+  // every component set: GCC cannot see that only c[0, n) is read (it warned,
+  // maybe-uninitialized, once the caps became small enough to unroll)
+  FF_HD Entry() {
+    for (int i = 0; i < kCap; ++i) c[i] = A::zero();
+  }
   FF_HD void set(double v) {
     n = 1;
     c[0] = A::from_double(v);
@@ -176,10 +196,10 @@ struct Entry {
 };
 
 // Exact lifted height |x|^2 - w of m coordinates.
-template <class A>
-FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A>& out) {
+template <class A, int C>
+FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A, C>& out) {
   using T = typename A::T;
-  T buf[entry_cap<A>()], tmp[entry_cap<A>()];
+  T buf[C], tmp[C];
   int len = 1;
   buf[0] = A::neg(A::from_double(w));
   for (int j = 0; j < m; ++j) {
@@ -197,10 +217,10 @@ FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A>& out) 
 }
 
 // Exact sum of `count` doubles (a centroid row scaled by count).
-template <class A>
-FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A>& out) {
+template <class A, int C>
+FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A, C>& out) {
   using T = typename A::T;
-  T buf[entry_cap<A>()], tmp[entry_cap<A>()];
+  T buf[C], tmp[C];
   int len = 1;
   buf[0] = A::from_double(v[0]);
   for (int i = 1; i < count; ++i) {
@@ -213,11 +233,14 @@ FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A>& ou
   for (int i = 0; i < len; ++i) out.c[i] = buf[i];
 }
 
-// Λ of K rows as expansions.
-template <class A, int K>
+// Λ (or T) of K rows as expansions; RawLambda: a Λ of K points (build_lambda,
+// build_lambda_mixed), whose entries are shorter.
+template <class A, int K, int Cap = entry_cap<A>(K)>
 struct LambdaX {
-  Entry<A> a[K][K];
+  Entry<A, Cap> a[K][K];
 };
+template <class A, int K>
+using RawLambda = LambdaX<A, K, raw_entry_cap<A>(K)>;
 
 // binomial(n, r), compile time only (buffer sizes)
 constexpr int binom(int n, int r) {
@@ -228,8 +251,8 @@ constexpr int binom(int n, int r) {
 // length (<= cap: compressed when longer, which the length bound of
 // expansion.hpp makes at most cap). `scaled` holds 2 cap, `part` and `sum`
 // 3 cap components.
-template <class A>
-FF_HD inline int add_product(int cap, int n, typename A::T* acc, const Entry<A>& entry, int mlen,
+template <class A, int C>
+FF_HD inline int add_product(int cap, int n, typename A::T* acc, const Entry<A, C>& entry, int mlen,
                              const typename A::T* m, bool negative, typename A::T* scaled,
                              typename A::T* part, typename A::T* sum) {
   using T = typename A::T;
@@ -301,8 +324,10 @@ struct MinorLaplace {
   using T = typename A::T;
   using E = Exp<A, kCap>;
 
-  // sign of the minor of L on the kept rows / columns (bit masks, equal popcount)
-  FF_HD static int sign(const LambdaX<A, K>& L, unsigned rows, unsigned cols) {
+  // sign of the minor of L on the kept rows / columns (bit masks, equal
+  // popcount); a call of its own on the device (see sos_expansions)
+  template <int C>
+  FF_HD FF_DEVICE_NOINLINE static int sign(const LambdaX<A, K, C>& L, unsigned rows, unsigned cols) {
     const Kept<K> kept(rows, cols);
     const int* ri = kept.ri;
     const int* ci = kept.ci;
@@ -316,7 +341,7 @@ struct MinorLaplace {
     for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
     // level 1: row ri[0], single columns
     for (int j = 0; j < r; ++j) {
-      const Entry<A>& e = L.a[ri[0]][ci[j]];
+      const auto& e = L.a[ri[0]][ci[j]];
       E& d = lev[1][rank[1u << j]];
       d.n = e.n;
       for (int t = 0; t < e.n; ++t) d.c[t] = e.c[t];
@@ -334,7 +359,7 @@ struct MinorLaplace {
         for (int j = 0; j < r; ++j) {
           if (!(s & (1u << j))) continue;
           const E& sub = prev[rank[s & ~(1u << j)]];
-          const Entry<A>& e = L.a[ri[l - 1]][ci[j]];
+          const auto& e = L.a[ri[l - 1]][ci[j]];
           const bool negative = ((l - 1 + pos) & 1) != 0;  // (-1)^((l-1) + pos)
           ++pos;
           if (sub.zero() || e.zero()) continue;
@@ -347,6 +372,14 @@ struct MinorLaplace {
 };
 
 // ---- XDbl: minors as sums over permutations (little memory) ------------------
+// Each term Π_t a[ri[t]][ci[perm[t]]] is built in place, one entry at a time
+// (term x entry: a scale per component of the entry, summed), every
+// intermediate compressed as soon as it exceeds kCap — valid by the length
+// bound of expansion.hpp, every one of them (a partial sum of a product of
+// entries, degree <= K + 1) being on the grid and below the bound of the top of
+// this file. Buffers: acc, term and part kCap, scaled and sum 2 kCap: 7 kCap
+// components of 16 bytes (K = 5: 27 KB; 11 kCap, 43 KB, with add_product's
+// 3 kCap buffers).
 template <int K>
 struct MinorX {
   // degree of a K x K minor in the input values: at most K + 1 (a lifted
@@ -354,13 +387,40 @@ struct MinorX {
   static constexpr int kCap = cap_x(K + 1);
   using T = XD;
 
-  FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
+  // term (tlen <= kCap components) *= e; returns the new length (<= kCap)
+  template <int C>
+  FF_HD static int times_entry(int tlen, T* term, const Entry<XDbl, C>& e, T* scaled, T* part, T* sum) {
+    if (e.n == 1 && XDbl::is_one(e.c[0])) return tlen;  // the 1-column
+    int plen = 0;
+    for (int c = 0; c < e.n; ++c) {
+      if (XDbl::is_zero(e.c[c])) continue;
+      int sl = scale_zeroelim<XDbl>(tlen, term, e.c[c], scaled);
+      if (sl > kCap) sl = compress<XDbl>(sl, scaled);
+      if (plen == 0) {
+        for (int q = 0; q < sl; ++q) part[q] = scaled[q];
+        plen = sl;
+        continue;
+      }
+      plen = sum_zeroelim<XDbl>(plen, part, sl, scaled, sum);
+      if (plen > kCap) plen = compress<XDbl>(plen, sum);
+      for (int q = 0; q < plen; ++q) part[q] = sum[q];
+    }
+    if (plen == 0) {  // e = 0 (the caller skips zero entries)
+      term[0] = XDbl::zero();
+      return 1;
+    }
+    for (int q = 0; q < plen; ++q) term[q] = part[q];
+    return plen;
+  }
+
+  template <int C>
+  FF_HD FF_DEVICE_NOINLINE static int sign(const LambdaX<XDbl, K, C>& L, unsigned rows, unsigned cols) {
     const Kept<K> kept(rows, cols);
     const int* ri = kept.ri;
     const int* ci = kept.ci;
     const int r = kept.r;
     if (r == 0) return 1;
-    T acc[kCap], term[kCap], scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
+    T acc[kCap], term[kCap], scaled[2 * kCap], part[kCap], sum[2 * kCap];
     int alen = 1;
     acc[0] = XDbl::zero();
     // Heap's algorithm, iterative: every permutation once, one swap apart.
@@ -372,18 +432,11 @@ struct MinorX {
       bool zero = false;
       for (int t = 0; t < r && !zero; ++t) zero = L.a[ri[t]][ci[perm[t]]].zero();
       if (!zero) {
-        const Entry<XDbl>& e0 = L.a[ri[0]][ci[perm[0]]];
+        const auto& e0 = L.a[ri[0]][ci[perm[0]]];
         int tlen = e0.n;
         for (int t = 0; t < tlen; ++t) term[t] = e0.c[t];
-        for (int t = 1; t < r; ++t) {
-          T prod[kCap];
-          int plen = 1;
-          prod[0] = XDbl::zero();
-          plen = add_product<XDbl>(kCap, plen, prod, L.a[ri[t]][ci[perm[t]]], tlen, term, false,
-                                   scaled, part, sum);
-          for (int q = 0; q < plen; ++q) term[q] = prod[q];
-          tlen = plen;
-        }
+        for (int t = 1; t < r; ++t)
+          tlen = times_entry(tlen, term, L.a[ri[t]][ci[perm[t]]], scaled, part, sum);
         // acc += parity * term
         if (parity < 0)
           for (int q = 0; q < tlen; ++q) term[q] = XDbl::neg(term[q]);
@@ -416,8 +469,8 @@ struct MinorX {
 
 // Which minor algorithm: Laplace levels, except XDbl on the device, where the
 // levels' stack (2 C(K, K/2) cap_x(K+1) x 16 bytes: 78 KB at K = 5) would
-// dominate the kernel's frame and the sum over permutations needs about
-// 11 cap_x(K+1) x 16 bytes (43 KB at K = 5). FF_XDBL_PERMUTATIONS selects the
+// dominate the kernel's frame and the sum over permutations needs
+// 7 cap_x(K+1) x 16 bytes (27 KB at K = 5). FF_XDBL_PERMUTATIONS selects the
 // device choice on the host (whole program only: it changes an inline
 // definition); predicates_stages_test compares both algorithms directly.
 #if defined(__CUDA_ARCH__) || defined(FF_XDBL_PERMUTATIONS)
@@ -429,7 +482,8 @@ template <class A, int K>
 struct MinorOf : MinorLaplace<A, K> {};
 template <int K>
 struct MinorOf<XDbl, K> {
-  FF_HD static int sign(const LambdaX<XDbl, K>& L, unsigned rows, unsigned cols) {
+  template <int C>
+  FF_HD static int sign(const LambdaX<XDbl, K, C>& L, unsigned rows, unsigned cols) {
     if constexpr (kXdblPermutations) return MinorX<K>::sign(L, rows, cols);
     else return MinorLaplace<XDbl, K>::sign(L, rows, cols);
   }
@@ -444,8 +498,8 @@ struct MinorOf<XDbl, K> {
 // matchings is written with an explicit stack (no recursion); minor signs are
 // memoised (a minor recurs under many matchings).
 // An ErrDouble view of an entry (its components summed with a proven bound).
-template <class A>
-FF_HD inline ErrDouble approx_entry(const Entry<A>& e) {
+template <class A, int C>
+FF_HD inline ErrDouble approx_entry(const Entry<A, C>& e) {
   if constexpr (A::kExtended) {
     ErrDouble acc(0.0);
     for (int i = 0; i < e.n; ++i) {
@@ -488,8 +542,8 @@ FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsig
 // Cheap decisions on a minor before the exact evaluation: 0 when two kept
 // rows are equal or a kept column is zero (duplicated points, lattices), the
 // ErrDouble filter's sign when it is certain; 2 when undecided.
-template <class A, int K>
-FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsigned rows,
+template <class A, int K, int C>
+FF_HD inline int minor_quick(const LambdaX<A, K, C>& L, const ErrDouble* ap, unsigned rows,
                              unsigned cols) {
   const Kept<K> kept(rows, cols);
   const int* ri = kept.ri;
@@ -505,8 +559,8 @@ FF_HD inline int minor_quick(const LambdaX<A, K>& L, const ErrDouble* ap, unsign
     for (int b = 0; b < a; ++b) {
       bool same = true;
       for (int j = 0; j < r && same; ++j) {
-        const Entry<A>& x = L.a[ri[a]][ci[j]];
-        const Entry<A>& y = L.a[ri[b]][ci[j]];
+        const auto& x = L.a[ri[a]][ci[j]];
+        const auto& y = L.a[ri[b]][ci[j]];
         same = x.n == y.n;
         for (int t = 0; t < x.n && same; ++t) same = !A::abs_less(x.c[t], y.c[t]) &&
                                                     !A::abs_less(y.c[t], x.c[t]) &&
@@ -604,8 +658,8 @@ FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn, MinorQFn&& min
 
 // SoS sign on Λ as expansions: every minor decided by minor_quick, else
 // exactly by MinorOf (det_is_zero: the caller has found det Λ = 0).
-template <class A, int K>
-FF_HD inline int sos_sign(const LambdaX<A, K>& L, bool det_is_zero = false) {
+template <class A, int K, int C>
+FF_HD inline int sos_sign(const LambdaX<A, K, C>& L, bool det_is_zero = false) {
   ErrDouble ap[K * K];
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) ap[i * K + j] = approx_entry<A>(L.a[i][j]);
@@ -617,8 +671,8 @@ FF_HD inline int sos_sign(const LambdaX<A, K>& L, bool det_is_zero = false) {
 
 // The pulled perturbation (sos_search, Pulled) on L, with Lq the same Λ with
 // zero weights (its height column |x|^2).
-template <class A, int K>
-FF_HD inline int sos_sign_pulled(const LambdaX<A, K>& L, const LambdaX<A, K>& Lq) {
+template <class A, int K, int C>
+FF_HD inline int sos_sign_pulled(const LambdaX<A, K, C>& L, const LambdaX<A, K, C>& Lq) {
   ErrDouble ap[K * K], aq[K * K];
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) {
@@ -750,8 +804,8 @@ FF_HD inline int sos_sign_doubles(const double* const* p, const double* w) {
   return sos_sign_doubles<K>(p, w, range);
 }
 
-template <class A, int K>
-FF_HD inline int det_or_sos(const LambdaX<A, K>& L, bool sos) {
+template <class A, int K, int C>
+FF_HD inline int det_or_sos(const LambdaX<A, K, C>& L, bool sos) {
   constexpr unsigned kAll = (1u << K) - 1u;
   const int s = MinorOf<A, K>::sign(L, kAll, kAll);
   if (s != 0 || !sos) return s;
@@ -760,8 +814,8 @@ FF_HD inline int det_or_sos(const LambdaX<A, K>& L, bool sos) {
 
 // Λ of K points: p[i] coordinates, w weights (lifted: K-2 coordinates and the
 // height) or null (K-1 coordinates).
-template <class A, int K>
-FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<A, K>& L) {
+template <class A, int K, int C>
+FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<A, K, C>& L) {
   const int ncoord = w ? K - 2 : K - 1;
   for (int i = 0; i < K; ++i) {
     for (int j = 0; j < ncoord; ++j) L.a[i][j].set(p[i][j]);
@@ -770,23 +824,37 @@ FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<
   }
 }
 
+// The expansion stages' entry points, one function each, Dbl and XDbl apart.
+// On the device (FF_DEVICE_NOINLINE) each is a call with its own frame, so a
+// thread's stack is the deepest of them, not their sum: the device compiler
+// does not share stack between a function's branches (ptxas, sm_90: the frame
+// of one thread running lambda_exact<5> was 122 KB, the Dbl and XDbl buffers
+// side by side; "Stack per call" at the top of this file has the sizes now).
+//
+// SoS of K points (rows sorted by index) on Λ as expansions, det Λ = 0.
+template <class A, int K>
+FF_HD FF_DEVICE_NOINLINE int sos_expansions(const double* const* p, const double* w) {
+  RawLambda<A, K> L;
+  build_lambda<A, K>(p, w, L);
+  return sos_sign<A, K>(L, true);
+}
+
 // det Λ = det T, T the (K-1) x (K-1) matrix of exact differences
 // t_ij = p_i[j] - p_{K-1}[j] (two_sum: one or two components); a lifted column
 // holds |p_i - p_{K-1}|^2 - (w_i - w_{K-1}), exactly (lambda_filter.hpp: the
 // dropped term 2 p_{K-1}.(p_i - p_{K-1}) is the same combination of the other
 // columns in every row). Fewer levels and smaller entries than Λ itself.
-template <class A, int K>
-FF_HD inline void build_translated(const double* const* p, const double* w, LambdaX<A, K - 1>& T) {
+template <class A, int K, int C>
+FF_HD inline void build_translated(const double* const* p, const double* w, LambdaX<A, K - 1, C>& T) {
   using V = typename A::T;
   constexpr int N = K - 1;
   const int ncoord = w ? K - 2 : K - 1;
   const double* base = p[K - 1];
   for (int i = 0; i < N; ++i) {
-    Entry<A> lift;
     for (int j = 0; j < ncoord; ++j) {
       V hi, lo;
       A::two_sum(A::from_double(p[i][j]), A::neg(A::from_double(base[j])), hi, lo);
-      Entry<A>& e = T.a[i][j];
+      auto& e = T.a[i][j];
       if (A::is_zero(lo)) {
         e.n = 1;
         e.c[0] = hi;
@@ -798,7 +866,7 @@ FF_HD inline void build_translated(const double* const* p, const double* w, Lamb
     }
     if (w) {
       // |d|^2 - (w_i - w_k): products of the difference expansions, then the weights
-      V buf[entry_cap<A>() + 8], tmp[entry_cap<A>() + 8], sq[8], wd[2];
+      V buf[C + 8], tmp[C + 8], sq[8], wd[2];
       int len = 0;
       A::two_sum(A::from_double(w[i]), A::neg(A::from_double(w[K - 1])), wd[1], wd[0]);
       wd[0] = A::neg(wd[0]);
@@ -812,7 +880,7 @@ FF_HD inline void build_translated(const double* const* p, const double* w, Lamb
         len = 2;
       }
       for (int j = 0; j < ncoord; ++j) {
-        const Entry<A>& d = T.a[i][j];
+        const auto& d = T.a[i][j];
         // d^2 = Σ_c d_c d (a scale per component, summed)
         int slen = 0;
         for (int c = 0; c < d.n; ++c) {
@@ -832,7 +900,7 @@ FF_HD inline void build_translated(const double* const* p, const double* w, Lamb
         len = compress<A>(len, tmp);
         for (int q = 0; q < len; ++q) buf[q] = tmp[q];
       }
-      Entry<A>& e = T.a[i][N - 1];
+      auto& e = T.a[i][N - 1];
       e.n = len;
       for (int q = 0; q < len; ++q) e.c[q] = buf[q];
     }
@@ -840,7 +908,7 @@ FF_HD inline void build_translated(const double* const* p, const double* w, Lamb
 }
 
 template <class A, int K>
-FF_HD inline int det_translated(const double* const* p, const double* w) {
+FF_HD FF_DEVICE_NOINLINE int det_translated(const double* const* p, const double* w) {
   LambdaX<A, K - 1> T;
   build_translated<A, K>(p, w, T);
   constexpr unsigned kAll = (1u << (K - 1)) - 1u;
@@ -1097,15 +1165,22 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
     // only when one of them is undecided there
     s = sos_sign_doubles<K>(p, w, range);
     if (s != 2) return s;
-    LambdaX<Dbl, K> L;
-    build_lambda<Dbl, K>(p, w, L);
-    return sos_sign<Dbl, K>(L, true);
+    return sos_expansions<Dbl, K>(p, w);
   }
   const int s = det_translated<XDbl, K>(p, w);
   if (s != 0 || !sos) return s;
-  LambdaX<XDbl, K> L;
-  build_lambda<XDbl, K>(p, w, L);
-  return sos_sign<XDbl, K>(L, true);
+  return sos_expansions<XDbl, K>(p, w);
+}
+
+// lambda_pulled_sos's expansion stage on A (one call each on the device, as
+// sos_expansions).
+template <class A, int K>
+FF_HD FF_DEVICE_NOINLINE int pulled_expansions(const double* const* p, const double* w) {
+  const double zero[K] = {};
+  RawLambda<A, K> L, Lq;
+  build_lambda<A, K>(p, w, L);
+  build_lambda<A, K>(p, zero, Lq);
+  return sos_sign_pulled<A, K>(L, Lq);
 }
 
 // The pulled perturbation (sos_search, Pulled; predicates.hpp power_d_pulled)
@@ -1120,17 +1195,8 @@ FF_HD inline int lambda_pulled_sos(const double* const* p, const double* w) {
     range.add(w[i]);
   }
   if (!range.finite) return non_finite_input();
-  const double zero[K] = {};
-  if (range.fits(K)) {
-    LambdaX<Dbl, K> L, Lq;
-    build_lambda<Dbl, K>(p, w, L);
-    build_lambda<Dbl, K>(p, zero, Lq);
-    return sos_sign_pulled<Dbl, K>(L, Lq);
-  }
-  LambdaX<XDbl, K> L, Lq;
-  build_lambda<XDbl, K>(p, w, L);
-  build_lambda<XDbl, K>(p, zero, Lq);
-  return sos_sign_pulled<XDbl, K>(L, Lq);
+  if (range.fits(K)) return pulled_expansions<Dbl, K>(p, w);
+  return pulled_expansions<XDbl, K>(p, w);
 }
 
 // A row of a mixed Λ-matrix for the exact stage: an input point (x) or the
@@ -1143,8 +1209,8 @@ struct MixedRowX {
   int count = 0;
 };
 
-template <class A, int K>
-FF_HD inline void build_lambda_mixed(const MixedRowX* rows, LambdaX<A, K>& L) {
+template <class A, int K, int C>
+FF_HD inline void build_lambda_mixed(const MixedRowX* rows, LambdaX<A, K, C>& L) {
   constexpr int dim = K - 1;
   for (int i = 0; i < K; ++i) {
     if (rows[i].x) {
@@ -1155,6 +1221,15 @@ FF_HD inline void build_lambda_mixed(const MixedRowX* rows, LambdaX<A, K>& L) {
       L.a[i][K - 1].set(static_cast<double>(rows[i].count));
     }
   }
+}
+
+// lambda_exact_mixed's expansion stage on A (one call each on the device, as
+// sos_expansions).
+template <class A, int K>
+FF_HD FF_DEVICE_NOINLINE int mixed_expansions(const MixedRowX* rows, bool sos) {
+  RawLambda<A, K> L;
+  build_lambda_mixed<A, K>(rows, L);
+  return det_or_sos<A, K>(L, sos);
 }
 
 template <int K>
@@ -1170,14 +1245,8 @@ FF_HD inline int lambda_exact_mixed(const MixedRowX* rows, bool sos) {
     }
   }
   if (!range.finite) return non_finite_input();
-  if (range.fits(K - 1)) {
-    LambdaX<Dbl, K> L;
-    build_lambda_mixed<Dbl, K>(rows, L);
-    return det_or_sos<Dbl, K>(L, sos);
-  }
-  LambdaX<XDbl, K> L;
-  build_lambda_mixed<XDbl, K>(rows, L);
-  return det_or_sos<XDbl, K>(L, sos);
+  if (range.fits(K - 1)) return mixed_expansions<Dbl, K>(rows, sos);
+  return mixed_expansions<XDbl, K>(rows, sos);
 }
 
 }  // namespace flipflop::pred::xp
