@@ -183,10 +183,13 @@ struct Entry {
   static constexpr int kCap = Cap;
   int n = 1;
   T c[kCap];
-  // every component set: GCC cannot see that only c[0, n) is read (it warned,
-  // maybe-uninitialized, once the caps became small enough to unroll)
-  FF_HD Entry() {
-    for (int i = 0; i < kCap; ++i) c[i] = A::zero();
+  FF_HD Entry() { c[0] = A::zero(); }
+  // Components c[n, kCap) set to 0 after a write of run-time length: only
+  // c[0, n) is ever read, but GCC cannot see it once a small cap lets it
+  // unroll the readers (-Wmaybe-uninitialized on the lifted entries of a
+  // raw Λ); the cost is a few stores per raw entry (SoS only).
+  FF_HD void clear_tail() {
+    for (int i = n; i < kCap; ++i) c[i] = A::zero();
   }
   FF_HD void set(double v) {
     n = 1;
@@ -214,6 +217,7 @@ FF_HD inline void lifted_entry(const double* x, int m, double w, Entry<A, C>& ou
   }
   out.n = len;
   for (int i = 0; i < len; ++i) out.c[i] = buf[i];
+  out.clear_tail();
 }
 
 // Exact sum of `count` doubles (a centroid row scaled by count).
@@ -231,6 +235,7 @@ FF_HD inline void sum_entry(const double* v, int stride, int count, Entry<A, C>&
   }
   out.n = len;
   for (int i = 0; i < len; ++i) out.c[i] = buf[i];
+  out.clear_tail();
 }
 
 // Λ (or T) of K rows as expansions; RawLambda: a Λ of K points (build_lambda,
