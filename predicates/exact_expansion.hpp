@@ -252,38 +252,48 @@ constexpr int binom(int n, int r) {
   return (r < 0 || r > n) ? 0 : (r == 0 || r == n) ? 1 : binom(n - 1, r - 1) + binom(n - 1, r);
 }
 
+// part = sign * (entry x m), m of length mlen <= cap: a scale of m per
+// component of the entry, summed; returns the product's length (<= cap), 0
+// when the entry is 0. Every intermediate (a scaled m, a partial sum) is
+// compressed as soon as it exceeds cap — valid by the length bound of
+// expansion.hpp, each of them being on the grid and below the bound of the
+// top of this file (a partial sum of products of entries, of degree at most
+// the minor's). `part` holds cap components, `scaled` and `sum` 2 cap; m must
+// not alias them.
+template <class A, int C>
+FF_HD inline int times_entry(int cap, const Entry<A, C>& entry, int mlen, const typename A::T* m, bool negative,
+                             typename A::T* scaled, typename A::T* part, typename A::T* sum) {
+  if (entry.n == 1 && A::is_one(entry.c[0])) {  // the 1-column: no product
+    for (int j = 0; j < mlen; ++j) part[j] = negative ? A::neg(m[j]) : m[j];
+    return mlen;
+  }
+  int plen = 0;
+  for (int i = 0; i < entry.n; ++i) {
+    const auto b = negative ? A::neg(entry.c[i]) : entry.c[i];
+    if (A::is_zero(b)) continue;
+    int sl = scale_zeroelim<A>(mlen, m, b, scaled);
+    if (sl > cap) sl = compress<A>(sl, scaled);
+    if (plen == 0) {
+      for (int j = 0; j < sl; ++j) part[j] = scaled[j];
+      plen = sl;
+      continue;
+    }
+    plen = sum_zeroelim<A>(plen, part, sl, scaled, sum);
+    if (plen > cap) plen = compress<A>(plen, sum);
+    for (int j = 0; j < plen; ++j) part[j] = sum[j];
+  }
+  return plen;
+}
+
 // acc (len n <= cap) += sign * (entry x m), m of length <= cap; returns the new
-// length (<= cap: compressed when longer, which the length bound of
-// expansion.hpp makes at most cap). `scaled` holds 2 cap, `part` and `sum`
-// 3 cap components.
+// length (<= cap, compressed when longer, as in times_entry). `part` holds
+// cap components, `scaled` and `sum` 2 cap.
 template <class A, int C>
 FF_HD inline int add_product(int cap, int n, typename A::T* acc, const Entry<A, C>& entry, int mlen,
                              const typename A::T* m, bool negative, typename A::T* scaled,
                              typename A::T* part, typename A::T* sum) {
-  using T = typename A::T;
-  int plen = 0;
-  if (entry.n == 1 && A::is_one(entry.c[0])) {  // the 1-column: no product
-    for (int j = 0; j < mlen; ++j) part[j] = negative ? A::neg(m[j]) : m[j];
-    plen = mlen;
-  } else
-  for (int i = 0; i < entry.n; ++i) {
-    T b = negative ? A::neg(entry.c[i]) : entry.c[i];
-    if (A::is_zero(b)) continue;
-    const int sl = scale_zeroelim<A>(mlen, m, b, scaled);
-    if (plen == 0) {
-      for (int j = 0; j < sl; ++j) part[j] = scaled[j];
-      plen = sl;
-    } else {
-      plen = sum_zeroelim<A>(plen, part, sl, scaled, sum);
-      for (int j = 0; j < plen; ++j) part[j] = sum[j];
-    }
-    // Compress only when needed to keep the next step inside the buffers
-    // (part: 3 cap, every input <= cap): zero elimination keeps typical
-    // expansions far shorter than the bound.
-    if (plen > cap) plen = compress<A>(plen, part);
-  }
+  const int plen = times_entry<A>(cap, entry, mlen, m, negative, scaled, part, sum);
   if (plen == 0) return n;
-  if (plen > cap) plen = compress<A>(plen, part);
   int len = sum_zeroelim<A>(n, acc, plen, part, sum);
   if (len > cap) len = compress<A>(len, sum);
   for (int j = 0; j < len; ++j) acc[j] = sum[j];
@@ -339,7 +349,7 @@ struct MinorLaplace {
     const int r = kept.r;
     if (r == 0) return 1;
     E lev[2][kLevel];
-    T scaled[2 * kCap], part[3 * kCap], sum[3 * kCap];
+    T scaled[2 * kCap], part[kCap], sum[2 * kCap];
     // rank of each column subset among the subsets of its size (in increasing order)
     unsigned char rank[1u << K];
     int counter[K + 1] = {};
@@ -377,46 +387,17 @@ struct MinorLaplace {
 };
 
 // ---- XDbl: minors as sums over permutations (little memory) ------------------
-// Each term Π_t a[ri[t]][ci[perm[t]]] is built in place, one entry at a time
-// (term x entry: a scale per component of the entry, summed), every
-// intermediate compressed as soon as it exceeds kCap — valid by the length
-// bound of expansion.hpp, every one of them (a partial sum of a product of
-// entries, degree <= K + 1) being on the grid and below the bound of the top of
-// this file. Buffers: acc, term and part kCap, scaled and sum 2 kCap: 7 kCap
-// components of 16 bytes (K = 5: 27 KB; 11 kCap, 43 KB, with add_product's
-// 3 kCap buffers).
+// Each term Π_t a[ri[t]][ci[perm[t]]] is built one entry at a time
+// (times_entry, every intermediate compressed above kCap), then added to the
+// accumulator. Buffers: acc and two alternating term buffers kCap, scaled and
+// sum 2 kCap: 7 kCap components of 16 bytes (K = 5: 27 KB; 11 kCap, 43 KB,
+// with add_product's former 3 kCap buffers).
 template <int K>
 struct MinorX {
   // degree of a K x K minor in the input values: at most K + 1 (a lifted
   // column counts 2) — the translated T of K + 1 points is K x K of degree K + 1
   static constexpr int kCap = cap_x(K + 1);
   using T = XD;
-
-  // term (tlen <= kCap components) *= e; returns the new length (<= kCap)
-  template <int C>
-  FF_HD static int times_entry(int tlen, T* term, const Entry<XDbl, C>& e, T* scaled, T* part, T* sum) {
-    if (e.n == 1 && XDbl::is_one(e.c[0])) return tlen;  // the 1-column
-    int plen = 0;
-    for (int c = 0; c < e.n; ++c) {
-      if (XDbl::is_zero(e.c[c])) continue;
-      int sl = scale_zeroelim<XDbl>(tlen, term, e.c[c], scaled);
-      if (sl > kCap) sl = compress<XDbl>(sl, scaled);
-      if (plen == 0) {
-        for (int q = 0; q < sl; ++q) part[q] = scaled[q];
-        plen = sl;
-        continue;
-      }
-      plen = sum_zeroelim<XDbl>(plen, part, sl, scaled, sum);
-      if (plen > kCap) plen = compress<XDbl>(plen, sum);
-      for (int q = 0; q < plen; ++q) part[q] = sum[q];
-    }
-    if (plen == 0) {  // e = 0 (the caller skips zero entries)
-      term[0] = XDbl::zero();
-      return 1;
-    }
-    for (int q = 0; q < plen; ++q) term[q] = part[q];
-    return plen;
-  }
 
   template <int C>
   FF_HD FF_DEVICE_NOINLINE static int sign(const LambdaX<XDbl, K, C>& L, unsigned rows, unsigned cols) {
@@ -425,7 +406,7 @@ struct MinorX {
     const int* ci = kept.ci;
     const int r = kept.r;
     if (r == 0) return 1;
-    T acc[kCap], term[kCap], scaled[2 * kCap], part[kCap], sum[2 * kCap];
+    T acc[kCap], term_a[kCap], term_b[kCap], scaled[2 * kCap], sum[2 * kCap];
     int alen = 1;
     acc[0] = XDbl::zero();
     // Heap's algorithm, iterative: every permutation once, one swap apart.
@@ -438,10 +419,16 @@ struct MinorX {
       for (int t = 0; t < r && !zero; ++t) zero = L.a[ri[t]][ci[perm[t]]].zero();
       if (!zero) {
         const auto& e0 = L.a[ri[0]][ci[perm[0]]];
+        T* term = term_a;
+        T* next = term_b;
         int tlen = e0.n;
         for (int t = 0; t < tlen; ++t) term[t] = e0.c[t];
-        for (int t = 1; t < r; ++t)
-          tlen = times_entry(tlen, term, L.a[ri[t]][ci[perm[t]]], scaled, part, sum);
+        for (int t = 1; t < r; ++t) {  // no entry is 0 (tested above): tlen > 0
+          tlen = times_entry<XDbl>(kCap, L.a[ri[t]][ci[perm[t]]], tlen, term, false, scaled, next, sum);
+          T* const done = next;
+          next = term;
+          term = done;
+        }
         // acc += parity * term
         if (parity < 0)
           for (int q = 0; q < tlen; ++q) term[q] = XDbl::neg(term[q]);
