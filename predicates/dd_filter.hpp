@@ -122,7 +122,7 @@ FF_HD FF_FORCEINLINE double fused_multiply_add(double a, double b, double c) {
 template <bool Fma>
 struct DDv {
   double h = 0.0, l = 0.0;
-  FF_HD DDv() = default;
+  DDv() = default;  // host and device: defaulted
   FF_HD static DDv difference(double x, double y) {
     DDv r;
     xp::Dbl::two_sum(x, -y, r.h, r.l);

@@ -71,7 +71,7 @@ struct ErrDD {
   static constexpr double kEta4 = 0x1p-1072;  // 4 eta
   static constexpr double kEta8 = 0x1p-1071;  // 8 eta
 
-  FF_HD ErrDD() = default;
+  ErrDD() = default;  // host and device: defaulted
   FF_HD explicit ErrDD(double x) : h(x) {}
   // The exact difference x - y (two_sum: e = 0).
   FF_HD static ErrDD difference(double x, double y) {

@@ -68,7 +68,7 @@ struct ErrDouble {
   static constexpr double kU = 0x1p-53;      // unit roundoff
   static constexpr double kEta4 = 0x1p-1072; // 4 * smallest subnormal
 
-  FF_HD ErrDouble() = default;
+  ErrDouble() = default;  // host and device: defaulted
   FF_HD explicit ErrDouble(double x) : v(x), e(0.0) {}
   FF_HD ErrDouble(double x, double err) : v(x), e(err) {}
 };
