@@ -14,7 +14,7 @@
 #       the step ab.
 #   kernels_cuda/lent_gpu.sh check [STEPS]   (there, in the repository root;
 #       STEPS: comma-separated, of tests,bench,sanitizer,scaling,stages,ab,
-#       profile;
+#       profile,firstcall;
 #       the first four by default, in that order — most wanted first, should
 #       the call's time run out)
 #       1. the device, the CPU;
@@ -33,6 +33,13 @@
 #          of each (FLIPFLOP_GPU_STEPS=1 --stats, which times a second run).
 #       7. (profile) Nsight Compute: the GPU time per kernel of one hull3
 #          run on 10^6 ball points (ncu --print-summary per-kernel).
+#       8. (firstcall) where a process's first call goes (0.35-0.47 s on an
+#          H200 for a 10^7 hull3, 0.06 s for the next ones): the --stats
+#          stages of the first call of fresh processes, hull3 then hull2 on
+#          10^7 points, with lazy module loading (the default) and eager
+#          (every kernel loaded when the context is made, inside "upload"):
+#          the context's creation shows in "upload", a kernel's first launch
+#          (module loading, the exact passes' stack) in the stage that makes it.
 #       Logs and CSV under $OUT; one summary line per step on stdout. LG_TESTS,
 #       LG_SANITIZE, LG_BENCH (space-separated names) narrow steps 2-4.
 set -u
@@ -215,6 +222,23 @@ ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | tail -
 timeout 150 "$ncu" --metrics gpu__time_duration.sum --print-summary per-kernel \
   "$ff" hull3 "$tmp/in.npy" --backend cuda -o "$tmp/out" > "$OUT/ncu.txt" 2>&1
 echo "rc=$? (ncu.txt: $(wc -l < "$OUT/ncu.txt") lines)"
+rm -rf "$tmp"
+}
+
+run_firstcall() {
+echo "== the first call of a process: --stats stages of fresh processes (lazy, then eager module loading)"
+tmp=$(mktemp -d)
+"$ff" gen ball 10000000 --seed 1 -o "$tmp/p3.npy"
+"$ff" gen disk 10000000 --seed 1 -o "$tmp/p2.npy"
+for loading in LAZY EAGER LAZY EAGER; do
+  for job in "hull3 $tmp/p3.npy" "hull2 $tmp/p2.npy"; do
+    set -- $job
+    s=$(date +%s%N)
+    CUDA_MODULE_LOADING=$loading timeout 60 "$ff" "$1" "$2" --backend cuda --stats -o "$tmp/out" 2> "$tmp/stats"
+    e=$(( ($(date +%s%N) - s) / 1000000 ))
+    echo "$1 $loading, process $e ms: $(grep -h 'stages' "$tmp/stats")" | tee -a "$OUT/firstcall.log"
+  done
+done
 rm -rf "$tmp"
 }
 
