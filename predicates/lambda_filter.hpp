@@ -70,6 +70,42 @@ FF_HD FF_FORCEINLINE V det_small(const V* t) {
   }
 }
 
+// Levels 1..R of the Laplace expansion over column subsets of an N x N
+// matrix t (row-major): d[S] = det(rows 0..|S|-1, columns S) for every column
+// subset S with |S| <= R, each expanded along its last row in ascending column
+// order, signs (-1)^((|S|-1) + position) — det_by_minors (R = N) and
+// top_minors (static_filter.hpp, R = N - 1) share this operation order, on
+// which the bounds derived for them rest. d holds 2^N entries.
+template <int N, int R, class V>
+FF_HD inline void minor_levels(const V* t, V* d) {
+  constexpr int kSubsets = 1 << N;
+  for (int j = 0; j < N; ++j) d[1 << j] = t[j];  // row 0, single columns
+  // Process subsets in increasing popcount order: subsets of size r use
+  // row r-1 and the minors of size r-1.
+  for (int r = 2; r <= R; ++r) {
+    for (int s = 1; s < kSubsets; ++s) {
+      if (popcount_small(static_cast<unsigned>(s)) != r) continue;
+      V acc{};  // assigned by the first term (value-initialised: no maybe-uninitialized)
+      bool first = true;
+      int pos = 0;  // position of column j inside subset s
+      for (int j = 0; j < N; ++j) {
+        if (!(s & (1 << j))) continue;
+        // Laplace along row r-1: sign (-1)^((r-1) + pos)
+        const V term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
+        const bool negative = ((r - 1 + pos) & 1) != 0;
+        if (first) {
+          acc = negative ? -term : term;
+          first = false;
+        } else {
+          acc = negative ? acc - term : acc + term;
+        }
+        ++pos;
+      }
+      d[s] = acc;
+    }
+  }
+}
+
 // Determinant of an N x N matrix of ErrDouble (row-major) by expansion over
 // column subsets: D[S] = det(rows 0..|S|-1, columns S). N <= 7. V may be any
 // value type with a proven running error bound and +, -, * (ErrDD,
@@ -80,34 +116,9 @@ FF_HD inline V det_by_minors(const V* t) {
   if constexpr (N <= 4) {
     return det_small<N, V>(t);
   } else {
-    constexpr int kSubsets = 1 << N;
-    V d[kSubsets];
-    for (int j = 0; j < N; ++j) d[1 << j] = t[j];  // row 0, single columns
-    // Process subsets in increasing popcount order: subsets of size r use
-    // row r-1 and the minors of size r-1.
-    for (int r = 2; r <= N; ++r) {
-      for (int s = 1; s < kSubsets; ++s) {
-        if (popcount_small(static_cast<unsigned>(s)) != r) continue;
-        V acc;
-        bool first = true;
-        int pos = 0;  // position of column j inside subset s
-        for (int j = 0; j < N; ++j) {
-          if (!(s & (1 << j))) continue;
-          // Laplace along row r-1: sign (-1)^((r-1) + pos)
-          V term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
-          bool negative = ((r - 1 + pos) & 1) != 0;
-          if (first) {
-            acc = negative ? -term : term;
-            first = false;
-          } else {
-            acc = negative ? acc - term : acc + term;
-          }
-          ++pos;
-        }
-        d[s] = acc;
-      }
-    }
-    return d[kSubsets - 1];
+    V d[1 << N];
+    minor_levels<N, N, V>(t, d);
+    return d[(1 << N) - 1];
   }
 }
 

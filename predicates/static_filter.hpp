@@ -171,31 +171,9 @@ FF_HD inline void top_minors(const double* t, double* minor) {
     minor[2] = t[8] * m13 - t[9] * m03 + t[11] * m01;
     minor[3] = t[8] * m12 - t[9] * m02 + t[10] * m01;
   } else {
-    constexpr int kSubsets = 1 << N;
-    constexpr int kFull = kSubsets - 1;
-    double d[kSubsets];
-    for (int j = 0; j < N; ++j) d[1 << j] = t[j];
-    for (int r = 2; r <= N - 1; ++r) {
-      for (int s = 1; s < kSubsets; ++s) {
-        if (popcount_small(static_cast<unsigned>(s)) != r) continue;
-        double acc = 0.0;
-        bool first = true;
-        int pos = 0;
-        for (int j = 0; j < N; ++j) {
-          if (!(s & (1 << j))) continue;
-          const double term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
-          const bool negative = ((r - 1 + pos) & 1) != 0;
-          if (first) {
-            acc = negative ? -term : term;
-            first = false;
-          } else {
-            acc = negative ? acc - term : acc + term;
-          }
-          ++pos;
-        }
-        d[s] = acc;
-      }
-    }
+    constexpr int kFull = (1 << N) - 1;
+    double d[1 << N];
+    minor_levels<N, N - 1, double>(t, d);
     for (int j = 0; j < N; ++j) minor[j] = d[kFull & ~(1 << j)];
   }
 }
