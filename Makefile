@@ -81,7 +81,8 @@ python: build
 #       the test drivers at -O0 (FLIPFLOP_TESTS_OPT; the libraries at -O1);
 #       the benchmarks (ctest bench.*) are not run, nor cli.progress_line (the
 #       terminal protocol of a 3*10^6-point reference run: 61 s under ASan;
-#       make test runs it). Measured from a fresh clone
+#       make test runs it), nor cli.demo (make demo's job: 10^5-10^6-point
+#       reference runs and peers, about 6 s in Release; make test runs it). Measured from a fresh clone
 #       after these cuts: build about 615 s, ctest 341 s, make asan 956 s.
 SAN_CASES ?= 100
 # Compile time dominates this stage in CI; measured on one test file (g++ 12,
@@ -102,7 +103,7 @@ asan: deps
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp ctest --output-on-failure -j $(JOBS) \
-	  -E '^(bench\.|cli\.progress_line$$)' 
+	  -E '^(bench\.|cli\.progress_line$$|cli\.demo$$)' 
 
 # tsan: ThreadSanitizer build (clang) of the multithreaded tests (TSAN_TESTS):
 #       the TBB kernels (fork/join declared to TSan by kernels_cpu/tsan.hpp,

@@ -5,7 +5,10 @@
 // exactly, and print the timings. A row is printed only for an answer that was
 // computed and certified in this run. flipflop's rows are its sequential exact
 // reference (thesis algorithms where they exist, the brute-force definition on
-// small degenerate inputs otherwise), certified at the canonical level.
+// small degenerate inputs otherwise), certified at the canonical level. The
+// GPU kernels (kernels_cuda/) run as flipflop:cuda where this flipflop was
+// built with them and a device is usable (else one line says why not), and
+// always as flipflop:cuda-omp, the same kernels on thrust's OpenMP backend.
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -17,6 +20,9 @@
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "peers/peers.hpp"
 #include "reference/brute_force.hpp"
 #include "reference/certify/certify.hpp"
@@ -41,7 +47,7 @@ struct Row {
 };
 
 void print_row(const Row& r) {
-  std::printf("%-30s %-28s %9zu %9zu %10.3f %10.3f  %s\n", r.job.c_str(), r.program.c_str(), r.n, r.size,
+  std::printf("%-30s %-32s %9zu %9zu %10.3f %10.3f  %s\n", r.job.c_str(), r.program.c_str(), r.n, r.size,
               r.t_compute, r.t_certify, r.verdict.c_str());
   std::fflush(stdout);
 }
@@ -67,6 +73,31 @@ bool run_one(const std::string& job, const std::string& program, const PointSet&
   return rep.ok;
 }
 
+// The GPU kernels' rows of a job: "cuda" (the device; a first call includes
+// the CUDA context's start), then "cuda-omp". Without a usable device the
+// cuda row is not printed; the reason is kept for one line at the end.
+template <class Result>
+bool run_gpu(const std::string& job, const std::string& algo, const PointSet& ps,
+             const std::function<Result(const std::string&)>& compute,
+             const std::function<certify::Report(const Result&, certify::Level)>& check, std::string& no_cuda) {
+  bool ok = true;
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  for (const std::string backend : {"cuda", "cuda-omp"}) {
+    if (backend == "cuda" && !no_cuda.empty()) continue;
+    try {
+      ok &= run_one<Result>(job, "flipflop:" + backend + " (" + algo + ")", ps, [&] { return compute(backend); }, check,
+                            certify::Level::canonical);
+    } catch (const kernels::NoDeviceError& e) {
+      no_cuda = e.what();
+    }
+  }
+#else
+  (void)job, (void)algo, (void)ps, (void)compute, (void)check;
+  no_cuda = "this flipflop was built without the GPU kernels (neither backend)";
+#endif
+  return ok;
+}
+
 }  // namespace
 
 int run_demo() {
@@ -74,11 +105,12 @@ int run_demo() {
   bool all_ok = true;
   std::printf("flipflop demo: every answer below was computed in this run and checked by the exact certifier.\n");
   std::printf("Times in seconds (one run each; `flipflop bench` reports medians).\n\n");
-  std::printf("%-30s %-28s %9s %9s %10s %10s  %s\n", "job", "program", "points", "size", "compute", "certify",
+  std::printf("%-30s %-32s %9s %9s %10s %10s  %s\n", "job", "program", "points", "size", "compute", "certify",
               "verdict");
 
   using Tris = std::vector<Triangle>;
   using Cycle = std::vector<Index>;
+  std::string no_cuda;  // why flipflop:cuda did not run, when it did not
   auto h3 = [](const PointSet& ps) {
     return std::function<certify::Report(const Tris&, Level)>(
         [&ps](const Tris& t, Level l) { return certify::hull3(ps, t, l); });
@@ -99,6 +131,10 @@ int run_demo() {
     std::string job = std::string("hull3 ") + dist;
     all_ok &= run_one<Tris>(job, "flipflop:cpu (TBB ffHull)", ps, [&] { return cpu::hull3_ffhull(ps); }, h3(ps),
                             Level::canonical);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    all_ok &= run_gpu<Tris>(job, "GPU ffHull", ps,
+                            [&](const std::string& b) { return kernels::hull3_gpu(b, ps); }, h3(ps), no_cuda);
+#endif
     all_ok &= run_one<Tris>(job, "flipflop ffHull", ps, [&] { return ref::hull3(ps, "ffhull"); }, h3(ps),
                             Level::canonical);
     all_ok &= run_one<Tris>(job, "flipflop star splaying", ps, [&] { return ref::hull3(ps, "splay"); }, h3(ps),
@@ -112,6 +148,10 @@ int run_demo() {
     PointSet ps = gen::generate("disk", 1000000, o);
     all_ok &= run_one<Cycle>("hull2 disk", "flipflop:cpu (TBB Graham)", ps, [&] { return cpu::hull2_graham_sort(ps); },
                              h2(ps), Level::canonical);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    all_ok &= run_gpu<Cycle>("hull2 disk", "GPU Graham", ps,
+                             [&](const std::string& b) { return kernels::hull2_gpu(b, ps); }, h2(ps), no_cuda);
+#endif
     all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-insert", ps, [&] { return ref::hull2_graham_insert(ps); },
                              h2(ps), Level::canonical);
     all_ok &= run_one<Cycle>("hull2 disk", "flipflop graham-sort", ps, [&] { return ref::hull2_graham_sort(ps); },
@@ -130,6 +170,10 @@ int run_demo() {
     PointSet ps = gen::generate("square", 100000, o);
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "flipflop:cpu (incremental)", ps, [&] { return cpu::rt2(ps); },
                             r2(ps), Level::canonical);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    all_ok &= run_gpu<Tris>("rt2 square w[0,1e-5]", "GPU ffRT", ps,
+                            [&](const std::string& b) { return kernels::rt2_gpu(b, ps); }, r2(ps), no_cuda);
+#endif
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "flipflop ffRT", ps, [&] { return ref::rt2_ffrt(ps); }, r2(ps),
                             Level::canonical);
     all_ok &= run_one<Tris>("rt2 square w[0,1e-5]", "CGAL Regular_triangulation_2", ps,
@@ -197,6 +241,7 @@ int run_demo() {
                                  },
                                  rd(ps), Level::canonical);
   }
+  if (!no_cuda.empty()) std::printf("\nflipflop:cuda not run: %s\n", no_cuda.c_str());
   std::printf("\n%s\n", all_ok ? "all answers certified" : "SOME ANSWERS WERE NOT CERTIFIED (see above)");
   return all_ok ? 0 : 1;
 }
