@@ -25,11 +25,20 @@ from . import _flipflop
 __version__: str = _flipflop.__version__
 
 __all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "generate", "distributions",
-           "__version__"]
+           "gpu_backends", "__version__"]
 
-_HULL_BACKENDS = {2: ("cpu", "reference"), 3: ("cpu", "reference")}
-# per dimension: the multithreaded kernel exists for d = 2 (kernels_cpu/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference"), 3: ("reference",), 4: ("reference",), 5: ("reference",)}
+#: The GPU kernels' backends of this build (kernels_cuda/): "cuda-omp", the
+#: GPU algorithms on thrust's OpenMP backend (every multicore CPU), where the
+#: CUDA toolkit's headers and OpenMP were found when the package was built;
+#: "cuda" only in a build whose kernels nvcc compiled (not this package's
+#: own build), and then it needs a CUDA device at run time (RuntimeError
+#: otherwise). Every backend returns the reference's answer.
+gpu_backends: tuple = tuple(_flipflop.gpu_backends())
+
+_HULL_BACKENDS = {2: ("cpu", "reference") + gpu_backends, 3: ("cpu", "reference") + gpu_backends}
+# per dimension: the multithreaded and GPU kernels exist for d = 2 (kernels_cpu/rt2, kernels_cuda/rt2)
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + gpu_backends, 3: ("reference",), 4: ("reference",),
+                      5: ("reference",)}
 
 
 def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:
@@ -114,9 +123,14 @@ class ConvexHull:
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
 
+    backend: 'cpu' (the default: the multithreaded kernels), 'reference'
+    (the exact sequential reference) or one of `gpu_backends` ('cuda-omp':
+    the GPU kernels on thrust's OpenMP backend); every backend returns the
+    same answer. strict=True uses the 'cpu' kernel whatever the backend.
+
     threads: worker threads (0: the runtime's default, every core the
-    process may use); the answer is the same at any count. The GIL is
-    released while computing.
+    process may use) of the 'cpu' kernels and of the certifier; the answer
+    is the same at any count. The GIL is released while computing.
     """
 
     def __init__(self, points, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
@@ -166,9 +180,12 @@ class Delaunay:
     `rtd --strict` on the command line).
 
     backend: 'cpu' (2D only, the default there: the multithreaded kernel of
-    kernels_cpu/rt2) or 'reference' (the exact sequential reference: ffRT in
-    2D, the default in 3D..5D); every backend returns the same simplices.
-    threads: worker threads of the 'cpu' backend (0: all cores).
+    kernels_cpu/rt2), 'reference' (the exact sequential reference: ffRT in
+    2D, the default in 3D..5D) or, in 2D, one of `gpu_backends` ('cuda-omp':
+    the GPU ffRT on thrust's OpenMP backend); every backend returns the same
+    simplices.
+    threads: worker threads of the 'cpu' backend and of the 2D certifier
+    (0: all cores).
     """
 
     def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None,

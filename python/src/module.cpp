@@ -38,6 +38,9 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "predicates/predicates.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
@@ -138,6 +141,28 @@ IndexArray list_array(const std::vector<Index>& l) {
 
 void check_certified(const certify::Report& r, const char* what) {
   if (!r.ok) throw std::runtime_error(std::string("the ") + what + " result failed certification: " + r.message());
+}
+
+// The GPU kernels (kernels_cuda/) this extension has: "cuda-omp" (their
+// thrust/OpenMP build) where the CUDA toolkit's headers and OpenMP were found
+// at build time, and "cuda" where nvcc built them (not in this package's
+// build); "cuda" without a usable device raises RuntimeError (one line).
+std::vector<std::string> gpu_backends() {
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  return kernels::gpu_backends_built();
+#else
+  return {};
+#endif
+}
+bool is_gpu_backend(const std::string& backend) {
+  const std::vector<std::string> b = gpu_backends();
+  return std::find(b.begin(), b.end(), backend) != b.end();
+}
+// "'cpu', 'reference'" and the GPU backends, for the error messages
+std::string backend_list(const char* first) {
+  std::string s = first;
+  for (const std::string& b : gpu_backends()) s += ", '" + b + "'";
+  return s;
 }
 
 std::vector<std::vector<Index>> cell_lists(const Cells& c, std::size_t n) {
@@ -448,8 +473,13 @@ HullTuple hull2(const Points& p, const std::string& backend, int threads) {
     } else if (backend == "reference") {
       cycle = ref::hull2(ps, ref::hull2_algorithms().front());
       check_certified(certify::hull2(ps, cycle, certify::Level::canonical), "hull2");
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    } else if (is_gpu_backend(backend)) {  // Graham-sorting with parallel flip-pop, as `flipflop hull2 --backend`
+      cycle = kernels::hull2_gpu(backend, ps);
+      check_certified(cpu::certify_hull2(ps, cycle, certify::Level::canonical, threads), "hull2");
+#endif
     } else {
-      throw std::invalid_argument("hull2 backends: 'cpu', 'reference'; got '" + backend + "'");
+      throw std::invalid_argument("hull2 backends: " + backend_list("'cpu', 'reference'") + "; got '" + backend + "'");
     }
     // edge i = (cycle[i], cycle[i + 1]); across its vertex 0 lies edge i + 1,
     // across its vertex 1 edge i - 1
@@ -502,8 +532,13 @@ HullTuple hull3(const Points& p, const std::string& backend, int threads) {
     } else if (backend == "reference") {
       tris = ref::hull3(ps, "ffhull");
       check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    } else if (is_gpu_backend(backend)) {  // ffHull's GPU rounds, certified as `flipflop hull3 --backend cuda`
+      tris = kernels::hull3_gpu(backend, ps);
+      check_certified(cpu::certify_hull3(ps, tris, certify::Level::canonical, threads), "hull3");
+#endif
     } else {
-      throw std::invalid_argument("hull3 backends: 'cpu', 'reference'; got '" + backend + "'");
+      throw std::invalid_argument("hull3 backends: " + backend_list("'cpu', 'reference'") + "; got '" + backend + "'");
     }
     attributes = Hull3Attributes(ps, tris);
   }
@@ -544,8 +579,9 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
-  if (!(backend == "reference" || (backend == "cpu" && d == 2)))
-    throw std::invalid_argument("Delaunay backends: 'cpu' (2D), 'reference'; got '" + backend + "'");
+  if (!(backend == "reference" || ((backend == "cpu" || is_gpu_backend(backend)) && d == 2)))
+    throw std::invalid_argument("Delaunay backends: " + backend_list("'cpu' (2D), 'reference'") + " (2D); got '" +
+                                backend + "'");
   std::vector<std::vector<Index>> simplices;
   std::vector<Triangle> tris;  // d = 2 (not copied into `simplices`: 2 * 10^6 small vectors took 0.2 s)
   std::vector<Index> redundant;
@@ -559,6 +595,11 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
         cpu::Rt2Witness witness;
         tris = cpu::rt2(ps, o, nullptr, &witness);
         check_certified(cpu::certify_rt2(ps, tris, certify::Level::canonical, witness, threads), "Delaunay");
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+      } else if (is_gpu_backend(backend)) {  // ffRT's GPU rounds, certified as `flipflop rt2 --backend cuda`
+        tris = kernels::rt2_gpu(backend, ps);
+        check_certified(cpu::certify_rt2(ps, tris, certify::Level::canonical, threads), "Delaunay");
+#endif
       } else {
         tris = ref::rt2_ffrt(ps);
         check_certified(certify::rt2(ps, tris, certify::Level::canonical), "Delaunay");
@@ -775,6 +816,7 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
 NB_MODULE(_flipflop, m) {
   m.doc() = "flipflop's compiled core (use the flipflop package, not this module)";
   m.attr("__version__") = FLIPFLOP_VERSION;
+  m.def("gpu_backends", &gpu_backends);
   m.def("hull2", &hull2, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("threads"));

@@ -114,6 +114,41 @@ def test_delaunay_equals_scipy(d, n):
             flipflop.Delaunay(p, backend="cpu")
 
 
+def test_gpu_backends_return_the_reference_answer():
+    # The GPU kernels of this build (flipflop.gpu_backends): "cuda-omp", their
+    # thrust/OpenMP build, and "cuda" where nvcc built them (RuntimeError, one
+    # line, without a device). ctest sets FLIPFLOP_EXPECT_GPU_BACKENDS where
+    # the build has them, so that they are tested there, not skipped.
+    expected = os.environ.get("FLIPFLOP_EXPECT_GPU_BACKENDS", "")
+    for b in filter(None, expected.split(",")):
+        assert b in flipflop.gpu_backends, f"this build should have the {b!r} backend: {flipflop.gpu_backends}"
+    if not flipflop.gpu_backends:
+        pytest.skip("this build of the package has no GPU kernels (no CUDA toolkit headers or OpenMP)")
+    rng = np.random.default_rng(7)
+    grid2 = np.array([(x, y) for x in range(9) for y in range(9)], dtype=np.float64)
+    grid3 = np.array([(x, y, z) for x in range(5) for y in range(5) for z in range(5)], dtype=np.float64)
+    inputs2 = [rng.random((3000, 2)), np.vstack([grid2, grid2[::7]])]  # random; cocircular, collinear, duplicated
+    inputs3 = [rng.standard_normal((2000, 3)), np.vstack([grid3, grid3[::9]])]  # random; coplanar, duplicated
+    for backend in flipflop.gpu_backends:
+        try:
+            for p in inputs2:
+                assert list(flipflop.ConvexHull(p, backend=backend).vertices) == list(
+                    flipflop.ConvexHull(p, backend="cpu").vertices)
+                w = (np.arange(len(p)) % 3).astype(np.float64) * (0.25 if len(p) < 100 else 1e-5)
+                for weights in (None, w):
+                    a = flipflop.Delaunay(p, weights=weights, backend=backend)
+                    b = flipflop.Delaunay(p, weights=weights, backend="cpu")
+                    assert (a.simplices == b.simplices).all()
+                    assert list(a.redundant) == list(b.redundant)
+            for p in inputs3:
+                assert (flipflop.ConvexHull(p, backend=backend).simplices ==
+                        flipflop.ConvexHull(p, backend="cpu").simplices).all()
+            with pytest.raises(ValueError, match="backend"):
+                flipflop.Delaunay(inputs3[0], backend=backend)  # 2D only
+        except RuntimeError as e:  # "cuda" without a usable device
+            assert backend == "cuda" and "cuda" in str(e) and "\n" not in str(e), str(e)
+
+
 def test_weighted_delaunay_backends_agree_on_degenerate_input():
     # a 9x9 grid (cocircular quadruples, collinear boundary points) with
     # duplicated points and integer weights: the cpu kernel and the reference
