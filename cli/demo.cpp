@@ -73,6 +73,7 @@ bool run_one(const std::string& job, const std::string& program, const PointSet&
   return rep.ok;
 }
 
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
 // The GPU kernels' rows of a job: "cuda" (the device; a first call includes
 // the CUDA context's start), then "cuda-omp". Without a usable device the
 // cuda row is not printed; the reason is kept for one line at the end.
@@ -81,7 +82,6 @@ bool run_gpu(const std::string& job, const std::string& algo, const PointSet& ps
              const std::function<Result(const std::string&)>& compute,
              const std::function<certify::Report(const Result&, certify::Level)>& check, std::string& no_cuda) {
   bool ok = true;
-#ifdef FLIPFLOP_HAVE_KERNELS_GPU
   for (const std::string backend : {"cuda", "cuda-omp"}) {
     if (backend == "cuda" && !no_cuda.empty()) continue;
     try {
@@ -91,12 +91,9 @@ bool run_gpu(const std::string& job, const std::string& algo, const PointSet& ps
       no_cuda = e.what();
     }
   }
-#else
-  (void)job, (void)algo, (void)ps, (void)compute, (void)check;
-  no_cuda = "this flipflop was built without the GPU kernels (neither backend)";
-#endif
   return ok;
 }
+#endif
 
 }  // namespace
 
