@@ -31,14 +31,16 @@ __all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "
 #: GPU algorithms on thrust's OpenMP backend (every multicore CPU), where the
 #: CUDA toolkit's headers and OpenMP were found when the package was built;
 #: "cuda" only in a build whose kernels nvcc compiled (not this package's
-#: own build), and then it needs a CUDA device at run time (RuntimeError
-#: otherwise). Every backend returns the reference's answer.
+#: own build), and then it needs a CUDA device at run time. Where the kernels
+#: are built, backend="cuda" is accepted and raises RuntimeError (the command
+#: line's one line) when it cannot run. Every backend returns the reference's
+#: answer.
 gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 
-_HULL_BACKENDS = {2: ("cpu", "reference") + gpu_backends, 3: ("cpu", "reference") + gpu_backends}
+_GPU = ("cuda-omp", "cuda") if gpu_backends else ()
+_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU}
 # per dimension: the multithreaded and GPU kernels exist for d = 2 (kernels_cpu/rt2, kernels_cuda/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + gpu_backends, 3: ("reference",), 4: ("reference",),
-                      5: ("reference",)}
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("reference",), 4: ("reference",), 5: ("reference",)}
 
 
 def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:

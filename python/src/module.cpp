@@ -146,7 +146,9 @@ void check_certified(const certify::Report& r, const char* what) {
 // The GPU kernels (kernels_cuda/) this extension has: "cuda-omp" (their
 // thrust/OpenMP build) where the CUDA toolkit's headers and OpenMP were found
 // at build time, and "cuda" where nvcc built them (not in this package's
-// build); "cuda" without a usable device raises RuntimeError (one line).
+// build). Where the kernels are built, both names are GPU backends
+// (kernels::is_gpu_backend): "cuda" without nvcc's build or without a usable
+// device raises the command line's one line (NoDeviceError: RuntimeError).
 std::vector<std::string> gpu_backends() {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
   return kernels::gpu_backends_built();
@@ -154,14 +156,20 @@ std::vector<std::string> gpu_backends() {
   return {};
 #endif
 }
-bool is_gpu_backend(const std::string& backend) {
-  const std::vector<std::string> b = gpu_backends();
-  return std::find(b.begin(), b.end(), backend) != b.end();
+bool gpu_backend(const std::string& backend) {
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  return kernels::is_gpu_backend(backend);
+#else
+  (void)backend;
+  return false;
+#endif
 }
 // "'cpu', 'reference'" and the GPU backends, for the error messages
 std::string backend_list(const char* first) {
   std::string s = first;
-  for (const std::string& b : gpu_backends()) s += ", '" + b + "'";
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  s += ", 'cuda-omp', 'cuda'";
+#endif
   return s;
 }
 
@@ -474,7 +482,7 @@ HullTuple hull2(const Points& p, const std::string& backend, int threads) {
       cycle = ref::hull2(ps, ref::hull2_algorithms().front());
       check_certified(certify::hull2(ps, cycle, certify::Level::canonical), "hull2");
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-    } else if (is_gpu_backend(backend)) {  // Graham-sorting with parallel flip-pop, as `flipflop hull2 --backend`
+    } else if (gpu_backend(backend)) {  // Graham-sorting with parallel flip-pop, as `flipflop hull2 --backend`
       cycle = kernels::hull2_gpu(backend, ps);
       check_certified(cpu::certify_hull2(ps, cycle, certify::Level::canonical, threads), "hull2");
 #endif
@@ -533,7 +541,7 @@ HullTuple hull3(const Points& p, const std::string& backend, int threads) {
       tris = ref::hull3(ps, "ffhull");
       check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-    } else if (is_gpu_backend(backend)) {  // ffHull's GPU rounds, certified as `flipflop hull3 --backend cuda`
+    } else if (gpu_backend(backend)) {  // ffHull's GPU rounds, certified as `flipflop hull3 --backend cuda`
       tris = kernels::hull3_gpu(backend, ps);
       check_certified(cpu::certify_hull3(ps, tris, certify::Level::canonical, threads), "hull3");
 #endif
@@ -579,7 +587,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
-  if (!(backend == "reference" || ((backend == "cpu" || is_gpu_backend(backend)) && d == 2)))
+  if (!(backend == "reference" || ((backend == "cpu" || gpu_backend(backend)) && d == 2)))
     throw std::invalid_argument("Delaunay backends: " + backend_list("'cpu' (2D), 'reference'") + " (2D); got '" +
                                 backend + "'");
   std::vector<std::vector<Index>> simplices;
@@ -596,7 +604,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
         tris = cpu::rt2(ps, o, nullptr, &witness);
         check_certified(cpu::certify_rt2(ps, tris, certify::Level::canonical, witness, threads), "Delaunay");
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-      } else if (is_gpu_backend(backend)) {  // ffRT's GPU rounds, certified as `flipflop rt2 --backend cuda`
+      } else if (gpu_backend(backend)) {  // ffRT's GPU rounds, certified as `flipflop rt2 --backend cuda`
         tris = kernels::rt2_gpu(backend, ps);
         check_certified(cpu::certify_rt2(ps, tris, certify::Level::canonical, threads), "Delaunay");
 #endif
