@@ -243,12 +243,21 @@ PointSet read_ply(const std::string& path, int dim, bool weighted) {
     vi = e;
   }
   if (vi == h.elements.size()) throw InputError(path, in.line_number(), "no vertex element in the header");
-  for (std::size_t e = 0; e <= vi; ++e)
+  for (std::size_t e = 0; e <= vi; ++e) {
+    // CGAL loops over every item of an element, reading its properties: an
+    // element with items but no properties reads no bytes, so its count is
+    // bounded by nothing in the file (a count of 10^12 kept CGAL busy for
+    // hours, found by fuzz_read_points). No PLY writer emits one.
+    if (e < vi && h.elements[e].props.empty() && h.elements[e].count > 0)
+      throw InputError(path, h.elements[e].line,
+                       "element '" + h.elements[e].name + "' declares " +
+                           std::to_string(h.elements[e].count) + " items but no properties");
     for (const Property& p : h.elements[e].props)
       if (p.list)
         throw InputError(path, p.line,
                          "list property '" + p.name + "' in element '" + h.elements[e].name +
                              "'; flipflop reads PLY files whose lists (faces) follow the vertices");
+  }
   const Element& ve = h.elements[vi];
   const char* needed[] = {"x", "y", "z"};
   for (int c = 0; c < 3; ++c) {

@@ -535,6 +535,18 @@ TEST_CASE("ply: each error names the file and the line, or the vertex") {
   expect_error(t.file("bi.ply", binary_ply(true, kXYZ, 4, bad)), 3, false, 0, "vertex 3: Inf in property z");
   expect_error(t.file("bz.ply", binary_ply(false, kXYZ, 4, good)), 2, false, 0,
                "vertex 3: z = 1 is not 0");
+  // An element with items but no properties before the vertices: CGAL would
+  // loop over its 10^12 items, reading nothing (a hang fuzz_read_points found).
+  std::string empty_element = binary_ply(false, kXYZ, 4, good);
+  const std::string format_line = "format binary_little_endian 1.0\n";
+  REQUIRE(empty_element.find(format_line) != std::string::npos);
+  empty_element.insert(empty_element.find(format_line) + format_line.size(),
+                       "element foo 1000000000000\n");
+  expect_error(t.file("be.ply", empty_element), 3, false, 3,
+               "element 'foo' declares 1000000000000 items but no properties");
+  expect_error(t.file("ae.ply", "ply\nformat ascii 1.0\nelement foo 2\nelement vertex 4\n" + kXYZ +
+                                    "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"),
+               3, false, 3, "element 'foo' declares 2 items but no properties");
 }
 
 // ---------------------------------------------------------------------------
