@@ -4,8 +4,8 @@
 // namespace it implements; helpers live in FF_KERNELS_NS::hull3_detail.
 //
 // Every step is a thrust primitive (for_each over an index range,
-// transform_reduce, copy_if, remove_if, sort; on the device the flip-flop
-// rounds' selections by cub::DeviceSelect::If) over a __host__ __device__
+// transform_reduce, copy_if, remove_if, sort; the flip-flop rounds'
+// operations listed by atomic appends) over a __host__ __device__
 // functor reading flat arrays (structure of arrays): the surface is tv[3t + k] (vertex k of triangle slot t,
 // counter-clockwise seen from outside) and tn[3t + k] (the slot across its
 // edge tv[3t + k] -> tv[3t + (k + 1) % 3]), as in §6.4.1 ("an array of
@@ -75,7 +75,6 @@
 #include <cuda/atomic>
 #include <cuda/std/bit>
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_CUDA
-#include <cub/device/device_select.cuh>
 #include <thrust/system/cuda/error.h>
 #include <cuda_runtime_api.h>
 #endif
@@ -231,11 +230,11 @@ std::size_t select(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& 
 // ---- counts that stay on the device (the flip-flop rounds) ----------------------
 // A flip-flop round's operation count is needed by its own steps, and by the
 // host only to see whether the rounds have ended: on the device it stays in
-// device memory, written by the selection and read by the steps' threads, and
-// the rounds' state that depends on it (RoundState) is kept there too, so
-// that the host waits only once every few rounds (kRoundsPerWait). In the
-// OpenMP build the steps have finished when the next one starts, and the
-// count is read directly.
+// device memory, written by the decision's appends and read by the steps'
+// threads, and the rounds' state that depends on it (RoundState) is kept
+// there too, so that the host waits only once every few rounds
+// (kRoundsPerWait). In the OpenMP build the steps have finished when the next
+// one starts, and the count is read directly.
 
 // f(i) for i in [0, *count): *count was written by an earlier step and is at
 // most bound. On the device one thread per i < bound, each testing
@@ -270,24 +269,29 @@ struct Then {
   }
 };
 
-// select() with its result's size left in *selected, where the next steps
-// read it; the host does not wait for it on the device.
-template <class Pred>
-void select_async(TempStorage& temp, std::size_t n, uint32_t* out, const Pred& p, uint32_t* selected) {
-#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-  *selected = static_cast<uint32_t>(select(temp, n, out, p));
-#else
-  const thrust::counting_iterator<uint32_t> first(0);
-  const auto items = static_cast<std::int64_t>(n);
-  std::size_t bytes = 0;
-  cudaError_t err = cub::DeviceSelect::If(nullptr, bytes, first, out, selected, items, p);
-  if (err == cudaSuccess) {
-    // stream-ordered: a later step that gets this block from `temp` runs after this one
-    char* storage = temp.allocate(static_cast<std::ptrdiff_t>(bytes));
-    err = cub::DeviceSelect::If(storage, bytes, first, out, selected, items, p);
-    temp.deallocate(storage, bytes);
+// f(i) for i in [0, K * *count) (K threads per counted item), and then
+// g(0) once, in the same pass: on the device thread 0 runs g(0) too (after
+// its f(0), if any), so g may read nothing that any f(i) writes, nor write
+// anything an f(i) reads — *count included; in the OpenMP build g(0) runs
+// after the pass. One launch less than a pass of f and a one-thread pass of g.
+template <uint32_t K, class F, class G>
+struct UpToThen {
+  F f;
+  G g;
+  const uint32_t* count;
+  FF_HD void operator()(std::size_t i) const {
+    if (i < std::size_t{K} * *count) f(i);
+    if (i == 0) g(0);
   }
-  if (err != cudaSuccess) throw thrust::system_error(err, thrust::cuda_category(), "hull3: cub::DeviceSelect::If");
+};
+template <uint32_t K, class F, class G>
+void for_upto_then(std::size_t bound, const uint32_t* count, const F& f, const G& g) {
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+  (void)bound;
+  for_n(std::size_t{K} * *count, f);
+  g(0);
+#else
+  for_n(bound > 0 ? K * bound : 1, UpToThen<K, F, G>{f, g, count});
 #endif
 }
 
@@ -693,7 +697,8 @@ struct IsSet {
 //     reference/hull3/flip_flop_3d.cpp on the state at the start of the round;
 //  3. claim: a flip labels the triangles of its induced subcomplex T_e (2-2:
 //     the two triangles of e; 3-1: the three around the removed vertex) with
-//     its edge's id by atomic minimum (§3.3.1, §6.4.1);
+//     its edge's id by atomic minimum (§3.3.1, §6.4.1) — done by the thread
+//     that decided it, in the decision's pass (Claim);
 //  4. flip where every label is still the flip's own (the smallest id always
 //     wins: at least one flip per round); labels of non-extreme vertices
 //     (line 18) are set by every deciding thread;
@@ -717,7 +722,10 @@ enum : uint8_t { kNoAction = 0, kFlip31V, kFlip31D, kFlip22V, kFlip22D, kLabel, 
 
 // What the host's loop over the rounds kept on the host when it waited for
 // every round's count; now in device memory, updated at the end of each round
-// (EndRound) from the round's operation count.
+// (EndRound) from the round's operation count. The rounds count their
+// operations in two counters, a round in counts[round % 2]: EndRound, in the
+// round's last pass, reads the round's and zeroes the next round's, which no
+// thread of that pass reads (for_upto_then).
 struct RoundState {
   uint32_t all;     // this round's candidates are all edges (line 2; after a round without operations)
   uint32_t done;    // a round over all edges decided nothing: the end; the rounds after it do nothing
@@ -725,8 +733,10 @@ struct RoundState {
 };
 struct EndRound {
   const uint32_t* n_ops;
+  uint32_t* next_ops;
   RoundState* state;
   FF_HD void operator()(std::size_t) const {
+    *next_ops = 0;  // the next round's Decide appends there
     RoundState& s = *state;
     if (s.done) return;
     if (*n_ops == 0) {
@@ -766,27 +776,80 @@ struct IsCandidate {
   const uint8_t* action;  // the previous round's decisions (read by slot e's own thread only)
   uint32_t prev;  // the previous round
   const RoundState* state;  // written only by EndRound, between rounds
+  // The loads are grouped by what they depend on, three levels, each
+  // issued together: a test after each load (as the conditions read) made a
+  // chain of about eleven dependent loads for every edge that is not a
+  // candidate, most of them. Every index read is a slot or vertex in range
+  // (a dead slot keeps its last vertices and neighbours).
   FF_HD bool operator()(uint32_t e) const {
     if (state->done) return false;  // a round issued after the end: no operations
     const uint32_t t = e / 3, k = e % 3;
-    if (!alive[t]) return false;
-    const Index u = tv[e], w = tv[3 * t + next3(k)];
-    if (!(u < w)) return false;
-    if (state->all) return true;
-    // an action last round that lost its claims, or won (then its slot changed)
-    if (action[e] != kNoAction) return true;
+    // level 1: the slot's own entries
+    const uint8_t live = alive[t];
+    const Index u = tv[e], w = tv[3 * t + next3(k)], c = tv[3 * t + prev3(k)];
+    const uint8_t act = action[e];
     const uint32_t t2 = tn[e];
-    if (stamp_t[t] == prev || stamp_t[t2] == prev || stamp_v[u] == prev || stamp_v[w] == prev) return true;
-    // the opposite vertices c, d: their labels are read (line 5)
-    const Quad q = quad_of(tv, tn, e);
-    return stamp_v[q.c] == prev || stamp_v[q.d] == prev;
+    const uint32_t st = stamp_t[t];
+    if (!live || !(u < w)) return false;
+    if (state->all) return true;
+    // level 2: the stamps of t2 and of u, w, c; t2's vertices, for d (quad_of)
+    const uint32_t st2 = stamp_t[t2], su = stamp_v[u], sw = stamp_v[w], sc = stamp_v[c];
+    const Index x0 = tv[3 * t2], x1 = tv[3 * t2 + 1], x2 = tv[3 * t2 + 2];
+    const Index d = x0 == w ? x2 : x1 == w ? x0 : x1;  // the vertex before w in t2 = (w, u, d)
+    // level 3
+    const uint32_t sd = stamp_v[d];
+    // an action last round that lost its claims, or won (then its slot
+    // changed); a changed triangle; a, b changed label or degree; the
+    // opposite vertices c, d changed label (line 5 reads their labels)
+    return act != kNoAction || st == prev || st2 == prev || su == prev || sw == prev || sc == prev || sd == prev;
+  }
+};
+
+// The triangles of T_e for the decision of edge i (kNone-padded).
+struct ClaimTriangles {
+  const Index* tv;
+  const uint32_t* tn;
+  const uint8_t* action;
+  const Index* inner;
+  FF_HD void operator()(uint32_t i, uint32_t out[3]) const {
+    out[0] = out[1] = out[2] = kNone;
+    const uint8_t act = action[i];
+    if (act == kLabel) return;
+    const Quad q = quad_of(tv, tn, i);
+    out[0] = q.t, out[1] = q.t2;
+    if (act == kFlip31V || act == kFlip31D)  // the third triangle around the removed vertex
+      out[2] = tn[3 * q.t + (inner[i] == q.a ? prev3(q.k) : next3(q.k))];
+  }
+};
+
+// Steps 2-3 for an edge i with an action, by the thread that decided it:
+// appended to the round's operations (ops, *n_ops) by atomic increment as
+// op r, whose triangles are kept in op_tri[3r..3r+2] (the edge id names other
+// triangles once flipped), and claimed by atomic minimum. The operations come
+// in whatever order the threads do: nothing depends on it — a claim is won
+// by the smallest edge id, and slot r only keeps op r's triangles and outcome
+// (won) for the round.
+struct Claim {
+  ClaimTriangles tris;
+  uint32_t* ops;
+  uint32_t* n_ops;
+  uint32_t* claim;
+  uint32_t* op_tri;
+  FF_HD void operator()(uint32_t i) const {
+    const uint32_t r = Atomic<uint32_t>(*n_ops).fetch_add(1u, cuda::memory_order_relaxed);
+    ops[r] = i;
+    uint32_t* t = op_tri + 3 * r;
+    tris(i, t);
+    for (int j = 0; j < 3; ++j)
+      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).fetch_min(i, cuda::memory_order_relaxed);
   }
 };
 
 // Lines 5-19 for the edge e: the action and the vertex it concerns
 // (ff3::decide, line by line), in action[e] and inner[e]; kNoAction for an
 // edge that is not a candidate (step 1, tested here: one thread per edge slot,
-// no list of candidates). In two passes (two_pass.cuh).
+// no list of candidates). In two passes (two_pass.cuh). An edge with an action
+// is listed and claims its triangles in the same pass (Claim).
 struct Decision {
   uint8_t action;
   Index inner;
@@ -799,6 +862,7 @@ struct Decide : OnGeo {
   IsCandidate candidate;
   uint8_t* action;
   Index* inner;
+  Claim claim;  // reads action[i] and inner[i]
   template <class S>
   FF_HD static bool s_in_tetrahedron(S& sg, const Quad& q, int o) {
     return sg.side(q.a, q.b, q.c) == o && -sg.side(q.a, q.b, q.d) == o && sg.side(q.a, q.c, q.d) == o &&
@@ -842,48 +906,12 @@ struct Decide : OnGeo {
   }
   FF_HD void write(std::size_t i, const Decision& r) const {
     action[i] = r.action;
-    if (r.action != kNoAction) inner[i] = r.inner;  // read for the actions only
+    if (r.action == kNoAction) return;
+    inner[i] = r.inner;  // read for the actions only
+    claim(static_cast<uint32_t>(i));
   }
   FF_HD void mark(std::size_t i) const { action[i] = kUndecided; }
   FF_HD bool marked(std::size_t i) const { return action[i] == kUndecided; }
-};
-
-struct HasAction {
-  const uint8_t* action;
-  FF_HD bool operator()(uint32_t i) const { return action[i] != kNoAction; }
-};
-
-// The triangles of T_e for the decision of edge i (kNone-padded).
-struct ClaimTriangles {
-  const Index* tv;
-  const uint32_t* tn;
-  const uint8_t* action;
-  const Index* inner;
-  FF_HD void operator()(uint32_t i, uint32_t out[3]) const {
-    out[0] = out[1] = out[2] = kNone;
-    const uint8_t act = action[i];
-    if (act == kLabel) return;
-    const Quad q = quad_of(tv, tn, i);
-    out[0] = q.t, out[1] = q.t2;
-    if (act == kFlip31V || act == kFlip31D)  // the third triangle around the removed vertex
-      out[2] = tn[3 * q.t + (inner[i] == q.a ? prev3(q.k) : next3(q.k))];
-  }
-};
-
-// Step 3: the atomic-minimum claims; op r's triangles are kept in
-// op_tri[3r..3r+2] (the edge id names other triangles once flipped).
-struct Claim {
-  ClaimTriangles tris;
-  const uint32_t* ops;
-  uint32_t* claim;
-  uint32_t* op_tri;
-  FF_HD void operator()(std::size_t r) const {
-    const uint32_t i = ops[r];
-    uint32_t* t = op_tri + 3 * r;
-    tris(i, t);
-    for (int j = 0; j < 3; ++j)
-      if (t[j] != kNone) Atomic<uint32_t>(claim[t[j]]).fetch_min(i, cuda::memory_order_relaxed);
-  }
 };
 
 // Step 4's test: won[r] = 1 when every claim of op r holds (labels: always).
@@ -1008,7 +1036,13 @@ struct Apply {
 // has it, else in partner[m] — the flips of a round keep their outer edges
 // in their own live slots. Reads only vertices, alive and partner, which
 // step 5 does not write.
+// One thread per outer edge (x = kLinks r + j: link j of op r): each link is
+// a chain of dependent loads, and one thread doing an op's four one after
+// another took 28 us a round on an H200 (Nsight Compute, 10^7 ball points).
+// Links run in parallel safely: a link writes its own entry, or the entry of
+// an unchanged neighbour for its edge, which no other link reads or writes.
 struct Repair {
+  static constexpr uint32_t kLinks = 4;  // a 2-2 flip's outer edges; a 3-1 flip has 3
   const uint32_t* ops;
   const uint8_t* won;
   const Index* tv;
@@ -1033,17 +1067,28 @@ struct Repair {
     if (alive[m] && find(m, y, x) >= 0) return;  // tn[3s + q] = m already
     tn[3 * s + q] = partner[m];
   }
-  FF_HD void operator()(std::size_t r) const {
+  FF_HD void operator()(std::size_t x) const {
+    const std::size_t r = x / kLinks;
+    const uint32_t j = static_cast<uint32_t>(x % kLinks);
     if (won[r] != kDid22 && won[r] != kDid31) return;
-    const uint32_t e = ops[r];
-    const uint32_t t = e / 3;
+    const uint32_t t = ops[r] / 3;
     if (won[r] == kDid31) {
-      for (uint32_t q = 0; q < 3; ++q) link(t, q);
+      if (j < 3) link(t, j);
       return;
     }
-    const uint32_t t2 = partner[t];
-    link(t, 0), link(t, 2);    // (a, d, c): a -> d, c -> a
-    link(t2, 0), link(t2, 1);  // (d, b, c): d -> b, b -> c
+    // (a, d, c): a -> d, c -> a; partner (d, b, c): d -> b, b -> c
+    if (j < 2) link(t, j == 0 ? 0 : 2);
+    else link(partner[t], j == 2 ? 0 : 1);
+  }
+};
+
+// f(x / K) for the first of each K consecutive x (a per-op step in a pass
+// of K threads per op).
+template <class F, uint32_t K>
+struct OnFirst {
+  F f;
+  FF_HD void operator()(std::size_t x) const {
+    if (x % K == 0) f(x / K);
   }
 };
 
@@ -1165,7 +1210,7 @@ struct Buffers {
     const std::size_t max_edges = 3 * max_tri / 2;
     ops.resize(max_edges), op_tri.resize(3 * max_edges), won.resize(max_edges);
     action.resize(3 * max_tri), inner.resize(3 * max_tri);  // per edge slot
-    counts.resize(1), state.resize(1), op_counts.resize(3);
+    counts.resize(2), state.resize(1), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
     fill_n(raw(best_key), max_tri, 0ull);
     fill_n(raw(best_id), max_tri, kNone);
@@ -1253,8 +1298,9 @@ class Hull3 {
     Index* tv = raw(B_.tv);
     uint32_t* tn = raw(B_.tn);
     uint32_t* ops = raw(B_.ops);
-    // the round's operation count, in device memory (see for_upto)
-    uint32_t* n_ops = raw(B_.counts);
+    // the rounds' operation counts, in device memory (see for_upto and RoundState)
+    uint32_t* counts = raw(B_.counts);
+    fill_n(counts, 2, uint32_t{0});
     unsigned long long* op_counts = raw(B_.op_counts);
     fill_n(op_counts, 3, 0ull);
     RoundState* state = raw(B_.state);
@@ -1271,34 +1317,35 @@ class Hull3 {
     // name every issued round, so a round's candidates are the ones it had
     // when the host waited for every round.
     for (uint32_t round = 1;; ++round) {
-      // steps 1-2 in one pass over the edge slots, then the edges with an action
+      uint32_t* n_ops = counts + round % 2;
+      // steps 1-3 in one pass over the edge slots (two, with the exact one):
+      // each edge with an action is listed and claims its triangles (Claim)
+      const ClaimTriangles tris{tv, tn, raw(B_.action), raw(B_.inner)};
       two_passes(3 * T, Decide{{g_}, tv, tn, raw(B_.deg), raw(B_.labelled),
                                IsCandidate{tv, tn, raw(B_.alive), raw(B_.stamp_t), raw(B_.stamp_v),
                                            raw(B_.action), round - 1, state},
-                               raw(B_.action), raw(B_.inner)});
-      step("flip-flop: decision");
-      select_async(B_.temp, 3 * T, ops, HasAction{raw(B_.action)}, n_ops);
-      step("flip-flop: operations");
-      // steps 3-5 (a round without operations runs them over none); step 4's
+                               raw(B_.action), raw(B_.inner),
+                               Claim{tris, ops, n_ops, raw(B_.claim), raw(B_.op_tri)}});
+      step("flip-flop: decision and claims");
+      // steps 4-5 (a round without operations runs them over none); step 4's
       // test (Won) reads only claims, which Apply does not write, and Repair
       // reads no claims: each pair is one pass (Then)
-      const ClaimTriangles tris{tv, tn, raw(B_.action), raw(B_.inner)};
-      for_upto(E, n_ops, Claim{tris, ops, raw(B_.claim), raw(B_.op_tri)});
-      step("flip-flop: claim");
       for_upto(E, n_ops,
                Then<Won, Apply>{Won{ops, raw(B_.op_tri), raw(B_.claim), raw(B_.won)},
                                 Apply{tris, ops, raw(B_.op_tri), tv, tn, raw(B_.alive), raw(B_.partner),
                                       raw(B_.stamp_t), raw(B_.stamp_v), raw(B_.deg), raw(B_.labelled), raw(B_.won),
                                       round}});
       step("flip-flop: apply");
-      for_upto(E, n_ops,
-               Then<Then<Repair, ResetClaims>, CountOp>{
-                   {Repair{ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner),
-                           raw(B_.stamp_t), round},
-                    ResetClaims{raw(B_.op_tri), raw(B_.claim)}},
-                   CountOp{raw(B_.won), op_counts}});
+      // and the round's end (EndRound) in the same pass, Repair::kLinks
+      // threads per operation
+      constexpr uint32_t L = Repair::kLinks;
+      for_upto_then<L>(E, n_ops,
+                       Then<Repair, OnFirst<Then<ResetClaims, CountOp>, L>>{
+                           Repair{ops, raw(B_.won), tv, tn, raw(B_.alive), raw(B_.partner), raw(B_.stamp_t),
+                                  round},
+                           {{ResetClaims{raw(B_.op_tri), raw(B_.claim)}, CountOp{raw(B_.won), op_counts}}}},
+                       EndRound{n_ops, counts + (round + 1) % 2, state});
       step("flip-flop: repair");
-      for_n(1, EndRound{n_ops, state});
       if (round % kRoundsPerWait != 0) continue;
       const RoundState now = read_back(state);  // the host's one wait in kRoundsPerWait rounds
       step("flip-flop: round state");
