@@ -54,9 +54,10 @@ struct Undecided {
 // parameter has none: inlined into the kernel, that made every thread of the
 // pass copy the whole functor (376 bytes for hull3's Decide) from the
 // parameter space to its local memory on entry, before its test of the mark
-// — measured on an H200 (Nsight Compute, 10^7 ball points): 21-30 us for each
-// of hull3's 72 second decision passes over 2.2e5 edge slots, which mark
-// almost nothing. Called, only the marked items make the copy.
+// — measured on an H200 (Nsight Compute, 10^7 ball points): 16-27 us (17.8 on
+// average) for each of hull3's 72 second decision passes over 2.2e5 edge
+// slots, which mark almost nothing; 3.8 us on average once called. Called,
+// only the marked items make the copy.
 template <class F>
 FF_HD FF_DEVICE_NOINLINE void decide_exactly(F f, std::size_t i) {
   auto signs = f.exact();
