@@ -28,6 +28,18 @@ extern "C" void __tsan_release(void* addr);
 #endif
 
 namespace flipflop::tsan {
+// A lock-like hand-off through an atomic that this folder does not let TSan
+// instrument (kernels_cpu/CMakeLists.txt): the thread that takes ownership of
+// an object calls acquired(&flag) after its successful compare-exchange, the
+// one that gives it up released(&flag) before its releasing store.
+#if defined(FLIPFLOP_TSAN)
+inline void acquired(void* a) { __tsan_acquire(a); }
+inline void released(void* a) { __tsan_release(a); }
+#else
+inline void acquired(void*) {}
+inline void released(void*) {}
+#endif
+
 
 class ForkJoin {
  public:

@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "kernels_cpu/brio.hpp"
 #include "kernels_cpu/parallel.hpp"
-#include "reference/certify/certify_detail.hpp"  // radix_sort_high
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/rt2/rt2.hpp"  // require_plane
@@ -54,97 +54,22 @@ std::uint32_t hilbert15(std::uint32_t x, std::uint32_t y) {
   return d;
 }
 
-std::uint64_t splitmix64(std::uint64_t z) {
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+using brio::grid15;
 
-// Grid coordinate in [0, 2^15) of x in [lo, hi]; halves first so that no
-// difference overflows near ±DBL_MAX (the order is a heuristic: any value is
-// correct, only locality depends on it).
-std::uint32_t grid(double x, double lo, double hi) {
-  const double span = hi * 0.5 - lo * 0.5;
-  double u = span > 0 ? (x * 0.5 - lo * 0.5) / span : 0.0;
-  if (!(u >= 0)) u = 0;
-  if (u > 1) u = 1;
-  return static_cast<std::uint32_t>(std::min(32767.0, u * 32768.0));
-}
-
-// The sort key of a point: its round (5 bits, sparsest first), its Hilbert
-// index (30 bits), its input index (29 bits, rt2() admits at most 2^29
-// points) — distinct keys, so the order is unique.
-constexpr int kIndexBits = 29;
-
-// certify::detail::radix_sort_high with the pieces run by par_for
-void radix_sort_par(std::vector<std::uint64_t>& keys, int lo_bit) {
-  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
-      [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) { par_for(n, kChunk, body); };
-  certify::detail::radix_sort_high(keys, lo_bit, for_range);
-}
-
-// Biased randomized insertion order: point i belongs to round r = min(R - 1,
-// (leading zero bits of hash(i)) / 3), i.e. to round r with probability about
-// 8^-r (7/8 of the points in the last round), the rounds inserted from the
-// sparsest one, each along the Hilbert curve of the bounding box. R is the
-// number of rounds of expected size >= brio_min.
-// rounds (optional) receives the first position of each round and n.
-// box (optional) receives the bounding box: min x, min y, max x, max y.
+// The BRIO order (kernels_cpu/brio.hpp) along the Hilbert curve of the
+// bounding box. rounds (optional) receives the first position of each round
+// and n; box (optional) the bounding box: min x, min y, max x, max y.
 std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vector<std::size_t>* rounds_at = nullptr,
                               std::array<double, 4>* box = nullptr) {
-  const std::size_t n = ps.size();
-  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-  {
-    const std::size_t chunks = (n + kChunk - 1) / kChunk;
-    std::vector<std::array<double, 4>> part(chunks);
-    par_for(chunks, 1, [&](std::size_t clo, std::size_t chi) {
-      for (std::size_t c = clo; c < chi; ++c) {
-        std::array<double, 4> b = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-        for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
-          for (int k = 0; k < 2; ++k) {
-            b[static_cast<std::size_t>(k)] = std::min(b[static_cast<std::size_t>(k)], ps.point(i)[k]);
-            b[static_cast<std::size_t>(k) + 2] = std::max(b[static_cast<std::size_t>(k) + 2], ps.point(i)[k]);
-          }
-        part[c] = b;
-      }
-    });
-    for (const auto& b : part)
-      for (int k = 0; k < 2; ++k) {
-        lo[k] = std::min(lo[k], b[static_cast<std::size_t>(k)]);
-        hi[k] = std::max(hi[k], b[static_cast<std::size_t>(k) + 2]);
-      }
-  }
-  if (box) *box = {lo[0], lo[1], hi[0], hi[1]};
-  unsigned rounds = 1;
-  while (rounds < 20 && (n >> (3 * rounds)) >= std::max<std::size_t>(brio_min, 1)) ++rounds;  // < 2^5
-  std::vector<std::uint64_t> keys(n);
-  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i) {
-      const double* p = ps.point(i);
-      const std::uint64_t h = splitmix64(i);
-      const unsigned zeros = h == 0 ? 64u : static_cast<unsigned>(__builtin_clzll(h));
-      const unsigned r = std::min(rounds - 1, zeros / 3);
-      const std::uint64_t curve = hilbert15(grid(p[0], lo[0], hi[0]), grid(p[1], lo[1], hi[1]));
-      keys[i] = (static_cast<std::uint64_t>(rounds - 1 - r) << (30 + kIndexBits)) | (curve << kIndexBits) | i;
-    }
-  });
-  // keys[i] holds i in its low bits, so the stable radix sort on the high
-  // bits (the certifiers' one, here over par_for) is the sort of the whole
-  // (distinct) keys
-  radix_sort_par(keys, kIndexBits);
-  if (rounds_at) {
-    rounds_at->clear();
-    for (std::uint64_t r = 0; r < rounds; ++r)
-      rounds_at->push_back(static_cast<std::size_t>(
-          std::lower_bound(keys.begin(), keys.end(), r << (30 + kIndexBits)) - keys.begin()));
-    rounds_at->push_back(n);
-  }
-  std::vector<Index> order(n);
-  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i) order[i] = static_cast<Index>(keys[i] & ((std::uint64_t{1} << kIndexBits) - 1));
-  });
-  return order;
+  const std::array<double, 4> b = brio::bounding_box<2>(ps);
+  if (box) *box = b;
+  return brio::order(
+      ps.size(), brio_min,
+      [&](std::size_t i) {
+        const double* p = ps.point(i);
+        return hilbert15(grid15(p[0], b[0], b[2]), grid15(p[1], b[1], b[3]));
+      },
+      rounds_at);
 }
 
 // ---- stage 2: incremental flipping ----------------------------------------------
@@ -277,7 +202,7 @@ class Builder {
   std::array<double, 4> box_{};
   std::vector<std::uint32_t> terr_;
   std::uint32_t curve_key(double x, double y) const {
-    return hilbert15(grid(x, box_[0], box_[2]), grid(y, box_[1], box_[3]));
+    return hilbert15(grid15(x, box_[0], box_[2]), grid15(y, box_[1], box_[3]));
   }
   std::uint32_t locate_in(std::uint32_t p, std::uint32_t start, std::uint32_t& rng, std::uint32_t terr,
                           bool& inside) const;
@@ -1169,7 +1094,7 @@ std::vector<Triangle> rt2(const PointSet& ps, const Rt2Options& opt, ref::Rt2Sta
   ref::require_plane(ps, "rt2 (cpu)");
   // half-edges 3t + i of about 2n triangles must fit 32 bits, indices the
   // 29 bits of the BRIO key
-  constexpr std::size_t kMaxPoints = std::size_t{1} << kIndexBits;
+  constexpr std::size_t kMaxPoints = std::size_t{1} << brio::kIndexBits;
   if (ps.size() > kMaxPoints)
     throw std::invalid_argument("rt2 (cpu): " + std::to_string(ps.size()) + " points exceed the limit of " +
                                 std::to_string(kMaxPoints) + " (32-bit half-edge indices)");

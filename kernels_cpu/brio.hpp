@@ -1,0 +1,108 @@
+// brio.hpp — the biased randomized insertion order (BRIO, Amenta–Choi–Rote)
+// of the incremental triangulation kernels (kernels_cpu/rt2, kernels_cpu/rt3),
+// written once: the points' bounding box from a parallel scan, each point's
+// round (by a hash of its index) and its cell on a space-filling curve of the
+// box, one parallel radix sort of the keys (round | curve | index).
+//
+// Point i belongs to round r = min(R - 1, (leading zero bits of hash(i)) / 3),
+// i.e. to round r with probability about 8^-r (7/8 of the points in the last
+// round); the rounds are inserted from the sparsest one, each along the curve.
+// R is the number of rounds of expected size >= brio_min (at most 20, < 2^5).
+// The order is a heuristic for locality only: the answers never depend on it.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "kernels_cpu/parallel.hpp"
+#include "reference/certify/certify_detail.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::cpu::brio {
+
+inline std::uint64_t splitmix64(std::uint64_t z) {
+  z += 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Grid coordinate in [0, 2^kBits) of x in [lo, hi]; halves first so that no
+// difference overflows near ±DBL_MAX.
+template <int kBits>
+std::uint32_t grid(double x, double lo, double hi) {
+  constexpr double kCells = static_cast<double>(std::uint32_t{1} << kBits);
+  const double span = hi * 0.5 - lo * 0.5;
+  double u = span > 0 ? (x * 0.5 - lo * 0.5) / span : 0.0;
+  if (!(u >= 0)) u = 0;
+  if (u > 1) u = 1;
+  return static_cast<std::uint32_t>(std::min(kCells - 1, u * kCells));
+}
+
+inline std::uint32_t grid15(double x, double lo, double hi) { return grid<15>(x, lo, hi); }
+
+// The bounding box of the first D coordinates: min 0..D-1, then max 0..D-1.
+template <int D>
+std::array<double, 2 * D> bounding_box(const PointSet& ps) {
+  const std::size_t n = ps.size();
+  std::array<double, 2 * D> box;
+  for (int k = 0; k < D; ++k) box[k] = HUGE_VAL, box[k + D] = -HUGE_VAL;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::array<double, 2 * D>> part(chunks, box);
+  par_for(chunks, 1, [&](std::size_t clo, std::size_t chi) {
+    for (std::size_t c = clo; c < chi; ++c)
+      for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
+        for (int k = 0; k < D; ++k) {
+          part[c][k] = std::min(part[c][k], ps.point(i)[k]);
+          part[c][k + D] = std::max(part[c][k + D], ps.point(i)[k]);
+        }
+  });
+  for (const auto& b : part)
+    for (int k = 0; k < D; ++k) box[k] = std::min(box[k], b[k]), box[k + D] = std::max(box[k + D], b[k + D]);
+  return box;
+}
+
+// The order: curve(point index) gives a point's curve index (< 2^30); input
+// indices must fit kIndexBits = 29 bits. rounds_at (optional) receives the
+// first position of each round, and n.
+constexpr int kIndexBits = 29;
+template <class Curve>
+std::vector<Index> order(std::size_t n, std::size_t brio_min, const Curve& curve,
+                         std::vector<std::size_t>* rounds_at) {
+  unsigned rounds = 1;
+  while (rounds < 20 && (n >> (3 * rounds)) >= std::max<std::size_t>(brio_min, 1)) ++rounds;
+  std::vector<std::uint64_t> keys(n);
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) {
+      const std::uint64_t h = splitmix64(i);
+      const unsigned zeros = h == 0 ? 64u : static_cast<unsigned>(__builtin_clzll(h));
+      const unsigned r = std::min(rounds - 1, zeros / 3);
+      const std::uint64_t c = curve(i);
+      keys[i] = (static_cast<std::uint64_t>(rounds - 1 - r) << (30 + kIndexBits)) | (c << kIndexBits) | i;
+    }
+  });
+  // keys[i] holds i in its low bits, so the stable radix sort on the high
+  // bits (the certifiers' one, here over par_for) is the sort of the whole
+  // (distinct) keys
+  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
+      [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, kChunk, body); };
+  certify::detail::radix_sort_high(keys, kIndexBits, for_range);
+  if (rounds_at) {
+    rounds_at->clear();
+    for (std::uint64_t r = 0; r < rounds; ++r)
+      rounds_at->push_back(static_cast<std::size_t>(
+          std::lower_bound(keys.begin(), keys.end(), r << (30 + kIndexBits)) - keys.begin()));
+    rounds_at->push_back(n);
+  }
+  std::vector<Index> out(n);
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) out[i] = static_cast<Index>(keys[i] & ((std::uint64_t{1} << kIndexBits) - 1));
+  });
+  return out;
+}
+
+}  // namespace flipflop::cpu::brio

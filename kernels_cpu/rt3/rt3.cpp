@@ -1,0 +1,840 @@
+// rt3.cpp — the multithreaded 3D regular / Delaunay triangulation (see
+// rt3.hpp for the stages and why the answer is the reference's).
+//
+// ============================================================================
+// Insertion: the cavity step is Edelsbrunner–Shah's flips, composed
+// ============================================================================
+// Lift every point x to x̂ = (x, |x|² - w) in R^4 (thesis §2.1, §9.2.2; the
+// height perturbed as an independent coordinate under SoS). The regular
+// triangulation of the points inserted so far is the projection of the lower
+// hull of their lifted points; with the virtual vertex v read as the point at
+// infinity straight up, the extended triangulation (rt3.hpp, thesis §2.1) is
+// the boundary complex of the polytope Q = conv(lifted points) + upward ray:
+// a real tetrahedron is a lower facet, a virtual tetrahedron (v, f) the
+// vertical facet over the hull facet f.
+//
+// Inserting p is adding p̂ to Q (beneath–beyond). A facet of Q is VISIBLE
+// from p̂ when p̂ lies strictly on its outer side:
+//   * a real tetrahedron (a, b, c, d), positive: p̂ strictly below the
+//     hyperplane of â, b̂, ĉ, d̂ — power3d(a, b, c, d, p) > 0 (predicates.hpp);
+//   * a virtual tetrahedron (v, f): p strictly beyond the hull facet f —
+//     orient3d of its tuple with v replaced by p > 0 (rt3.hpp's rule).
+// Under SoS no facet is ever "flat" to p̂. The facets visible from a point
+// outside a convex polytope form a non-empty connected set whose boundary
+// (the horizon) is a closed 2-manifold of ridges; conv(Q ∪ p̂) keeps the
+// invisible facets and adds the cone from p̂ over every horizon ridge. When
+// p̂ lies inside Q (no facet visible: the real tetrahedron containing p
+// passes below p̂) p is redundant — for good, since Q only grows.
+//
+// This is exactly what Edelsbrunner–Shah's RT+1 returns ([ES92], thesis §3.1
+// Table 3.1, §9.1; reference/rtd/rt_incremental.cpp): the 1-4 flip into the
+// tetrahedron containing p followed by 2-3 / 3-2 / 4-1 flips of the
+// non-regular link facets of p ends, by their Theorem (the flips terminate in
+// THE regular triangulation of the points so far, which is unique under SoS),
+// in the same triangulation; each of their flips replaces visible facets of Q
+// by facets through p̂ (the lifted surface only descends, §9.1), and the
+// cavity step performs the whole sequence at once: it removes every facet
+// visible from p̂ — the tetrahedra the flips destroy, a vertex all of whose
+// tetrahedra are visible being the (3+1)-1 flip's removed vertex — and
+// creates the cone over the horizon, the tetrahedra the flips create and
+// keep. Outside the hull the visible virtual facets are the reference's
+// placing step (rt_incremental.cpp, step 2b) and the visible real ones its
+// following flips.
+//
+// The visible set is found by a breadth-first search from the tetrahedron
+// the walk ends in (the real one containing p, or the first virtual one whose
+// hull facet p sees): every visible facet is reached through visible facets
+// (connectedness), so the search tests only the visible facets and their
+// neighbours. New tetrahedron across a horizon ridge = the visible
+// tetrahedron with its corner opposite that ridge replaced by p (same slot
+// position): p lies on the same side of the ridge as that corner (the cone is
+// a triangulation of the new lower hull), so a real new tetrahedron stays
+// positive and a virtual one keeps rt3.hpp's rule, and across every facet
+// the two tuples still induce opposite orientations.
+#include "kernels_cpu/rt3/rt3.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "kernels_cpu/brio.hpp"
+#include "kernels_cpu/parallel.hpp"
+#include "predicates/fast.hpp"
+#include "reference/dimension.hpp"
+
+namespace flipflop::cpu {
+
+namespace {
+
+constexpr std::uint32_t kDead = Rt3Witness::kNoSlot;
+
+// ---- stage 1: BRIO order ---------------------------------------------------------
+
+// Hilbert index of (x, y, z) on the 2^10 grid per axis (30 bits): Skilling's
+// transform (J. Skilling, "Programming the Hilbert curve", AIP Conf. Proc.
+// 707, 2004) — undo the excess work of the Gray code axis by axis from the
+// top bit, Gray-encode, then interleave the transposed bits.
+std::uint32_t hilbert10(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  std::uint32_t X[3] = {x, y, z};
+  constexpr std::uint32_t M = 1u << 9;
+  for (std::uint32_t Q = M; Q > 1; Q >>= 1) {
+    const std::uint32_t P = Q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (X[i] & Q) {
+        X[0] ^= P;  // invert the low bits of axis 0
+      } else {      // exchange the low bits of axis 0 and axis i
+        const std::uint32_t t = (X[0] ^ X[i]) & P;
+        X[0] ^= t;
+        X[i] ^= t;
+      }
+    }
+  }
+  X[1] ^= X[0];
+  X[2] ^= X[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t Q = M; Q > 1; Q >>= 1)
+    if (X[2] & Q) t ^= Q - 1;
+  for (auto& c : X) c ^= t;
+  std::uint32_t key = 0;
+  for (int b = 9; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) key = (key << 1) | ((X[i] >> b) & 1u);
+  return key;
+}
+
+// The BRIO order (kernels_cpu/brio.hpp) along the 3D Hilbert curve of the
+// bounding box; rounds_at receives the first position of each round, and n.
+std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vector<std::size_t>* rounds_at) {
+  const std::array<double, 6> box = brio::bounding_box<3>(ps);
+  return brio::order(
+      ps.size(), brio_min,
+      [&](std::size_t i) {
+        const double* p = ps.point(i);
+        return hilbert10(brio::grid<10>(p[0], box[0], box[3]), brio::grid<10>(p[1], box[1], box[4]),
+                         brio::grid<10>(p[2], box[2], box[5]));
+      },
+      rounds_at);
+}
+
+// ---- stage 2: insertion -------------------------------------------------------------
+
+// Tetrahedron slots above this make a link 4t + i overflow 32 bits.
+constexpr std::size_t kMaxSlots = (std::size_t{1} << 30) - 1;
+
+// kOther[i][j]: the two corners of a tetrahedron other than i and j (i != j)
+constexpr std::uint8_t kOther[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
+                                          {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
+                                          {{1, 3}, {0, 3}, {0, 0}, {0, 1}},
+                                          {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+
+// A horizon ridge of an insertion: the new tetrahedron over it.
+struct Horizon {
+  std::uint32_t v[4];  // the visible tetrahedron's tuple with its corner i := p
+  std::uint32_t i;     // corner of p (the facet opposite it is the horizon ridge)
+  std::uint32_t out;   // link 4u + j of the invisible neighbour across it
+};
+
+// The state of one inserting thread: the sequential insertion's, or one
+// piece's in a parallel round (stage 2, parallel rounds: Builder::run).
+struct Worker {
+  std::uint32_t me = 0;  // claim tag in a parallel round (piece + 1); 0: sequential, no claims
+  std::vector<std::uint32_t> cavity, claimed, fresh, free;
+  std::vector<Horizon> horizon;
+  std::vector<std::uint64_t> hkey;
+  std::vector<std::uint32_t> hval;
+  std::uint64_t rng = 0x2545F4914F6CDD1Dull;
+  std::uint32_t last = kDead;  // a real tetrahedron near the last point inserted
+  std::uint32_t recent[8] = {kDead, kDead, kDead, kDead, kDead, kDead, kDead, kDead};
+  unsigned nrecent = 0;
+  std::size_t bump = 0, bump_end = 0;  // private range of never-used slots (parallel rounds)
+  std::vector<std::uint32_t> deferred;
+  std::size_t fail_every = 0, claims = 0;  // test hook (Rt3Options::fail_claims_every)
+  Rt3Stats st;
+  void remember(std::uint32_t t) { recent[nrecent++ & 7u] = last = t; }
+};
+
+enum class Outcome { done, deferred, lost };
+
+class Builder {
+ public:
+  Builder(std::vector<Rt3Point> pts, const pred::StaticFilter& f)
+      : P_(std::move(pts)), f_(f), V_(static_cast<std::uint32_t>(P_.size())), hint_(P_.size(), kDead) {
+    grow(7 * P_.size() + 64);  // about 6.7 tetrahedra per point on uniform input
+    vstamp_.assign(P_.size() + 1, 0);
+    vlocal_.assign(P_.size() + 1, 0);
+    pending_.assign(kMaxLocal * kMaxLocal, kDead);
+  }
+
+  // Inserts every point: sequentially up to position `parallel_from` (all
+  // of them when !parallel), then each BRIO round (rounds_at: the first
+  // position of each round, and n) in parallel pieces.
+  void run(bool parallel, std::size_t parallel_from, std::size_t min_piece, std::size_t fail_every,
+           const std::vector<std::size_t>& rounds_at, Rt3Stats& st);
+
+  // Live real tetrahedra as canonical tuples of input indices, sorted.
+  std::vector<Tet> output() const;
+  // Input indices that are vertices of no real tetrahedron, ascending.
+  std::vector<Index> redundant(std::vector<std::uint32_t>* at_vertex) const;
+  void witness(Rt3Witness& w, std::vector<std::uint32_t> at);
+
+ private:
+  std::vector<Rt3Point> P_;
+  const pred::StaticFilter& f_;
+  const std::uint32_t V_;  // the virtual vertex (position n)
+  // per slot: corners, links, BFS stamps, claims (parallel rounds); all of
+  // capacity cap_, grown between rounds only
+  std::vector<std::uint32_t> tv_, tn_, mark_;
+  std::unique_ptr<std::atomic<std::uint32_t>[]> owner_;
+  std::size_t cap_ = 0;
+  std::atomic<std::size_t> slots_{0};  // slots ever used (a prefix of the capacity)
+  std::vector<std::uint32_t> hint_;    // per position: the tetrahedron it was found redundant in
+  static constexpr std::uint32_t kMaxLocal = 64;  // link_cone's table: horizons of up to 64 vertices
+  std::vector<std::uint32_t> vstamp_, vlocal_, pending_;  // the sequential worker's edge table
+  std::uint32_t stamp_ = 0;
+  std::atomic<std::uint32_t> stamps_{2};  // BFS stamps: 2 per insertion attempt (mark_ starts at 0)
+  Worker seq_;  // the sequential insertion (also of the points parallel rounds defer)
+
+  pred::Pt pt(std::uint32_t k) const { return {P_[k].id, P_[k].xyz}; }
+  pred::WPt wpt(std::uint32_t k) const { return {P_[k].id, P_[k].xyz, P_[k].w}; }
+  int orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const {
+    return pred::fast::orient3d(f_, pt(a), pt(b), pt(c), pt(d));
+  }
+  const std::uint32_t* tet(std::uint32_t t) const { return tv_.data() + 4 * static_cast<std::size_t>(t); }
+  bool is_virtual(std::uint32_t t) const {
+    const std::uint32_t* v = tet(t);
+    return (v[0] == V_) | (v[1] == V_) | (v[2] == V_) | (v[3] == V_);
+  }
+  bool live(std::uint32_t t) const { return t < cap_ && tv_[4 * static_cast<std::size_t>(t)] != kDead; }
+
+  // Is tetrahedron t visible from p̂ (header)?
+  bool visible(std::uint32_t t, std::uint32_t p) const {
+    const std::uint32_t* v = tet(t);
+    for (int i = 0; i < 4; ++i)
+      if (v[i] == V_) {
+        std::uint32_t u[4] = {v[0], v[1], v[2], v[3]};
+        u[i] = p;
+        return orient(u[0], u[1], u[2], u[3]) > 0;
+      }
+    return pred::fast::power3d(f_, wpt(v[0]), wpt(v[1]), wpt(v[2]), wpt(v[3]), wpt(p)) > 0;
+  }
+
+  void grow(std::size_t cap) {
+    tv_.resize(4 * cap, kDead);
+    tn_.resize(4 * cap, kDead);
+    mark_.resize(cap, 0);
+    owner_.reset(new std::atomic<std::uint32_t>[cap]);
+    for (std::size_t t = 0; t < cap; ++t) owner_[t].store(0, std::memory_order_relaxed);
+    cap_ = cap;
+  }
+
+  // ---- claims (parallel rounds) -------------------------------------------------
+  // A worker of a parallel round reads or writes a slot only while it holds
+  // the slot's claim (owner_ = its tag), taken by one compare-exchange and
+  // given up when its insertion ends; a claim held by another worker makes
+  // the insertion give up (nothing written yet) and defer the point. The
+  // sequential worker (me = 0) claims nothing.
+  bool claim(Worker& w, std::uint32_t t) {
+    if (w.me == 0) return true;
+    std::uint32_t cur = owner_[t].load(std::memory_order_relaxed);
+    if (cur == w.me) return true;
+    if (w.fail_every != 0 && ++w.claims % w.fail_every == 0) return false;  // as if another task held it
+    if (cur != 0 || !owner_[t].compare_exchange_strong(cur, w.me, std::memory_order_acquire,
+                                                       std::memory_order_relaxed))
+      return false;
+    tsan::acquired(&owner_[t]);
+    w.claimed.push_back(t);
+    return true;
+  }
+  void release_all(Worker& w) {
+    for (std::uint32_t t : w.claimed) {
+      tsan::released(&owner_[t]);
+      owner_[t].store(0, std::memory_order_release);
+    }
+    w.claimed.clear();
+  }
+
+  // A slot for a new tetrahedron: the worker's free list, else a never-used
+  // one (sequential: growing the arrays; parallel: from the worker's range,
+  // refilled from slots_ in blocks). kDead when none (parallel, capacity
+  // reached). Claimed by a parallel worker.
+  std::uint32_t take_slot(Worker& w) {
+    for (std::size_t tries = w.free.size(); tries > 0; --tries) {
+      const std::uint32_t s = w.free.back();
+      w.free.pop_back();
+      if (claim(w, s)) return s;
+      w.free.insert(w.free.begin(), s);  // under inspection by a stale walk start: later
+    }
+    if (w.me == 0) {
+      const std::size_t s = slots_.load(std::memory_order_relaxed);
+      if (s >= kMaxSlots) throw std::length_error("rt3 (cpu): more than 2^30 tetrahedra (32-bit neighbour links)");
+      if (s >= cap_) grow(std::min(kMaxSlots, 2 * s + 64));
+      slots_.store(s + 1, std::memory_order_relaxed);
+      return static_cast<std::uint32_t>(s);
+    }
+    if (w.bump == w.bump_end) {
+      constexpr std::size_t kBlock = 256;
+      const std::size_t s = slots_.fetch_add(kBlock, std::memory_order_relaxed);
+      if (s + kBlock > cap_) return kDead;  // the round stops taking points (run: capacity)
+      w.bump = s, w.bump_end = s + kBlock;
+    }
+    const std::uint32_t s = static_cast<std::uint32_t>(w.bump++);
+    return claim(w, s) ? s : kDead;
+  }
+
+  void start();
+  Outcome insert(Worker& w, std::uint32_t p);
+  bool link_cone(Worker& w);
+  std::uint32_t walk_start(Worker& w);
+  std::uint32_t walk(Worker* w, std::uint32_t p, std::uint32_t t, std::uint64_t& rng, std::uint64_t* steps);
+  std::uint32_t any_real() const;
+};
+
+// The first tetrahedron: positions 0..3 (distinct indices: SoS never makes
+// them coplanar), made positive, and its four virtual tetrahedra (v, face i):
+// the real tuple with corner i := v and two other corners swapped (odd), so
+// that replacing v by a point beyond face i gives a positive tuple — the
+// rule of rt3.hpp, as reference/rtd's make_simplex.
+void Builder::start() {
+  Worker& w = seq_;
+  std::uint32_t r[4] = {0, 1, 2, 3};
+  if (orient(r[0], r[1], r[2], r[3]) < 0) std::swap(r[0], r[1]);
+  const std::uint32_t t0 = take_slot(w);
+  for (int i = 0; i < 4; ++i) tv_[4 * t0 + static_cast<std::uint32_t>(i)] = r[i];
+  w.horizon.clear();
+  w.cavity.clear();
+  // the four virtual tetrahedra are the cone from v over the boundary of t0:
+  // the same linking as an insertion's cone (link_cone), with v as the apex
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    Horizon h;
+    for (int j = 0; j < 4; ++j) h.v[j] = r[j];
+    h.v[i] = V_;
+    const std::uint32_t j1 = i == 0 ? 1 : 0, j2 = (i == 0 || i == 1) ? 2 : 1;
+    std::swap(h.v[j1], h.v[j2]);
+    h.i = i;
+    h.out = 4 * t0 + i;
+    w.horizon.push_back(h);
+  }
+  link_cone(w);
+  w.remember(t0);
+  w.st.inserted = 4;
+}
+
+// Creates one tetrahedron per horizon entry (in the cavity's slots first),
+// links it to its invisible neighbour across the horizon ridge and to the
+// new tetrahedra across its other three facets — those contain the apex and
+// one edge of the horizon, shared by exactly two horizon ridges (the horizon
+// is a closed 2-manifold). The two are matched by that edge: for the
+// sequential worker, with the horizon's vertices numbered 0..L-1 (per-vertex
+// stamps), in an L x L table whose entry is set by the first half and
+// cleared by the second, so that it is empty again afterwards; above
+// kMaxLocal vertices and in parallel rounds, in a hash table. Returns false,
+// having written nothing, when a parallel worker gets no slot.
+bool Builder::link_cone(Worker& w) {
+  const std::size_t m = w.horizon.size();
+  w.fresh.clear();
+  for (std::size_t q = w.cavity.size(); q < m; ++q) {
+    const std::uint32_t s = take_slot(w);
+    if (s == kDead) {
+      w.free.insert(w.free.end(), w.fresh.begin(), w.fresh.end());
+      return false;
+    }
+    w.fresh.push_back(s);
+  }
+  std::uint32_t L = 0;
+  if (w.me == 0) {
+    ++stamp_;
+    for (const Horizon& h : w.horizon)
+      for (std::uint32_t q = 0; q < 4; ++q) {
+        const std::uint32_t x = h.v[q];
+        if (q == h.i || vstamp_[x] == stamp_) continue;
+        vstamp_[x] = stamp_;
+        vlocal_[x] = L++;
+      }
+  }
+  const bool small = w.me == 0 && L <= kMaxLocal;
+  std::uint64_t mask = 0;
+  if (!small) {
+    std::size_t cap = 16;
+    while (cap < 4 * m) cap <<= 1;
+    if (w.hkey.size() < cap) {
+      w.hkey.resize(cap);
+      w.hval.resize(cap);
+    }
+    std::fill(w.hkey.begin(), w.hkey.begin() + static_cast<std::ptrdiff_t>(cap), ~std::uint64_t{0});
+    mask = cap - 1;
+  }
+  std::ptrdiff_t open = 0;  // half-matched edges: 0 at the end on a closed horizon
+  for (std::size_t k = 0; k < m; ++k) {
+    const Horizon& h = w.horizon[k];
+    const std::uint32_t s = k < w.cavity.size() ? w.cavity[k] : w.fresh[k - w.cavity.size()];
+    std::uint32_t* v = tv_.data() + 4 * static_cast<std::size_t>(s);
+    for (int j = 0; j < 4; ++j) v[j] = h.v[j];
+    tn_[4 * static_cast<std::size_t>(s) + h.i] = h.out;
+    tn_[h.out] = 4 * s + h.i;
+    for (std::uint32_t j = 0; j < 4; ++j) {
+      if (j == h.i) continue;
+      // the facet opposite corner j: the apex and the two corners other than h.i, j
+      const std::uint32_t a = h.v[kOther[h.i][j][0]], b = h.v[kOther[h.i][j][1]];
+      const std::uint32_t half = 4 * s + j;
+      std::uint32_t other = kDead;
+      if (small) {
+        std::uint32_t la = vlocal_[a], lb = vlocal_[b];
+        if (la > lb) std::swap(la, lb);
+        std::uint32_t& e = pending_[la * kMaxLocal + lb];
+        other = e;
+        e = other == kDead ? half : kDead;
+      } else {
+        const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+        std::uint64_t slot = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;
+        for (;; slot = (slot + 1) & mask) {
+          if (w.hkey[slot] == key) {
+            other = w.hval[slot];
+            w.hkey[slot] = ~std::uint64_t{1};  // tombstone: an edge is met exactly twice
+            break;
+          }
+          if (w.hkey[slot] == ~std::uint64_t{0}) {
+            w.hkey[slot] = key;
+            w.hval[slot] = half;
+            break;
+          }
+        }
+      }
+      if (other == kDead) {
+        ++open;
+      } else {  // the other half: link both ways
+        --open;
+        tn_[half] = other;
+        tn_[other] = half;
+      }
+    }
+    if (v[0] != V_ && v[1] != V_ && v[2] != V_ && v[3] != V_) w.remember(s);
+  }
+  if (open != 0) throw std::logic_error("rt3 (cpu): the horizon of an insertion is not a closed surface");
+  // cavity slots not reused (more visible tetrahedra than horizon ridges)
+  for (std::size_t q = m; q < w.cavity.size(); ++q) {
+    const std::uint32_t s = w.cavity[q];
+    for (int j = 0; j < 4; ++j) tv_[4 * static_cast<std::size_t>(s) + static_cast<std::size_t>(j)] = kDead;
+    w.free.push_back(s);
+  }
+  w.st.created_tets += m;
+  return true;
+}
+
+// Remembering visibility walk from real tetrahedron t toward p: across a
+// facet that separates t from p (orient3d with that corner replaced by p
+// negative), never back across the facet just crossed, the facets tried from
+// a random one (the stochastic walk of Devillers–Pion–Teillaud; on a regular
+// triangulation the visibility walk terminates: Edelsbrunner's acyclicity
+// theorem, as reference/rtd's locate). Returns the real tetrahedron
+// containing p (SoS: strictly) or the first virtual tetrahedron reached —
+// one whose hull facet p sees. With a parallel worker w: t is claimed, each
+// next tetrahedron is claimed before it is read and the previous one given
+// up; kDead when a claim fails. (w null: read-only, after stage 2.)
+std::uint32_t Builder::walk(Worker* w, std::uint32_t p, std::uint32_t t, std::uint64_t& rng,
+                            std::uint64_t* steps) {
+  std::uint32_t from = 4;  // the corner of t opposite the facet crossed into t
+  for (;;) {
+    if (steps) ++*steps;
+    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+    const std::uint32_t r = static_cast<std::uint32_t>(rng >> 32) & 3u;
+    const std::uint32_t* v = tet(t);
+    std::uint32_t next = kDead;
+    for (std::uint32_t q = 0; q < 4; ++q) {
+      const std::uint32_t i = (r + q) & 3u;
+      if (i == from) continue;
+      std::uint32_t u[4] = {v[0], v[1], v[2], v[3]};
+      u[i] = p;
+      if (orient(u[0], u[1], u[2], u[3]) < 0) {
+        next = tn_[4 * static_cast<std::size_t>(t) + i];
+        break;
+      }
+    }
+    if (next == kDead) return t;
+    const std::uint32_t u = next >> 2;
+    if (w && w->me != 0) {
+      // hold only the tetrahedron being read
+      if (!claim(*w, u)) return kDead;
+      tsan::released(&owner_[t]);
+      owner_[t].store(0, std::memory_order_release);
+      w->claimed.erase(w->claimed.begin());
+    }
+    t = u;
+    from = next & 3u;
+    if (is_virtual(t)) return t;
+  }
+}
+
+// A live real tetrahedron (claimed by a parallel worker) to start a walk
+// from: the worker's last one, else a recent one, when it is still live (a
+// slot another worker freed is dead; one it reused is live elsewhere, which
+// only lengthens the walk); a virtual one leads to its real neighbour. kDead
+// when none is (the worker is lost: run defers the rest of its piece).
+std::uint32_t Builder::walk_start(Worker& w) {
+  std::uint32_t cand[9];
+  cand[0] = w.last;
+  for (unsigned q = 0; q < 8; ++q) cand[q + 1] = w.recent[(w.nrecent + 7 - q) & 7u];
+  for (std::uint32_t t : cand) {
+    if (t == kDead) continue;
+    // the start's claim is worth waiting for briefly (a walk passing through)
+    bool got = false;
+    for (int spin = 0; spin < 64 && !(got = claim(w, t)); ++spin) std::this_thread::yield();
+    if (!got) continue;
+    if (!live(t)) {
+      release_all(w);
+      continue;
+    }
+    if (!is_virtual(t)) return t;
+    const std::uint32_t* v = tet(t);
+    int iv = 0;
+    while (v[iv] != V_) ++iv;
+    const std::uint32_t u = tn_[4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(iv)] >> 2;
+    release_all(w);
+    if (claim(w, u)) return u;  // real: across the hull facet
+  }
+  return kDead;
+}
+
+std::uint32_t Builder::any_real() const {
+  const std::size_t n = slots_.load(std::memory_order_relaxed);
+  for (std::size_t t = 0; t < n; ++t)
+    if (live(static_cast<std::uint32_t>(t)) && !is_virtual(static_cast<std::uint32_t>(t)))
+      return static_cast<std::uint32_t>(t);
+  throw std::logic_error("rt3 (cpu): no real tetrahedron");
+}
+
+Outcome Builder::insert(Worker& w, std::uint32_t p) {
+  const bool par = w.me != 0;
+  std::uint32_t from = w.last;
+  if (par) {
+    from = walk_start(w);
+    if (from == kDead) return Outcome::lost;
+  }
+  const std::uint32_t root = walk(&w, p, from, w.rng, &w.st.walk_steps);
+  auto give_up = [&] {
+    release_all(w);
+    return Outcome::deferred;
+  };
+  if (root == kDead) return give_up();
+  if (!visible(root, p)) {  // real (a virtual end is visible): p̂ inside Q
+    ++w.st.discarded;
+    hint_[p] = root;
+    w.remember(root);
+    release_all(w);
+    return Outcome::done;
+  }
+  // breadth-first search of the visible tetrahedra (stamps of this attempt,
+  // unique over all attempts and workers: in visible, out not)
+  const std::uint32_t in = stamps_.fetch_add(2, std::memory_order_relaxed), out = in + 1;
+  w.cavity.clear();
+  w.horizon.clear();
+  w.cavity.push_back(root);
+  mark_[root] = in;
+  for (std::size_t q = 0; q < w.cavity.size(); ++q) {
+    const std::uint32_t t = w.cavity[q];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t l = tn_[4 * static_cast<std::size_t>(t) + i];
+      const std::uint32_t u = l >> 2;
+      if (par && !claim(w, u)) return give_up();
+      if (mark_[u] == in) continue;
+      if (mark_[u] != out) {
+        if (visible(u, p)) {
+          mark_[u] = in;
+          w.cavity.push_back(u);
+          continue;
+        }
+        mark_[u] = out;
+      }
+      Horizon h;
+      const std::uint32_t* v = tet(t);
+      for (int j = 0; j < 4; ++j) h.v[j] = v[j];
+      h.v[i] = p;
+      h.i = i;
+      h.out = l;
+      w.horizon.push_back(h);
+    }
+  }
+  if (!link_cone(w)) return give_up();
+  if (is_virtual(root)) ++w.st.placed;
+  ++w.st.inserted;
+  w.st.cavity_tets += w.cavity.size();
+  release_all(w);
+  return Outcome::done;
+}
+
+void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piece, std::size_t fail_every,
+                  const std::vector<std::size_t>& rounds_at, Rt3Stats& st) {
+  start();
+  const std::size_t n = V_;
+  std::size_t k = 4;
+  auto sequential_to = [&](std::size_t end) {
+    for (; k < end; ++k) insert(seq_, static_cast<std::uint32_t>(k));
+  };
+  auto merge = [&](const Rt3Stats& a) {
+    st.inserted += a.inserted, st.placed += a.placed, st.discarded += a.discarded;
+    st.cavity_tets += a.cavity_tets, st.created_tets += a.created_tets, st.walk_steps += a.walk_steps;
+  };
+  if (!parallel) {
+    sequential_to(n);
+  } else {
+    sequential_to(std::min(n, std::max<std::size_t>(parallel_from, 4)));
+    const std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    if (rounds_at.empty()) throw std::logic_error("rt3 (cpu): no BRIO rounds");
+    for (std::size_t r = 0; r + 1 < rounds_at.size(); ++r) {
+      const std::size_t lo = std::max(k, rounds_at[r]), hi = rounds_at[r + 1];
+      if (hi <= lo) continue;
+      const std::size_t pieces = std::min(8 * threads, (hi - lo) / std::max<std::size_t>(min_piece, 1));
+      if (pieces < 2) {
+        sequential_to(hi);
+        continue;
+      }
+      // room for the round's tetrahedra (about 6.7 new per point; blocks of
+      // 256 per piece): a worker that finds none defers its points
+      const std::size_t need = slots_.load() + 8 * (hi - lo) + 512 * pieces + 1024;
+      if (need > cap_) {
+        if (need > kMaxSlots)
+          throw std::length_error("rt3 (cpu): more than 2^30 tetrahedra (32-bit neighbour links)");
+        grow(need);
+      }
+      const std::uint32_t anchor = live(seq_.last) && !is_virtual(seq_.last) ? seq_.last : any_real();
+      std::vector<Worker> ws(pieces);
+      for (std::size_t q = 0; q < pieces; ++q) {
+        ws[q].me = static_cast<std::uint32_t>(q + 1);
+        ws[q].rng = brio::splitmix64(lo + q) | 1;
+        ws[q].fail_every = fail_every;
+        ws[q].remember(anchor);
+      }
+      par_for(pieces, 1, [&](std::size_t a, std::size_t b) {
+        for (std::size_t q = a; q < b; ++q) {
+          Worker& w = ws[q];
+          const std::size_t from = lo + (hi - lo) * q / pieces, to = lo + (hi - lo) * (q + 1) / pieces;
+          for (std::size_t p = from; p < to; ++p) {
+            const Outcome o = insert(w, static_cast<std::uint32_t>(p));
+            if (o == Outcome::deferred) w.deferred.push_back(static_cast<std::uint32_t>(p));
+            if (o == Outcome::lost) {
+              for (; p < to; ++p) w.deferred.push_back(static_cast<std::uint32_t>(p));
+              break;
+            }
+          }
+        }
+      });
+      // the deferred points, in position order of the pieces, one by one
+      k = hi;
+      if (slots_.load() > cap_) slots_.store(cap_);  // a failed block grab overshoots
+      for (Worker& w : ws) {
+        merge(w.st);
+        st.deferred += w.deferred.size();
+        seq_.free.insert(seq_.free.end(), w.free.begin(), w.free.end());
+        // a worker's unused block of never-used slots stays unused (dead)
+      }
+      seq_.last = kDead;
+      for (Worker& w : ws)
+        if (live(w.last) && !is_virtual(w.last)) seq_.last = w.last;
+      if (seq_.last == kDead) seq_.last = any_real();
+      for (Worker& w : ws)
+        for (std::uint32_t p : w.deferred) insert(seq_, p);
+      ++st.parallel_rounds;
+    }
+    sequential_to(n);
+  }
+  merge(seq_.st);
+  st.slots = slots_.load();
+}
+
+// ---- stage 3: output ----------------------------------------------------------------
+
+// The canonical tuple (canonical_d.hpp) of an orient_d-positive tuple in 3D:
+// to the volume convention by swapping the last two entries (d odd), then
+// sorted, the last two swapped back when the sorting permutation is odd.
+Tet canonical_tet(Index a, Index b, Index c, Index d) {
+  Tet t = {a, b, d, c};
+  bool odd = false;
+  // a sorting network on four entries, counting exchanges
+  auto cs = [&](int i, int j) {
+    if (t[static_cast<std::size_t>(j)] < t[static_cast<std::size_t>(i)]) {
+      std::swap(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>(j)]);
+      odd = !odd;
+    }
+  };
+  cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+  if (odd) std::swap(t[2], t[3]);
+  return t;
+}
+
+std::vector<Tet> Builder::output() const {
+  const std::size_t slots = slots_.load();
+  const std::size_t n = V_;
+  // live real slots, their canonical tuples bucketed by the smallest index
+  // (counting sort: an atomic count per index, prefix sums, an atomic cursor
+  // per bucket), then each bucket sorted — the result is the unique sorted
+  // list whatever the thread count
+  std::unique_ptr<std::atomic<std::uint32_t>[]> count(new std::atomic<std::uint32_t>[n + 1]);
+  par_for(n + 1, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) count[i].store(0, std::memory_order_relaxed);
+  });
+  std::vector<Tet> canon(slots);
+  std::vector<std::uint8_t> real(slots, 0);
+  par_for(slots, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t t = a; t < b; ++t) {
+      const std::uint32_t* v = tet(static_cast<std::uint32_t>(t));
+      if (v[0] == kDead || v[0] == V_ || v[1] == V_ || v[2] == V_ || v[3] == V_) continue;
+      real[t] = 1;
+      canon[t] = canonical_tet(P_[v[0]].id, P_[v[1]].id, P_[v[2]].id, P_[v[3]].id);
+      count[canon[t][0]].fetch_add(1, std::memory_order_relaxed);
+    }
+  });
+  std::vector<std::size_t> start(n + 1, 0);
+  std::size_t sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    start[i] = sum;
+    sum += count[i].load(std::memory_order_relaxed);
+    count[i].store(0, std::memory_order_relaxed);
+  }
+  start[n] = sum;
+  std::vector<Tet> out(sum);
+  par_for(slots, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t t = a; t < b; ++t)
+      if (real[t]) {
+        const Index m = canon[t][0];
+        out[start[m] + count[m].fetch_add(1, std::memory_order_relaxed)] = canon[t];
+      }
+  });
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i)
+      std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[i]), out.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
+  });
+  return out;
+}
+
+// at_vertex (out): per position, the smallest real slot with it as a corner
+// (kDead for a point that is not a vertex).
+std::vector<Index> Builder::redundant(std::vector<std::uint32_t>* at_vertex) const {
+  const std::size_t n = V_, slots = slots_.load();
+  std::unique_ptr<std::atomic<std::uint32_t>[]> at(new std::atomic<std::uint32_t>[n]);
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t i = a; i < b; ++i) at[i].store(kDead, std::memory_order_relaxed);
+  });
+  par_for(slots, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t t = a; t < b; ++t) {
+      const std::uint32_t* v = tet(static_cast<std::uint32_t>(t));
+      if (v[0] == kDead || v[0] == V_ || v[1] == V_ || v[2] == V_ || v[3] == V_) continue;
+      for (int j = 0; j < 4; ++j) {
+        std::uint32_t cur = at[v[j]].load(std::memory_order_relaxed);
+        while (static_cast<std::uint32_t>(t) < cur &&
+               !at[v[j]].compare_exchange_weak(cur, static_cast<std::uint32_t>(t), std::memory_order_relaxed)) {
+        }
+      }
+    }
+  });
+  std::vector<Index> red = par_select(n, [&](Index k) { return at[k].load(std::memory_order_relaxed) == kDead; });
+  for (Index& k : red) k = P_[k].id;
+  std::sort(red.begin(), red.end());
+  if (at_vertex) {
+    at_vertex->assign(n, kDead);
+    par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) (*at_vertex)[i] = at[i].load(std::memory_order_relaxed);
+    });
+  }
+  return red;
+}
+
+// ---- stage 4: witness -----------------------------------------------------------------
+// For each position that is not a vertex, the real tetrahedron containing it:
+// a walk from the tetrahedron it was found redundant in when that slot still
+// holds a real tetrahedron, else from the previous position's answer in its
+// piece (the BRIO order is spatially coherent), else from a vertex's
+// tetrahedron. Each piece of kChunk positions is one task; the walk is
+// read-only, its random choices seeded by the piece, so the witness does not
+// depend on the thread count.
+void Builder::witness(Rt3Witness& w, std::vector<std::uint32_t> at) {
+  const std::size_t n = V_;
+  const std::uint32_t anchor = any_real();
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    std::uint64_t rng = brio::splitmix64(a) | 1;
+    std::uint32_t prev = kDead;
+    for (std::size_t k = a; k < b; ++k) {
+      if (at[k] != kDead) {
+        prev = at[k];
+        continue;
+      }
+      std::uint32_t s = hint_[k];
+      if (s == kDead || tv_[4 * static_cast<std::size_t>(s)] == kDead || is_virtual(s)) s = prev;
+      if (s == kDead) s = anchor;
+      const std::uint32_t t = walk(nullptr, static_cast<std::uint32_t>(k), s, rng, nullptr);
+      // a point that is not a vertex lies inside the hull, so the walk ends
+      // in a real tetrahedron; the certifier checks it either way
+      at[k] = t;
+      prev = is_virtual(t) ? prev : t;
+    }
+  });
+  w.pts = std::move(P_);
+  tv_.resize(4 * slots_.load());
+  tn_.resize(4 * slots_.load());
+  w.tv = std::move(tv_);
+  w.tn = std::move(tn_);
+  w.at = std::move(at);
+}
+
+}  // namespace
+
+Rt3Result rt3(const PointSet& ps, const Rt3Options& opt, Rt3Stats* stats, Rt3Witness* witness) {
+  if (ps.dim != 3) throw std::invalid_argument("rt3 (cpu): the points must be 3D, got dimension " + std::to_string(ps.dim));
+  if (ps.weighted && ps.weights.size() != ps.size())
+    throw std::invalid_argument("rt3 (cpu): " + std::to_string(ps.weights.size()) + " weights for " +
+                                std::to_string(ps.size()) + " points");
+  constexpr std::size_t kMaxPoints = std::size_t{1} << brio::kIndexBits;
+  if (ps.size() > kMaxPoints)
+    throw std::invalid_argument("rt3 (cpu): " + std::to_string(ps.size()) + " points exceed the limit of " +
+                                std::to_string(kMaxPoints));
+  Rt3Stats st;
+  Rt3Result res;
+  with_threads(opt.threads, [&] {
+    StageClock clock(opt.times);
+    // non-finite values, fewer than 4 points, input in a plane: rejected
+    // with the reference's exact test (reference/dimension.hpp)
+    std::atomic<int> bad{0};  // 1: a coordinate, 2: a weight is not finite
+    par_for(ps.size(), kChunk, [&](std::size_t a, std::size_t b) {
+      for (std::size_t i = a; i < b; ++i) {
+        const double* x = ps.point(i);
+        if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))) bad.fetch_or(1);
+        if (!std::isfinite(ps.weight(i))) bad.fetch_or(2);
+      }
+    });
+    if (bad.load() & 1) throw std::invalid_argument("rt3 (cpu): a coordinate is not finite");
+    if (bad.load() & 2) throw std::invalid_argument("rt3 (cpu): a weight is not finite");
+    if (std::string why = dimension_problem(ps); !why.empty()) throw std::invalid_argument("rt3 (cpu): " + why);
+    const pred::StaticFilter f = parallel_static_filter(ps, {});
+    std::vector<std::size_t> rounds_at;
+    const std::vector<Index> order = brio_order(ps, opt.brio_min, &rounds_at);
+    std::vector<Rt3Point> pts(order.size());
+    par_for(order.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) {
+        const Index i = order[k];
+        const double* x = ps.point(i);
+        pts[k] = {{x[0], x[1], x[2]}, ps.weight(i), i};
+      }
+    });
+    clock.mark("sort");
+    Builder B(std::move(pts), f);
+    const bool parallel = opt.insertion == Rt3Options::Insertion::parallel ||
+                          (opt.insertion == Rt3Options::Insertion::automatic &&
+                           tbb::this_task_arena::max_concurrency() > 1);
+    B.run(parallel, opt.parallel_from, opt.min_piece, opt.fail_claims_every, rounds_at, st);
+    clock.mark("insert");
+    res.tets = B.output();
+    std::vector<std::uint32_t> at;
+    res.redundant = B.redundant(witness ? &at : nullptr);
+    clock.mark("output");
+    if (witness) {
+      B.witness(*witness, std::move(at));
+      clock.mark("witness");
+    }
+  });
+  st.removed = st.inserted - (ps.size() - res.redundant.size());
+  if (stats) *stats = st;
+  return res;
+}
+
+}  // namespace flipflop::cpu
