@@ -116,6 +116,7 @@ asan: deps
 #       rejection tests run the same OpenMP kernels here.
 TSAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull3_witness_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test rt2_witness_test \
+              rt3_cpu_test certify_rt3_cpu_test \
               hull2_cuda_omp_test hull3_cuda_omp_test rt2_cuda_omp_test
 ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/llvm-*/lib/libarcher.so))
 
@@ -128,7 +129,7 @@ tsan: deps
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)
 	cd build-tsan && OMP_TOOL_LIBRARIES=$(ARCHER) ARCHER_OPTIONS=verbose=1 \
 	  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/.ci/tsan.supp \
-	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|16 OpenMP|input)|hull3 cuda-omp: (degenerate|every generator|large|16 OpenMP|an almost|input)|rt2 cuda-omp: (degenerate|every generator|20000|16 OpenMP|input)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|hull3 witness: (degenerate|every generator|flip-flop in rounds|an? )|rt2 cpu: (degenerate|every generator|input|20000|parallel insertion)|rt2 cpu certify: many missing points|rt2 witness: (degenerate|every generator|wrong|stage 2b))'
+	  ctest --output-on-failure -j $(JOBS) -R '^(kernels|device predicates|hull2 cuda-omp: (degenerate|16 OpenMP|input)|hull3 cuda-omp: (degenerate|every generator|large|16 OpenMP|an almost|input)|rt2 cuda-omp: (degenerate|every generator|20000|16 OpenMP|input)|hull[23] cpu: (degenerate|every generator|large|input|the parallel certifier)|hull3 witness: (degenerate|every generator|flip-flop in rounds|an? )|rt2 cpu: (degenerate|every generator|input|20000|parallel insertion)|rt2 cpu certify: many missing points|rt2 witness: (degenerate|every generator|wrong|stage 2b)|rt3 cpu: (degenerate|every 3D|lattices|20000|parallel rounds|input)|certify_rt3: (small|every 3D|wrong))'
 
 sanitize: asan tsan
 

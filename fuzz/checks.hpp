@@ -24,5 +24,6 @@ bool check_kernels_input(const std::uint8_t* data, std::size_t size);       // k
 bool check_rt2_input(const std::uint8_t* data, std::size_t size);           // rt2_check.cpp
 bool check_hull3_input(const std::uint8_t* data, std::size_t size);         // hull3_check.cpp
 bool check_rtd_input(const std::uint8_t* data, std::size_t size);           // rtd_check.cpp
+bool check_rt3_input(const std::uint8_t* data, std::size_t size);           // rt3_check.cpp
 
 }  // namespace flipflop::fuzz

@@ -14,7 +14,7 @@ collinear, coplanar, cocircular, cospherical, lifted points on a plane,
 duplicates, all points equal.
 read_points / read_indices: valid files of every format and one file per
 error the readers report.
-hull2 / certify / kernels / rt2 / hull3 / rtd: small degenerate point sets
+hull2 / certify / kernels / rt2 / hull3 / rtd / rt3: small degenerate point sets
 (collinear, cocircular, cospherical, duplicates, ulp jitter, huge / tiny /
 subnormal magnitudes; rtd also in R^4 and R^5, with target weights for the
 instant flip) in the point-set layout of fuzz_input.hpp.
@@ -432,6 +432,25 @@ RTD = {
                                  + [small(0, 0, 0, 0, 0), small(1, 1, 1, 1, 1)], kind=0),
 }
 
+# ---- rt3 (fuzz/rt3_check.cpp): flags (bit 0 weighted), a 3D point set ---------------
+def rt3(points, weights=None, e=0):
+    return bytes([1 if weights is not None else 0]) + point_set(points, weights, e)
+
+
+RT3 = {
+    "cube_centre": rt3(CUBE_CENTRE),
+    "cube_centre_weighted": rt3(CUBE_CENTRE, [0] * 8 + [3]),
+    "tiny_cube": rt3(CUBE_CENTRE, [1] * 9, e=-512),
+    "sphere_lattice": rt3(SPHERE30[:20]),
+    "jitter": rt3(JITTER3, [0, 1, 0, 1, 0, 1, 0, 1]),
+    "int8": rt3(int8_points(3, 20, 1), [k % 5 for k in range(20)]),
+    "int8_unweighted": rt3(int8_points(3, 24, 4)),
+    "coplanar": rt3(COPLANAR_PLUS_ONE[:6]),
+    "coplanar_plus_one": rt3(COPLANAR_PLUS_ONE),
+    "grid_duplicates": rt3(CUBE + CUBE[:4], [k % 3 for k in range(12)]),
+    "huge_cube": rt3(CUBE_CENTRE, [k % 2 for k in range(9)], e=496),
+}
+
 TARGETS = {
     "predicates": (PREDICATES, ".bin"),
     "read_points": (READ_POINTS, ".bin"),
@@ -442,6 +461,7 @@ TARGETS = {
     "rt2": (RT2, ".bin"),
     "hull3": (HULL3, ".bin"),
     "rtd": (RTD, ".bin"),
+    "rt3": (RT3, ".bin"),
 }
 
 

@@ -56,6 +56,7 @@
 #include <string>
 
 #include "kernels_cpu/parallel.hpp"
+#include "kernels_cpu/witnessed_output.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/certify/certify_detail.hpp"
@@ -429,47 +430,12 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
   if (T.size() != real_triangles)
     return Report::fail("canonical-output", "the output has " + std::to_string(T.size()) + " triangles, the witness " +
                                                 std::to_string(real_triangles));
-  // first[m]: the first output triangle whose smallest index is >= m (each m
-  // written by one i: race-free)
-  std::vector<std::uint32_t> first(n + 1);
-  par_for(T.size() + 1, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i) {
-      const std::size_t from = i == 0 ? 0 : std::size_t{T[i - 1][0]} + 1, to = i == T.size() ? n : T[i][0];
-      for (std::size_t m = from; m <= to; ++m) first[m] = static_cast<std::uint32_t>(i);
-    }
-  });
-  auto in_output = [&](const Triangle& x) {
-    for (std::uint32_t i = first[x[0]]; i < first[x[0] + 1]; ++i)
-      if (T[i][1] == x[1] && T[i][2] == x[2]) return true;
-    return false;
-  };
-  // Looked up in slot order, each witnessed triangle would be a cache miss in
-  // `first` and in the output; bucketed by smallest index (each chunk writing
-  // its own ranges), each bucket is looked up in its own small range of both.
-  std::size_t total = 0;
-  for (std::size_t b = 0; b < B; ++b)
-    for (std::size_t ch = 0; ch < chunks; ++ch) {
-      const std::size_t k = pos[ch * B + b];
-      pos[ch * B + b] = total;
-      total += k;
-    }
-  std::vector<Triangle> by_bucket(total);
-  par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t ch = lo; ch < hi; ++ch) {
-      for (const Triangle& x : part[ch]) by_bucket[pos[ch * B + bucket(x[0])]++] = x;
-      std::vector<Triangle>().swap(part[ch]);
-    }
-  });
-  std::atomic<bool> absent{false};
-  par_for(total, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i)
-      if (!in_output(by_bucket[i])) absent.store(true, std::memory_order_relaxed);
-  });
-  if (absent.load()) {  // name the smallest such slot
-    const std::size_t t =
-        smallest_failing(slots, for_range, [&](std::size_t t) { return W.real(t) && !in_output(canonical_ids(t)); });
+  // every witnessed triangle is in the output, bucketed by smallest index
+  // (witnessed_output.hpp)
+  if (const std::size_t t = first_unwitnessed_slot(
+          n, T, part, pos, B, bucket, slots, for_range, [&](std::size_t t) { return W.real(t); }, canonical_ids);
+      t < slots)
     return Report::fail("canonical-output", "triangle " + W.tri(t) + " of the witness is not in the output");
-  }
   return Report::pass();
 }
 

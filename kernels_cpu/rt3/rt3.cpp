@@ -135,6 +135,7 @@ struct Horizon {
   std::uint32_t v[4];  // the visible tetrahedron's tuple with its corner i := p
   std::uint32_t i;     // corner of p (the facet opposite it is the horizon ridge)
   std::uint32_t out;   // link 4u + j of the invisible neighbour across it
+  std::uint32_t loc[4];  // link_cone (sequential): the corners' numbers on the horizon
 };
 
 // The state of one inserting thread: the sequential insertion's, or one
@@ -346,12 +347,15 @@ bool Builder::link_cone(Worker& w) {
   std::uint32_t L = 0;
   if (w.me == 0) {
     ++stamp_;
-    for (const Horizon& h : w.horizon)
+    for (Horizon& h : w.horizon)
       for (std::uint32_t q = 0; q < 4; ++q) {
         const std::uint32_t x = h.v[q];
-        if (q == h.i || vstamp_[x] == stamp_) continue;
-        vstamp_[x] = stamp_;
-        vlocal_[x] = L++;
+        if (q == h.i) continue;
+        if (vstamp_[x] != stamp_) {
+          vstamp_[x] = stamp_;
+          vlocal_[x] = L++;
+        }
+        h.loc[q] = vlocal_[x];
       }
   }
   const bool small = w.me == 0 && L <= kMaxLocal;
@@ -377,16 +381,17 @@ bool Builder::link_cone(Worker& w) {
     for (std::uint32_t j = 0; j < 4; ++j) {
       if (j == h.i) continue;
       // the facet opposite corner j: the apex and the two corners other than h.i, j
-      const std::uint32_t a = h.v[kOther[h.i][j][0]], b = h.v[kOther[h.i][j][1]];
+      const std::uint32_t qa = kOther[h.i][j][0], qb = kOther[h.i][j][1];
       const std::uint32_t half = 4 * s + j;
       std::uint32_t other = kDead;
       if (small) {
-        std::uint32_t la = vlocal_[a], lb = vlocal_[b];
+        std::uint32_t la = h.loc[qa], lb = h.loc[qb];
         if (la > lb) std::swap(la, lb);
         std::uint32_t& e = pending_[la * kMaxLocal + lb];
         other = e;
         e = other == kDead ? half : kDead;
       } else {
+        const std::uint32_t a = h.v[qa], b = h.v[qb];
         const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
         std::uint64_t slot = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;
         for (;; slot = (slot + 1) & mask) {
@@ -605,7 +610,12 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
         ws[q].rng = brio::splitmix64(lo + q) | 1;
         ws[q].fail_every = fail_every;
         ws[q].remember(anchor);
+        // the free slots so far, shared out
+        const std::size_t f = seq_.free.size();
+        ws[q].free.assign(seq_.free.begin() + static_cast<std::ptrdiff_t>(f * q / pieces),
+                          seq_.free.begin() + static_cast<std::ptrdiff_t>(f * (q + 1) / pieces));
       }
+      seq_.free.clear();
       par_for(pieces, 1, [&](std::size_t a, std::size_t b) {
         for (std::size_t q = a; q < b; ++q) {
           Worker& w = ws[q];
@@ -663,53 +673,84 @@ Tet canonical_tet(Index a, Index b, Index c, Index d) {
   return t;
 }
 
+// The sort is a two-pass MSD radix sort on the smallest index, then a sort
+// of the few tetrahedra sharing it: (1) every piece of slots counts its live
+// real tetrahedra per coarse bucket (the top bits of the smallest index, at
+// most 1024 buckets); (2) each piece writes its tetrahedra to its own
+// stretch of each bucket (offsets from the counts, bucket-major, so nothing
+// is shared and the writes go to at most 1024 sequential streams per piece);
+// (3) each bucket, which fits in cache, is counting-sorted on the rest of
+// the smallest index and each run sorted. The result is the unique sorted
+// list whatever the thread count.
 std::vector<Tet> Builder::output() const {
   const std::size_t slots = slots_.load();
   const std::size_t n = V_;
-  // live real slots, their canonical tuples bucketed by the smallest index
-  // (counting sort: an atomic count per index, prefix sums, an atomic cursor
-  // per bucket), then each bucket sorted — the result is the unique sorted
-  // list whatever the thread count
-  std::unique_ptr<std::atomic<std::uint32_t>[]> count(new std::atomic<std::uint32_t>[n + 1]);
-  par_for(n + 1, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i) count[i].store(0, std::memory_order_relaxed);
+  int shift = 0;
+  while ((n >> shift) > 1024) ++shift;
+  const std::size_t B = ((n - 1) >> shift) + 1;
+  const std::size_t pieces = (slots + kChunk - 1) / kChunk;
+  std::vector<std::uint32_t> at(pieces * B, 0);  // counts, then write cursors
+  // the canonical tuple of slot t, or none (computed twice rather than
+  // stored: 16 bytes per slot less at the peak)
+  auto canonical = [&](std::size_t t, Tet& out) {
+    const std::uint32_t* v = tet(static_cast<std::uint32_t>(t));
+    if (v[0] == kDead || v[0] == V_ || v[1] == V_ || v[2] == V_ || v[3] == V_) return false;
+    out = canonical_tet(P_[v[0]].id, P_[v[1]].id, P_[v[2]].id, P_[v[3]].id);
+    return true;
+  };
+  par_for(pieces, 1, [&](std::size_t lo, std::size_t hi) {
+    Tet c4;
+    for (std::size_t c = lo; c < hi; ++c)
+      for (std::size_t t = c * kChunk; t < std::min(slots, (c + 1) * kChunk); ++t)
+        if (canonical(t, c4)) ++at[c * B + (c4[0] >> shift)];
   });
-  std::vector<Tet> canon(slots);
-  std::vector<std::uint8_t> real(slots, 0);
-  par_for(slots, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t t = a; t < b; ++t) {
-      const std::uint32_t* v = tet(static_cast<std::uint32_t>(t));
-      if (v[0] == kDead || v[0] == V_ || v[1] == V_ || v[2] == V_ || v[3] == V_) continue;
-      real[t] = 1;
-      canon[t] = canonical_tet(P_[v[0]].id, P_[v[1]].id, P_[v[2]].id, P_[v[3]].id);
-      count[canon[t][0]].fetch_add(1, std::memory_order_relaxed);
-    }
-  });
-  std::vector<std::size_t> start(n + 1, 0);
+  std::vector<std::size_t> bucket(B + 1, 0);
   std::size_t sum = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    start[i] = sum;
-    sum += count[i].load(std::memory_order_relaxed);
-    count[i].store(0, std::memory_order_relaxed);
+  for (std::size_t b = 0; b < B; ++b) {
+    bucket[b] = sum;
+    for (std::size_t c = 0; c < pieces; ++c) {
+      const std::uint32_t k = at[c * B + b];
+      at[c * B + b] = static_cast<std::uint32_t>(sum - bucket[b]);  // offset within the bucket
+      sum += k;
+    }
   }
-  start[n] = sum;
+  bucket[B] = sum;
   std::vector<Tet> out(sum);
-  par_for(slots, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t t = a; t < b; ++t)
-      if (real[t]) {
-        const Index m = canon[t][0];
-        out[start[m] + count[m].fetch_add(1, std::memory_order_relaxed)] = canon[t];
-      }
+  par_for(pieces, 1, [&](std::size_t lo, std::size_t hi) {
+    Tet c4;
+    for (std::size_t c = lo; c < hi; ++c)
+      for (std::size_t t = c * kChunk; t < std::min(slots, (c + 1) * kChunk); ++t)
+        if (canonical(t, c4)) {
+          const std::size_t b = c4[0] >> shift;
+          out[bucket[b] + at[c * B + b]++] = c4;
+        }
   });
-  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
-    for (std::size_t i = a; i < b; ++i)
-      std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[i]), out.begin() + static_cast<std::ptrdiff_t>(start[i + 1]));
+  par_for(B, 1, [&](std::size_t lo, std::size_t hi) {
+    std::vector<std::size_t> cnt;
+    std::vector<Tet> tmp;
+    for (std::size_t b = lo; b < hi; ++b) {
+      const std::size_t first = bucket[b], m = bucket[b + 1] - first;
+      cnt.assign((std::size_t{1} << shift) + 1, 0);
+      const Index base = static_cast<Index>(b << shift);
+      for (std::size_t q = 0; q < m; ++q) ++cnt[out[first + q][0] - base + 1];
+      for (std::size_t i = 1; i < cnt.size(); ++i) cnt[i] += cnt[i - 1];
+      tmp.resize(m);
+      for (std::size_t q = 0; q < m; ++q) tmp[cnt[out[first + q][0] - base]++] = out[first + q];
+      // runs of one smallest index (about six tetrahedra): insertion sort
+      for (std::size_t q = 1; q < m; ++q) {
+        const Tet x = tmp[q];
+        std::size_t r = q;
+        while (r > 0 && x < tmp[r - 1] && tmp[r - 1][0] == x[0]) tmp[r] = tmp[r - 1], --r;
+        tmp[r] = x;
+      }
+      std::copy(tmp.begin(), tmp.end(), out.begin() + static_cast<std::ptrdiff_t>(first));
+    }
   });
   return out;
 }
 
-// at_vertex (out): per position, the smallest real slot with it as a corner
-// (kDead for a point that is not a vertex).
+// at_vertex (out): per position, a real slot with it as a corner (kDead for
+// a point that is not a vertex).
 std::vector<Index> Builder::redundant(std::vector<std::uint32_t>* at_vertex) const {
   const std::size_t n = V_, slots = slots_.load();
   std::unique_ptr<std::atomic<std::uint32_t>[]> at(new std::atomic<std::uint32_t>[n]);
@@ -720,12 +761,9 @@ std::vector<Index> Builder::redundant(std::vector<std::uint32_t>* at_vertex) con
     for (std::size_t t = a; t < b; ++t) {
       const std::uint32_t* v = tet(static_cast<std::uint32_t>(t));
       if (v[0] == kDead || v[0] == V_ || v[1] == V_ || v[2] == V_ || v[3] == V_) continue;
-      for (int j = 0; j < 4; ++j) {
-        std::uint32_t cur = at[v[j]].load(std::memory_order_relaxed);
-        while (static_cast<std::uint32_t>(t) < cur &&
-               !at[v[j]].compare_exchange_weak(cur, static_cast<std::uint32_t>(t), std::memory_order_relaxed)) {
-        }
-      }
+      // any real slot will do (the witness's slots already depend on the
+      // parallel insertion's timing): one relaxed store, no read
+      for (int j = 0; j < 4; ++j) at[v[j]].store(static_cast<std::uint32_t>(t), std::memory_order_relaxed);
     }
   });
   std::vector<Index> red = par_select(n, [&](Index k) { return at[k].load(std::memory_order_relaxed) == kDead; });
