@@ -26,6 +26,10 @@ const char* kUsage =
     "                      a trailing '$': the whole name) [--csv]\n"
     "       flipflop bench hull2|hull3|rt2|dt2 --stages --dist NAME --n N [...]  (time by stage of flipflop:cpu:\n"
     "                      read .xyz/.npy, the kernel's stages, certify, write)\n"
+    "       flipflop bench rt3|dt3 --dist NAME --n N [--reps R] [--seed S] [--weights LO,HI] (rt3)\n"
+    "                      [--threads T] [--run PREFIX,...] [--csv] [--stages]  (3D regular / Delaunay:\n"
+    "                      flipflop:cpu, flipflop:reference, cgal:delaunay_triangulation_3[:parallel] (dt3),\n"
+    "                      cgal:regular_triangulation_3[:parallel], qhull and tetgen (dt3))\n"
     "       flipflop bench instant-flip --dim d --n N [--step S] [--reps R] [--seed S] [--run P,...] [--csv]\n"
     "                      (RT(S+W) -> RT(S+U) in place, U = max(0, W + delta), against fresh builds)\n";
 
@@ -46,7 +50,7 @@ double to_double(const std::string& opt, const std::string& s) {
 }
 
 Args parse(int argc, char** argv) {
-  if (argc < 2) throw Usage("missing experiment (predicates, hull2, hull3, dt2, rt2, instant-flip)");
+  if (argc < 2) throw Usage("missing experiment (predicates, hull2, hull3, dt2, rt2, dt3, rt3, instant-flip)");
   Args a;
   a.experiment = argv[1];
   bool have_n = false;
@@ -78,6 +82,9 @@ Args parse(int argc, char** argv) {
         start = comma + 1;
       }
       if (a.run.empty()) throw Usage("--run expects comma-separated row name prefixes");
+    } else if (opt == "--threads") {
+      a.threads = static_cast<int>(to_count(opt, val));
+      if (a.threads > 1024) throw Usage("--threads must be at most 1024");
     } else if (opt == "--dim") {
       a.dim = static_cast<int>(to_count(opt, val));
     } else if (opt == "--step") {
@@ -106,8 +113,8 @@ Args parse(int argc, char** argv) {
     return a;
   }
   if (a.experiment != "hull2" && a.experiment != "hull3" && a.experiment != "dt2" &&
-      a.experiment != "rt2")
-    throw Usage("unknown experiment '" + a.experiment + "' (predicates, hull2, hull3, dt2, rt2, instant-flip)");
+      a.experiment != "rt2" && a.experiment != "dt3" && a.experiment != "rt3")
+    throw Usage("unknown experiment '" + a.experiment + "' (predicates, hull2, hull3, dt2, rt2, dt3, rt3, instant-flip)");
   if (a.dist.empty()) throw Usage(a.experiment + " needs --dist NAME");
   if (!have_n || a.n == 0) throw Usage(a.experiment + " needs --n N (positive)");
   if (a.experiment == "rt2" && !a.weighted) {
@@ -116,8 +123,18 @@ Args parse(int argc, char** argv) {
     a.wlo = 0;
     a.whi = 1e-5;
   }
-  if (a.experiment != "rt2" && a.weighted)
-    throw Usage("--weights applies to rt2 only");
+  if (a.experiment == "rt3" && !a.weighted) {
+    // In [0,1]^3 with 10^5 uniform points (spacing n^(-1/3) ≈ 0.02, its
+    // square 4.6e-4) about 30 % of the points redundant (measured;
+    // docs/performance/rt3.md), as the thesis' middle 2D setting.
+    a.weighted = true;
+    a.wlo = 0;
+    a.whi = 1e-3;
+  }
+  if (a.experiment != "rt2" && a.experiment != "rt3" && a.weighted)
+    throw Usage("--weights applies to rt2 and rt3 only");
+  if (a.threads != 0 && a.experiment != "rt3" && a.experiment != "dt3")
+    throw Usage("--threads applies to rt3 and dt3 only");
   return a;
 }
 
@@ -132,6 +149,8 @@ int run(int argc, char** argv) {
     Args a = parse(argc, argv);
     if (a.experiment == "predicates") return detail::bench_predicates(a);
     if (a.experiment == "instant-flip") return detail::bench_instant_flip(a);
+    if (a.experiment == "rt3" || a.experiment == "dt3")
+      return a.stages ? detail::bench_rt3_stages(a) : detail::bench_rt3(a);
     if (a.stages) return detail::bench_stages(a);
     return detail::bench_peers(a);
   } catch (const Usage& e) {

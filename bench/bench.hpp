@@ -6,6 +6,9 @@
 //                  GMP; columns and input families in bench_predicates.cpp)
 //   flipflop bench hull2|hull3|dt2|rt2 --dist NAME --n N [--reps R] [--seed S]
 //                  [--thickness T] [--weights LO,HI] [--hull-points H] [--run P,...] [--csv]
+//   flipflop bench rt3|dt3 --dist NAME --n N [--reps R] [--seed S] [--weights LO,HI]
+//                  [--threads T] [--run P,...] [--csv] [--stages]
+//                  (3D regular / Delaunay triangulation; rows in bench_rt3.cpp)
 //
 // Every number printed is measured in this process: medians of R runs timed
 // with std::chrono::steady_clock; input generation is never timed.

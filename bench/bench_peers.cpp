@@ -91,7 +91,7 @@ void add_gpu_rows(std::vector<Peer<Output>>& rows, Run run, const std::string& s
 }  // namespace
 
 PointSet generated_input(const Args& a) {
-  const int need = a.experiment == "hull3" ? 3 : 2;
+  const int need = a.experiment == "hull3" || a.experiment == "rt3" || a.experiment == "dt3" ? 3 : 2;
   if (gen::dimension_of(a.dist) != need)
     throw Usage("distribution '" + a.dist + "' is not " + std::to_string(need) + "D (" +
                 a.experiment + ")");

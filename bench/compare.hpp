@@ -4,9 +4,13 @@
 // (name,median_s,min_s,max_s,size,identical).
 #pragma once
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <functional>
 #include <string>
@@ -47,21 +51,64 @@ inline bool chosen(const Args& a, const std::string& name) {
   return false;
 }
 
+// Resident memory of this process from /proc/self/status (Linux), in bytes:
+// key "VmRSS:" (now) or "VmHWM:" (the peak); -1 when unavailable.
+inline long long proc_status_bytes(const char* key) {
+  std::FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  long long kb = -1;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, key, std::strlen(key)) == 0) kb = std::atoll(line + std::strlen(key));
+  std::fclose(f);
+  return kb < 0 ? -1 : kb * 1024;
+}
+
+// The peak resident memory of a row above what the process held before it:
+// begin() returns freed heap memory to the system (malloc_trim) and resets the
+// kernel's peak to the current resident size (writing 5 to
+// /proc/self/clear_refs, Linux >= 4.0); extra() reads the peak since minus
+// that base. -1 when the kernel does not allow the reset.
+struct PeakMemory {
+  long long base = -1;
+  void begin() {
+    malloc_trim(0);
+    base = -1;
+    std::FILE* f = std::fopen("/proc/self/clear_refs", "w");
+    if (!f) return;
+    const bool ok = std::fputs("5", f) >= 0;
+    if (std::fclose(f) != 0 || !ok) return;
+    base = proc_status_bytes("VmRSS:");
+  }
+  long long extra() const {
+    const long long peak = proc_status_bytes("VmHWM:");
+    return base < 0 || peak < 0 ? -1 : std::max(0LL, peak - base);
+  }
+};
+
+// memory: the table gets a column "peak MB", each row's peak resident memory
+// above the process's before it (PeakMemory; the input, the earlier rows'
+// kept outputs excluded), the maximum over its runs. Not in the CSV, whose
+// columns are fixed.
 template <class Output>
 inline int compare_peers(const Args& a, const PointSet& pts, const std::vector<Peer<Output>>& all_peers,
-                  const char* size_label) {
+                  const char* size_label, bool memory = false) {
   std::vector<Peer<Output>> peers;
   for (const Peer<Output>& p : all_peers)
     if (chosen(a, p.name)) peers.push_back(p);
   if (peers.empty()) throw Usage("--run matches no row");
   std::vector<Row> rows;
+  std::vector<long long> peak;  // per row (memory)
   std::vector<Output> outputs;
   std::vector<std::string> output_names;
   for (const Peer<Output>& p : peers) {
     Row row{p.name, {}, {}, 0};
     Output out;
+    PeakMemory mem;
+    if (memory) mem.begin();
     try {
       for (int r = 0; r < a.reps; ++r) {
+        out = Output();  // the previous run's output freed outside the timing
         const double wall = seconds([&] { out = p.run(pts); });
         row.times.push_back(p.self_time ? p.self_time() : wall);
       }
@@ -72,6 +119,7 @@ inline int compare_peers(const Args& a, const PointSet& pts, const std::vector<P
       row.error = e.what();
       row.times.clear();
     }
+    peak.push_back(memory ? mem.extra() : -1);
     rows.push_back(std::move(row));
   }
   double fastest = 0;
@@ -93,16 +141,20 @@ inline int compare_peers(const Args& a, const PointSet& pts, const std::vector<P
     }
     return 0;
   }
-  std::printf("%-34s %12s %12s %12s %12s %10s\n", "peer", "median s", "min s", "max s",
-              size_label, "/fastest");
-  for (const Row& r : rows) {
+  std::printf("%-40s %12s %12s %12s %12s %10s%s\n", "peer", "median s", "min s", "max s",
+              size_label, "/fastest", memory ? "    peak MB" : "");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
     if (!r.error.empty()) {
-      std::printf("%-34s failed: %s\n", r.name.c_str(), r.error.c_str());
+      std::printf("%-40s failed: %s\n", r.name.c_str(), r.error.c_str());
       continue;
     }
     const auto [lo, hi] = std::minmax_element(r.times.begin(), r.times.end());
-    std::printf("%-34s %12.4f %12.4f %12.4f %12zu %10.2f\n", r.name.c_str(), median(r.times), *lo,
+    std::printf("%-40s %12.4f %12.4f %12.4f %12zu %10.2f", r.name.c_str(), median(r.times), *lo,
                 *hi, r.size, median(r.times) / fastest);
+    if (memory && peak[i] >= 0) std::printf(" %10.1f", static_cast<double>(peak[i]) / 1e6);
+    if (memory && peak[i] < 0) std::printf(" %10s", "?");
+    std::printf("\n");
   }
   if (outputs.size() >= 2) {
     std::string differing;

@@ -48,6 +48,7 @@ struct Args {
   bool csv = false;  // CSV rows instead of the table (DESIGN.md "Benchmarks")
   std::vector<std::string> run;  // --run: row name prefixes (case-insensitive); empty: every row
   bool stages = false;  // --stages: time by stage of flipflop:cpu (hull2, hull3)
+  int threads = 0;      // rt3|dt3: --threads N for flipflop:cpu and the CGAL parallel rows (0: all cores)
   int dim = 0;          // instant-flip: --dim d (2..5)
   double step = 0.01;   // instant-flip: --step s
 };
@@ -56,6 +57,8 @@ int bench_predicates(const Args& a);
 int bench_peers(const Args& a);
 int bench_stages(const Args& a);
 int bench_instant_flip(const Args& a);
+int bench_rt3(const Args& a);         // rt3|dt3 (bench_rt3.cpp)
+int bench_rt3_stages(const Args& a);  // rt3|dt3 --stages
 // The input of a hull/triangulation experiment: gen::generate with the
 // options of `a`, checked to have the experiment's dimension.
 PointSet generated_input(const Args& a);

@@ -405,15 +405,22 @@ int run_compute(const ComputeArgs& a) {
 
 namespace {
 
-// certify rtd at either level (reference/rtd/certify_rtd.hpp).
+// certify rtd at either level (reference/rtd/certify_rtd.hpp); also
+// certify rt3|dt3 (d = 3; dt3: no weight column).
 int certify_rtd_file(const CertifyArgs& a) {
-  if (a.dim < 2 || a.dim > 5) throw UsageError("certify rtd needs --dim d (2 to 5)");
-  const PointSet ps = io::read_points(a.points, a.dim, true);
+  const bool three = a.kind == "rt3" || a.kind == "dt3";
+  if (three && a.dim != 0 && a.dim != 3) throw UsageError("certify " + a.kind + " is 3D (--dim 3 or none)");
+  const int dim = three ? 3 : a.dim;
+  if (dim < 2 || dim > 5) throw UsageError("certify rtd needs --dim d (2 to 5)");
+  const PointSet ps = io::read_points(a.points, dim, a.kind != "dt3");
+  // input that does not span R^d has no triangulation to certify: a usage
+  // error (one line, exit 2) whatever the output holds
+  if (std::string why = dimension_problem(ps); !why.empty()) throw UsageError(a.points + ": " + why);
   std::ifstream in(a.output);
   if (!in) throw UsageError(a.output + ": cannot read");
   std::vector<std::vector<Index>> simplices;
   try {
-    simplices = read_simplices(in, a.dim);
+    simplices = read_simplices(in, dim);
   } catch (const std::invalid_argument& e) {
     throw UsageError(a.output + ": " + e.what());
   }
@@ -424,21 +431,22 @@ int certify_rtd_file(const CertifyArgs& a) {
   const char* level = a.canonical ? "canonical" : a.strict ? "strict" : "exact";
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {
-    std::cout << "NOT certified (rtd, " << level << "): " << r.message() << "\n";
+    std::cout << "NOT certified (" << a.kind << ", " << level << "): " << r.message() << "\n";
     return 1;
   }
-  std::cout << "certified (rtd, " << level << "): " << ps.size() << " points in R^" << a.dim << ", "
-            << simplices.size() << " simplices\n";
+  std::cout << "certified (" << a.kind << ", " << level << "): " << ps.size() << " points in R^" << dim << ", "
+            << simplices.size() << (three ? " tetrahedra\n" : " simplices\n");
   return 0;
 }
 
 }  // namespace
 
 int run_certify(const CertifyArgs& a) {
-  if (a.threads != 0 && a.kind == "rtd") throw UsageError("--threads applies to certify hull2, hull3, rt2 and dt2");
-  if (a.kind == "rtd" && a.strict && a.canonical)
+  const bool rtd_kind = a.kind == "rtd" || a.kind == "rt3" || a.kind == "dt3";
+  if (a.threads != 0 && rtd_kind) throw UsageError("--threads applies to certify hull2, hull3, rt2 and dt2");
+  if (rtd_kind && a.strict && a.canonical)
     throw UsageError("--canonical does not apply to the strict views (certified at the exact level)");
-  if (a.kind == "rtd") return certify_rtd_file(a);
+  if (rtd_kind) return certify_rtd_file(a);
   if (a.dim != 0) throw UsageError("--dim applies to certify rtd");
   if (a.strict && a.kind == "hull2") throw UsageError("--strict applies to certify hull3, rt2 and dt2");
   if (a.strict && a.canonical)

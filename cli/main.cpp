@@ -3,11 +3,13 @@
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
-//   flipflop rtd IN --dim d [-o OUT] [--strict] [--stats]
+//   flipflop rt3|dt3 IN [-o OUT] [--backend cpu|reference] [--threads N] [--strict] [--stats]
+//   flipflop rtd IN --dim d [-o OUT] [--backend cpu (d = 3)|reference] [--threads N] [--strict] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
 //   flipflop certify rtd POINTS OUTPUT --dim d [--canonical | --strict]
+//   flipflop certify rt3|dt3 POINTS OUTPUT [--canonical | --strict]   (certify rtd --dim 3)
 //   flipflop bench ...
 //   flipflop demo
 //
@@ -23,6 +25,7 @@
 
 #include "bench/bench.hpp"
 #include "cli/commands.hpp"
+#include "cli/rt3_commands.hpp"
 #include "cli/rtd_commands.hpp"
 
 int main(int argc, char** argv) {
@@ -79,6 +82,32 @@ int main(int argc, char** argv) {
     compute_cmds.push_back(cmd);
   }
 
+  // ---- rt3 / dt3 (kernels_cpu/rt3) ------------------------------------------------
+  Rt3Args t3;
+  const char* kinds3[] = {"rt3", "dt3"};
+  const char* help3[] = {"3D regular triangulation (input columns x y z w)",
+                         "3D Delaunay triangulation (input columns x y z)"};
+  std::vector<CLI::App*> rt3_cmds;
+  for (int k = 0; k < 2; ++k) {
+    auto* cmd = app.add_subcommand(kinds3[k], help3[k]);
+    cmd->add_option("IN", t3.in, "input point file (.xyz, .npy, .off, .ply)")->required();
+    cmd->add_option("-o,--output", t3.out,
+                    "output file, format by extension: .txt/.idx/none tetrahedron list (default: standard output), "
+                    ".vtu tetrahedral mesh, .npy index array");
+    cmd->add_flag("--ascii", t3.ascii, "accepted for symmetry (.vtu is ASCII, .npy binary)");
+    cmd->add_option("--backend", t3.backend,
+                    "cpu (default: kernels_cpu/rt3, multithreaded, certified from its witness) or reference "
+                    "(RT+1, sequential); the same bytes")
+        ->check(CLI::IsMember({"cpu", "reference"}));
+    cmd->add_option("--threads", t3.threads, "worker threads of the cpu backend and its certifier (default: all cores)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--stats", t3.stats, "print counts and stage timings to standard error");
+    cmd->add_flag("--strict", t3.strict,
+                  "the strict view: no tetrahedron of zero volume (as rtd --strict), derived sequentially by the "
+                  "reference's rule from the backend's certified canonical answer, certified at the exact level");
+    rt3_cmds.push_back(cmd);
+  }
+
   // ---- rtd / instant-flip (thesis ch. 9) -----------------------------------------
   RtdArgs r;
   auto* rtd = app.add_subcommand("rtd", "d-dimensional regular triangulation (input: d coordinates and a weight per line)");
@@ -88,6 +117,12 @@ int main(int argc, char** argv) {
                   "output file, format by extension: .txt/.idx/none simplex list (default: standard output), "
                   ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
   rtd->add_flag("--ascii", r.ascii, ".ply and .stl output in ASCII (default binary)");
+  rtd->add_option("--backend", r.backend,
+                  "cpu (d = 3 only, the default there: kernels_cpu/rt3, as flipflop rt3) or reference (RT+1, the "
+                  "default for d != 3)")
+      ->check(CLI::IsMember({"cpu", "reference"}));
+  rtd->add_option("--threads", r.threads, "d = 3, cpu backend: worker threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
   rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
   rtd->add_flag("--strict", r.strict,
                 "the strict view: no simplex of zero volume (the exact regular subdivision's pulling refinement; "
@@ -110,9 +145,9 @@ int main(int argc, char** argv) {
   // ---- certify ---------------------------------------------------------------
   CertifyArgs v;
   auto* cert = app.add_subcommand("certify", "check an output against its input exactly; exit 0 when certified");
-  cert->add_option("KIND", v.kind, "hull2, hull3, rt2, dt2 or rtd")
+  cert->add_option("KIND", v.kind, "hull2, hull3, rt2, dt2, rtd, or rt3|dt3 (certify rtd --dim 3; dt3 unweighted)")
       ->required()
-      ->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2", "rtd"}));
+      ->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2", "rtd", "rt3", "dt3"}));
   cert->add_option("--dim", v.dim, "rtd: the dimension d (2 to 5; points: d coordinates and a weight per line)")
       ->check(CLI::Range(2, 5));
   cert->add_option("POINTS", v.points, "input point file")->required();
@@ -152,6 +187,11 @@ int main(int argc, char** argv) {
       if (compute_cmds[static_cast<std::size_t>(k)]->parsed()) {
         c.kind = kinds[k];
         return run_compute(c);
+      }
+    for (int k = 0; k < 2; ++k)
+      if (rt3_cmds[static_cast<std::size_t>(k)]->parsed()) {
+        t3.kind = kinds3[k];
+        return run_rt3(t3);
       }
     if (rtd->parsed()) return run_rtd(r);
     if (iflip->parsed()) return run_instant_flip(f);

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "cli/commands.hpp"
+#include "cli/rt3_commands.hpp"
 #include "io/input_error.hpp"
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
@@ -70,12 +71,21 @@ void write_result(const std::string& path, io::Format f, const PointSet& ps,
       redundant, ascii);
 }
 
+void certify_or_throw(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
+                      const std::string& what) {
+  const certify::Report r = ref::certify_rtd(ps, simplices);
+  if (!r.ok) throw InternalError(what + " failed certification: " + r.message());
+}
+
+// the first `limit` indices, " ..." after them
 std::string index_list(const std::vector<Index>& v, std::size_t limit = 50) {
   std::string s;
   for (std::size_t i = 0; i < v.size() && i < limit; ++i) s += " " + std::to_string(v[i]);
   if (v.size() > limit) s += " ...";
   return s;
 }
+
+}  // namespace
 
 void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
   if (!redundant.empty())
@@ -84,16 +94,28 @@ void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
               << "\n";
 }
 
-void certify_or_throw(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
-                      const std::string& what) {
-  const certify::Report r = ref::certify_rtd(ps, simplices);
-  if (!r.ok) throw InternalError(what + " failed certification: " + r.message());
-}
-
-}  // namespace
-
 int run_rtd(const RtdArgs& a) {
   check_dim(a.dim);
+  // the backend: kernels_cpu/rt3 for d = 3 (the default there, byte for byte
+  // the reference's answer), the reference (RT+1) for every d
+  if (a.backend == "cpu" && a.dim != 3)
+    throw UsageError("--backend cpu computes d = 3 only (kernels_cpu/rt3); rtd --dim " + std::to_string(a.dim) +
+                     " has the reference backend (--backend reference, the default there)");
+  const std::string backend = !a.backend.empty() ? a.backend : a.dim == 3 ? "cpu" : "reference";
+  if (a.threads != 0 && backend != "cpu")
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu, d = 3), not '" + backend + "'");
+  if (backend == "cpu") {
+    Rt3Args r;
+    r.kind = "rtd";
+    r.in = a.in;
+    r.out = a.out;
+    r.backend = "cpu";
+    r.threads = a.threads;
+    r.strict = a.strict;
+    r.stats = a.stats;
+    r.ascii = a.ascii;
+    return run_rt3(r);
+  }
   const io::Format fmt = output_format_of(a.out);
   const PointSet ps = read_d(a.in, a.dim, true);
   check_spans(ps, a.in);

@@ -1,11 +1,15 @@
 // rtd_commands.hpp — the d-dimensional regular-triangulation subcommands of
 // the flipflop tool (thesis ch. 9), callable from tests:
 //
-//   flipflop rtd IN --dim d -o OUT [--stats]
+//   flipflop rtd IN --dim d -o OUT [--backend cpu|reference] [--threads N] [--strict] [--stats]
 //       IN: d coordinates and a weight per line (.xyz; for d = 2, 3 also .off
 //       and .ply as io/read_points.hpp reads them). OUT: the canonical simplex
 //       list of RT(S ⊕ W) (canonical_d.hpp), certified (certify_rtd.hpp)
 //       before it is written. Redundant points are listed on stderr.
+//       d = 3 runs the cpu backend by default (kernels_cpu/rt3: run_rt3 of
+//       rt3_commands.hpp, the same bytes as `flipflop rt3`); every d has
+//       --backend reference (RT+1, rt_incremental.hpp), the only one for
+//       d != 3 (--backend cpu there is a usage error).
 //
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz -o OUT
 //                        [--stats] [--timeline]
@@ -26,6 +30,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "reference/point_set.hpp"
 
 namespace flipflop::cli {
 
@@ -35,6 +42,9 @@ struct RtdArgs {
   bool stats = false;
   bool strict = false;  // the strict view (reference/rtd/strict_rtd.hpp)
   bool ascii = false;  // .ply/.stl output in ASCII
+  std::string backend;  // "cpu" (d = 3 only: kernels_cpu/rt3, rt3_commands.hpp) or "reference"; empty: cpu
+                        // for d = 3, reference otherwise
+  int threads = 0;      // cpu backend: worker threads (0: all cores)
 };
 
 struct InstantFlipArgs {
@@ -47,5 +57,9 @@ struct InstantFlipArgs {
 
 int run_rtd(const RtdArgs& a);
 int run_instant_flip(const InstantFlipArgs& a);
+
+// On standard error: "CMD: N redundant points (not vertices): i j k ..." (the
+// first 50), nothing when there are none — rtd's, instant-flip's and rt3's report.
+void report_redundant(const char* cmd, const std::vector<Index>& redundant);
 
 }  // namespace flipflop::cli

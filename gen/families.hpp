@@ -40,4 +40,7 @@ void tiny(Rng& r, int dim, std::size_t n, Coords& out);
 void circle_lattice(Rng& r, std::size_t n, Coords& out);
 void sphere_lattice(Rng& r, std::size_t n, Coords& out);
 
+// planes.cpp — a scanned building: planes, millimetres, duplicates
+void planes3(Rng& r, std::size_t n, Coords& out);
+
 }  // namespace flipflop::gen::detail

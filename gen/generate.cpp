@@ -54,6 +54,7 @@ const Family kFamilies[] = {
     {"huge3", 3, [](Rng& r, std::size_t n, const Options&, Coords& c) { detail::huge(r, 3, n, c); }},
     {"tiny2", 2, [](Rng& r, std::size_t n, const Options&, Coords& c) { detail::tiny(r, 2, n, c); }},
     {"tiny3", 3, [](Rng& r, std::size_t n, const Options&, Coords& c) { detail::tiny(r, 3, n, c); }},
+    {"planes3", 3, [](Rng& r, std::size_t n, const Options&, Coords& c) { detail::planes3(r, n, c); }},
 };
 
 const Family& find(const std::string& dist) {

@@ -18,6 +18,9 @@
 // [0,1]; degenerate.cpp and lattice.cpp document each):
 //   grid2 grid3 circle-lattice sphere-lattice collinear2 collinear3 coplanar3
 //   duplicates2 duplicates3 jitter2 jitter3 huge2 huge3 tiny2 tiny3
+//   planes3 (a scanned building: points on nine planes of a 30 × 20 × 10 m
+//   hall, millimetre coordinates, one point in 16 an exact duplicate;
+//   planes.cpp)
 //
 // Determinism: the output depends only on (dist, n, options), on every
 // machine. The only source of randomness is std::mt19937_64 (its output

@@ -15,6 +15,7 @@
 //     0 for inward pointing normals by Geomview convention", user_r.h), i.e. it
 //     is clockwise seen from outside; we reverse it.
 // proptests/peers_test.cpp checks both against CGAL and flipflop's predicates.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -23,6 +24,7 @@
 
 #include "reference/canonical.hpp"
 #include "peers/peers.hpp"
+#include "peers/triangulation3.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -172,6 +174,38 @@ std::vector<Triangle> qhull_delaunay2(const PointSet& pts) {
     tris.push_back(t);
   }
   return canonical_triangles(std::move(tris));
+}
+
+std::vector<Tet> qhull_delaunay3(const PointSet& pts, double* build_seconds) {
+  // "d Qt Qbb" (qhull_delaunay2's options, scipy's engine): the lower facets
+  // of the lifted hull in R^4 are the Delaunay tetrahedra; under Qt each is
+  // simplicial (4 vertices).
+  const auto t0 = std::chrono::steady_clock::now();
+  QhullRun run(pts, 3, "d Qt Qbb", "qhull_delaunay3");
+  if (build_seconds)
+    *build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  qhT* qh = run.qh();
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto P = [&](Index i) { return K::Point_3(pts.point(i)[0], pts.point(i)[1], pts.point(i)[2]); };
+  // the volume sign of CGAL's POSITIVE (cgal_triangulation3.cpp)
+  const int positive = static_cast<int>(
+      CGAL::orientation(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0), K::Point_3(0, 0, 1)));
+  std::vector<Tet> tets;
+  facetT* facet;
+  FORALLfacets {
+    if (facet->upperdelaunay) continue;  // the upper hull is not part of the triangulation
+    if (qh_setsize(qh, facet->vertices) != 4)
+      throw std::runtime_error("qhull_delaunay3: Qhull returned a non-simplicial facet under Qt");
+    Tet t;
+    for (int k = 0; k < 4; ++k)
+      t[static_cast<std::size_t>(k)] =
+          static_cast<Index>(qh_pointid(qh, static_cast<vertexT*>(facet->vertices->e[k].p)->point));
+    // volume-positive by the exact orientation of the input points; a flat
+    // tetrahedron (Qt on a merged facet) keeps Qhull's order
+    if (static_cast<int>(CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), P(t[3]))) * positive < 0) std::swap(t[0], t[1]);
+    tets.push_back(t);
+  }
+  return canonical_tets(std::move(tets));
 }
 
 }  // namespace flipflop::peers

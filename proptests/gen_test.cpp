@@ -36,7 +36,8 @@ const std::vector<std::string> kAll = {
     "square",      "disk",        "frame",      "circle",      "cube",           "ball",
     "box",         "sphere",      "cball",      "grid2",       "grid3",          "circle-lattice",
     "sphere-lattice", "collinear2", "collinear3", "coplanar3", "duplicates2",    "duplicates3",
-    "jitter2",     "jitter3",     "huge2",      "huge3",       "tiny2",          "tiny3"};
+    "jitter2",     "jitter3",     "huge2",      "huge3",       "tiny2",          "tiny3",
+    "planes3"};
 
 // |p - (1/2, ..., 1/2)|^2, exactly.
 mpq_class dist2_center(const double* p, int dim) {

@@ -1,4 +1,4 @@
-"""Shared by measure_hull3.py and measure_rt2.py: one `flipflop bench ... --csv`
+"""Shared by measure_hull3.py, measure_rt2.py and measure_rt3.py: one `flipflop bench ... --csv`
 line (all rows from one process, the bench's `identical` verdict kept: a line
 whose outputs differ stops the script) and the CSV tables with their notes."""
 import csv
@@ -16,11 +16,12 @@ class Runner:
         self.flipflop, self.script, self.reps = flipflop, script, reps
         self.stamp = time.strftime("%Y-%m-%d")
 
-    def bench(self, kind, args, run, reps=None):
+    def bench(self, kind, args, run, reps=None, identical=True):
+        """identical=False: peers may break ties their own way (degenerate input)"""
         out = subprocess.run([self.flipflop, "bench", kind] + args + ["--reps", reps or self.reps, "--csv", "--run", run],
                              check=True, capture_output=True, text=True).stdout
         rows = list(csv.DictReader(io.StringIO(out)))
-        if not all(r["identical"] == "1" for r in rows):
+        if identical and not all(r["identical"] == "1" for r in rows):
             sys.exit("outputs differ: %s %s %s" % (kind, args, out))
         return rows
 

@@ -39,8 +39,11 @@ gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 
 _GPU = ("cuda-omp", "cuda") if gpu_backends else ()
 _HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU}
-# per dimension: the multithreaded and GPU kernels exist for d = 2 (kernels_cpu/rt2, kernels_cuda/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("reference",), 4: ("reference",), 5: ("reference",)}
+# per dimension, the default first: the multithreaded kernels exist for d = 2
+# and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the GPU kernels for d = 2
+# (kernels_cuda/rt2)
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"), 4: ("reference",),
+                      5: ("reference",)}
 
 
 def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:
@@ -181,13 +184,15 @@ class Delaunay:
     simplices per cube of a grid in d >= 3), certified (`dt2 --strict`,
     `rtd --strict` on the command line).
 
-    backend: 'cpu' (2D only, the default there: the multithreaded kernel of
-    kernels_cpu/rt2), 'reference' (the exact sequential reference: ffRT in
-    2D, the default in 3D..5D) or, in 2D, one of `gpu_backends` ('cuda-omp':
+    backend: 'cpu' (2D and 3D, the default there: the multithreaded kernels
+    of kernels_cpu/rt2 and kernels_cpu/rt3, certified from their witnesses),
+    'reference' (the exact sequential reference: ffRT in 2D, RT+1 in 3D..5D,
+    the default in 4D and 5D) or, in 2D, one of `gpu_backends` ('cuda-omp':
     the GPU ffRT on thrust's OpenMP backend); every backend returns the same
-    simplices.
-    threads: worker threads of the 'cpu' backend and of the 2D certifier
-    (0: all cores).
+    simplices. strict=True derives the strict view from the backend's
+    certified answer by the reference's (sequential) rule.
+    threads: worker threads of the 'cpu' backend and of its certifier
+    (0: all cores); the answer is the same at any count.
     """
 
     def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None,
@@ -210,7 +215,9 @@ class Delaunay:
 
     def find_simplex(self, xi) -> np.ndarray:
         """For each point of xi (shape (..., d)), the index of a simplex that
-        contains it (closed; decided exactly), -1 outside the hull."""
+        contains it (closed; decided exactly), -1 outside the hull. Simplices
+        of zero volume (the canonical answer's on degenerate input) are never
+        returned: a point on one lies in a neighbour of positive volume."""
         q = np.asarray(xi, dtype=np.float64)
         shape = q.shape[:-1]
         if q.shape[-1:] != (self.ndim,):

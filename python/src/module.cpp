@@ -38,6 +38,8 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#include "kernels_cpu/rt3/certify_rt3.hpp"
+#include "kernels_cpu/rt3/rt3.hpp"
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
 #include "kernels_cuda/gpu.hpp"
 #endif
@@ -580,18 +582,24 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 // ---- triangulations ------------------------------------------------------------
 
 // (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by the
-// cpu backend (kernels_cpu/rt2) or ffRT (the 2D reference), d = 3..5 by
-// RT+1; all canonical.
+// cpu backend (kernels_cpu/rt2) or ffRT (the 2D reference), d = 3 by the cpu
+// backend (kernels_cpu/rt3, certified from its witness by cpu::certify_rt3,
+// as `flipflop rt3|dt3`) or RT+1, d = 4, 5 by RT+1; all canonical. The
+// strict views are derived from the certified canonical answer by the
+// reference's rules (strict_rt2, strict_rtd), whichever backend computed it.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
                                               const std::string& backend, bool strict, int threads) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
-  if (!(backend == "reference" || ((backend == "cpu" || gpu_backend(backend)) && d == 2)))
-    throw std::invalid_argument("Delaunay backends: " + backend_list("'cpu' (2D), 'reference'") + " (2D); got '" +
+  if (!(backend == "reference" || (backend == "cpu" && (d == 2 || d == 3)) || (gpu_backend(backend) && d == 2)))
+    throw std::invalid_argument("Delaunay backends: 'cpu' (2D, 3D), 'reference'" +
+                                (backend_list("").empty() ? std::string() : backend_list("") + " (2D)") + "; got '" +
                                 backend + "'");
   std::vector<std::vector<Index>> simplices;
   std::vector<Triangle> tris;  // d = 2 (not copied into `simplices`: 2 * 10^6 small vectors took 0.2 s)
+  std::vector<cpu::Tet> tets;  // d = 3, the cpu backend's canonical answer (likewise)
+  bool flat_tets = false;      // the answer is in `tets`
   std::vector<Index> redundant;
   {
     nb::gil_scoped_release nogil;
@@ -617,6 +625,28 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
         check_certified(certify::rt2_strict(ps, tris), "strict Delaunay");
       }
       redundant = points_used(ps.size(), tris, false);
+    } else if (d == 3 && backend == "cpu") {
+      cpu::Rt3Options o;
+      o.threads = threads;
+      cpu::Rt3Result r;
+      {  // certified from the kernel's witness, as `flipflop rt3|dt3` (the witness freed after)
+        cpu::Rt3Witness witness;
+        r = cpu::rt3(ps, o, nullptr, &witness);
+        check_certified(cpu::certify_rt3(ps, witness, r.tets, certify::Level::canonical, threads), "Delaunay");
+      }
+      if (strict) {  // `rt3 --strict`: the reference's rule from the certified answer, certified at the exact level
+        std::vector<std::vector<Index>> canonical;
+        canonical.reserve(r.tets.size());
+        for (const cpu::Tet& t : r.tets) canonical.push_back({t[0], t[1], t[2], t[3]});
+        r.tets = {};
+        simplices = ref::strict_rtd(ps, canonical);
+        check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
+        redundant = non_vertices(ps.size(), simplices);
+      } else {
+        tets = std::move(r.tets);
+        redundant = std::move(r.redundant);
+        flat_tets = true;
+      }
     } else {
       ref::Rtd r = ref::rtd_incremental(ps);
       check_certified(certify::rtd(ps, r.simplices), "Delaunay");
@@ -629,7 +659,9 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       }
     }
   }
-  return {d == 2 ? cells_array(tris, 3) : cells_array(simplices, static_cast<std::size_t>(d + 1)),
+  return {d == 2      ? cells_array(tris, 3)
+          : flat_tets ? cells_array(tets, 4)
+                      : cells_array(simplices, static_cast<std::size_t>(d + 1)),
           list_array(redundant)};
 }
 
@@ -655,18 +687,78 @@ IndexArray neighbors(const Cells& c) {
   return index_array(std::move(nb), m, k);
 }
 
+// The queries' visiting order for find_simplex: along a Morton (Z-order)
+// curve of their coordinates, quantised to 63 / d bits per axis over their
+// bounding box, so that consecutive walks start near their targets. Only
+// the speed depends on it (and, for a query on a face shared by several
+// simplices, which of them is returned).
+std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_t d) {
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  if (n < 2) return order;
+  const unsigned bits = static_cast<unsigned>(63 / d);
+  double lo[6], hi[6];
+  for (std::size_t j = 0; j < d; ++j) lo[j] = hi[j] = q[j];
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t j = 0; j < d; ++j) {
+      lo[j] = std::min(lo[j], q[i * d + j]);
+      hi[j] = std::max(hi[j], q[i * d + j]);
+    }
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(n);
+  const double top = std::ldexp(1.0, static_cast<int>(bits)) - 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t key = 0;
+    for (std::size_t j = 0; j < d; ++j) {
+      // halves first: no overflow for coordinates near +-1.8e308
+      const double span = hi[j] * 0.5 - lo[j] * 0.5;
+      const double t = span > 0 ? (q[i * d + j] * 0.5 - lo[j] * 0.5) / span : 0.0;
+      const auto cell = static_cast<std::uint64_t>(std::min(std::max(t, 0.0), 1.0) * top);
+      for (unsigned b = 0; b < bits; ++b) key |= ((cell >> b) & 1u) << (b * d + j);
+    }
+    keyed[i] = {key, i};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t i = 0; i < n; ++i) order[i] = keyed[i].second;
+  return order;
+}
+
 // Exact point location: for each query, a simplex that contains it (closed;
-// among several, the first found by a walk that starts where the previous
-// query ended, else by a scan in index order), -1 when outside all.
-// Simplices of zero volume contain nothing (the canonical answer may hold
-// them; they cover no area).
+// among several, the one a visibility walk reaches first, else the first of
+// a scan in index order), -1 when outside all. Simplices of zero volume
+// contain nothing (the canonical answer may hold them; they cover no volume).
+//
+// The walk: from the current simplex, cross a facet that has the query
+// strictly on its far side (exact orient_d, ties broken by moving the query
+// infinitesimally into the hull: `side` below), until none has: the simplex
+// contains the query. The queries are visited in Morton order (above), each
+// walk starting where the previous one ended. flipflop's simplices are all
+// positively oriented under the Simulation of Simplicity, the zero-volume
+// ones included, so a flat simplex is crossed as in the perturbed
+// triangulation: with the orientation sign of the others (a query off the
+// flat simplex's hyperplane is strictly on one side of each of its
+// non-degenerate facets, the same side as in the perturbed configuration).
+// The walk then follows a visibility walk in the perturbed triangulation, a
+// regular one, whose in-front relation is acyclic (Edelsbrunner 1990): it
+// ends, after a number of steps about the number of simplices between
+// start and target. A query that leaves through a boundary facet (one
+// without a neighbour, non-degenerate, the query strictly beyond) is outside
+// the hull: the hyperplane of a non-degenerate boundary facet supports the
+// hull. (Before the sign rule for flat simplices, the tie-breaking and the
+// Morton order, queries outside a grid's hull or on its lattice each ran
+// into the step limit and the scan: 3 ms a query on 15^3 points.) Where no
+// facet of a flat simplex is strictly seen (degenerate facets only), the walk
+// steps on to a neighbour (not the one it came from, where it can); a walk
+// that does not settle within 4m + 16 steps ends in the scan, which decides
+// every query exactly.
 IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const Points& q) {
   const PointSet ps = point_set(p, std::nullopt);
   const std::size_t m = c.shape(0), k = c.shape(1), d = k - 1;
   if (q.shape(1) != d) throw std::invalid_argument("query points must have the points' dimension");
+  if (nbr.shape(0) != m || nbr.shape(1) != k) throw std::invalid_argument("neighbors must have the simplices' shape");
   for (std::size_t i = 0; i < q.shape(0) * q.shape(1); ++i)
     if (!std::isfinite(q.data()[i])) throw std::invalid_argument("the query points hold NaN or infinite coordinates");
   std::vector<std::int64_t> out(q.shape(0), -1);
+  if (m == 0) return index_array(std::move(out), q.shape(0), 0, true);
   {
     nb::gil_scoped_release nogil;
     auto vtx = [&](std::size_t s, std::size_t j) { return ps.point(static_cast<std::size_t>(c.data()[s * k + j])); };
@@ -677,30 +769,64 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
       return pred::orient_d_exact(static_cast<int>(d), rows);
     };
     std::vector<int> own(m);
-    for (std::size_t s = 0; s < m; ++s) own[s] = orient(s, -1, nullptr);
-    std::size_t cur = 0;
-    for (std::size_t qi = 0; qi < q.shape(0); ++qi) {
+    int positive = 0;  // the sign of every simplex of non-zero volume (all are positive in one convention)
+    for (std::size_t s = 0; s < m; ++s) {
+      own[s] = orient(s, -1, nullptr);
+      if (positive == 0) positive = own[s];
+    }
+    if (positive == 0) positive = d % 2 == 0 ? 1 : -1;  // (all flat: the volume convention's, canonical_d.hpp)
+    // The query as the walk sees it: x' = (1 - e - ... - e^(d+1)) x + e v_0 +
+    // e^2 v_1 + ... + e^(d+1) v_d, the v_l the vertices of the first simplex of non-zero
+    // volume and e > 0 infinitesimal (but far larger than the input's SoS
+    // perturbation). By linearity in x's row, orient with x' is orient with x
+    // where that is not 0, else the first non-zero orient with x replaced by
+    // v_0, v_1, ...: non-zero for every facet whose vertices span a
+    // hyperplane (the v_l span R^d), 0 only for a degenerate facet. x' is a
+    // convex combination with positive weights of x and d+1 affinely
+    // independent points of the hull: inside the hull (strictly) whenever x is
+    // in it (closed), and outside when x is outside. So the walk moves among
+    // the facets' hyperplanes as in general position, and leaving through a
+    // boundary facet proves x outside even when x lies in that facet's
+    // hyperplane (x on the hull's boundary is found in a simplex).
+    std::size_t ref = 0;
+    while (ref + 1 < m && own[ref] == 0) ++ref;
+    auto side = [&](std::size_t s, std::size_t j, const double* x) {
+      if (const int o = orient(s, static_cast<long>(j), x); o != 0) return o;
+      if (own[ref] == 0) return 0;
+      for (std::size_t l = 0; l < k; ++l)
+        if (const int o = orient(s, static_cast<long>(j), vtx(ref, l)); o != 0) return o;
+      return 0;
+    };
+    const auto neighbour = [&](std::size_t s, std::size_t j) { return nbr.data()[s * k + j]; };
+    std::size_t cur = 0, prev = m;  // prev: where the walk came from (m: nowhere)
+    for (const std::size_t qi : morton_order(q.data(), q.shape(0), d)) {
       const double* x = q.data() + qi * d;
       long found = -1;
       bool outside = false;
-      for (std::size_t steps = 0; steps < 4 * m + 16 && found < 0 && !outside; ++steps) {
-        if (own[cur] == 0) {  // flat: step to any neighbour
-          long next = -1;
-          for (std::size_t j = 0; j < k && next < 0; ++j) next = static_cast<long>(nbr.data()[cur * k + j]);
-          if (next < 0) break;
-          cur = static_cast<std::size_t>(next);
-          continue;
-        }
+      for (std::size_t steps = 0; steps < 4 * m + 16; ++steps) {
+        // the simplex's sign; a flat one's under SoS (header)
+        const int sign = own[cur] != 0 ? own[cur] : positive;
         long exit_facet = -1;
         for (std::size_t j = 0; j < k && exit_facet < 0; ++j)
-          if (orient(cur, static_cast<long>(j), x) * own[cur] < 0) exit_facet = static_cast<long>(j);
-        if (exit_facet < 0) {
+          if (side(cur, j, x) * sign < 0) exit_facet = static_cast<long>(j);
+        if (exit_facet < 0 && own[cur] != 0) {
           found = static_cast<long>(cur);
           break;
         }
-        const std::int64_t next = nbr.data()[cur * k + static_cast<std::size_t>(exit_facet)];
-        if (next < 0) outside = true;
-        else cur = static_cast<std::size_t>(next);
+        std::int64_t next = -1;
+        if (exit_facet >= 0) {
+          next = neighbour(cur, static_cast<std::size_t>(exit_facet));
+          if (next < 0) {
+            outside = true;
+            break;
+          }
+        } else {  // a flat simplex with the query in its hyperplane: on to a neighbour
+          for (std::size_t j = 0; j < k && (next < 0 || static_cast<std::size_t>(next) == prev); ++j)
+            next = neighbour(cur, (j + steps) % k);
+          if (next < 0) break;
+        }
+        prev = cur;
+        cur = static_cast<std::size_t>(next);
       }
       if (found < 0 && !outside)  // the walk did not settle: scan
         for (std::size_t s = 0; s < m && found < 0; ++s) {

@@ -13,7 +13,11 @@ build).
     Delaunay's neighbors and convex_hull), computed in C++, equal to
     dictionaries and numpy recomputing them from points and simplices, and to
     scipy's;
-  * bad input raises ValueError, never crashes.
+  * bad input raises ValueError, never crashes;
+  * 3D: the cpu kernel (the default) returns the reference's simplices and
+    redundant points on random, degenerate and weighted input, equals scipy
+    on general-position input (oracle), and find_simplex agrees with an
+    exact integer brute force, also on degenerate and strict triangulations.
 """
 import os
 import subprocess
@@ -106,7 +110,7 @@ def test_delaunay_equals_scipy(d, n):
     assert len(t.convex_hull) == len(s.convex_hull)
     assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
     assert flipflop.certify("delaunay", p, s.simplices, orient=True)  # scipy's, at the exact level
-    if d == 2:  # every backend, the same answer (cpu: the default in 2D)
+    if d <= 3:  # every backend, the same answer (cpu: the default in 2D and 3D)
         for backend, threads in (("reference", 0), ("cpu", 1), ("cpu", 2)):
             assert (flipflop.Delaunay(p, backend=backend, threads=threads).simplices == t.simplices).all()
     else:
@@ -592,3 +596,240 @@ def test_points_and_weights_read_in_place():
     t = flipflop.Delaunay(q, weights=w)
     assert np.array_equal(t.simplices, flipflop.Delaunay(q.copy(), weights=w.copy()).simplices)
     assert np.array_equal(t.simplices, flipflop.Delaunay(np.asfortranarray(q), weights=w.tolist()).simplices)
+
+
+# ---- 3D: the cpu kernel (kernels_cpu/rt3), the reference, scipy, point location -----
+# Delaunay in 3D runs the multithreaded kernel by default, certified from its
+# witness (certify_rt3); backend="reference" runs RT+1. Both must return the
+# same canonical simplices and redundant points on any input, degenerate or
+# weighted; scipy (Qhull, no code shared) must agree on general-position
+# input; find_simplex is checked against exact integer arithmetic.
+
+def grid3(k, step=1):
+    return np.array([(x, y, z) for x in range(k) for y in range(k) for z in range(k)], dtype=np.float64) * step
+
+
+def inputs_3d():
+    """(name, points, weights): random, degenerate and weighted 3D inputs."""
+    rng = np.random.default_rng(41)
+    g = grid3(6)
+    cube = rng.random((2000, 3))
+    ball = rng.standard_normal((1500, 3))
+    dup = np.vstack([g, g[::5], g[3::17]])  # cospherical, coplanar, duplicated
+    planes = np.vstack([np.c_[rng.integers(0, 9, (300, 2)), np.full(300, z)] for z in (0, 1, 2)]).astype(np.float64)
+    return [
+        ("cube", cube, None),
+        ("ball", ball, None),
+        ("grid", g, None),
+        ("grid+duplicates", dup, None),
+        ("planes+duplicates", planes, None),
+        ("cube weighted 1e-4", cube, rng.random(len(cube)) * 1e-4),
+        ("cube weighted 1e-2", cube, rng.random(len(cube)) * 1e-2),
+        ("grid weighted", dup, (np.arange(len(dup)) % 3).astype(np.float64) * 0.25),
+    ]
+
+
+@pytest.mark.parametrize("case", range(len(inputs_3d())), ids=[c[0] for c in inputs_3d()])
+def test_delaunay_3d_cpu_equals_reference(case):
+    name, p, w = inputs_3d()[case]
+    ref = flipflop.Delaunay(p, weights=w, backend="reference")
+    assert flipflop.certify("delaunay", p, ref.simplices, weights=w, canonical=True)
+    assert set(ref.redundant) == set(range(len(p))) - set(np.unique(ref.simplices))
+    for backend, threads in ((None, 0), ("cpu", 1), ("cpu", 2), ("cpu", 8)):
+        t = flipflop.Delaunay(p, weights=w, backend=backend, threads=threads)
+        assert t.simplices.dtype == np.int64 and t.simplices.shape == ref.simplices.shape, (name, threads)
+        assert np.array_equal(t.simplices, ref.simplices), (name, threads)
+        assert np.array_equal(t.redundant, ref.redundant), (name, threads)
+        assert np.array_equal(t.neighbors, ref.neighbors)
+    if "duplicates" in name:
+        assert len(ref.redundant) > 0  # one copy of coinciding inner points remains
+    if "1e-2" in name:
+        assert len(ref.redundant) > 0  # heavy weights hide points
+
+
+def test_delaunay_3d_strict_cpu_equals_reference():
+    # the strict view is derived from the certified canonical answer by the
+    # reference's rule: the same from either backend, d! = 6 simplices per cube
+    g = grid3(4)
+    a = flipflop.Delaunay(g, strict=True)
+    b = flipflop.Delaunay(g, strict=True, backend="reference")
+    assert np.array_equal(a.simplices, b.simplices) and len(a.simplices) == 27 * 6
+    assert flipflop.certify("delaunay", g, a.simplices)  # exact level: no zero-volume simplex
+    dup = np.vstack([g, g[::3]])
+    w = (np.arange(len(dup)) % 2).astype(np.float64) * 0.125
+    a = flipflop.Delaunay(dup, weights=w, strict=True, threads=2)
+    b = flipflop.Delaunay(dup, weights=w, strict=True, backend="reference")
+    assert np.array_equal(a.simplices, b.simplices)
+    assert np.array_equal(a.redundant, b.redundant)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_oracle_delaunay_3d_equals_scipy(seed):
+    # oracle: scipy.spatial.Delaunay (Qhull, no code shared) on general-
+    # position input: the same tetrahedra as vertex sets; ours positively
+    # oriented (numpy determinant, far from 0 on random input)
+    rng = np.random.default_rng(100 + seed)
+    n = (300, 1000, 3000, 5000)[seed]
+    p = rng.random((n, 3)) if seed % 2 == 0 else rng.standard_normal((n, 3)) * 10.0 ** (seed - 2)
+    t, s = flipflop.Delaunay(p, threads=2), ss.Delaunay(p)
+    assert {tuple(sorted(x)) for x in rows(t.simplices)} == {tuple(sorted(x)) for x in rows(s.simplices)}
+    assert len(t.redundant) == 0 and len(s.coplanar) == 0
+    e = p[t.simplices]
+    assert (np.linalg.det(e[:, 1:] - e[:, :1]) > 0).all()
+    assert {frozenset(x) for x in rows(t.convex_hull)} == {frozenset(x) for x in rows(s.convex_hull)}
+    q = rng.random((1000, 3)) * 1.2 - 0.1 if seed % 2 == 0 else rng.standard_normal((1000, 3)) * 10.0 ** (seed - 2)
+    mine, theirs = t.find_simplex(q), s.find_simplex(q)
+    # scipy counts points within about 1e-8 (barycentric) of a simplex as in
+    # it: compare where the query is clear of the hull's boundary and, inside,
+    # clear of the facets of scipy's simplex
+    eq = ss.ConvexHull(p).equations
+    clear = np.abs((q @ eq[:, :3].T + eq[:, 3]).max(axis=1)) > 1e-6 * np.abs(p).max()
+    assert clear.sum() > 900
+    assert ((mine >= 0) == (theirs >= 0))[clear].all()
+    inside = np.nonzero(clear & (theirs >= 0))[0]
+    b = np.einsum("ijk,ik->ij", s.transform[theirs[inside], :3], q[inside] - s.transform[theirs[inside], 3])
+    bary = np.c_[b, 1 - b.sum(axis=1)]
+    inside = inside[bary.min(axis=1) > 1e-9]
+    assert len(inside) > 100
+    assert all(sorted(a) == sorted(b) for a, b in zip(t.simplices[mine[inside]], s.simplices[theirs[inside]]))
+
+
+def orient_int(a, b, c, d):
+    """sign of det[b-a, c-a, d-a], exactly, for int64 arrays of small integers
+    (|coordinate| < 2^15: every product fits in int64)."""
+    u, v, w = b - a, c - a, d - a
+    det = (u[..., 0] * (v[..., 1] * w[..., 2] - v[..., 2] * w[..., 1])
+           - u[..., 1] * (v[..., 0] * w[..., 2] - v[..., 2] * w[..., 0])
+           + u[..., 2] * (v[..., 0] * w[..., 1] - v[..., 1] * w[..., 0]))
+    return np.sign(det)
+
+
+def containing_simplices(p, simplices, q):
+    """contains[i, s]: query i lies in simplex s (closed), decided exactly by
+    barycentric signs in integer arithmetic; simplices of zero volume
+    contain nothing (they cover no volume)."""
+    v = p[simplices]  # (m, 4, 3)
+    own = orient_int(v[:, 0], v[:, 1], v[:, 2], v[:, 3])  # (m,)
+    out = np.ones((len(q), len(simplices)), dtype=bool)
+    for lo in range(0, len(q), 64):  # 64 queries at a time against all simplices
+        qq = q[lo:lo + 64]
+        shape = (len(qq), len(simplices), 3)
+        for j in range(4):
+            corners = [np.broadcast_to(v[None, :, k], shape) for k in range(4)]
+            corners[j] = np.broadcast_to(qq[:, None, :], shape)
+            out[lo:lo + 64] &= orient_int(*corners) * own[None, :] >= 0
+    return out & (own != 0)[None, :]
+
+
+@pytest.mark.parametrize("kind", ["random", "grid", "grid+duplicates", "weighted", "strict"])
+def test_find_simplex_3d_against_brute_force(kind):
+    # points with even integer coordinates, queries with integer ones: queries
+    # on vertices, edges, facets and outside the hull, all decided exactly
+    rng = np.random.default_rng(7)
+    w = None
+    if kind == "random":
+        pi = rng.integers(-40, 41, (250, 3)) * 2
+    elif kind == "weighted":
+        pi = rng.integers(-40, 41, (250, 3)) * 2
+        w = rng.random(250) * 300.0
+    else:
+        pi = grid3(5, 4).astype(np.int64) - 8
+        if kind == "grid+duplicates":
+            pi = np.vstack([pi, pi[::4]])
+    p = pi.astype(np.float64)
+    t = flipflop.Delaunay(p, weights=w, strict=kind == "strict")
+    lo, hi = pi.min() - 6, pi.max() + 6
+    qi = np.vstack([rng.integers(lo, hi + 1, (600, 3)), pi[:50], (pi[:40] + pi[1:41]) // 2])
+    qi = np.vstack([qi, rng.integers(pi.min(), pi.max() + 1, (300, 3))])
+    got = t.find_simplex(qi.astype(np.float64))
+    contains = containing_simplices(pi, t.simplices, qi)
+    for i, s in enumerate(got):
+        if s >= 0:
+            assert contains[i, s], (kind, qi[i], t.simplices[s])
+        else:
+            assert not contains[i].any(), (kind, qi[i], np.nonzero(contains[i])[0][:5])
+    assert (got >= 0).sum() > 300  # most queries are inside
+    # shape (..., 3) in, shape (...) out
+    assert t.find_simplex(qi[:12].reshape(3, 4, 3).astype(np.float64)).shape == (3, 4)
+    assert np.array_equal(t.find_simplex(qi[:12].reshape(3, 4, 3).astype(np.float64)).ravel(), got[:12])
+
+
+def test_delaunay_3d_extreme_magnitudes_and_bad_input():
+    # scaled by a power of two the answer is the same (orient3d scales by s^3,
+    # the power test by s^5 with weights scaled by s^2); subnormal coordinates
+    # included
+    rng = np.random.default_rng(12)
+    p = rng.integers(-500, 501, (400, 3)).astype(np.float64)
+    w = rng.integers(0, 2000, 400).astype(np.float64)
+    plain = flipflop.Delaunay(p)
+    weighted = flipflop.Delaunay(p, weights=w)
+    for e in (-1062, -1000, -500, 500, 988):
+        s = 2.0 ** e
+        for backend in ("cpu", "reference"):
+            assert np.array_equal(flipflop.Delaunay(p * s, backend=backend).simplices, plain.simplices), (e, backend)
+            if -500 <= e <= 500:
+                t = flipflop.Delaunay(p * s, weights=w * s * s, backend=backend)
+                assert np.array_equal(t.simplices, weighted.simplices), (e, backend)
+    for scale in (1e300, 1e-300):
+        q = rng.uniform(-1, 1, (300, 3)) * scale
+        a, b = flipflop.Delaunay(q), flipflop.Delaunay(q, backend="reference")
+        assert np.array_equal(a.simplices, b.simplices)
+        assert flipflop.certify("delaunay", q, a.simplices, canonical=True)
+    # lower-dimensional and too small: ValueError from either backend
+    flat = np.c_[rng.random((50, 2)), np.ones(50)]
+    line = np.outer(np.arange(10.0), [1.0, 2.0, 3.0])
+    for bad, what in ((flat, "coplanar"), (line, "collinear"), (np.ones((6, 3)), "equal"), (p[:3], "at least 4")):
+        for backend in ("cpu", "reference"):
+            with pytest.raises(ValueError, match=what):
+                flipflop.Delaunay(bad, backend=backend)
+    with pytest.raises(ValueError, match="NaN"):
+        flipflop.Delaunay(np.vstack([p, [np.nan, 0, 0]]))
+    with pytest.raises(ValueError, match="weights hold NaN"):
+        flipflop.Delaunay(p, weights=np.r_[w[:-1], np.inf])
+    with pytest.raises(ValueError, match="backend"):
+        flipflop.Delaunay(p, backend="cuda-omp")  # the GPU kernels are 2D
+
+
+@needs_cli
+@pytest.mark.parametrize("dist", [d for d in flipflop.distributions() if flipflop._flipflop.dimension_of(d) == 3])
+def test_dt3_identical_to_command_line_on_every_3d_family(dist, tmp_path):
+    n = 300
+    f = tmp_path / "p.xyz"
+    code, _, err = cli("gen", dist, n, "--seed", 5, "-o", f)
+    assert code == 0, err
+    p = flipflop.generate(dist, n, seed=5)
+    code, out, err = cli("dt3", f, "--threads", 2)
+    try:
+        t = flipflop.Delaunay(p)
+    except ValueError as e:
+        assert code == 2 and len(err.strip().splitlines()) == 1, f"Python refused ({e}) but the command line: {err}"
+        return
+    assert code == 0, err
+    assert as_text(t.simplices) == out
+    code, ref_out, _ = cli("dt3", f, "--backend", "reference")
+    assert code == 0 and ref_out == out
+
+
+@needs_cli
+def test_rt3_command_line_formats_read_by_numpy_and_meshio(tmp_path):
+    meshio = pytest.importorskip("meshio")
+    rng = np.random.default_rng(13)
+    p, w = rng.random((500, 3)), rng.random(500) * 1e-2
+    write_xyz(tmp_path / "w.xyz", p, w)
+    t = flipflop.Delaunay(p, weights=w)
+    code, out, err = cli("rt3", tmp_path / "w.xyz", "-o", tmp_path / "r.txt")
+    assert code == 0
+    assert (tmp_path / "r.txt").read_text() == as_text(t.simplices)
+    # the redundant points on standard error, as rtd reports them
+    if len(t.redundant):
+        assert err.startswith(f"rt3: {len(t.redundant)} redundant point")
+    assert cli("rt3", tmp_path / "w.xyz", "-o", tmp_path / "r.npy")[0] == 0
+    assert np.array_equal(np.load(tmp_path / "r.npy"), t.simplices)
+    assert cli("rt3", tmp_path / "w.xyz", "-o", tmp_path / "r.vtu", "--backend", "reference")[0] == 0
+    m = meshio.read(tmp_path / "r.vtu")
+    assert [b.type for b in m.cells] == ["tetra"]
+    used = np.unique(t.simplices)
+    assert np.array_equal(m.points, p[used])
+    assert np.array_equal(used[m.cells[0].data], t.simplices)
+    code, out, _ = cli("certify", "rt3", tmp_path / "w.xyz", tmp_path / "r.txt", "--canonical")
+    assert code == 0 and out.startswith("certified (rt3, canonical)")

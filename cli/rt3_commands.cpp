@@ -1,0 +1,223 @@
+// rt3_commands.cpp — `flipflop rt3|dt3` and `flipflop rtd --dim 3` (see the header).
+#include "cli/rt3_commands.hpp"
+
+#include <charconv>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/rtd_commands.hpp"
+#include "io/input_error.hpp"
+#include "io/read_points.hpp"
+#include "kernels_cpu/rt3/certify_rt3.hpp"
+#include "kernels_cpu/rt3/rt3.hpp"
+#include "reference/certify/certify.hpp"
+#include "reference/dimension.hpp"
+#include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+#include "reference/rtd/strict_rtd.hpp"
+
+namespace flipflop::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+using Tets = std::vector<cpu::Tet>;
+
+Tets as_tets(const std::vector<std::vector<Index>>& simplices) {
+  Tets t;
+  t.reserve(simplices.size());
+  for (const auto& s : simplices) t.push_back({s.at(0), s.at(1), s.at(2), s.at(3)});
+  return t;
+}
+
+std::vector<std::vector<Index>> as_cells(const Tets& tets) {
+  std::vector<std::vector<Index>> c;
+  c.reserve(tets.size());
+  for (const cpu::Tet& t : tets) c.push_back({t[0], t[1], t[2], t[3]});
+  return c;
+}
+
+// canonical_d.hpp's text (write_simplices: "i j k l\n" per simplex), from
+// the flat tetrahedra without a vector per simplex; drained in 64 KiB pieces.
+void write_tets(std::ostream& os, const Tets& tets) {
+  std::string out;
+  char buf[16];
+  for (const cpu::Tet& t : tets) {
+    for (int j = 0; j < 4; ++j) {
+      if (j) out += ' ';
+      out.append(buf, std::to_chars(buf, buf + sizeof buf, t[static_cast<std::size_t>(j)]).ptr);
+    }
+    out += '\n';
+    if (out.size() >= (std::size_t{1} << 16)) {
+      os.write(out.data(), static_cast<std::streamsize>(out.size()));
+      out.clear();
+    }
+  }
+  os.write(out.data(), static_cast<std::streamsize>(out.size()));
+}
+
+// Tetrahedra fit the index text, .vtu and .npy; any other format is refused
+// here, before the work, with io::write_cells' own message (it refuses a
+// format that cannot hold 3-simplices before it writes anything).
+void refuse_formats_without_tetrahedra(const std::string& path, io::Format f) {
+  if (f == io::Format::index || f == io::Format::vtu || f == io::Format::npy) return;
+  PointSet none;
+  none.dim = 3;
+  write_result_file(path, f, [](std::ostream&) {}, none, {}, io::CellKind::simplices, {}, false);
+  throw UsageError(path + ": " + io::format_name(f) + " cannot hold tetrahedra (.vtu, .txt, .idx or .npy)");
+}
+
+std::string threads_note(const std::string& backend, int threads) {
+  return backend == "cpu" && threads ? " (" + std::to_string(threads) + " threads)" : std::string();
+}
+
+}  // namespace
+
+int run_rt3(const Rt3Args& a) {
+  const std::string& kind = a.kind;
+  const bool weighted = kind != "dt3";
+  const std::string backend = a.backend.empty() ? "cpu" : a.backend;
+  if (backend != "cpu" && backend != "reference")
+    throw UsageError(kind + " backends: cpu (kernels_cpu/rt3, the default) and reference; got '" + backend + "'");
+  if (a.threads < 0) throw UsageError("--threads must be positive, got " + std::to_string(a.threads));
+  if (a.threads != 0 && backend != "cpu")
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
+  const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
+  refuse_formats_without_tetrahedra(a.out, fmt);
+
+  std::optional<Progress> progress(std::in_place, Progress::stderr_is_terminal(), "flipflop " + kind);
+  progress->stage("reading " + a.in);
+  const auto t_read0 = Clock::now();
+  PointSet ps;
+  try {
+    // x y z w (rt3, rtd --dim 3) or x y z (dt3); .xyz, .npy, .off, .ply
+    ps = io::read_points(a.in, 3, weighted);
+  } catch (const io::InputError& e) {
+    throw UsageError(e.what());
+  }
+  if (std::string why = dimension_problem(ps); !why.empty()) throw UsageError(a.in + ": " + why);
+  const double t_read = seconds_since(t_read0);
+
+  // ---- the canonical answer, certified -------------------------------------------
+  progress->stage("computing (" + std::to_string(ps.size()) + " points, backend " + backend + ")");
+  const auto t0 = Clock::now();
+  Tets tets;
+  std::vector<Index> redundant;
+  cpu::Rt3Stats kst;
+  cpu::StageTimes stages;
+  ref::RtdStats rst;
+  std::string certified_by;
+  double t_compute = 0, t_certify = 0;
+  try {
+    if (backend == "cpu") {
+      // kernels_cpu/rt3: BRIO order, incremental insertion, parallel output,
+      // and the witness its certifier checks
+      cpu::Rt3Options o;
+      o.threads = a.threads;
+      o.times = &stages;
+      auto witness = std::make_unique<cpu::Rt3Witness>();
+      cpu::Rt3Result r = cpu::rt3(ps, o, &kst, witness.get());
+      t_compute = seconds_since(t0);
+      progress->stage("certifying");
+      const auto t1 = Clock::now();
+      const certify::Report rep = cpu::certify_rt3(ps, *witness, r.tets, certify::Level::canonical, a.threads);
+      t_certify = seconds_since(t1);
+      witness.reset();  // (per point 24 bytes and per slot 32: freed before the output is formatted)
+      if (rep.condition == "input-dimension") throw UsageError(a.in + ": " + rep.detail);
+      if (!rep.ok) throw InternalError("the " + kind + " result failed certification: " + rep.message());
+      tets = std::move(r.tets);
+      redundant = std::move(r.redundant);
+      certified_by = "canonical, cpu::certify_rt3 from the kernel's witness";
+    } else {
+      // reference/rtd: RT+1 (sequential), certified as `flipflop rtd`
+      ref::Rtd r = ref::rtd_incremental(ps, &rst);
+      t_compute = seconds_since(t0);
+      progress->stage("certifying");
+      const auto t1 = Clock::now();
+      const certify::Report rep = certify::rtd(ps, r.simplices, certify::Level::canonical);
+      t_certify = seconds_since(t1);
+      if (!rep.ok) throw InternalError("the " + kind + " result failed certification: " + rep.message());
+      tets = as_tets(r.simplices);
+      redundant = std::move(r.redundant);
+      certified_by = "canonical, certify::rtd";
+    }
+  } catch (const std::invalid_argument& e) {  // input the algorithms reject (does not span R^3, ...)
+    throw UsageError(a.in + ": " + e.what());
+  }
+  const std::size_t canonical_count = tets.size(), canonical_redundant = redundant.size();
+
+  // ---- the strict view: the reference's rule, from the certified answer ------------
+  double t_strict = 0, t_strict_certify = 0;
+  if (a.strict) {
+    progress->stage("the strict view");
+    const auto t2 = Clock::now();
+    std::vector<std::vector<Index>> view;
+    try {
+      view = ref::strict_rtd(ps, as_cells(tets));
+    } catch (const std::invalid_argument& e) {
+      throw InternalError("the strict view of the " + kind + " result: " + std::string(e.what()));
+    }
+    t_strict = seconds_since(t2);
+    const auto t3 = Clock::now();
+    const certify::Report rs = certify::rtd(ps, view, certify::Level::exact);
+    t_strict_certify = seconds_since(t3);
+    if (!rs.ok) throw InternalError("the strict view of the " + kind + " result failed certification: " + rs.message());
+    redundant = non_vertices(ps.size(), view);
+    tets = as_tets(view);
+  }
+
+  // ---- output --------------------------------------------------------------------
+  progress->stage("writing " + (a.out.empty() ? std::string("the result") : a.out));
+  const auto t4 = Clock::now();
+  std::vector<std::vector<Index>> cells;  // (not for the index text, written from the flat tetrahedra)
+  if (fmt != io::Format::index) cells = as_cells(tets);
+  write_result_file(
+      a.out, fmt, [&](std::ostream& os) { write_tets(os, tets); }, ps, cells, io::CellKind::simplices, redundant,
+      a.ascii);
+  const double t_write = seconds_since(t4);
+  progress.reset();  // the progress line erased before the reports below
+
+  const std::string name = kind + (a.strict ? " --strict" : "");
+  report_redundant(name.c_str(), redundant);
+  if (a.stats) {
+    // the style of hull2|hull3|rt2|dt2 --stats: what ran, sizes and times;
+    // then the counts; then the kernel's stages (Rt3Options::times)
+    std::cerr << kind << ": backend " << backend << threads_note(backend, a.threads) << ", " << ps.size()
+              << " points, " << canonical_count << " tetrahedra, " << canonical_redundant << " redundant; compute "
+              << t_compute << " s, certify " << t_certify << " s (" << certified_by << "); read " << t_read
+              << " s, write " << t_write << " s\n";
+    if (backend == "cpu") {
+      std::cerr << kind << ": inserted " << kst.inserted << " (placed outside the hull " << kst.placed
+                << "), discarded when located " << kst.discarded << ", removed by later insertions " << kst.removed
+                << ", tetrahedra replaced " << kst.cavity_tets << ", created " << kst.created_tets
+                << ", walk steps " << kst.walk_steps << ", slots " << kst.slots << "\n";
+      const char* sep = ": stages ";
+      std::cerr << kind;
+      for (const auto& [stage, s] : stages.stages) std::cerr << std::exchange(sep, ", ") << stage << " " << s << " s";
+      std::cerr << " (kernels_cpu/rt3, multithreaded)\n";
+    } else {
+      std::cerr << kind << ": flips";
+      for (int k = 1; k <= 4; ++k) std::cerr << " " << k << "-" << (5 - k) << ":" << rst.flips[k];
+      std::cerr << ", queue pushes " << rst.queue_pushes << ", pops " << rst.queue_pops << "\n";
+    }
+    if (a.strict)
+      std::cerr << kind << " --strict: " << tets.size() << " tetrahedra (canonical answer: " << canonical_count
+                << "), " << redundant.size() << " points not vertices; strict view " << t_strict
+                << " s (reference/rtd/strict_rtd.hpp, sequential, from the " << backend
+                << " backend's certified canonical answer), certify " << t_strict_certify << " s (exact)\n";
+  }
+  return 0;
+}
+
+}  // namespace flipflop::cli
