@@ -149,9 +149,8 @@ int run(int argc, char** argv) {
     Args a = parse(argc, argv);
     if (a.experiment == "predicates") return detail::bench_predicates(a);
     if (a.experiment == "instant-flip") return detail::bench_instant_flip(a);
-    if (a.experiment == "rt3" || a.experiment == "dt3")
-      return a.stages ? detail::bench_rt3_stages(a) : detail::bench_rt3(a);
     if (a.stages) return detail::bench_stages(a);
+    if (a.experiment == "rt3" || a.experiment == "dt3") return detail::bench_rt3(a);
     return detail::bench_peers(a);
   } catch (const Usage& e) {
     std::fprintf(stderr, "flipflop bench: error: %s\n%s", e.what(), kUsage);

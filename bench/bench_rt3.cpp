@@ -32,11 +32,7 @@
 // (grids, lattices, planes3, duplicates, ...) each peer breaks ties its own
 // way and a note says so.
 //
-//   flipflop bench rt3|dt3 --stages   a whole `flipflop rt3|dt3` run by stage on
-//                                     flipflop:cpu: read .xyz / .npy, the
-//                                     kernel's stages (Rt3Options::times), the
-//                                     witness-checked certificate
-//                                     (cpu::certify_rt3), write.
+// `flipflop bench rt3|dt3 --stages`: bench_stages.cpp.
 #include <unistd.h>
 
 #include <algorithm>
@@ -82,26 +78,9 @@ Tets as_tets(const std::vector<std::vector<Index>>& s) {
   return out;
 }
 
-// The tetrahedra, "a b c d\n" per line (canonical_d.hpp's text format).
-void write_tets(const std::string& path, const Tets& tets) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw std::runtime_error("bench --stages: cannot write " + path);
-  std::vector<char> buf(1 << 16);
-  std::size_t at = 0;
-  for (const cpu::Tet& t : tets) {
-    if (at + 48 > buf.size()) {
-      std::fwrite(buf.data(), 1, at, f);
-      at = 0;
-    }
-    at += static_cast<std::size_t>(std::snprintf(buf.data() + at, 48, "%u %u %u %u\n", t[0], t[1], t[2], t[3]));
-  }
-  std::fwrite(buf.data(), 1, at, f);
-  std::fclose(f);
-}
-
 }  // namespace
 
-// The machine, as one line: CPU model, logical processors, load average.
+// The machine, as one line (timing.hpp).
 std::string machine_line() {
   std::string model = "unknown CPU";
   int cpus = 0;
@@ -187,81 +166,6 @@ int bench_rt3(const Args& a) {
     std::printf("redundant points (flipflop:cpu): %lld of %zu (%.1f %%)\n", *redundant, pts.size(),
                 100.0 * static_cast<double>(*redundant) / static_cast<double>(pts.size()));
   return rc;
-}
-
-int bench_rt3_stages(const Args& a) {
-  const PointSet pts = generated_input(a);
-  const auto dir = std::filesystem::temp_directory_path() / ("flipflop-bench-rt3-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  struct Cleanup {
-    std::filesystem::path d;
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(d, ec);
-    }
-  } cleanup{dir};
-  const std::string xyz = (dir / "in.xyz").string(), npy = (dir / "in.npy").string(), out = (dir / "out.txt").string();
-  io::write_file(xyz, [&](std::ostream& os) { io::write_points(os, pts); });
-  io::write_file(npy, [&](std::ostream& os) { io::write_points_npy(os, pts); });
-
-  std::vector<std::string> order;
-  std::map<std::string, std::vector<double>> times;
-  auto add = [&](const std::string& name, double s) {
-    if (!times.count(name)) order.push_back(name);
-    times[name].push_back(s);
-  };
-  std::size_t size = 0;
-  for (int r = 0; r < a.reps; ++r) {
-    double total = 0;
-    PointSet in;
-    add("read .xyz", seconds([&] { in = io::read_points(xyz, pts.dim, pts.weighted); }));
-    if (!same_bits(in.coords, pts.coords) || !same_bits(in.weights, pts.weights))
-      throw std::runtime_error("bench --stages: .xyz read back differs");
-    double t = seconds([&] { in = io::read_points(npy, pts.dim, pts.weighted); });
-    add("read .npy", t);
-    total += t;
-    if (!same_bits(in.coords, pts.coords) || !same_bits(in.weights, pts.weights))
-      throw std::runtime_error("bench --stages: .npy read back differs");
-    cpu::StageTimes st;
-    cpu::Rt3Options o;
-    o.threads = a.threads;
-    o.times = &st;
-    cpu::Rt3Witness witness;
-    cpu::Rt3Result res;
-    t = seconds([&] { res = cpu::rt3(in, o, nullptr, &witness); });
-    total += t;
-    size = res.tets.size();
-    for (const auto& [name, s] : st.stages) add("compute: " + name, s);
-    certify::Report rep;
-    t = seconds([&] { rep = cpu::certify_rt3(in, witness, res.tets, certify::Level::canonical, a.threads); });
-    if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
-    add("certify", t);
-    total += t;
-    t = seconds([&] { write_tets(out, res.tets); });
-    add("write", t);
-    total += t;
-    add("total (.npy)", total);
-  }
-  if (a.csv) {
-    std::printf("stage,median_s,min_s,max_s,size\n");
-    for (const std::string& name : order) {
-      const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
-      std::printf("%s,%.6f,%.6f,%.6f,%zu\n", name.c_str(), median(times[name]), *lo, *hi, size);
-    }
-    return 0;
-  }
-  std::printf("flipflop bench %s --stages: dist %s, n %zu, seed %llu, median of %d runs, flipflop:cpu, %zu tetrahedra\n",
-              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size);
-  std::printf("machine: %s\n", machine_line().c_str());
-  const double total = median(times["total (.npy)"]);
-  std::printf("%-46s %12s %12s %12s %8s\n", "stage", "median s", "min s", "max s", "share");
-  for (const std::string& name : order) {
-    const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
-    std::printf("%-46s %12.4f %12.4f %12.4f", name.c_str(), median(times[name]), *lo, *hi);
-    if (name != "read .xyz") std::printf(" %7.1f%%", 100.0 * median(times[name]) / total);
-    std::printf("\n");
-  }
-  return 0;
 }
 
 }  // namespace flipflop::bench::detail

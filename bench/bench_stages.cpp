@@ -1,5 +1,5 @@
-// bench_stages.cpp — `flipflop bench hull2|hull3|rt2|dt2 --stages`: where the
-// time of a whole `flipflop hull2|hull3|rt2|dt2` run on the multithreaded
+// bench_stages.cpp — `flipflop bench hull2|hull3|rt2|dt2|rt3|dt3 --stages`:
+// where the time of a whole `flipflop hull2|...|dt3` run on the multithreaded
 // backend goes, stage by stage, each the median of --reps runs:
 //
 //   read .xyz / read .npy   the generated input written to a temporary file
@@ -8,18 +8,20 @@
 //                           the points read must equal the generated ones bit
 //                           for bit;
 //   the kernel's stages     cpu::Hull2Options::times / Hull3Options::times /
-//                           Rt2Options::times (throw-away, sort, flip-pop;
-//                           initial tetrahedron, construction rounds,
-//                           flip-flop; BRIO sort, insertion, output; the
-//                           canonical output);
+//                           Rt2Options::times / Rt3Options::times
+//                           (throw-away, sort, flip-pop; initial tetrahedron,
+//                           construction rounds, flip-flop; BRIO sort,
+//                           insertion, output; the canonical output);
 //   certify                 cpu::certify_hull2 / cpu::certify_hull3_witnessed
-//                           / cpu::certify_rt2 (hull3, rt2|dt2: with the
-//                           kernel's witness) at the canonical level (must
+//                           / cpu::certify_rt2 / cpu::certify_rt3 (hull3 and
+//                           the triangulations: with the kernel's witness)
+//                           at the canonical level (must
 //                           pass); for hull3 also the witness-free
 //                           cpu::certify_hull3 on the same output (what
 //                           `flipflop certify hull3` runs; a peer row, not in
 //                           the total);
 //   write                   the index text to a temporary file.
+// rt3|dt3's kernel and certifier run on --threads threads (default: all).
 //
 // The last row, "total (.npy)", is read .npy + compute + certify + write of
 // each run (median over runs), what `flipflop hull3 in.npy -o out` spends
@@ -45,6 +47,8 @@
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#include "kernels_cpu/rt3/certify_rt3.hpp"
+#include "kernels_cpu/rt3/rt3.hpp"
 
 namespace flipflop::bench::detail {
 
@@ -68,7 +72,8 @@ struct TempDir {
 constexpr const char* kWitnessFree = "certify without witness (not in the total)";
 
 int bench_stages(const Args& a) {
-  const bool h3 = a.experiment == "hull3", tri = a.experiment == "rt2" || a.experiment == "dt2";
+  const bool h3 = a.experiment == "hull3", tri = a.experiment == "rt2" || a.experiment == "dt2",
+             tet = a.experiment == "rt3" || a.experiment == "dt3";
   const PointSet pts = generated_input(a);
   TempDir tmp;
   const std::string xyz = (tmp.dir / "in.xyz").string(), npy = (tmp.dir / "in.npy").string(),
@@ -99,7 +104,15 @@ int bench_stages(const Args& a) {
     std::vector<Triangle> tris;
     cpu::Hull3Witness witness;
     cpu::Rt2Witness rt2_witness;  // rt2|dt2: certified from the kernel's witness, as `flipflop rt2|dt2` does
-    if (tri) {
+    cpu::Rt3Witness rt3_witness;  // rt3|dt3: likewise
+    cpu::Rt3Result rt3_result;
+    if (tet) {
+      cpu::Rt3Options o;
+      o.threads = a.threads;
+      o.times = &st;
+      t = seconds([&] { rt3_result = cpu::rt3(in, o, nullptr, &rt3_witness); });
+      size = rt3_result.tets.size();
+    } else if (tri) {
       cpu::Rt2Options o;
       o.times = &st;
       t = seconds([&] { tris = cpu::rt2(in, o, nullptr, &rt2_witness); });
@@ -120,7 +133,8 @@ int bench_stages(const Args& a) {
     for (const auto& [name, s] : st.stages) add("compute: " + name, s);
     certify::Report rep;
     t = seconds([&] {
-      rep = tri  ? cpu::certify_rt2(in, tris, certify::Level::canonical, rt2_witness)
+      rep = tet  ? cpu::certify_rt3(in, rt3_witness, rt3_result.tets, certify::Level::canonical, a.threads)
+            : tri ? cpu::certify_rt2(in, tris, certify::Level::canonical, rt2_witness)
             : h3 ? cpu::certify_hull3_witnessed(in, tris, certify::Level::canonical, witness)
                  : cpu::certify_hull2(in, cycle, certify::Level::canonical);
     });
@@ -132,7 +146,11 @@ int bench_stages(const Args& a) {
       if (!rep.ok) throw std::runtime_error("bench --stages: the result failed certification: " + rep.message());
     }
     t = seconds([&] {
-      io::write_file(out, [&](std::ostream& os) { h3 || tri ? io::write_triangles(os, tris) : io::write_hull2(os, cycle); });
+      io::write_file(out, [&](std::ostream& os) {
+        tet              ? io::write_tetrahedra(os, rt3_result.tets)
+        : h3 || tri      ? io::write_triangles(os, tris)
+                         : io::write_hull2(os, cycle);
+      });
     });
     add("write", t);
     total += t;
@@ -147,7 +165,9 @@ int bench_stages(const Args& a) {
     return 0;
   }
   std::printf("flipflop bench %s --stages: dist %s, n %zu, seed %llu, median of %d runs, flipflop:cpu, %zu %s\n",
-              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size, h3 || tri ? "triangles" : "vertices");
+              a.experiment.c_str(), a.dist.c_str(), pts.size(), a.seed, a.reps, size,
+              tet ? "tetrahedra" : h3 || tri ? "triangles" : "vertices");
+  std::printf("machine: %s\n", machine_line().c_str());
   const double total = median(times["total (.npy)"]);
   std::printf("%-46s %12s %12s %12s %8s\n", "stage", "median s", "min s", "max s", "share");
   for (const std::string& name : order) {

@@ -55,10 +55,12 @@ struct Args {
 
 int bench_predicates(const Args& a);
 int bench_peers(const Args& a);
-int bench_stages(const Args& a);
+int bench_stages(const Args& a);  // hull2|hull3|rt2|dt2|rt3|dt3 --stages
+// The machine, as one line: CPU model, logical processors, load average
+// (bench_rt3.cpp); printed beside every table.
+std::string machine_line();
 int bench_instant_flip(const Args& a);
 int bench_rt3(const Args& a);         // rt3|dt3 (bench_rt3.cpp)
-int bench_rt3_stages(const Args& a);  // rt3|dt3 --stages
 // The input of a hull/triangulation experiment: gen::generate with the
 // options of `a`, checked to have the experiment's dimension.
 PointSet generated_input(const Args& a);

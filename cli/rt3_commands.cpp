@@ -1,7 +1,6 @@
 // rt3_commands.cpp — `flipflop rt3|dt3` and `flipflop rtd --dim 3` (see the header).
 #include "cli/rt3_commands.hpp"
 
-#include <charconv>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/rtd_commands.hpp"
+#include "io/index_io.hpp"
 #include "io/input_error.hpp"
 #include "io/read_points.hpp"
 #include "kernels_cpu/rt3/certify_rt3.hpp"
@@ -46,25 +46,6 @@ std::vector<std::vector<Index>> as_cells(const Tets& tets) {
   c.reserve(tets.size());
   for (const cpu::Tet& t : tets) c.push_back({t[0], t[1], t[2], t[3]});
   return c;
-}
-
-// canonical_d.hpp's text (write_simplices: "i j k l\n" per simplex), from
-// the flat tetrahedra without a vector per simplex; drained in 64 KiB pieces.
-void write_tets(std::ostream& os, const Tets& tets) {
-  std::string out;
-  char buf[16];
-  for (const cpu::Tet& t : tets) {
-    for (int j = 0; j < 4; ++j) {
-      if (j) out += ' ';
-      out.append(buf, std::to_chars(buf, buf + sizeof buf, t[static_cast<std::size_t>(j)]).ptr);
-    }
-    out += '\n';
-    if (out.size() >= (std::size_t{1} << 16)) {
-      os.write(out.data(), static_cast<std::streamsize>(out.size()));
-      out.clear();
-    }
-  }
-  os.write(out.data(), static_cast<std::streamsize>(out.size()));
 }
 
 // Tetrahedra fit the index text, .vtu and .npy; any other format is refused
@@ -183,7 +164,7 @@ int run_rt3(const Rt3Args& a) {
   std::vector<std::vector<Index>> cells;  // (not for the index text, written from the flat tetrahedra)
   if (fmt != io::Format::index) cells = as_cells(tets);
   write_result_file(
-      a.out, fmt, [&](std::ostream& os) { write_tets(os, tets); }, ps, cells, io::CellKind::simplices, redundant,
+      a.out, fmt, [&](std::ostream& os) { io::write_tetrahedra(os, tets); }, ps, cells, io::CellKind::simplices, redundant,
       a.ascii);
   const double t_write = seconds_since(t4);
   progress.reset();  // the progress line erased before the reports below

@@ -30,4 +30,17 @@ void write_triangles(std::ostream& os, const std::vector<Triangle>& triangles) {
   detail::drain(os, out, true);
 }
 
+void write_tetrahedra(std::ostream& os, const std::vector<std::array<Index, 4>>& tets) {
+  std::string out;
+  for (const auto& t : tets) {
+    for (std::size_t j = 0; j < 4; ++j) {
+      if (j) out += ' ';
+      detail::put_decimal(out, t[j]);
+    }
+    out += '\n';
+    detail::drain(os, out, false);
+  }
+  detail::drain(os, out, true);
+}
+
 }  // namespace flipflop::io

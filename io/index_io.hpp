@@ -18,6 +18,7 @@
 // line. Whether the indices name existing points is the certifier's check.
 #pragma once
 
+#include <array>
 #include <iosfwd>
 #include <string>
 #include <utility>
@@ -37,6 +38,9 @@ using ::flipflop::canonical_triangles;
 void write_hull2(std::ostream& os, const std::vector<Index>& cycle);
 // "i j k" per line.
 void write_triangles(std::ostream& os, const std::vector<Triangle>& triangles);
+// "i j k l" per line (reference/rtd/canonical_d.hpp's text of 3-simplices),
+// from flat tetrahedra (kernels_cpu/rt3's output) without a vector each.
+void write_tetrahedra(std::ostream& os, const std::vector<std::array<Index, 4>>& tets);
 
 // One index per line (a 2D hull cycle).
 std::vector<Index> read_index_cycle(const std::string& path);

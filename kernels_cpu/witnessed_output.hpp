@@ -1,6 +1,8 @@
-// witnessed_output.hpp — the last check of the witness certifiers
-// (kernels_cpu/rt2/certify_rt2.cpp, kernels_cpu/rt3/certify_rt3.cpp), written
-// once: every real simplex of the witness is in the output.
+// witnessed_output.hpp — what the witness certifiers of the triangulation
+// kernels (kernels_cpu/rt2/certify_rt2.cpp, kernels_cpu/rt3/certify_rt3.cpp)
+// check alike, written once: the witness' shape, its points (a permutation of
+// the input, bit for bit) and its slots' corner indices, first; and last,
+// that every real simplex of the witness is in the output.
 //
 // The output T is sorted, strictly increasing and of as many simplices as the
 // witness has real slots (checked by the caller), each simplex in canonical
@@ -20,12 +22,85 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "kernels_cpu/parallel.hpp"
 #include "reference/certify/certify_detail.hpp"
 
 namespace flipflop::cpu {
+
+// The witness-size, witness-points and <indices> conditions of a witness of
+// K corners per slot (3: triangles, 4: tetrahedra) over the n points of ps:
+// pts a permutation of the input with every coordinate and weight equal bit
+// for bit (coords(q): q's coordinates, ps.dim of them); tv and tn of equal
+// size, K per slot, fewer than kNo / K slots; each slot unused (all K corners
+// kNo) or K distinct positions <= n (n: the virtual vertex). The first
+// failing condition's Report, or nothing when all hold. `what`: "triangle"
+// or "tetrahedra" in the messages, indices: the slots' condition's name.
+template <std::size_t K, class Pt, class Coords, class ForRange>
+std::optional<certify::Report> witness_problem(const PointSet& ps, const std::vector<Pt>& pts,
+                                               const std::vector<std::uint32_t>& at,
+                                               const std::vector<std::uint32_t>& tv,
+                                               const std::vector<std::uint32_t>& tn, std::uint32_t kNo,
+                                               const char* what, const char* indices, const Coords& coords,
+                                               const ForRange& for_range) {
+  using certify::Report;
+  using certify::detail::smallest_failing;
+  const std::size_t n = ps.size();
+  if (pts.size() != n || at.size() != n || tv.size() != tn.size() || tv.size() % K != 0 || tv.size() / K >= kNo / K)
+    return Report::fail("witness-size", "the witness has " + std::to_string(pts.size()) + " points, " +
+                                            std::to_string(at.size()) + " witness " + what + ", " +
+                                            std::to_string(tv.size()) + " corners and " + std::to_string(tn.size()) +
+                                            " links for " + std::to_string(n) + " input points");
+  {
+    std::vector<std::atomic<std::uint8_t>> seen(n);  // zero-initialised
+    const std::size_t d = ps.dim;
+    auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    if (const std::size_t k = smallest_failing(n, for_range,
+                                               [&](std::size_t k) {
+                                                 const Pt& q = pts[k];
+                                                 if (q.id >= n) return true;
+                                                 seen[q.id].store(1, std::memory_order_relaxed);
+                                                 const double *x = ps.point(q.id), *y = coords(q);
+                                                 for (std::size_t i = 0; i < d; ++i)
+                                                   if (!same(y[i], x[i])) return true;
+                                                 return !same(q.w, ps.weight(q.id));
+                                               });
+        k < n)
+      return Report::fail("witness-points", "position " + std::to_string(k) + " names input point " +
+                                                std::to_string(pts[k].id) +
+                                                " with other coordinates or weight, or one that does not exist");
+    // n positions with values in [0, n): a permutation iff every value is met
+    if (const std::size_t i = smallest_failing(
+            n, for_range, [&](std::size_t i) { return seen[i].load(std::memory_order_relaxed) == 0; });
+        i < n)
+      return Report::fail("witness-points", "input point " + std::to_string(i) + " is at no position of the witness");
+  }
+  const std::size_t slots = tv.size() / K;
+  if (const std::size_t t = smallest_failing(slots, for_range,
+                                             [&](std::size_t t) {
+                                               const std::uint32_t* c = &tv[K * t];
+                                               std::size_t unused = 0;
+                                               for (std::size_t i = 0; i < K; ++i) unused += c[i] == kNo;
+                                               if (unused != 0) return unused != K;
+                                               for (std::size_t i = 0; i < K; ++i) {
+                                                 if (c[i] > n) return true;
+                                                 for (std::size_t j = 0; j < i; ++j)
+                                                   if (c[i] == c[j]) return true;
+                                               }
+                                               return false;
+                                             });
+      t < slots) {
+    std::string c;
+    for (std::size_t i = 0; i < K; ++i) c += (i ? ", " : "") + std::to_string(tv[K * t + i]);
+    return Report::fail(indices, "slot " + std::to_string(t) + " holds positions " + c + " of " + std::to_string(n) +
+                                     " points and the virtual vertex " + std::to_string(n));
+  }
+  return std::nullopt;
+}
 
 // The smallest slot t < slots with real(t) whose canonical simplex
 // simplex_of(t) is not in T, or `slots` when every witnessed simplex is in T.

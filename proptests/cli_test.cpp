@@ -20,66 +20,10 @@
 #include "peers/cgal_regular_d.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "peers/peers.hpp"
+#include "proptests/support/cli_run.hpp"
 
 namespace fs = std::filesystem;
-
-namespace {
-
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-struct TempDir {
-  fs::path dir;
-  TempDir() {
-    dir = fs::temp_directory_path() / ("flipflop_cli_" + std::to_string(::getpid()) + "_" +
-                                       std::to_string(std::rand()));
-    fs::create_directories(dir);
-  }
-  ~TempDir() { fs::remove_all(dir); }
-  fs::path file(const std::string& name, const std::string& content) const {
-    fs::path p = dir / name;
-    std::ofstream(p) << content;
-    return p;
-  }
-};
-
-Run run(const TempDir& t, const std::string& args) {
-  fs::path out = t.dir / "stdout.txt", err = t.dir / "stderr.txt";
-  std::string cmd = std::string(FLIPFLOP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
-  int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-// One line on stderr, exit code 2, the file named.
-void expect_input_error(const Run& r, const std::string& name, const std::string& what) {
-  INFO("stderr: " << r.err);
-  CHECK(r.code == 2);
-  CHECK(lines(r.err) == 1);
-  CHECK(r.err.find(name) != std::string::npos);
-  CHECK(r.err.find(what) != std::string::npos);
-  CHECK(r.out.empty());
-}
-
-}  // namespace
+using namespace flipflop::test::cli;
 
 TEST_CASE("cli: bad input matrix gives one line and exit code 2", "[cli]") {
   TempDir t;

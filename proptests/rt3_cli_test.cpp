@@ -26,53 +26,12 @@
 #include <string>
 #include <vector>
 
+#include "proptests/support/cli_run.hpp"
+
 namespace fs = std::filesystem;
+using namespace flipflop::test::cli;
 
 namespace {
-
-struct Run {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-struct TempDir {
-  fs::path dir;
-  TempDir() {
-    dir = fs::temp_directory_path() /
-          ("flipflop_rt3_cli_" + std::to_string(::getpid()) + "_" + std::to_string(std::rand()));
-    fs::create_directories(dir);
-  }
-  ~TempDir() { fs::remove_all(dir); }
-  fs::path file(const std::string& name, const std::string& content) const {
-    fs::path p = dir / name;
-    std::ofstream(p, std::ios::binary) << content;
-    return p;
-  }
-};
-
-Run run(const TempDir& t, const std::string& args) {
-  const fs::path out = t.dir / "stdout.txt", err = t.dir / "stderr.txt";
-  const std::string cmd = std::string(FLIPFLOP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  Run r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
 
 std::string replace_prefix(std::string s, const std::string& from, const std::string& to) {
   // every line of s that starts with `from` starts with `to` instead
@@ -119,13 +78,6 @@ std::vector<std::vector<long>> parse_rows(const std::string& text) {
 }
 
 // One line on stderr, exit code 2, nothing on stdout, `what` in the line.
-void expect_one_line_error(const Run& r, const std::string& what) {
-  INFO("stderr: " << r.err << " stdout: " << r.out);
-  CHECK(r.code == 2);
-  CHECK(lines(r.err) == 1);
-  CHECK(r.err.find(what) != std::string::npos);
-  CHECK(r.out.empty());
-}
 
 // KIND IN with the cpu backend — by default and named, at 1, 2 and 8 threads
 // — and, for weighted input, rtd --dim 3 (cpu by default, and the reference):
@@ -185,7 +137,7 @@ void add_grid(std::vector<std::vector<double>>& rows, int k, double w_step = -1)
 
 TEST_CASE("rt3 cli: rt3, dt3 and rtd --dim 3 write the reference's bytes with the cpu backend at 1, 2, 8 threads",
           "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   struct Gen {
     const char* kind;
     const char* args;  // flipflop gen ...
@@ -229,7 +181,7 @@ TEST_CASE("rt3 cli: rt3, dt3 and rtd --dim 3 write the reference's bytes with th
 }
 
 TEST_CASE("rt3 cli: --strict from the cpu backend's answer is the reference's, certified as strict", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   std::vector<std::vector<double>> rows;
   add_grid(rows, 4);
   const fs::path in = t.file("grid.xyz", xyz(rows));
@@ -268,7 +220,7 @@ TEST_CASE("rt3 cli: --strict from the cpu backend's answer is the reference's, c
 }
 
 TEST_CASE("rt3 cli: --stats prints counts and stage timings", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   const fs::path in = t.dir / "w.xyz";
   REQUIRE(run(t, "gen cube 2000 --seed 11 --weights 0,0.01 -o " + in.string()).code == 0);
   const Run cpu = run(t, "rt3 " + in.string() + " --stats --threads 2 -o " + (t.dir / "a.txt").string());
@@ -297,7 +249,7 @@ TEST_CASE("rt3 cli: --stats prints counts and stage timings", "[cli]") {
 }
 
 TEST_CASE("rt3 cli: bad input and bad usage give one line and exit code 2", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   struct Case {
     const char* kind;
     const char* file;
@@ -385,7 +337,7 @@ TEST_CASE("rt3 cli: bad input and bad usage give one line and exit code 2", "[cl
 }
 
 TEST_CASE("rt3 cli: extreme magnitudes are taken exactly (2^+-1000, subnormals, 1e+-300)", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   // integer points in general position (random), and a grid; scaled by a
   // power of two s the Delaunay triangulation is the same (every predicate is
   // a positive multiple of the unscaled one: orient3d by s^3, the in-sphere
@@ -483,7 +435,7 @@ std::vector<double> vtu_points(const std::string& xml) {
 }  // namespace
 
 TEST_CASE("rt3 cli: .vtu and .npy hold the index text's tetrahedra, the same bytes from either backend", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   const fs::path in = t.dir / "w.xyz";
   REQUIRE(run(t, "gen ball 400 --seed 12 --weights 0,0.02 -o " + in.string()).code == 0);
   const fs::path txt = t.dir / "r.txt";
@@ -549,7 +501,7 @@ TEST_CASE("rt3 cli: .vtu and .npy hold the index text's tetrahedra, the same byt
 }
 
 TEST_CASE("rt3 cli: certify rt3|dt3 accepts the output and rejects corrupted ones", "[cli]") {
-  TempDir t;
+  TempDir t("flipflop_rt3_cli_");
   for (const char* kind : {"rt3", "dt3"}) {
     INFO(kind);
     const bool w = std::string(kind) == "rt3";

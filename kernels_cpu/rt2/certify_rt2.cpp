@@ -166,13 +166,6 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
   if (ps.dim != 2) return Report::fail("input-dimension", "rt2 needs 2D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
-  if (w.pts.size() != n || w.at.size() != n || w.tv.size() != w.tn.size() || w.tv.size() % 3 != 0 ||
-      w.tv.size() / 3 >= kNo / 3)
-    return Report::fail("witness-size", "the witness has " + std::to_string(w.pts.size()) + " points, " +
-                                            std::to_string(w.at.size()) + " witness triangles, " +
-                                            std::to_string(w.tv.size()) + " corners and " +
-                                            std::to_string(w.tn.size()) + " links for " + std::to_string(n) +
-                                            " input points");
   auto for_range = [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) {
     par_for(m, kChunk, body);
   };
@@ -181,40 +174,10 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
   const std::size_t slots = W.slots;
   const std::uint32_t N = W.n;
 
-  // witness-points: a permutation of the input, values equal
-  {
-    std::vector<std::atomic<std::uint8_t>> seen(n);  // zero-initialised
-    if (const std::size_t k = smallest_failing(n, for_range,
-                                               [&](std::size_t k) {
-                                                 const Rt2Point& q = w.pts[k];
-                                                 if (q.id >= n) return true;
-                                                 seen[q.id].store(1, std::memory_order_relaxed);
-                                                 const double* x = ps.point(q.id);
-                                                 return !(q.xy[0] == x[0] && q.xy[1] == x[1] && q.w == ps.weight(q.id));
-                                               });
-        k < n)
-      return Report::fail("witness-points", "position " + std::to_string(k) + " names input point " +
-                                                std::to_string(w.pts[k].id) + " with other coordinates or weight, or "
-                                                "one that does not exist");
-    // n positions with values in [0, n): a permutation iff every value is met
-    if (const std::size_t i = smallest_failing(
-            n, for_range, [&](std::size_t i) { return seen[i].load(std::memory_order_relaxed) == 0; });
-        i < n)
-      return Report::fail("witness-points", "input point " + std::to_string(i) + " is at no position of the witness");
-  }
-
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               const std::uint32_t* c = W.corners(t);
-                                               if (c[0] == kNo) return c[1] != kNo || c[2] != kNo;
-                                               return c[0] > N || c[1] > N || c[2] > N || c[0] == c[1] ||
-                                                      c[1] == c[2] || c[0] == c[2];
-                                             });
-      t < slots)
-    return Report::fail("triangle-indices", "slot " + std::to_string(t) + " holds positions " +
-                                                std::to_string(w.tv[3 * t]) + ", " + std::to_string(w.tv[3 * t + 1]) +
-                                                ", " + std::to_string(w.tv[3 * t + 2]) + " of " + std::to_string(n) +
-                                                " points and the virtual vertex");
+  // witness-size, witness-points, triangle-indices (witnessed_output.hpp)
+  if (auto bad = witness_problem<3>(ps, w.pts, w.at, w.tv, w.tn, kNo, "triangles", "triangle-indices",
+                                     [](const Rt2Point& q) { return q.xy; }, for_range))
+    return *bad;
 
   // The per-triangle conditions in one pass over fixed chunks of slots (each
   // slot's points are read once: the passes are memory-bound), each

@@ -162,13 +162,6 @@ Report certify_witnessed(const PointSet& ps, const Rt3Witness& w, const std::vec
   if (ps.dim != 3) return Report::fail("input-dimension", "rt3 needs 3D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
-  if (w.pts.size() != n || w.at.size() != n || w.tv.size() != w.tn.size() || w.tv.size() % 4 != 0 ||
-      w.tv.size() / 4 >= kNo / 4)
-    return Report::fail("witness-size", "the witness has " + std::to_string(w.pts.size()) + " points, " +
-                                            std::to_string(w.at.size()) + " witness tetrahedra, " +
-                                            std::to_string(w.tv.size()) + " corners and " +
-                                            std::to_string(w.tn.size()) + " links for " + std::to_string(n) +
-                                            " input points");
   auto for_range = [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) {
     par_for(m, kChunk, body);
   };
@@ -178,47 +171,10 @@ Report certify_witnessed(const PointSet& ps, const Rt3Witness& w, const std::vec
   const std::size_t slots = W.slots;
   const std::uint32_t N = W.n;
 
-  // witness-points: a permutation of the input, values equal bit for bit
-  {
-    std::vector<std::atomic<std::uint8_t>> seen(n);  // zero-initialised
-    auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
-    if (const std::size_t k = smallest_failing(n, for_range,
-                                               [&](std::size_t k) {
-                                                 const Rt3Point& q = w.pts[k];
-                                                 if (q.id >= n) return true;
-                                                 seen[q.id].store(1, std::memory_order_relaxed);
-                                                 const double* x = ps.point(q.id);
-                                                 return !(same(q.xyz[0], x[0]) && same(q.xyz[1], x[1]) &&
-                                                          same(q.xyz[2], x[2]) && same(q.w, ps.weight(q.id)));
-                                               });
-        k < n)
-      return Report::fail("witness-points", "position " + std::to_string(k) + " names input point " +
-                                                std::to_string(w.pts[k].id) +
-                                                " with other coordinates or weight, or one that does not exist");
-    // n positions with values in [0, n): a permutation iff every value is met
-    if (const std::size_t i = smallest_failing(
-            n, for_range, [&](std::size_t i) { return seen[i].load(std::memory_order_relaxed) == 0; });
-        i < n)
-      return Report::fail("witness-points", "input point " + std::to_string(i) + " is at no position of the witness");
-  }
-
-  // simplex-indices
-  if (const std::size_t t = smallest_failing(slots, for_range,
-                                             [&](std::size_t t) {
-                                               const std::uint32_t* c = W.corners(t);
-                                               if (c[0] == kNo || c[1] == kNo || c[2] == kNo || c[3] == kNo)
-                                                 return !(c[0] == kNo && c[1] == kNo && c[2] == kNo && c[3] == kNo);
-                                               return c[0] > N || c[1] > N || c[2] > N || c[3] > N ||
-                                                      c[0] == c[1] || c[0] == c[2] || c[0] == c[3] ||
-                                                      c[1] == c[2] || c[1] == c[3] || c[2] == c[3];
-                                             });
-      t < slots) {
-    std::string c;
-    for (int i = 0; i < 4; ++i) c += (i ? ", " : "") + std::to_string(w.tv[4 * t + static_cast<std::size_t>(i)]);
-    return Report::fail("simplex-indices", "slot " + std::to_string(t) + " holds positions " + c + " of " +
-                                               std::to_string(n) + " points and the virtual vertex " +
-                                               std::to_string(n));
-  }
+  // witness-size, witness-points, simplex-indices (witnessed_output.hpp)
+  if (auto bad = witness_problem<4>(ps, w.pts, w.at, w.tv, w.tn, kNo, "tetrahedra", "simplex-indices",
+                                     [](const Rt3Point& q) { return q.xyz; }, for_range))
+    return *bad;
 
   // The per-slot conditions in one pass over fixed chunks of slots, each
   // recording its smallest failing slot; a slot failing one condition is not

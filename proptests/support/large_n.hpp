@@ -18,4 +18,7 @@ constexpr std::size_t large_n(std::size_t release, [[maybe_unused]] std::size_t 
 #endif
 }
 
+// Whether this build runs under ThreadSanitizer (FLIPFLOP_TEST_UNDER_TSAN).
+constexpr bool under_tsan() { return large_n(0, 1) == 1; }
+
 }  // namespace flipflop::test
