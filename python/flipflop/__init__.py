@@ -13,9 +13,20 @@ before it is returned.
     >>> tri = flipflop.Delaunay(pts)             # like scipy.spatial.Delaunay
     >>> bool(flipflop.certify("hull3", pts, hull.simplices))
     True
+
+ConvexHull and Delaunay take scipy.spatial's constructor arguments in
+scipy's order (qhull_options, incremental / add_points, close, furthest_site)
+and carry every attribute of scipy's classes; docs/scipy_porting.md lists
+each name and every difference from Qhull's answers.
 """
 from __future__ import annotations
 
+import math
+import numbers
+import re
+import warnings
+from fractions import Fraction
+from itertools import combinations
 from typing import Optional, Sequence
 
 import numpy as np
@@ -24,8 +35,8 @@ from . import _flipflop
 
 __version__: str = _flipflop.__version__
 
-__all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "generate", "distributions",
-           "gpu_backends", "__version__"]
+__all__ = ["ConvexHull", "Delaunay", "Voronoi", "QhullOptionError", "Certificate", "certify", "instant_flip", "generate",
+           "distributions", "gpu_backends", "__version__"]
 
 #: The GPU kernels' backends of this build (kernels_cuda/): "cuda-omp", the
 #: GPU algorithms on thrust's OpenMP backend (every multicore CPU), where the
@@ -38,7 +49,8 @@ __all__ = ["ConvexHull", "Delaunay", "Certificate", "certify", "instant_flip", "
 gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 
 _GPU = ("cuda-omp", "cuda") if gpu_backends else ()
-_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU}
+_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU, 4: ("reference",),
+                  5: ("reference",)}
 # per dimension, the default first: the multithreaded kernels exist for d = 2
 # and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the GPU kernels for d = 2
 # (kernels_cuda/rt2)
@@ -103,22 +115,264 @@ def _backend(backend: Optional[str], allowed: Sequence[str], what: str) -> str:
     return backend
 
 
-class ConvexHull:
-    """The convex hull of points in 2D or 3D, exact and certified.
+
+# ---- exact signs of small determinants (the scipy attributes' exact parts) ----------
+#
+# ConvexHull.good / .coplanar, Delaunay.good and the zero-volume test behind
+# Delaunay.transform are exact decisions about determinants of small matrices
+# whose entries are differences of input doubles (and, for Delaunay.good,
+# lifted heights). They are made by a floating-point filter and, for the few
+# matrices it cannot decide, by integer arithmetic on the doubles taken as
+# exact rationals (fractions.Fraction), sharing no code with the compiled
+# predicates.
+
+_FILTER = 1e-6  # the filter's threshold on a row-scaled determinant (below)
+
+
+def _exact_sign(rows) -> int:
+    """The sign of det(rows), rows a square list of lists of Fractions:
+    the entries brought to one power-of-two denominator, then Bareiss'
+    fraction-free elimination on Python integers (exact)."""
+    n = len(rows)
+    den = 1
+    for r in rows:
+        for x in r:
+            den = den * x.denominator // math.gcd(den, x.denominator)
+    m = [[int(x * den) for x in r] for r in rows]
+    sign, prev = 1, 1
+    for k in range(n - 1):
+        if m[k][k] == 0:
+            p = next((i for i in range(k + 1, n) if m[i][k] != 0), None)
+            if p is None:
+                return 0
+            m[k], m[p] = m[p], m[k]
+            sign = -sign
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                m[i][j] = (m[i][j] * m[k][k] - m[i][k] * m[k][j]) // prev
+        prev = m[k][k]
+    last = m[n - 1][n - 1]
+    return sign * ((last > 0) - (last < 0))
+
+
+def _det(m: np.ndarray) -> np.ndarray:
+    """Determinants of stacked n x n matrices (..., n, n): written out for
+    n <= 3 (numpy's LU costs about a microsecond per small matrix), else
+    numpy's."""
+    n = m.shape[-1]
+    if n == 1:
+        return m[..., 0, 0].copy()
+    if n == 2:
+        return m[..., 0, 0] * m[..., 1, 1] - m[..., 0, 1] * m[..., 1, 0]
+    if n == 3:
+        a, b, c = m[..., 0, :], m[..., 1, :], m[..., 2, :]
+        return (a[..., 0] * (b[..., 1] * c[..., 2] - b[..., 2] * c[..., 1])
+                + a[..., 1] * (b[..., 2] * c[..., 0] - b[..., 0] * c[..., 2])
+                + a[..., 2] * (b[..., 0] * c[..., 1] - b[..., 1] * c[..., 0]))
+    return np.linalg.det(m)
+
+
+def _det_signs(mats: np.ndarray, exact, mags: Optional[np.ndarray] = None) -> np.ndarray:
+    """Exact signs (int8) of det(M_i) for the k matrices of mats (k, n, n),
+    each computed in floating point from the exact matrix exact(i) (a list of
+    rows of Fractions) with every entry's absolute error at most 16 * 2^-53
+    times its row's magnitude: max |entry| of the row, or mags[i, row] where
+    given (an upper bound of the terms an entry was computed from).
+
+    The filter: each row scaled by the power of two that brings its magnitude
+    into [1/2, 1) (exact), then numpy's LU determinant. The rows of the scaled
+    matrix have norm <= sqrt(n) <= sqrt(6), so the input errors move the
+    determinant by at most about n * sqrt(n)^n * 16 * 2^-53 < 1e-11, and its
+    evaluation (cofactors: n! terms of at most 1; LU with partial pivoting,
+    growth factor <= 2^(n-1)) by less than 1e-9; where
+    |det| > 1e-6 the sign is certain. The rest (and any matrix with an
+    entry that over- or underflowed) is decided by _exact_sign."""
+    k = mats.shape[0]
+    out = np.zeros(k, dtype=np.int8)
+    if k == 0:
+        return out
+    with np.errstate(all="ignore"):
+        mag = np.abs(mats).max(axis=2)
+        if mags is not None:
+            mag = np.maximum(mag, mags)
+        good = np.isfinite(mag).all(axis=1) & (mag > 1e-290).all(axis=1) & (mag < 1e290).all(axis=1)
+        _, e = np.frexp(np.where(good[:, None], mag, 1.0))
+        scaled = np.ldexp(np.where(good[:, None, None], mats, 0.0), -e[:, :, None])
+        det = _det(scaled)
+    sure = good & np.isfinite(det) & (np.abs(det) > _FILTER)
+    out[sure] = np.sign(det[sure]).astype(np.int8)
+    for i in np.flatnonzero(~sure):
+        out[i] = _exact_sign(exact(int(i)))
+    return out
+
+
+def _fractions(points: np.ndarray, rows) -> list:
+    return [[Fraction(float(x)) for x in points[r]] for r in rows]
+
+
+def _differences(points: np.ndarray, rows, base) -> list:
+    """The exact rows points[r] - points[base] (Fractions)."""
+    b = [Fraction(float(x)) for x in points[base]]
+    return [[Fraction(float(x)) - y for x, y in zip(points[r], b)] for r in rows]
+
+
+# ---- qhull_options ---------------------------------------------------------------------
+
+#: The Qhull options flipflop accepts (qhull_options of ConvexHull and
+#: Delaunay). Applied: Qc (fill `coplanar`), QGn / QG-n (compute without point
+#: n; `good` marks the facets that see it / do not see it). Accepted and
+#: ignored, because they only steer Qhull's floating-point computation, which
+#: flipflop does not do (its answer is the exact one): Qbb QbB (scale the last
+#: coordinate / to the unit cube), Qz (a point at infinity against cospherical
+#: input), Qx (exact pre-merges), QJ / QJn (joggle the input), Qt (triangulate
+#: merged facets: flipflop's output is always simplicial), Q12 (allow wide
+#: facets), Pp (do not print precision warnings).
+QHULL_OPTIONS_IGNORED = ("Qbb", "QbB", "Qz", "Qx", "QJ", "Qt", "Q12", "Pp")
+QHULL_OPTIONS_APPLIED = ("Qc", "QGn", "QG-n")
+
+
+class QhullOptionError(ValueError, RuntimeError):
+    """A qhull_options string flipflop does not accept. A ValueError (bad
+    input, flipflop's rule) and a RuntimeError (what scipy's QhullError is),
+    so that code written for either catches it."""
+
+
+class _Options:
+    def __init__(self, text: str, coplanar: bool, good: Optional[int], visible: bool):
+        self.text, self.coplanar, self.good, self.visible = text, coplanar, good, visible
+
+
+def _qhull_options(options, what: str, default: str) -> _Options:
+    """One parser for both classes: str or bytes (as scipy), tokens
+    separated by white space; QhullOptionError naming any other token. As in
+    scipy, a given string replaces the class's default options."""
+    if options is None:
+        options = default
+    if isinstance(options, (bytes, bytearray)):
+        try:
+            options = bytes(options).decode("ascii")
+        except UnicodeDecodeError:
+            raise QhullOptionError(f"{what}: qhull_options must be ASCII, got {options!r}") from None
+    if not isinstance(options, str):
+        raise QhullOptionError(f"{what}: qhull_options must be a str or bytes, got {type(options).__name__}")
+    coplanar, good, visible = False, None, True
+    for tok in options.split():
+        if tok in QHULL_OPTIONS_IGNORED:
+            continue
+        if tok == "Qc":
+            coplanar = True
+            continue
+        if tok.startswith("QJ"):
+            try:
+                float(tok[2:])
+                continue
+            except ValueError:
+                pass
+        m = re.fullmatch(r"QG(-?)(\d+)", tok)
+        if m:
+            if good is not None:
+                raise QhullOptionError(f"{what}: qhull option {tok!r}: only one QGn or QG-n may be given")
+            good, visible = int(m.group(2)), m.group(1) != "-"
+            continue
+        raise QhullOptionError(
+            f"{what}: qhull option {tok!r} is not supported (flipflop applies Qc, QGn and QG-n and accepts "
+            f"{' '.join(QHULL_OPTIONS_IGNORED)} as no-ops: its answer is exact)")
+    return _Options(options, coplanar, good, visible)
+
+
+def _good_point(opts: _Options, a: np.ndarray, what: str):
+    """(kept indices, the QG point) or (None, None) without QGn."""
+    if opts.good is None:
+        return None, None
+    n = a.shape[0]
+    if opts.good >= n:
+        raise QhullOptionError(f"{what}: qhull option QG{'' if opts.visible else '-'}{opts.good}: "
+                               f"there are {n} points (0..{n - 1})")
+    if not np.isfinite(a[opts.good]).all():
+        raise ValueError(f"{what}: the points hold NaN or infinite coordinates (point {opts.good})")
+    return np.flatnonzero(np.arange(n) != opts.good), opts.good
+
+
+def _new_points(points, d: int, what: str) -> np.ndarray:
+    try:
+        a = np.asarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{what}: points must be numeric: {e}") from None
+    if a.ndim != 2 or a.shape[1] != d:
+        raise ValueError(f"{what}: invalid size for new points array: shape (k, {d}) expected, got {a.shape}")
+    return a
+
+
+class _QhullUser:
+    """add_points / close as scipy's _QhullUser: add_points needs
+    incremental=True and no close() before it (RuntimeError otherwise, as
+    scipy); it recomputes the answer for all points."""
+
+    def close(self) -> None:
+        """As scipy: ends incremental mode (add_points raises RuntimeError
+        afterwards). flipflop holds no Qhull resources; the attributes stay."""
+        self._closed = True
+
+    def _check_incremental(self):
+        if not self._incremental or self._closed:
+            raise RuntimeError("incremental mode not enabled or already closed")
+
+    @property
+    def npoints(self) -> int:
+        return self.points.shape[0]
+
+    @property
+    def nsimplex(self) -> int:
+        return self.simplices.shape[0]
+
+    @property
+    def min_bound(self) -> np.ndarray:
+        return self.points.min(axis=0)
+
+    @property
+    def max_bound(self) -> np.ndarray:
+        return self.points.max(axis=0)
+
+
+class ConvexHull(_QhullUser):
+    """The convex hull of points in 2D..5D, exact and certified, with
+    scipy.spatial.ConvexHull's constructor and attributes
+    (docs/scipy_porting.md lists every name and difference). 4D and 5D:
+    the boundary facets of the canonical Delaunay triangulation (the
+    reference's RT+1, certified; slow: for modest inputs), which are the
+    canonical hull's facets (_hull_from_triangulation says why), with the
+    attributes below computed in Python; facets outward (det[f1-f0, ...,
+    x-f0] > 0 beyond), ascending but for a swap of the last two.
+
+    ConvexHull(points, incremental=False, qhull_options=None, *,
+               strict=False, backend=None, threads=0)
 
     Attributes (as scipy.spatial.ConvexHull):
       points     (n, d) float64, the input
       simplices  3D: (m, 3) triangles, counter-clockwise seen from outside;
-                 2D: (k, 2) edges (i, next) of the counter-clockwise hull
+                 2D: (k, 2) edges (i, next) of the counter-clockwise hull;
+                 4D, 5D: (m, d) outward (above)
       neighbors  (m, d) the facet opposite each vertex of each simplex
       vertices   2D: the hull vertices counter-clockwise from the smallest
-                 index; 3D: sorted
+                 index; 3D..5D: sorted
       equations  (m, d+1) [unit outward normal, offset]: normal.x + offset
                  <= 0 inside (floating point, from the exact facets; NaN
                  normals for the zero-area facets of degenerate input)
-      volume, area  (2D: area and perimeter; 3D: volume and surface area;
-                 inf or 0 only where the true value is not a double)
-    All are computed once, in the compiled call, from the certified facets.
+      volume, area  (2D: area and perimeter; 3D..5D: volume and surface
+                 area; inf or 0 only where the true value is not a double)
+      coplanar   (k, 3) int64 [point, facet, vertex], filled only when
+                 qhull_options holds Qc (else shape (0, 3)): the points
+                 that lie exactly on the hull's boundary but are not
+                 vertices, each with a facet whose plane holds it exactly
+                 (one whose closed facet holds it, where floating point can
+                 tell) and that facet's vertex nearest to it
+      good       None, or with qhull_options QGn / QG-n a bool array over
+                 the facets: those that point n sees (strictly on their
+                 outer side, decided exactly) / does not see; as in Qhull,
+                 the hull is then the hull of the points without point n
+      npoints, nsimplex, ndim, min_bound, max_bound
+    In 2D and 3D all but coplanar and good are computed once, in the
+    compiled call, from the certified facets.
 
     The canonical answer (default) is flipflop's unique answer under
     Simulation of Simplicity: on degenerate input it may keep points inside
@@ -128,53 +382,331 @@ class ConvexHull:
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
 
-    backend: 'cpu' (the default: the multithreaded kernels), 'reference'
-    (the exact sequential reference) or one of `gpu_backends` ('cuda-omp':
-    the GPU kernels on thrust's OpenMP backend); every backend returns the
-    same answer. strict=True uses the 'cpu' kernel whatever the backend.
+    incremental=True allows add_points(points, restart=False); it
+    recomputes the hull of all points (the canonical answer does not depend
+    on the insertion order, so it is the answer an in-place insertion would
+    give); in-place insertion is still open. close() ends incremental mode.
+
+    qhull_options: Qc and QGn / QG-n are applied; Qbb QbB Qz Qx QJ Qt Q12 Pp
+    are accepted and ignored (they steer Qhull's floating point; flipflop's
+    answer is exact); anything else raises QhullOptionError (a ValueError
+    and a RuntimeError). str or bytes.
+
+    backend: 'cpu' (the default in 2D and 3D: the multithreaded kernels),
+    'reference' (the exact sequential reference; the only one in 4D and 5D)
+    or one of `gpu_backends` ('cuda-omp': the GPU kernels on thrust's OpenMP
+    backend); every backend returns the same answer. strict=True (3D only)
+    uses the 'cpu' kernel whatever the backend.
 
     threads: worker threads (0: the runtime's default, every core the
     process may use) of the 'cpu' kernels and of the certifier; the answer
     is the same at any count. The GIL is released while computing.
     """
 
-    def __init__(self, points, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
-        a = _points(points, (2, 3), "ConvexHull", finite=False)
+    def __init__(self, points, incremental: bool = False, qhull_options=None, *, strict: bool = False,
+                 backend: Optional[str] = None, threads: int = 0):
+        a = _points(points, (2, 3, 4, 5), "ConvexHull", finite=False)
         d = a.shape[1]
-        self.points = a
-        self.ndim = d
-        self.polygons = None
+        self._options = _qhull_options(qhull_options, "ConvexHull", "Qx" if d > 4 else "")
+        if strict and d != 3:
+            raise ValueError("ConvexHull: strict=True applies to 3D hulls")
+        if backend is not None or not strict:
+            _backend(backend, _HULL_BACKENDS[d], "ConvexHull")
+        self._strict, self._backend, self._threads = bool(strict), backend, _threads(threads, "ConvexHull")
+        self._incremental, self._closed = bool(incremental), False
+        self._update(a)
+
+    def add_points(self, points, restart: bool = False) -> None:
+        """As scipy's: adds points (shape (k, ndim)); needs incremental=True
+        and no close() before (RuntimeError otherwise, as scipy). Recomputes;
+        in-place insertion is still open: the hull of all points is computed
+        again (restart is accepted and changes nothing: the canonical answer
+        does not depend on the insertion order). On bad input (ValueError)
+        the hull is left as it was."""
+        self._check_incremental()
+        new = _new_points(points, self.ndim, "ConvexHull.add_points")
+        self._update(np.ascontiguousarray(np.concatenate([self.points, new])))
+
+    def _update(self, a: np.ndarray) -> None:
+        d = a.shape[1]
+        keep, g = _good_point(self._options, a, "ConvexHull")
+        sub = a if keep is None else np.ascontiguousarray(a[keep])
+        threads = self._threads
+        polygons = None
         # every attribute comes from the compiled call, computed there in one
         # pass over the certified facets (python/src/module.cpp: HullMeasures)
         if d == 2:
-            if strict:
-                raise ValueError("ConvexHull: strict=True applies to 3D hulls")
-            attributes = _native("ConvexHull", _flipflop.hull2, a, _backend(backend, _HULL_BACKENDS[2], "ConvexHull"),
-                                 _threads(threads, "ConvexHull"))
-        elif strict:
-            if backend is not None:
-                _backend(backend, _HULL_BACKENDS[3], "ConvexHull")
-            attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, a, _threads(threads, "ConvexHull"))
-            self.polygons = [np.asarray(p, dtype=np.int64) for p in polys]
+            attributes = _native("ConvexHull", _flipflop.hull2, sub, _backend(self._backend, _HULL_BACKENDS[2],
+                                                                                "ConvexHull"), threads)
+        elif d > 3:
+            _backend(self._backend, _HULL_BACKENDS[d], "ConvexHull")
+            attributes = _hull_from_triangulation(sub, threads)
+        elif self._strict:
+            attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, sub, threads)
+            polygons = [np.asarray(p, dtype=np.int64) for p in polys]
         else:
-            attributes = _native("ConvexHull", _flipflop.hull3, a, _backend(backend, _HULL_BACKENDS[3], "ConvexHull"),
-                                 _threads(threads, "ConvexHull"))
-        self.simplices, self.vertices, self.neighbors, self.equations, self.volume, self.area = attributes
+            attributes = _native("ConvexHull", _flipflop.hull3, sub, _backend(self._backend, _HULL_BACKENDS[3],
+                                                                                "ConvexHull"), threads)
+        simplices, vertices, neighbors, equations, volume, area = attributes
+        if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
+            simplices, vertices = keep[simplices], keep[vertices]
+            if polygons is not None:
+                polygons = [keep[p] for p in polygons]
+        good = None
+        if g is not None:
+            sees = _hull_sees(a, simplices, a[g]) if len(simplices) else np.zeros(0, dtype=bool)
+            good = sees if self._options.visible else ~sees
+        coplanar = np.zeros((0, 3), dtype=np.int64)
+        if self._options.coplanar:
+            others = np.ones(a.shape[0], dtype=bool)
+            others[vertices] = False
+            if g is not None:
+                others[g] = False
+            coplanar = _hull_coplanar(a, simplices, np.flatnonzero(others))
+        self.points, self.ndim, self.polygons = a, d, polygons
+        self.simplices, self.vertices, self.neighbors, self.equations = simplices, vertices, neighbors, equations
+        self.volume, self.area, self.good, self.coplanar = volume, area, good, coplanar
 
 
-class Delaunay:
+def _hull_from_triangulation(a: np.ndarray, threads: int):
+    """The convex hull in 4D and 5D: the boundary facets of the canonical
+    Delaunay triangulation (the reference's RT+1, certified), with the
+    attributes the compiled call gives in 2D and 3D, computed here in
+    floating point. Why it is the canonical hull: an unweighted Delaunay
+    triangulation covers the convex hull of all points, so its boundary
+    facets triangulate the hull's boundary; under the perturbation the
+    points are in general position, the hull is simplicial and its facets
+    are those boundary facets. The hull's orientation predicates use only
+    the spatial coordinates, whose perturbation is ordered the same whether
+    the lifted height is perturbed too or not (DESIGN.md: c(i,j) + eps^(2^(i
+    delta - j)) orders the terms by i, then j, for any delta), so they are
+    the canonical hull's facets. Tested against the definition (every point
+    on the inner side of every facet, exactly) and scipy.
+
+    Facets: outward, det[f1-f0, ..., f_{d-1}-f0, x-f0] > 0 for x beyond
+    (the 3D hull's counter-clockwise rule), vertices ascending but for a
+    swap of the last two where the orientation needs it; rows sorted."""
+    d = a.shape[1]
+    simplices, _ = _native("ConvexHull", _flipflop.triangulate, a, None, "reference", False, threads)
+    nb = _flipflop.neighbors(simplices)
+    i, j = np.nonzero(nb < 0)
+    keep = np.ones((len(i), d + 1), dtype=bool)
+    keep[np.arange(len(i)), j] = False
+    facets = simplices[i][keep].reshape(-1, d)
+    # the facet opposite vertex j of a positively oriented simplex, with
+    # that vertex appended, has the sign (-1)^(d-j); inside must be negative
+    flip = (d - j) % 2 == 0
+    facets[flip, -2:] = facets[flip, -1:-3:-1]
+    # canonical: ascending but for the last two (a sort's parity fixed by them)
+    order = np.argsort(facets, axis=1, kind="stable")
+    parity = np.zeros(len(facets), dtype=bool)
+    for x in range(d):  # inversions of the sorting permutation
+        for y in range(x + 1, d):
+            parity ^= order[:, x] > order[:, y]
+    facets = np.take_along_axis(facets, order, axis=1)
+    facets[parity, -2:] = facets[parity, -1:-3:-1]
+    facets = facets[np.lexsort(facets.T[::-1])]
+    vertices = np.unique(facets)
+    neighbors = _flipflop.neighbors(facets)
+    # equations, area, volume on the points scaled by a power of two (exact)
+    big = float(np.abs(a[vertices]).max())
+    _, e = np.frexp(big if big > 0 else 1.0)
+    P = np.ldexp(a, -int(e))
+    U = np.stack([P[facets[:, k]] - P[facets[:, 0]] for k in range(1, d)], axis=1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        n = np.stack([(-1) ** (d - 1 + k) * _det(np.delete(U, k, axis=2)) for k in range(d)], axis=1)
+        size = np.linalg.norm(n, axis=1)  # (d-1)! times the facet's (d-1)-volume
+        unit = n / size[:, None]
+    equations = np.concatenate([unit, -(unit * a[facets[:, 0]]).sum(axis=1)[:, None]], axis=1)
+    o = P[vertices[0]]
+    cone = np.einsum("fd,fd->f", n, P[facets[:, 0]] - o)  # det[U; f0 - o] >= 0: d! times a cone's volume
+    area = float(np.ldexp(math.fsum(size) / math.factorial(d - 1), (d - 1) * int(e)))
+    volume = float(np.ldexp(math.fsum(cone) / math.factorial(d), d * int(e)))
+    return facets, vertices, neighbors, equations, volume, area
+
+
+def _hull_sides(points: np.ndarray, facets: np.ndarray, queries: np.ndarray, pairs_f: np.ndarray,
+                pairs_q: np.ndarray) -> np.ndarray:
+    """For the pairs (facet pairs_f[i], point queries[pairs_q[i]]): +1 when the
+    point is strictly outside the facet's hyperplane (the side its outward
+    normal points to), -1 strictly inside, 0 on it; exact. The facets are
+    flipflop's: 3D triangles counter-clockwise seen from outside (outward =
+    +det[b-a, c-a, x-a]; 4D, 5D: +det[f1-f0, ..., x-f0] likewise), 2D edges of
+    the counter-clockwise cycle (outward = -det[b-a, x-a])."""
+    d = points.shape[1]
+    f = facets[pairs_f]
+    a = points[f[:, 0]]
+    x = queries[pairs_q]
+    mats = np.stack([points[f[:, j]] - a for j in range(1, d)] + [x - a], axis=1)
+
+    def exact(i):
+        rows = _differences(points, list(f[i, 1:]), f[i, 0])
+        b = [Fraction(float(c)) for c in points[f[i, 0]]]
+        rows.append([Fraction(float(c)) - y for c, y in zip(x[i], b)])
+        return rows
+
+    s = _det_signs(mats, exact)
+    return s if d >= 3 else -s
+
+
+def _hull_sees(points: np.ndarray, facets: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Which facets have x strictly on their outer side (exact)."""
+    m = len(facets)
+    return _hull_sides(points, facets, x[None, :], np.arange(m), np.zeros(m, dtype=np.int64)) > 0
+
+
+def _nondegenerate_facets(points: np.ndarray, facets: np.ndarray) -> np.ndarray:
+    """The facets whose vertices span a hyperplane, exactly: the (d-1) x d
+    matrix [f1-f0; ...] has a non-zero (d-1)-minor (2D: distinct endpoints;
+    3D: one of the three coordinate projections not collinear)."""
+    d = points.shape[1]
+    U = np.stack([points[facets[:, j]] - points[facets[:, 0]] for j in range(1, d)], axis=1)  # (m, d-1, d)
+    ok = np.zeros(len(facets), dtype=bool)
+    for cols in combinations(range(d), d - 1):
+        todo = np.flatnonzero(~ok)
+        if len(todo) == 0:
+            break
+        mats = U[todo][:, :, list(cols)]
+
+        def exact(k, cols=cols, todo=todo):
+            rows = _differences(points, list(facets[todo[k], 1:]), facets[todo[k], 0])
+            return [[r[c] for c in cols] for r in rows]
+
+        ok[todo] = _det_signs(mats, exact) != 0
+    return ok
+
+
+def _hull_coplanar(points: np.ndarray, facets: np.ndarray, candidates: np.ndarray) -> np.ndarray:
+    """scipy's `coplanar` for an exact hull: (k, 3) [point, facet, vertex]
+    for the candidates (points that are not hull vertices) that lie exactly
+    on the hull's boundary: on the hyperplane of a facet of non-zero size
+    (every point is inside or on the hull, so a point on a supporting
+    hyperplane is on the boundary, and the facets of non-zero size cover
+    the boundary). A float filter picks the (point, facet) pairs that may be
+    0; _hull_sides decides them exactly."""
+    d = points.shape[1]
+    live = np.flatnonzero(_nondegenerate_facets(points, facets))
+    out = []
+    if len(live) == 0 or len(candidates) == 0:
+        return np.zeros((0, 3), dtype=np.int64)
+    F = facets[live]
+    a = points[F[:, 0]]
+    U = np.stack([points[F[:, j]] - a for j in range(1, d)], axis=1)  # (f, d-1, d)
+    # n: the cofactors of the last row of det[U; w], so that det = n . w
+    n = np.stack([(-1) ** (d - 1 + k) * _det(np.delete(U, k, axis=2)) for k in range(d)], axis=1)
+    scale = np.prod(np.abs(U).sum(axis=2), axis=1)
+    tolerance = 1e-14 if d <= 3 else 1e-12  # n's error: cofactors (d <= 3), LU (d = 4, 5)
+    chunk = max(1, (1 << 20) // len(live))
+    for lo in range(0, len(candidates), chunk):
+        c = candidates[lo:lo + chunk]
+        with np.errstate(all="ignore"):
+            w = points[c][:, None, :] - a[None, :, :]  # (c, f, d)
+            det = np.einsum("cfd,fd->cf", w, n)
+            bound = tolerance * np.abs(w).sum(axis=2) * scale[None, :]
+            maybe = ~(np.isfinite(det) & np.isfinite(bound) & (bound > 1e-250) & (np.abs(det) > bound))
+        qi, fi = np.nonzero(maybe)
+        if len(qi) == 0:
+            continue
+        zero = _hull_sides(points, F, points[c], fi, qi) == 0
+        qi, fi = qi[zero], fi[zero]
+        for q in np.unique(qi):
+            p = int(c[q])
+            fs = fi[qi == q]
+            best = _containing_facet(points, F[fs], points[p])
+            facet = F[fs[best]]
+            dist = np.abs(points[facet] - points[p]).sum(axis=1)
+            out.append((p, int(live[fs[best]]), int(facet[int(np.argmin(dist))])))
+    if not out:
+        return np.zeros((0, 3), dtype=np.int64)
+    return np.array(sorted(out), dtype=np.int64)
+
+
+def _containing_facet(points: np.ndarray, facets: np.ndarray, x: np.ndarray) -> int:
+    """Among facets whose plane holds x exactly, the first whose closed
+    facet holds x as far as floating point can tell (barycentric coordinates
+    >= -1e-9), else the one where x is least outside; only a choice among
+    correct answers."""
+    best, worst = 0, -np.inf
+    for k, f in enumerate(facets):
+        V = points[f]
+        A = (V[1:] - V[0]).T  # (d, d-1)
+        with np.errstate(all="ignore"):
+            lam = np.linalg.lstsq(A, x - V[0], rcond=None)[0]
+        bary = np.concatenate([[1 - lam.sum()], lam])
+        low = float(bary.min()) if np.isfinite(bary).all() else -np.inf
+        if low >= -1e-9:
+            return k
+        if low > worst:
+            best, worst = k, low
+    return best
+
+
+# The sign of the lifted in-sphere determinant (rows (v_j - x, |v_j - x|^2))
+# of a positively oriented simplex with x inside its circumsphere, per d:
+# computed once, exactly, for the standard simplex and its centroid.
+def _insphere_sign(d: int) -> int:
+    verts = [[Fraction(0)] * d] + [[Fraction(int(i == j)) for i in range(d)] for j in range(d)]
+    x = [Fraction(1, d + 1)] * d
+    rows = []
+    for v in verts:
+        r = [a - b for a, b in zip(v, x)]
+        rows.append(r + [sum(c * c for c in r)])
+    return _exact_sign(rows)
+
+
+_INSPHERE = {d: _insphere_sign(d) for d in (2, 3, 4, 5)}
+
+
+class Delaunay(_QhullUser):
     """The regular (weighted Delaunay) triangulation of points in 2D..5D,
-    exact and certified; with weights=None the Delaunay triangulation.
+    exact and certified; with weights=None the Delaunay triangulation. The
+    constructor and attributes are scipy.spatial.Delaunay's
+    (docs/scipy_porting.md lists every name and difference):
 
-    Attributes (as scipy.spatial.Delaunay):
+    Delaunay(points, furthest_site=False, incremental=False,
+             qhull_options=None, *, weights=None, strict=False,
+             backend=None, threads=0)
+
+    Attributes (as scipy.spatial.Delaunay; indices int64):
       points       (n, d) float64
       simplices    (m, d+1) positively oriented (det[p1-p0, ..., pd-p0] > 0),
                    canonical order
       neighbors    (m, d+1) the simplex opposite each vertex, -1 outside
       convex_hull  (h, d) the boundary facets
-      redundant    the points that are not vertices (weighted input: hidden
-                   by their neighbours' weights; unweighted: duplicates)
-    find_simplex(xi) locates points exactly (-1: outside the hull).
+      equations    (m, d+2) [unit normal, offset] of each simplex's lifted
+                   hyperplane: the hyperplane through the lifted vertices
+                   (v, s * (|v|^2 - w_v)), s = paraboloid_scale (shift 0),
+                   normal pointing down (outward of the lower hull); the
+                   zero-volume simplices' are vertical (normal[-1] = 0) or
+                   NaN (floating point, from the exact simplices)
+      paraboloid_scale, paraboloid_shift  the lift: lift_points(x) = (x,
+                   s |x|^2 + shift); s a power of two (about 1 / the largest
+                   coordinate, Qbb's intent), shift 0.0
+      transform    (m, d+1, d) the barycentric transform: [:d] = T^-1,
+                   [d] = r = the last vertex, T's columns v_j - r; NaN for
+                   the zero-volume simplices (decided exactly) and any a
+                   floating-point inverse fails on
+      vertex_to_simplex  (n,) a simplex holding each vertex; for the points
+                   in `coplanar` their simplex, else -1
+      vertex_neighbor_vertices  (indptr, indices): the vertices joined to
+                   vertex k by an edge are indices[indptr[k]:indptr[k+1]],
+                   ascending
+      coplanar     (k, 3) [point, simplex, vertex]: the points that are not
+                   vertices (duplicates; weighted: redundant points), a
+                   simplex that contains it (exact point location) and that
+                   simplex's vertex nearest to it; computed when
+                   qhull_options holds Qc, as in scipy (its default does)
+      good         (m,) int: 1 for every simplex; with QGn / QG-n, 1 where
+                   point n lies strictly inside / not strictly inside the
+                   simplex's circumsphere (weighted: power distance < 0;
+                   exact), the triangulation then being that of the other
+                   points (as Qhull)
+      redundant    the points that are not vertices
+      nsimplex, npoints, ndim, min_bound, max_bound, furthest_site (False),
+      vertices     scipy's deprecated alias of simplices (DeprecationWarning)
+    The floating-point attributes are computed on first use, like scipy's
+    transform. find_simplex(xi) locates points exactly (-1: outside the
+    hull); plane_distance(xi) and lift_points(x) use the lift above.
 
     The canonical answer may hold simplices of zero volume on degenerate
     input (collinear or cospherical points): it is the unique answer under
@@ -183,6 +715,19 @@ class Delaunay:
     input without zero-volume simplices (the 2D grid's 2(k-1)^2 triangles, d!
     simplices per cube of a grid in d >= 3), certified (`dt2 --strict`,
     `rtd --strict` on the command line).
+
+    furthest_site=True (the furthest-site triangulation) is not available
+    yet: ValueError. incremental=True allows add_points(points,
+    restart=False, *, weights=None); it recomputes the triangulation of all
+    points (the canonical answer does not depend on the insertion order, so
+    it is the answer an in-place insertion would give); in-place insertion
+    is still open. close() ends incremental mode.
+
+    qhull_options: Qc and QGn / QG-n are applied; Qbb QbB Qz Qx QJ Qt Q12 Pp
+    are accepted and ignored (they steer Qhull's floating point; flipflop's
+    answer is exact); anything else raises QhullOptionError (a ValueError
+    and a RuntimeError). Default, as scipy: "Qbb Qc Qz Q12" ("Qbb Qc Qz Qx
+    Q12" for d > 4). str or bytes.
 
     backend: 'cpu' (2D and 3D, the default there: the multithreaded kernels
     of kernels_cpu/rt2 and kernels_cpu/rt3, certified from their witnesses),
@@ -195,35 +740,280 @@ class Delaunay:
     (0: all cores); the answer is the same at any count.
     """
 
-    def __init__(self, points, weights=None, strict: bool = False, backend: Optional[str] = None,
-                 threads: int = 0):
+    furthest_site = False
+
+    def __init__(self, points, furthest_site=False, incremental: bool = False, qhull_options=None, *,
+                 weights=None, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
+        if not isinstance(furthest_site, (bool, np.bool_)) and not (
+                isinstance(furthest_site, (int, np.integer)) and furthest_site in (0, 1)):
+            raise ValueError("Delaunay: furthest_site must be a bool (weights are keyword-only: "
+                             "Delaunay(points, weights=w))")
+        if furthest_site:
+            raise ValueError("Delaunay: furthest_site=True is not available: flipflop does not compute the "
+                             "furthest-site triangulation yet")
         a = _points(points, (2, 3, 4, 5), "Delaunay", finite=False)
-        w = _weights(weights, a.shape[0], "Delaunay")
-        self.points = a
-        self.weights = w
-        self.ndim = a.shape[1]
-        self.simplices, self.redundant = _native(
-            "Delaunay", _flipflop.triangulate, a, w, _backend(backend, _DELAUNAY_BACKENDS[a.shape[1]], "Delaunay"),
-            bool(strict), _threads(threads, "Delaunay"))
-        self.neighbors = _flipflop.neighbors(self.simplices)
+        d = a.shape[1]
+        self._options = _qhull_options(qhull_options, "Delaunay", "Qbb Qc Qz Qx Q12" if d > 4 else "Qbb Qc Qz Q12")
+        self._strict, self._threads = bool(strict), _threads(threads, "Delaunay")
+        self._backend = _backend(backend, _DELAUNAY_BACKENDS[d], "Delaunay")
+        self._incremental, self._closed = bool(incremental), False
+        self._update(a, _weights(weights, a.shape[0], "Delaunay"))
+
+    def add_points(self, points, restart: bool = False, *, weights=None) -> None:
+        """As scipy's: adds points (shape (k, ndim)); needs incremental=True
+        and no close() before (RuntimeError otherwise, as scipy). A weighted
+        triangulation needs their weights (shape (k,)), an unweighted one
+        none. Recomputes; in-place insertion is still open: the
+        triangulation of all points is computed again (restart is accepted
+        and changes nothing: the canonical answer does not depend on the
+        insertion order). On bad input (ValueError) nothing changes."""
+        self._check_incremental()
+        new = _new_points(points, self.ndim, "Delaunay.add_points")
+        w = None
+        if self.weights is not None:
+            if weights is None:
+                raise ValueError("Delaunay.add_points: the triangulation is weighted: weights= are needed")
+            w = np.concatenate([self.weights, _weights(weights, new.shape[0], "Delaunay.add_points")])
+        elif weights is not None:
+            raise ValueError("Delaunay.add_points: the triangulation is unweighted: no weights")
+        self._update(np.ascontiguousarray(np.concatenate([self.points, new])), w)
+
+    def _update(self, a: np.ndarray, w: Optional[np.ndarray]) -> None:
+        keep, g = _good_point(self._options, a, "Delaunay")
+        sub, sw = a, w
+        if keep is not None:
+            sub = np.ascontiguousarray(a[keep])
+            sw = None if w is None else np.ascontiguousarray(w[keep])
+        simplices, redundant = _native("Delaunay", _flipflop.triangulate, sub, sw, self._backend, self._strict,
+                                       self._threads)
+        if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
+            simplices, redundant = keep[simplices], keep[redundant]
+        d = a.shape[1]
+        neighbors = _flipflop.neighbors(simplices)
         # the boundary facets: each simplex side without a neighbour, its
         # vertices in order with the opposite one left out
-        i, j = np.nonzero(self.neighbors < 0)
-        keep = np.ones((len(i), self.ndim + 1), dtype=bool)
-        keep[np.arange(len(i)), j] = False
-        self.convex_hull = self.simplices[i][keep].reshape(-1, self.ndim)
+        i, j = np.nonzero(neighbors < 0)
+        leave = np.ones((len(i), d + 1), dtype=bool)
+        leave[np.arange(len(i)), j] = False
+        self.points, self.weights, self.ndim = a, w, d
+        self.simplices, self.redundant, self.neighbors = simplices, redundant, neighbors
+        self.convex_hull = simplices[i][leave].reshape(-1, d)
+        self._good_index = g
+        self._cache = {}
+        big = float(np.abs(a).max())
+        _, e = np.frexp(big if big > 0 else 1.0)
+        e = min(max(int(e), -1020), 1020)  # the scale 2^-e a normal double
+        self._lift_exponent = e
+        self.paraboloid_scale = float(np.ldexp(1.0, -e))
+        self.paraboloid_shift = 0.0
 
-    def find_simplex(self, xi) -> np.ndarray:
+    def _cached(self, name, compute):
+        if name not in self._cache:
+            self._cache[name] = compute()
+        return self._cache[name]
+
+    # ---- scipy's attributes ------------------------------------------------------
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """scipy's deprecated alias of `simplices` (DeprecationWarning, as
+        scipy 1.10)."""
+        warnings.warn("Delaunay attribute 'vertices' is deprecated in favour of 'simplices' (as in scipy)",
+                      DeprecationWarning, stacklevel=2)
+        return self.simplices
+
+    @property
+    def good(self) -> np.ndarray:
+        return self._cached("good", self._compute_good)
+
+    @property
+    def coplanar(self) -> np.ndarray:
+        return self._cached("coplanar", self._compute_coplanar)
+
+    @property
+    def vertex_to_simplex(self) -> np.ndarray:
+        return self._cached("vertex_to_simplex", self._compute_vertex_to_simplex)
+
+    @property
+    def vertex_neighbor_vertices(self):
+        return self._cached("vertex_neighbor_vertices", self._compute_vertex_neighbor_vertices)
+
+    @property
+    def transform(self) -> np.ndarray:
+        return self._cached("transform", self._compute_transform)
+
+    @property
+    def equations(self) -> np.ndarray:
+        return self._cached("equations", self._compute_equations)
+
+    def lift_points(self, x) -> np.ndarray:
+        """Points x (shape (..., d)) lifted to the paraboloid: (x,
+        paraboloid_scale * |x|^2 + paraboloid_shift), as scipy (the power of
+        two applied before squaring, so no intermediate over- or
+        underflows)."""
+        x = np.asarray(x, dtype=np.float64)
+        e = self._lift_exponent
+        with np.errstate(over="ignore", under="ignore"):
+            h = np.ldexp((np.ldexp(x, -e) ** 2).sum(axis=-1), e) + self.paraboloid_shift
+        return np.concatenate([x, h[..., None]], axis=-1)
+
+    def plane_distance(self, xi) -> np.ndarray:
+        """For points xi (shape (..., d)), the signed distance of each
+        lifted point from every simplex's lifted hyperplane, shape (...,
+        nsimplex), as scipy: positive where xi lies inside the simplex's
+        circumsphere (weighted: its orthogonal sphere)."""
+        xi = np.asarray(xi, dtype=np.float64)
+        if xi.shape[-1:] != (self.ndim,):
+            raise ValueError(f"plane_distance: xi has different dimensionality than triangulation "
+                             f"(shape (..., {self.ndim}) expected, got {xi.shape})")
+        eq = self.equations
+        return self.lift_points(xi) @ eq[:, :-1].T + eq[:, -1]
+
+    def find_simplex(self, xi, bruteforce: bool = False, tol=None) -> np.ndarray:
         """For each point of xi (shape (..., d)), the index of a simplex that
         contains it (closed; decided exactly), -1 outside the hull. Simplices
         of zero volume (the canonical answer's on degenerate input) are never
-        returned: a point on one lies in a neighbour of positive volume."""
+        returned: a point on one lies in a neighbour of positive volume.
+
+        bruteforce and tol are scipy's and accepted: the search is exact, so
+        the answer is the same with either; tol (a tolerance of scipy's
+        floating-point inside test, default 100 eps) is only checked to be a
+        real number (TypeError otherwise, as scipy) and has no effect."""
+        if tol is not None and not isinstance(tol, numbers.Real):
+            raise TypeError(f"find_simplex: tol must be real number, not {type(tol).__name__}")  # as scipy
         q = np.asarray(xi, dtype=np.float64)
         shape = q.shape[:-1]
         if q.shape[-1:] != (self.ndim,):
-            raise ValueError(f"find_simplex: points must have shape (..., {self.ndim}), got {q.shape}")
+            raise ValueError(f"find_simplex: wrong dimensionality in xi: points must have shape (..., {self.ndim}), "
+                             f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
         return _flipflop.find_simplex(self.points, self.simplices, self.neighbors, q).reshape(shape)
+
+    # ---- their computation -----------------------------------------------------------
+
+    def _flat(self) -> np.ndarray:
+        """The simplices of zero volume, exactly."""
+        def compute():
+            S, P = self.simplices, self.points
+            V = P[S]
+            mats = V[:, 1:] - V[:, :1]
+            return _det_signs(mats, lambda i: _differences(P, list(S[i, 1:]), S[i, 0])) == 0
+        return self._cached("flat", compute)
+
+    def _compute_transform(self) -> np.ndarray:
+        S, P, d = self.simplices, self.points, self.ndim
+        m = len(S)
+        V = P[S]
+        r = V[:, d]
+        T = np.swapaxes(V[:, :d] - r[:, None, :], 1, 2)  # column j: v_j - r
+        flat = self._flat()
+        T[flat] = np.eye(d)
+        # each T scaled by a power of two first (exact): no overflow or
+        # underflow in the inverse unless its true entries are not doubles
+        with np.errstate(all="ignore"):
+            _, e = np.frexp(np.abs(T).max(axis=(1, 2)))
+            T = np.ldexp(T, -e[:, None, None])
+            bad = ~np.isfinite(T).all(axis=(1, 2))
+            T[bad] = np.eye(d)
+            try:
+                Ti = np.linalg.inv(T)
+            except np.linalg.LinAlgError:  # singular in floating point only: one at a time
+                Ti = np.empty_like(T)
+                for k in range(m):
+                    try:
+                        Ti[k] = np.linalg.inv(T[k])
+                    except np.linalg.LinAlgError:
+                        Ti[k] = np.nan
+            Ti = np.ldexp(Ti, -e[:, None, None])
+        out = np.empty((m, d + 1, d))
+        out[:, :d] = Ti
+        out[:, d] = r
+        out[flat | bad] = np.nan
+        return out
+
+    def _lifted(self, idx: np.ndarray) -> np.ndarray:
+        """(points, s * (|p|^2 - w)) for the given point indices."""
+        z = self.lift_points(self.points[idx])
+        if self.weights is not None:
+            z[..., -1] -= self.weights[idx] * self.paraboloid_scale
+        return z
+
+    def _compute_equations(self) -> np.ndarray:
+        S, d = self.simplices, self.ndim
+        m = len(S)
+        Z = self._lifted(S)  # (m, d+1, d+1)
+        M = Z[:, 1:] - Z[:, :1]  # (m, d, d+1)
+        with np.errstate(all="ignore"):
+            _, e = np.frexp(np.abs(M).max(axis=(1, 2)))
+            Ms = np.ldexp(M, -e[:, None, None])
+            # the normal by cofactors: n_k = (-1)^k det(M without column k), so
+            # that M n = 0; n_d = (-1)^d det[v_j - v_0] is made negative for
+            # positively oriented simplices (outward of the lower hull: down)
+            n = np.empty((m, d + 1))
+            for k in range(d + 1):
+                n[:, k] = (-1) ** k * _det(np.delete(Ms, k, axis=2))
+            n *= (-1) ** (d + 1)
+            n /= np.linalg.norm(n, axis=1)[:, None]
+            off = -(n * Z[:, 0]).sum(axis=1)
+        return np.concatenate([n, off[:, None]], axis=1)
+
+    def _compute_vertex_to_simplex(self) -> np.ndarray:
+        S = self.simplices
+        out = np.full(self.npoints, -1, dtype=np.int64)
+        out[S.ravel()[::-1]] = np.repeat(np.arange(len(S), dtype=np.int64), S.shape[1])[::-1]
+        c = self.coplanar
+        out[c[:, 0]] = c[:, 1]
+        return out
+
+    def _compute_vertex_neighbor_vertices(self):
+        S, n = self.simplices, self.npoints
+        i, j = np.triu_indices(S.shape[1], 1)
+        a, b = S[:, i].ravel(), S[:, j].ravel()
+        key = np.unique(np.concatenate([a * n + b, b * n + a]))
+        src, dst = key // n, key % n
+        indptr = np.zeros(n + 1, dtype=np.int64)
+        np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
+        return indptr, dst.astype(np.int64)
+
+    def _compute_coplanar(self) -> np.ndarray:
+        if not self._options.coplanar or len(self.redundant) == 0:
+            return np.zeros((0, 3), dtype=np.int64)
+        r = self.redundant
+        s = self.find_simplex(self.points[r])
+        rows = []
+        for p, t in zip(r, s):
+            if t < 0:  # not reached: a point that is not a vertex lies in the hull of the vertices
+                continue
+            verts = self.simplices[t]
+            dist = ((self.points[verts] - self.points[p]) ** 2).sum(axis=1)
+            rows.append((int(p), int(t), int(verts[int(np.argmin(dist))])))
+        return np.array(rows, dtype=np.int64).reshape(-1, 3)
+
+    def _compute_good(self) -> np.ndarray:
+        m, g = len(self.simplices), self._good_index
+        if g is None:
+            return np.ones(m, dtype=np.int64)
+        S, P, d = self.simplices, self.points, self.ndim
+        x = P[g]
+        wx = 0.0 if self.weights is None else self.weights[g]
+        D = P[S] - x  # (m, d+1, d)
+        sq = (D ** 2).sum(axis=2)
+        W = np.zeros(S.shape) if self.weights is None else self.weights[S]
+        mats = np.concatenate([D, (sq - W + wx)[:, :, None]], axis=2)
+        mags = np.concatenate([np.abs(D), (sq + np.abs(W) + abs(wx))[:, :, None]], axis=2).max(axis=2)
+
+        def exact(i):
+            fx = [Fraction(float(c)) for c in x]
+            fwx = Fraction(float(wx))
+            rows = []
+            for v in S[i]:
+                r = [Fraction(float(c)) - y for c, y in zip(P[v], fx)]
+                wv = Fraction(0) if self.weights is None else Fraction(float(self.weights[v]))
+                rows.append(r + [sum(c * c for c in r) - wv + fwx])
+            return rows
+
+        inside = _det_signs(mats, exact, mags) == _INSPHERE[d]
+        return (inside if self._options.visible else ~inside).astype(np.int64)
 
 
 class Certificate:
@@ -304,3 +1094,7 @@ def generate(dist: str, n: int, seed: int = 1, thickness: float = 0.01, weights=
     rng = None if weights is None else (float(weights[0]), float(weights[1]))
     pts, w = _flipflop.generate(dist, int(n), int(seed), float(thickness), rng)
     return pts if rng is None else (pts, w)
+
+
+# last: voronoi.py uses the helpers above
+from .voronoi import Voronoi  # noqa: E402

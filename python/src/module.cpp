@@ -20,16 +20,28 @@
 #include <nanobind/stl/vector.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include <gmp.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/certify_hull2.hpp"
@@ -945,6 +957,1124 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
   return {cells_array(result, static_cast<std::size_t>(p.shape(1) + 1)), flips};
 }
 
+
+// ---- Voronoi / power diagrams: the dual of the certified triangulation --------
+//
+// voronoi(points, weights, simplices, threads) takes the canonical (certified)
+// regular triangulation computed by `triangulate` and returns the diagram's
+// vertices and topology (python/flipflop/voronoi.py documents the rules):
+//
+// * Every simplex of positive volume has one exact centre (circumcentre; with
+//   weights the power centre, where |c - p|^2 - w is equal for its d + 1
+//   vertices). It is computed exactly in integers (below) and rounded
+//   correctly to doubles (round_ratio). Simplices of zero volume (the
+//   canonical answer may hold them on degenerate input) have none: their
+//   group is -1.
+// * The positive simplices of the canonical answer are the positive
+//   simplices of a triangulation refining the exact regular subdivision (the
+//   lower hull of the lifted points, unperturbed): each lies in one cell of
+//   it, and its centre is that cell's centre (the limit of the perturbed
+//   lower facet's hyperplane is the unperturbed hyperplane through its lifted
+//   vertices, which spans d + 1 affinely independent points and supports the
+//   lifted set). Two cells never share a centre (two supporting hyperplanes
+//   of the same slope are equal), so simplices with equal exact centres are
+//   exactly the simplices of one cell: one Voronoi vertex per cell. They are
+//   grouped by their rounded centres (equal exact centres round equally)
+//   and then compared exactly within each run of equal rounded centres.
+// * "Infinite groups": the exact facets of the convex hull, each with the
+//   points lying on its hyperplane (found from the boundary facets of the
+//   triangulation, joined across ridges while coplanar (exact orient), and
+//   the zero-volume simplices lying in that hyperplane next to them, which
+//   hold the points of the hull facet that the perturbation moved inwards).
+// * Regions and ridges (5 and 6 in voronoi_core): Q is the lower hull of the
+//   lifted points with its vertical rays. Point i has a cell with interior
+//   iff P_i is a vertex of Q (no third point lies in every cell and hull
+//   facet around it); (i, j) is a ridge iff P_i, P_j are vertices of Q, some
+//   cell holds both, and no third VERTEX of Q lies in every cell and hull
+//   facet holding both (then the smallest face of Q holding them is the edge
+//   P_iP_j). Points whose lifted point lies on a face of Q without being a
+//   vertex (exact weight ties; the perturbation keeps them in the
+//   triangulation) are ignored by the ridge test, and the ridges that pass
+//   "through" them, for which the triangulation has no edge, are found from
+//   them (the pairs of vertices of Q on a line through the point, either
+//   side of it, in the face of Q its cells meet in).
+
+struct Mpz {
+  mpz_t v;
+  Mpz() { mpz_init(v); }
+  ~Mpz() { mpz_clear(v); }
+  Mpz(const Mpz&) = delete;
+  Mpz& operator=(const Mpz&) = delete;
+};
+
+// sign(M) * round-to-nearest-even(|M| / D * 2^E) as a double, D > 0: exact.
+// |M| 2^s / D = q + r / D with q in [2^54, 2^56) (s chosen from the bit
+// lengths), so q's bits are the value's leading 55 or 56 bits and r != 0 is
+// the sticky bit. The value lies in [2^t, 2^(t+1)) with t = bits(q) - 1 + E - s;
+// a double keeps p = 53 of those bits when t >= -1022, t + 1075 below
+// (subnormals: the last kept bit is 2^-1074). Rounding the kept bits by the
+// dropped ones (more than half, or exactly half with a non-zero sticky bit or
+// an odd last kept bit: up) is IEEE's round-to-nearest-even; the rounded
+// integer (at most 2^p, p <= 53) times a power of two is then a double
+// exactly, or beyond the largest finite double, where ldexp gives +-inf,
+// which is also the correctly rounded result (the value is at least
+// (2 - 2^-53) 2^1023). p < 0 means a value below 2^-1075: zero.
+double round_ratio(const mpz_t M, const mpz_t D, long E, mpz_t q, mpz_t r, mpz_t tmp) {
+  const int sg = mpz_sgn(M);
+  if (sg == 0) return 0.0;
+  const long a = static_cast<long>(mpz_sizeinbase(M, 2)), b = static_cast<long>(mpz_sizeinbase(D, 2));
+  const long s = 55 - (a - b);  // |M| 2^s / D in [2^(54), 2^(56))
+  if (s >= 0) {
+    mpz_abs(q, M);
+    mpz_mul_2exp(q, q, static_cast<mp_bitcnt_t>(s));
+    mpz_tdiv_qr(q, r, q, D);
+  } else {
+    mpz_mul_2exp(tmp, D, static_cast<mp_bitcnt_t>(-s));
+    mpz_abs(q, M);
+    mpz_tdiv_qr(q, r, q, tmp);
+  }
+  const std::uint64_t qv = mpz_get_ui(q);
+  const bool sticky = mpz_sgn(r) != 0;
+  const int nb = 64 - __builtin_clzll(qv);  // 55 or 56
+  const long t = nb - 1 + E - s;
+  const long p = t >= -1022 ? 53 : t + 1075;
+  if (p < 0) return sg < 0 ? -0.0 : 0.0;
+  const int drop = nb - static_cast<int>(p);  // >= 2
+  std::uint64_t keep = drop >= 64 ? 0 : qv >> drop;
+  const std::uint64_t rem = qv & ((std::uint64_t(1) << drop) - 1), half = std::uint64_t(1) << (drop - 1);
+  if (rem > half || (rem == half && (sticky || (keep & 1)))) ++keep;
+  const double x = std::ldexp(static_cast<double>(keep), static_cast<int>(std::max(-100000L, std::min(100000L, E - s + drop))));
+  return sg < 0 ? -x : x;
+}
+
+// x = mant * 2^exp with |mant| < 2^53 an integer (x != 0)
+inline void split_double(double x, std::int64_t& mant, long& ex) {
+  int e;
+  const double m = std::frexp(x, &e);
+  mant = static_cast<std::int64_t>(std::ldexp(m, 53));
+  ex = static_cast<long>(e) - 53;
+}
+
+// The exact centre of a simplex of d + 1 points (weights optional):
+// c_l = M[l] / D * 2^E with D > 0, or D = 0 for a simplex of zero volume.
+// All coordinates are integers times 2^E and all weights integers times 2^(2E)
+// (E the least exponent among them; a weight's halved, rounded down), so in
+// units of 2^E: v_k = P_k - P_0 (k = 1..d) and b_k = |v_k|^2 - (W_k - W_0) are
+// integers and the centre is P_0 + x with 2 v_k . x = b_k, solved by Cramer's
+// rule: x_l = det(V with column l replaced by b) / (2 det V), each
+// determinant by fraction-free (Bareiss) elimination, exact.
+struct CentreSolver {
+  int d = 2;
+  Mpz P[6][5], W[6], A[5][5], B[5], M[5], Dn, t, q, r, tmp;
+  long E = 0;
+
+  Mpz X[5][5];
+  long det(int skip_col_for_b, mpz_t out) {  // det of A with column skip replaced by B (skip < 0: none) into out
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j) mpz_set(X[i][j].v, j == skip_col_for_b ? B[i].v : A[i][j].v);
+    int sign = 1;
+    for (int k = 0; k + 1 < d; ++k) {
+      if (mpz_sgn(X[k][k].v) == 0) {
+        int rr = k + 1;
+        while (rr < d && mpz_sgn(X[rr][k].v) == 0) ++rr;
+        if (rr == d) {
+          mpz_set_ui(out, 0);
+          return 0;
+        }
+        for (int j = 0; j < d; ++j) mpz_swap(X[k][j].v, X[rr][j].v);
+        sign = -sign;
+      }
+      for (int i = k + 1; i < d; ++i)
+        for (int j = k + 1; j < d; ++j) {
+          mpz_mul(t.v, X[i][j].v, X[k][k].v);
+          mpz_submul(t.v, X[i][k].v, X[k][j].v);
+          if (k > 0) mpz_divexact(t.v, t.v, X[k - 1][k - 1].v);
+          mpz_swap(X[i][j].v, t.v);
+        }
+    }
+    mpz_set(out, X[d - 1][d - 1].v);
+    if (sign < 0) mpz_neg(out, out);
+    return mpz_sgn(out);
+  }
+
+  // false: zero volume
+  bool solve(const double* const* p, const double* w) {
+    E = std::numeric_limits<long>::max();
+    std::int64_t mant;
+    long ex;
+    for (int k = 0; k <= d; ++k)
+      for (int l = 0; l < d; ++l)
+        if (p[k][l] != 0) {
+          split_double(p[k][l], mant, ex);
+          E = std::min(E, ex);
+        }
+    if (w)
+      for (int k = 0; k <= d; ++k)
+        if (w[k] != 0) {
+          split_double(w[k], mant, ex);
+          E = std::min(E, ex >= 0 ? ex / 2 : -((-ex + 1) / 2));  // floor(ex / 2)
+        }
+    if (E == std::numeric_limits<long>::max()) E = 0;
+    for (int k = 0; k <= d; ++k) {
+      for (int l = 0; l < d; ++l) {
+        if (p[k][l] == 0) {
+          mpz_set_ui(P[k][l].v, 0);
+          continue;
+        }
+        split_double(p[k][l], mant, ex);
+        mpz_set_si(P[k][l].v, static_cast<long>(mant));
+        mpz_mul_2exp(P[k][l].v, P[k][l].v, static_cast<mp_bitcnt_t>(ex - E));
+      }
+      if (w) {
+        if (w[k] == 0) {
+          mpz_set_ui(W[k].v, 0);
+        } else {
+          split_double(w[k], mant, ex);
+          mpz_set_si(W[k].v, static_cast<long>(mant));
+          mpz_mul_2exp(W[k].v, W[k].v, static_cast<mp_bitcnt_t>(ex - 2 * E));
+        }
+      }
+    }
+    for (int k = 1; k <= d; ++k) {
+      mpz_set_ui(B[k - 1].v, 0);
+      for (int l = 0; l < d; ++l) {
+        mpz_sub(A[k - 1][l].v, P[k][l].v, P[0][l].v);
+        mpz_addmul(B[k - 1].v, A[k - 1][l].v, A[k - 1][l].v);
+      }
+      if (w) {
+        mpz_sub(B[k - 1].v, B[k - 1].v, W[k].v);
+        mpz_add(B[k - 1].v, B[k - 1].v, W[0].v);
+      }
+    }
+    if (det(-1, Dn.v) == 0) return false;
+    mpz_mul_2exp(Dn.v, Dn.v, 1);
+    for (int l = 0; l < d; ++l) {
+      det(l, M[l].v);
+      mpz_addmul(M[l].v, P[0][l].v, Dn.v);  // M_l = N_l + P0_l * D
+    }
+    if (mpz_sgn(Dn.v) < 0) {
+      mpz_neg(Dn.v, Dn.v);
+      for (int l = 0; l < d; ++l) mpz_neg(M[l].v, M[l].v);
+    }
+    return true;
+  }
+
+  void rounded(double* out) {
+    for (int l = 0; l < d; ++l) out[l] = round_ratio(M[l].v, Dn.v, E, q.v, r.v, tmp.v);
+  }
+};
+
+
+// A floating-point filter for the centres in 2D and 3D: the same Cramer
+// formulas in long double (x87's 64-bit significand) with a running error
+// bound per value (Wilkinson's running error analysis): for each operation
+// a o b with operands a~, b~ known to within ea, eb, the result is within
+// the propagated bound (|a~| eb + |b~| ea + ea eb for products, ea + eb for
+// sums, (|a~| eb + |b~| ea) / (|b~| (|b~| - eb)) for quotients) plus U |r~|,
+// U = LDBL_EPSILON = twice the unit roundoff (which also covers the ratio of
+// the exact result to the computed one). Under- and overflow cannot occur:
+// the values are polynomials of degree <= 4 (then one quotient) in doubles,
+// inside 2^(+-4400), and long double reaches 2^(+-16382). The bounds
+// themselves are computed in rounded arithmetic, < 60 operations on
+// non-negative numbers, each off by a factor (1 +- 2^-64) at most: the
+// final bound is inflated by (1 + 2^-50). The centre c = p0 + x lies in
+// [s - e, s + e] (s its long double approximation); it rounds to the double
+// h nearest s when that interval lies strictly between the midpoints of h
+// and its two neighbouring doubles (computed exactly: they have 54
+// significant bits; s - mid is exact by Sterbenz's lemma), for h normal
+// and away from overflow; else the exact path decides. A simplex whose
+// determinant's bound does not exclude zero also goes the exact way.
+#if LDBL_MANT_DIG >= 64 && LDBL_MAX_EXP >= 16384
+#define FLIPFLOP_VORONOI_FILTER 1
+struct Ev {
+  long double v, e;
+};
+constexpr long double kU = LDBL_EPSILON;
+inline Ev ev_sub(Ev a, Ev b) {
+  const long double v = a.v - b.v;
+  return {v, a.e + b.e + kU * std::fabs(v)};
+}
+inline Ev ev_add(Ev a, Ev b) {
+  const long double v = a.v + b.v;
+  return {v, a.e + b.e + kU * std::fabs(v)};
+}
+inline Ev ev_mul(Ev a, Ev b) {
+  const long double v = a.v * b.v;
+  return {v, std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v)};
+}
+inline Ev ev_det2(Ev a, Ev b, Ev c, Ev dd) { return ev_sub(ev_mul(a, dd), ev_mul(b, c)); }
+inline Ev ev_det3(const Ev (*r)[3]) {
+  const Ev c0 = ev_det2(r[1][1], r[1][2], r[2][1], r[2][2]);
+  const Ev c1 = ev_det2(r[1][0], r[1][2], r[2][0], r[2][2]);
+  const Ev c2 = ev_det2(r[1][0], r[1][1], r[2][0], r[2][1]);
+  return ev_add(ev_sub(ev_mul(r[0][0], c0), ev_mul(r[0][1], c1)), ev_mul(r[0][2], c2));
+}
+
+// true: out[] holds the correctly rounded centre (the simplex has positive volume)
+bool centre_filtered(int d, const double* const* p, const double* w, double* out) {
+  Ev V[3][3], B[3];
+  for (int k = 1; k <= d; ++k) {
+    Ev b{0.0L, 0.0L};
+    for (int l = 0; l < d; ++l) {
+      V[k - 1][l] = ev_sub({p[k][l], 0.0L}, {p[0][l], 0.0L});
+      b = ev_add(b, ev_mul(V[k - 1][l], V[k - 1][l]));
+    }
+    if (w) b = ev_sub(b, ev_sub({w[k], 0.0L}, {w[0], 0.0L}));
+    B[k - 1] = b;
+  }
+  Ev D, N[3];
+  if (d == 2) {
+    D = ev_det2(V[0][0], V[0][1], V[1][0], V[1][1]);
+    N[0] = ev_det2(B[0], V[0][1], B[1], V[1][1]);
+    N[1] = ev_det2(V[0][0], B[0], V[1][0], B[1]);
+  } else {
+    D = ev_det3(V);
+    for (int l = 0; l < 3; ++l) {
+      Ev M[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) M[r][c] = c == l ? B[r] : V[r][c];
+      N[l] = ev_det3(M);
+    }
+  }
+  D.v *= 2, D.e *= 2;  // exact
+  const long double infl = 1.0L + std::ldexp(1.0L, -50);
+  const long double De = D.e * infl;
+  if (!(std::fabs(D.v) > De)) return false;
+  for (int l = 0; l < d; ++l) {
+    // x = N / D, then c = p0 + x
+    const long double xv = N[l].v / D.v;
+    const long double xe =
+        (std::fabs(N[l].v) * De + std::fabs(D.v) * N[l].e * infl) / (std::fabs(D.v) * (std::fabs(D.v) - De)) +
+        kU * std::fabs(xv);
+    const Ev c = ev_add({p[0][l], 0.0L}, {xv, xe * infl});
+    const long double e = c.e * infl;
+    if (!std::isfinite(c.v) || !std::isfinite(e)) return false;
+    const double h = static_cast<double>(c.v);  // round to nearest
+    const double ah = std::fabs(h);
+    if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
+    const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
+    const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
+    if (!(c.v - lo > e && hi - c.v > e)) return false;
+    out[l] = h;
+  }
+  return true;
+}
+#endif
+
+// An exact centre kept for comparison: c_l = M[l] / D * 2^E.
+struct ExactCentre {
+  int d = 0;
+  Mpz M[5], D;
+  long E = 0;
+  void take(CentreSolver& s) {
+    d = s.d;
+    for (int l = 0; l < d; ++l) mpz_set(M[l].v, s.M[l].v);
+    mpz_set(D.v, s.Dn.v);
+    E = s.E;
+  }
+  bool equals(const ExactCentre& o) const {
+    Mpz x, y;
+    const long e = std::min(E, o.E);
+    for (int l = 0; l < d; ++l) {
+      mpz_mul(x.v, M[l].v, o.D.v);
+      mpz_mul_2exp(x.v, x.v, static_cast<mp_bitcnt_t>(E - e));
+      mpz_mul(y.v, o.M[l].v, D.v);
+      mpz_mul_2exp(y.v, y.v, static_cast<mp_bitcnt_t>(o.E - e));
+      if (mpz_cmp(x.v, y.v) != 0) return false;
+    }
+    return true;
+  }
+};
+
+// Compressed lists: offsets (size + 1) and values.
+struct Csr {
+  std::vector<std::int64_t> off{0}, val;
+  void close() { off.push_back(static_cast<std::int64_t>(val.size())); }
+};
+
+// Whether sorted list `set` holds x.
+inline bool holds(const std::int64_t* b, const std::int64_t* e, std::int64_t x) { return std::binary_search(b, e, x); }
+
+struct VoronoiResult {
+  std::vector<double> vertices;
+  std::vector<std::int64_t> simplex_vertex;
+  std::vector<std::int64_t> ridge_points;
+  Csr ridge_vertices, regions;
+  std::size_t nv = 0;
+};
+
+VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_t m, int threads) {
+  const int d = ps.dim;
+  const std::size_t k = static_cast<std::size_t>(d + 1), n = ps.size();
+  VoronoiResult out;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  auto pt = [&](std::int64_t i) { return ps.point(static_cast<std::size_t>(i)); };
+  auto wt = [&](std::int64_t i) { return ps.weights[static_cast<std::size_t>(i)]; };
+  const bool weighted = ps.weighted;
+  // FLIPFLOP_VORONOI_TIMES set: each phase's time on stderr
+  const bool timing = std::getenv("FLIPFLOP_VORONOI_TIMES") != nullptr;
+  auto clock0 = std::chrono::steady_clock::now();
+  auto lap = [&](const char* what) {
+    if (!timing) return;
+    const auto now = std::chrono::steady_clock::now();
+    std::fprintf(stderr, "voronoi %s: %.3f s\n", what, std::chrono::duration<double>(now - clock0).count());
+    clock0 = now;
+  };
+
+  std::atomic<std::size_t> exact_count{0};
+  // 1. every simplex's centre, rounded (parallel); flat[s] when zero volume
+  std::vector<double> C(m * static_cast<std::size_t>(d));
+  std::vector<std::uint8_t> flat(m, 0);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
+      CentreSolver cs;
+      cs.d = d;
+      const double* p[6];
+      double w[6];
+      for (std::size_t s = rg.begin(); s != rg.end(); ++s) {
+        for (std::size_t j = 0; j < k; ++j) {
+          p[j] = pt(S[s * k + j]);
+          if (weighted) w[j] = wt(S[s * k + j]);
+        }
+#ifdef FLIPFLOP_VORONOI_FILTER
+        if (d <= 3 && centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])) continue;
+        if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
+#endif
+        if (cs.solve(p, weighted ? w : nullptr))
+          cs.rounded(&C[s * d]);
+        else
+          flat[s] = 1;
+      }
+    });
+  });
+
+  if (timing) std::fprintf(stderr, "voronoi: %zu of %zu centres by the exact path\n", exact_count.load(), m);
+  lap("centres");
+  // 2. groups: runs of equal rounded centres, split by exact comparison
+  std::vector<std::uint32_t> order;
+  order.reserve(m);
+  for (std::size_t s = 0; s < m; ++s)
+    if (!flat[s]) order.push_back(static_cast<std::uint32_t>(s));
+  auto key_less = [&](std::uint32_t a, std::uint32_t b) {
+    for (int l = 0; l < d; ++l) {
+      std::uint64_t x, y;
+      std::memcpy(&x, &C[a * static_cast<std::size_t>(d) + l], 8);
+      std::memcpy(&y, &C[b * static_cast<std::size_t>(d) + l], 8);
+      if (x != y) return x < y;
+    }
+    return a < b;
+  };
+  auto key_eq = [&](std::uint32_t a, std::uint32_t b) {
+    return std::memcmp(&C[a * static_cast<std::size_t>(d)], &C[b * static_cast<std::size_t>(d)], 8 * d) == 0;
+  };
+  arena.execute([&] { tbb::parallel_sort(order.begin(), order.end(), key_less); });
+  std::vector<std::int64_t> group(m, -1);  // provisional ids: the first simplex (smallest index) of the group
+  {
+    CentreSolver cs;
+    cs.d = d;
+    const double* p[6];
+    double w[6];
+    std::size_t a = 0;
+    while (a < order.size()) {
+      std::size_t b = a + 1;
+      while (b < order.size() && key_eq(order[a], order[b])) ++b;
+      if (b - a == 1) {
+        group[order[a]] = order[a];
+      } else {
+        std::vector<std::unique_ptr<ExactCentre>> reps;
+        std::vector<std::uint32_t> rep_id;
+        for (std::size_t x = a; x < b; ++x) {  // in simplex order (the sort's tie-break)
+          const std::uint32_t s = order[x];
+          for (std::size_t j = 0; j < k; ++j) {
+            p[j] = pt(S[s * k + j]);
+            if (weighted) w[j] = wt(S[s * k + j]);
+          }
+          cs.solve(p, weighted ? w : nullptr);
+          auto e = std::make_unique<ExactCentre>();
+          e->take(cs);
+          std::size_t r = 0;
+          while (r < reps.size() && !reps[r]->equals(*e)) ++r;
+          if (r == reps.size()) {
+            reps.push_back(std::move(e));
+            rep_id.push_back(s);
+          }
+          group[s] = rep_id[r];
+        }
+      }
+      a = b;
+    }
+  }
+  // final vertex ids in order of each group's first simplex (canonical order)
+  {
+    std::vector<std::int64_t> id(m, -1);
+    std::size_t nv = 0;
+    for (std::size_t s = 0; s < m; ++s)
+      if (!flat[s] && group[s] == static_cast<std::int64_t>(s)) id[s] = static_cast<std::int64_t>(nv++);
+    out.vertices.resize(nv * d);
+    for (std::size_t s = 0; s < m; ++s)
+      if (!flat[s]) {
+        group[s] = id[group[s]];
+        std::memcpy(&out.vertices[group[s] * d], &C[s * d], 8 * d);
+      }
+    out.nv = nv;
+  }
+  C = {};
+  const std::size_t nv = out.nv;
+  lap("groups");
+
+  // 3. each group's vertex set, sorted (CSR over groups)
+  std::vector<std::int64_t> gv_off(nv + 1, 0), gv;
+  {
+    std::vector<std::int64_t> cnt(nv + 1, 0);
+    for (std::size_t s = 0; s < m; ++s)
+      if (group[s] >= 0) cnt[group[s] + 1] += static_cast<std::int64_t>(k);
+    for (std::size_t g = 0; g < nv; ++g) cnt[g + 1] += cnt[g];
+    std::vector<std::int64_t> cur(cnt.begin(), cnt.end() - 1), raw(cnt[nv]);
+    for (std::size_t s = 0; s < m; ++s)
+      if (group[s] >= 0)
+        for (std::size_t j = 0; j < k; ++j) raw[cur[group[s]]++] = S[s * k + j];
+    for (std::size_t g = 0; g < nv; ++g) {
+      auto b = raw.begin() + cnt[g], e = raw.begin() + cnt[g + 1];
+      std::sort(b, e);
+      e = std::unique(b, e);
+      gv.insert(gv.end(), b, e);
+      gv_off[g + 1] = static_cast<std::int64_t>(gv.size());
+    }
+  }
+
+  lap("group vertex sets");
+  // 4. neighbours; the hull's exact facets ("infinite groups")
+  const std::vector<std::int64_t> nbr =
+      facet_neighbors(m, k, n, [&](std::size_t i, std::size_t l) { return S[i * k + l]; });
+  std::vector<std::uint8_t> layer(m, 0);  // zero-volume simplices lying in a hull facet
+  std::vector<std::vector<std::int64_t>> hull_facets;  // each: the points on it, sorted
+  {
+    // boundary facets (s, j): the facet of s opposite its vertex j
+    std::vector<std::int64_t> bf;
+    for (std::size_t x = 0; x < m * k; ++x)
+      if (nbr[x] < 0) bf.push_back(static_cast<std::int64_t>(x));
+    const std::size_t nb_ = bf.size();
+    auto fvert = [&](std::size_t b, std::array<std::int64_t, 5>& f) {
+      const std::size_t s = static_cast<std::size_t>(bf[b]) / k, j = static_cast<std::size_t>(bf[b]) % k;
+      std::size_t c = 0;
+      for (std::size_t l = 0; l < k; ++l)
+        if (l != j) f[c++] = S[s * k + l];
+      std::sort(f.begin(), f.begin() + d);
+    };
+    // ridges of boundary facets: (sorted d-1 vertices, boundary facet)
+    struct RidgeRec {
+      std::array<std::int64_t, 4> v;
+      std::uint32_t b;
+    };
+    std::vector<RidgeRec> rr;
+    rr.reserve(nb_ * d);
+    std::array<std::int64_t, 5> f;
+    for (std::size_t b = 0; b < nb_; ++b) {
+      fvert(b, f);
+      for (int drop = 0; drop < d; ++drop) {
+        RidgeRec x{};
+        x.v.fill(-1);
+        int c = 0;
+        for (int l = 0; l < d; ++l)
+          if (l != drop) x.v[c++] = f[l];
+        x.b = static_cast<std::uint32_t>(b);
+        rr.push_back(x);
+      }
+    }
+    std::sort(rr.begin(), rr.end(), [](const RidgeRec& a, const RidgeRec& b) {
+      return a.v != b.v ? a.v < b.v : a.b < b.b;
+    });
+    std::vector<std::vector<std::uint32_t>> adj(nb_);
+    for (std::size_t a = 0; a < rr.size();) {
+      std::size_t b = a + 1;
+      while (b < rr.size() && rr[b].v == rr[a].v) ++b;
+      for (std::size_t x = a; x < b; ++x)
+        for (std::size_t y = a; y < b; ++y)
+          if (x != y) adj[rr[x].b].push_back(rr[y].b);
+      a = b;
+    }
+    rr = {};
+    // non-degenerate: spans a (d-1)-flat (the facet of a positive simplex, or
+    // a projection along some axis has non-zero (d-1)-volume)
+    auto nondegenerate = [&](std::size_t b) {
+      const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
+      if (!flat[s]) return true;
+      fvert(b, f);
+      double proj[5][5];
+      const double* rows[6];
+      for (int axis = 0; axis < d; ++axis) {
+        for (int r = 0; r < d; ++r) {
+          const double* x = pt(f[r]);
+          int c = 0;
+          for (int l = 0; l < d; ++l)
+            if (l != axis) proj[r][c++] = x[l];
+          rows[r] = proj[r];
+        }
+        if (pred::orient_d_exact(d - 1, rows) != 0) return true;
+      }
+      return false;
+    };
+    std::vector<std::int64_t> bgroup(nb_, -1), bstamp(nb_, -1), sstamp(m, -1);
+    for (std::size_t b0 = 0; b0 < nb_; ++b0) {
+      if (bgroup[b0] >= 0 || !nondegenerate(b0)) continue;
+      const std::int64_t h = static_cast<std::int64_t>(hull_facets.size());
+      std::array<std::int64_t, 5> base;
+      fvert(b0, base);
+      const double* rows[6];
+      for (int r = 0; r < d; ++r) rows[r] = pt(base[r]);
+      auto on_plane = [&](std::int64_t v) {
+        rows[d] = pt(v);
+        return pred::orient_d_exact(d, rows) == 0;
+      };
+      std::vector<std::int64_t> pts_on;
+      std::vector<std::size_t> queue{b0}, flats;
+      bstamp[b0] = h;
+      while (!queue.empty() || !flats.empty()) {
+        if (!flats.empty()) {  // a zero-volume simplex in the plane: its vertices, its flat neighbours in the plane
+          const std::size_t s = flats.back();
+          flats.pop_back();
+          layer[s] = 1;
+          for (std::size_t j = 0; j < k; ++j) pts_on.push_back(S[s * k + j]);
+          for (std::size_t j = 0; j < k; ++j) {
+            const std::int64_t t2 = nbr[s * k + j];
+            if (t2 < 0 || !flat[t2] || sstamp[t2] == h) continue;
+            bool all = true;
+            for (std::size_t l = 0; l < k && all; ++l) all = on_plane(S[t2 * k + l]);
+            if (all) {
+              sstamp[t2] = h;
+              flats.push_back(static_cast<std::size_t>(t2));
+            }
+          }
+          continue;
+        }
+        const std::size_t b = queue.back();
+        queue.pop_back();
+        std::array<std::int64_t, 5> fb;
+        fvert(b, fb);
+        for (int l = 0; l < d; ++l) pts_on.push_back(fb[l]);
+        if (bgroup[b] < 0 && nondegenerate(b)) bgroup[b] = h;
+        const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
+        if (flat[s] && sstamp[s] != h) {
+          bool all = true;
+          for (std::size_t l = 0; l < k && all; ++l) all = on_plane(S[s * k + l]);
+          if (all) {
+            sstamp[s] = h;
+            flats.push_back(s);
+          }
+        }
+        for (std::uint32_t b2 : adj[b]) {
+          if (bstamp[b2] == h) continue;
+          std::array<std::int64_t, 5> f2;
+          fvert(b2, f2);
+          bool all = true;
+          for (int l = 0; l < d && all; ++l) all = on_plane(f2[l]);
+          if (all) {
+            bstamp[b2] = h;
+            queue.push_back(b2);
+          }
+        }
+      }
+      std::sort(pts_on.begin(), pts_on.end());
+      pts_on.erase(std::unique(pts_on.begin(), pts_on.end()), pts_on.end());
+      hull_facets.push_back(std::move(pts_on));
+    }
+  }
+  // point -> hull facets holding it (sorted CSR)
+  std::vector<std::int64_t> ph_off(n + 1, 0), ph;
+  {
+    for (const auto& h : hull_facets)
+      for (std::int64_t v : h) ++ph_off[v + 1];
+    for (std::size_t i = 0; i < n; ++i) ph_off[i + 1] += ph_off[i];
+    ph.resize(ph_off[n]);
+    std::vector<std::int64_t> cur(ph_off.begin(), ph_off.end() - 1);
+    for (std::size_t h = 0; h < hull_facets.size(); ++h)
+      for (std::int64_t v : hull_facets[h]) ph[cur[v]++] = static_cast<std::int64_t>(h);
+  }
+  auto on_hull = [&](std::int64_t i) { return ph_off[i + 1] > ph_off[i]; };
+  lap("neighbours, hull facets");
+
+  // the cyclic sequence of groups around a (d-2)-face `face` (2D: a point; 3D: an edge):
+  // walk the simplices holding it across their facets holding it; a
+  // zero-volume simplex of a hull facet stands for the vertex at infinity, as
+  // does the gap of an open walk (the triangulation's boundary)
+  auto cyclic = [&](const std::int64_t* star, std::size_t cnt, const std::int64_t* face, int fsize,
+                    bool infinite, std::vector<std::int64_t>& seq) {
+    seq.clear();
+    auto others = [&](std::int64_t s, int o[2]) {  // the two positions not in face
+      int c = 0;
+      for (std::size_t j = 0; j < k; ++j) {
+        bool in = false;
+        for (int x = 0; x < fsize; ++x) in |= S[s * k + j] == face[x];
+        if (!in && c < 2) o[c++] = static_cast<int>(j);
+      }
+    };
+    std::int64_t start = star[0];
+    int o[2];
+    int exit_side = -1;
+    for (std::size_t x = 0; x < cnt && exit_side < 0; ++x) {
+      others(star[x], o);
+      if (nbr[star[x] * k + o[0]] < 0) {
+        start = star[x];
+        exit_side = o[1];
+      } else if (nbr[star[x] * k + o[1]] < 0) {
+        start = star[x];
+        exit_side = o[0];
+      }
+    }
+    const bool open = exit_side >= 0;
+    if (!open) {
+      others(start, o);
+      exit_side = o[0];
+    }
+    if (open) seq.push_back(-1);
+    std::int64_t cur = start;
+    for (std::size_t steps = 0; steps <= cnt; ++steps) {
+      seq.push_back(group[cur] >= 0 ? group[cur] : (layer[cur] ? -1 : -2));
+      const std::int64_t next = nbr[cur * k + exit_side];
+      if (next < 0 || next == start) break;
+      others(next, o);
+      // leave `next` through the side that is not shared with cur
+      exit_side = nbr[next * k + o[0]] == cur ? o[1] : o[0];
+      cur = next;
+    }
+    // compress in place: drop -2 (zero-volume simplices inside), repeats
+    // (a cell's simplices are consecutive around the face), -1 unless infinite
+    std::size_t kept = 0;
+    for (std::size_t x = 0; x < seq.size(); ++x) {
+      const std::int64_t g = seq[x];
+      if (g == -2 || (g == -1 && !infinite)) continue;
+      if (std::find(seq.begin(), seq.begin() + static_cast<std::ptrdiff_t>(kept), g) !=
+          seq.begin() + static_cast<std::ptrdiff_t>(kept))
+        continue;
+      seq[kept++] = g;
+    }
+    seq.resize(kept);
+    if (infinite && std::find(seq.begin(), seq.end(), -1) == seq.end()) seq.insert(seq.begin(), -1);
+  };
+
+  // 5. regions, point by point in parallel (in chunks of points whose
+  // results are joined in order). Point i has a cell with interior iff its
+  // lifted point P_i is a vertex of the lower hull Q (with its vertical
+  // rays); then every cell of the exact subdivision whose lifted face holds
+  // P_i uses i in a positive simplex (the cell's positive simplices cover
+  // it, and a vertex of the face is only covered by a simplex having it as
+  // a vertex), so the cells around i are all the cells at P_i, and no third
+  // point lies in all of them and the hull facets holding i (their
+  // intersection is P_i). When P_i is no vertex, the smallest face of Q
+  // holding it has two vertices or more, which every cell and hull facet
+  // holding P_i uses: the third-point test finds one.
+  std::vector<std::int64_t> ps_off(n + 1, 0), pss;
+  for (std::size_t x = 0; x < m * k; ++x) ++ps_off[S[x] + 1];
+  for (std::size_t i = 0; i < n; ++i) ps_off[i + 1] += ps_off[i];
+  pss.resize(ps_off[n]);
+  {
+    std::vector<std::int64_t> cur(ps_off.begin(), ps_off.end() - 1);
+    for (std::size_t x = 0; x < m * k; ++x) pss[cur[S[x]]++] = static_cast<std::int64_t>(x / k);
+  }
+  // the cells around point i (the groups of its positive simplices), sorted
+  auto cells_around = [&](std::int64_t i, std::vector<std::int64_t>& out) {
+    out.clear();
+    for (std::int64_t x = ps_off[i]; x < ps_off[i + 1]; ++x)
+      if (group[pss[x]] >= 0) out.push_back(group[pss[x]]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  };
+  using Set = std::pair<const std::int64_t*, const std::int64_t*>;
+  auto gset = [&](std::int64_t g) { return Set{gv.data() + gv_off[g], gv.data() + gv_off[g + 1]}; };
+  auto hset = [&](std::int64_t h) {
+    const auto& f = hull_facets[h];
+    return Set{f.data(), f.data() + f.size()};
+  };
+  // calls visit(l) for each l of the intersection of `sets` (non-empty)
+  // until it returns false
+  auto intersect = [&](const std::vector<Set>& sets, auto&& visit) {
+    std::size_t small = 0;
+    for (std::size_t x = 1; x < sets.size(); ++x)
+      if (sets[x].second - sets[x].first < sets[small].second - sets[small].first) small = x;
+    for (const std::int64_t* l = sets[small].first; l != sets[small].second; ++l) {
+      bool everywhere = true;
+      for (std::size_t x = 0; x < sets.size() && everywhere; ++x)
+        if (x != small) everywhere = holds(sets[x].first, sets[x].second, *l);
+      if (everywhere && !visit(*l)) return;
+    }
+  };
+  struct Chunk {
+    std::vector<std::int64_t> rp;
+    std::vector<std::pair<std::int64_t, std::int64_t>> extra;
+    Csr rv, rg;
+  };
+  const std::size_t chunk = 2048, nchunks = (n + chunk - 1) / chunk;
+  std::vector<Chunk> chunks(nchunks);
+  std::vector<std::uint8_t> vertex(n, 0);  // P_i is a vertex of Q: i has a cell with interior
+  std::atomic<bool> ties{false};           // some point of a positive simplex is no vertex
+  // the ridges (i, j), j > i, of point i (see 6 below); tie: whether ties
+  // were found (vertex[] and the extra candidates are then known)
+  struct Scratch {
+    std::vector<std::pair<std::int64_t, std::int64_t>> e;  // (j, simplex or -1)
+    std::vector<std::int64_t> around, cs, gs, star, seq, order;
+    std::vector<Set> sets;
+    std::vector<std::uint8_t> adj;
+  };
+  std::vector<std::int64_t> ex_off(n + 1, 0), ex;  // the extra candidates by their first point (CSR)
+  std::vector<std::int64_t> gq_off, gq;  // with ties: each cell's points that are vertices of Q
+  auto qset = [&](std::int64_t g) { return Set{gq.data() + gq_off[g], gq.data() + gq_off[g + 1]}; };
+  auto ridges_of = [&](std::int64_t i, bool tie, Scratch& sc, Chunk& out_c) {
+    auto& e = sc.e;
+    auto &around = sc.around, &cs = sc.cs, &gs = sc.gs, &star = sc.star, &seq = sc.seq, &order = sc.order;
+    auto& sets = sc.sets;
+    auto& adj = sc.adj;
+    const std::int64_t* st = pss.data() + ps_off[i];
+    const std::size_t cnt = static_cast<std::size_t>(ps_off[i + 1] - ps_off[i]);
+    if (tie) cells_around(i, around);
+    e.clear();
+    for (std::size_t x = 0; x < cnt; ++x)
+      for (std::size_t l = 0; l < k; ++l)
+        if (S[st[x] * k + l] > i) e.push_back({S[st[x] * k + l], st[x]});
+    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) e.push_back({ex[x], -1});
+    std::sort(e.begin(), e.end());
+    for (std::size_t a = 0; a < e.size();) {
+      std::size_t b = a + 1;
+      while (b < e.size() && e[b].first == e[a].first) ++b;
+      const std::int64_t j = e[a].first;
+      const std::size_t a0 = a;
+      a = b;
+      if (tie && !vertex[j]) continue;
+      // the cells holding i and j. Without ties they are the cells of
+      // the simplices holding edge ij when it is an edge of Q (each cell
+      // holding it covers it by edges of its positive simplices between
+      // vertices of Q on it: i and j alone); when it is not, a subset
+      // of the cells holding i and j still has the third vertex of the
+      // smallest face holding both in all of their point sets.
+      cs.clear();
+      if (tie) {
+        for (std::int64_t g : around)
+          if (holds(gq.data() + gq_off[g], gq.data() + gq_off[g + 1], j)) cs.push_back(g);
+      } else {
+        for (std::size_t x = a0; x < b; ++x)
+          if (group[e[x].second] >= 0) cs.push_back(group[e[x].second]);
+        std::sort(cs.begin(), cs.end());
+        cs.erase(std::unique(cs.begin(), cs.end()), cs.end());
+      }
+      if (cs.empty()) continue;
+      sets.clear();
+      for (std::int64_t g : cs) sets.push_back(tie ? qset(g) : gset(g));
+      bool infinite = false;
+      {  // hull facets holding both i and j
+        const std::int64_t *x = ph.data() + ph_off[i], *xe = ph.data() + ph_off[i + 1];
+        const std::int64_t *y = ph.data() + ph_off[j], *ye = ph.data() + ph_off[j + 1];
+        while (x < xe && y < ye) {
+          if (*x < *y) {
+            ++x;
+          } else if (*y < *x) {
+            ++y;
+          } else {
+            infinite = true;
+            sets.push_back(hset(*x));
+            ++x, ++y;
+          }
+        }
+      }
+      bool ridge = true;
+      intersect(sets, [&](std::int64_t l) { return l == i || l == j || (tie && !vertex[l]) || (ridge = false); });
+      if (!ridge) continue;
+      out_c.rp.push_back(i);
+      out_c.rp.push_back(j);
+      if (d != 3) {
+        seq = cs;
+        if (infinite) seq.insert(seq.begin(), -1);
+      } else {
+        // the simplices holding edge ij; when their cells are all the
+        // cells holding i and j, the walk around the edge orders them
+        gs.clear();
+        star.clear();
+        for (std::size_t x = a0; x < b; ++x)
+          if (e[x].second >= 0) {
+            star.push_back(e[x].second);
+            const std::int64_t g = group[e[x].second];
+            if (tie && g >= 0) gs.push_back(g);
+          }
+        if (tie) {
+          std::sort(gs.begin(), gs.end());
+          gs.erase(std::unique(gs.begin(), gs.end()), gs.end());
+        }
+        if (!tie || gs.size() == cs.size()) {
+          const std::int64_t face[2] = {i, j};
+          cyclic(star.data(), star.size(), face, 2, infinite, seq);
+        } else {
+          // otherwise (ties): two cells around the edge P_iP_j are
+          // consecutive iff they share a 2-face, i.e. a vertex of Q
+          // other than i and j; the cells form a cycle, or a path from
+          // infinity to infinity when the ridge is unbounded
+          const std::size_t nc = cs.size();
+          adj.assign(nc * nc, 0);
+          std::vector<int> deg(nc, 0);
+          for (std::size_t x = 0; x < nc; ++x)
+            for (std::size_t y = x + 1; y < nc; ++y) {
+              const std::int64_t *p = gq.data() + gq_off[cs[x]], *pe = gq.data() + gq_off[cs[x] + 1];
+              const std::int64_t *q = gq.data() + gq_off[cs[y]], *qe = gq.data() + gq_off[cs[y] + 1];
+              bool share = false;
+              while (p < pe && q < qe && !share) {
+                if (*p < *q) {
+                  ++p;
+                } else if (*q < *p) {
+                  ++q;
+                } else {
+                  share = *p != i && *p != j && vertex[*p];
+                  ++p, ++q;
+                }
+              }
+              if (share) {
+                adj[x * nc + y] = adj[y * nc + x] = 1;
+                ++deg[x], ++deg[y];
+              }
+            }
+          std::size_t start = 0;
+          if (infinite)
+            for (std::size_t x = 0; x < nc; ++x)
+              if (deg[x] <= 1) {
+                start = x;
+                break;
+              }
+          std::vector<std::uint8_t> seen(nc, 0);
+          order.clear();
+          for (std::size_t cur = start;;) {
+            seen[cur] = 1;
+            order.push_back(cs[cur]);
+            std::size_t next = nc;
+            for (std::size_t y = 0; y < nc && next == nc; ++y)
+              if (adj[cur * nc + y] && !seen[y]) next = y;
+            if (next == nc) break;
+            cur = next;
+          }
+          for (std::size_t x = 0; x < nc; ++x)  // not reached by the walk (cannot happen)
+            if (!seen[x]) order.push_back(cs[x]);
+          seq.clear();
+          if (infinite) seq.push_back(-1);
+          seq.insert(seq.end(), order.begin(), order.end());
+        }
+      }
+      out_c.rv.val.insert(out_c.rv.val.end(), seq.begin(), seq.end());
+      out_c.rv.close();
+    }
+  };
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t(0), nchunks, [&](std::size_t c) {
+      Chunk& out_c = chunks[c];
+      Scratch sc;
+      std::vector<std::int64_t> seq;
+      std::vector<Set> sets;
+      for (std::size_t ii = c * chunk; ii < std::min(n, (c + 1) * chunk); ++ii) {
+        const std::int64_t i = static_cast<std::int64_t>(ii);
+        const std::int64_t* st = pss.data() + ps_off[i];
+        const std::size_t cnt = static_cast<std::size_t>(ps_off[i + 1] - ps_off[i]);
+        if (cnt > 0) {
+          const bool infinite = on_hull(i);
+          if (d == 2) {
+            const std::int64_t face[1] = {i};
+            cyclic(st, cnt, face, 1, infinite, seq);
+          } else {
+            cells_around(i, seq);
+            if (infinite) seq.insert(seq.begin(), -1);
+          }
+          sets.clear();
+          for (std::int64_t g : seq)
+            if (g >= 0) sets.push_back(gset(g));
+          bool cell = !sets.empty();
+          if (cell) {
+            for (std::int64_t x = ph_off[i]; x < ph_off[i + 1]; ++x) sets.push_back(hset(ph[x]));
+            intersect(sets, [&](std::int64_t l) { return l == i || (cell = false); });
+            if (!cell) ties.store(true, std::memory_order_relaxed);
+          }
+          if (cell) {
+            vertex[i] = 1;
+            out_c.rg.val.insert(out_c.rg.val.end(), seq.begin(), seq.end());
+          }
+        }
+        out_c.rg.close();
+        // the ridges as if without ties (the answer when none are found)
+        ridges_of(i, false, sc, out_c);
+      }
+    });
+  });
+  lap("regions, ridges");
+  if (ties.load()) {
+    gq_off.assign(nv + 1, 0);
+    for (std::size_t g = 0; g < nv; ++g) {
+      for (std::int64_t x = gv_off[g]; x < gv_off[g + 1]; ++x)
+        if (vertex[gv[x]]) gq.push_back(gv[x]);
+      gq_off[g + 1] = static_cast<std::int64_t>(gq.size());
+    }
+  }
+
+  // 6. ridges. V_i ∩ V_j is the set of x whose supporting hyperplane (slope
+  // 2x) touches Q in a face holding P_i and P_j; it is (d-1)-dimensional iff
+  // some edge (1-face) of Q holds both, i.e. iff P_i and P_j are vertices of
+  // Q (regions with interior; a point inside an edge has a cell of no
+  // interior) and the smallest face G of Q holding both is the edge P_iP_j.
+  // G is bounded iff a cell (lower facet) holds both; then G is the
+  // intersection of the cells and hull facets (vertical facets) holding
+  // both, and the vertices of G are exactly the vertices of Q among the
+  // points in all of their point sets (each lies in G; each vertex of G is
+  // used by every cell holding it, see 5). So (i, j) is a ridge iff i and j
+  // are vertices of Q, some cell holds both, and no third vertex of Q lies
+  // in every cell and hull facet holding both. Points in the set that are no
+  // vertices of Q (ties: a lifted point inside an edge or face) are ignored.
+  // The cells holding both are the cells around i whose point sets hold j.
+  //
+  // Candidates: every edge ij of the triangulation, and the pairs found
+  // through the tie points: when no simplex has the edge ij, a cell F holding
+  // the edge P_iP_j covers it by edges of its positive simplices with both
+  // ends on it, so the one at P_i is ia with P_a inside the edge, in a
+  // positive simplex of F. The cells around a and the hull facets holding a
+  // all hold P_iP_j, so their intersection is a face G' of Q with P_iP_j as
+  // an edge, and i, j are among the vertices of Q in its point set. On a
+  // line through P_a in G' at most two vertices of G' lie, one on either
+  // side of P_a; for each point a that is no vertex, every pair of vertices
+  // of Q in that set lying on one line with p_a, on either side of it, is a
+  // candidate (the projection is one-to-one on G', a bounded face). Lines
+  // are compared exactly: by the first axis f where the point differs from
+  // p_a, then the ratios (x_l - a_l) / (x_f - a_f), l > f, by exact orient2d
+  // of the projections onto axes (f, l).
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t(0), nchunks, [&](std::size_t c) {
+      if (!ties.load(std::memory_order_relaxed)) return;
+      Chunk& out_c = chunks[c];
+      std::vector<std::int64_t> cs, vs;
+      std::vector<Set> sets;
+      struct Dir {
+        std::int64_t id;
+        int f, side;
+      };
+      std::vector<Dir> dirs;
+      for (std::size_t ii = c * chunk; ii < std::min(n, (c + 1) * chunk); ++ii) {
+        const std::int64_t a = static_cast<std::int64_t>(ii);
+        if (vertex[a]) continue;
+        cells_around(a, cs);
+        if (cs.empty()) continue;
+        sets.clear();
+        for (std::int64_t g : cs) sets.push_back(qset(g));
+        for (std::int64_t x = ph_off[a]; x < ph_off[a + 1]; ++x) sets.push_back(hset(ph[x]));
+        vs.clear();
+        intersect(sets, [&](std::int64_t l) {
+          if (vertex[l]) vs.push_back(l);
+          return true;
+        });
+        if (vs.size() < 2) continue;
+        const double* pa = pt(a);
+        dirs.clear();
+        for (std::int64_t b : vs) {
+          const double* pb = pt(b);
+          int f = 0;
+          while (f < d && pb[f] == pa[f]) ++f;
+          if (f < d) dirs.push_back({b, f, pb[f] > pa[f] ? 1 : -1});
+        }
+        // -1, 0, 1: the line through p_a and p_x before, equal to, after the one through p_a and p_y
+        auto line_cmp = [&](const Dir& x, const Dir& y) {
+          if (x.f != y.f) return x.f < y.f ? -1 : 1;
+          const double *px = pt(x.id), *py = pt(y.id);
+          for (int l = x.f + 1; l < d; ++l) {
+            const double A[2] = {pa[x.f], pa[l]}, X[2] = {px[x.f], px[l]}, Y[2] = {py[x.f], py[l]};
+            // sign of (x_l - a_l)(y_f - a_f) - (y_l - a_l)(x_f - a_f)
+            const int o = pred::orient2d_exact(A, Y, X) * x.side * y.side;
+            if (o != 0) return o;
+          }
+          return 0;
+        };
+        std::sort(dirs.begin(), dirs.end(), [&](const Dir& x, const Dir& y) {
+          const int o = line_cmp(x, y);
+          if (o != 0) return o < 0;
+          return x.side != y.side ? x.side < y.side : x.id < y.id;
+        });
+        for (std::size_t s = 0; s < dirs.size();) {
+          std::size_t e = s + 1;
+          while (e < dirs.size() && line_cmp(dirs[s], dirs[e]) == 0) ++e;
+          for (std::size_t x = s; x < e; ++x)
+            for (std::size_t y = s; y < e; ++y)
+              if (dirs[x].side < 0 && dirs[y].side > 0)
+                out_c.extra.push_back({std::min(dirs[x].id, dirs[y].id), std::max(dirs[x].id, dirs[y].id)});
+          s = e;
+        }
+      }
+    });
+  });
+  if (ties.load()) {
+    std::vector<std::pair<std::int64_t, std::int64_t>> all;
+    for (Chunk& c : chunks) {
+      all.insert(all.end(), c.extra.begin(), c.extra.end());
+      c.extra = {};
+    }
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    for (const auto& pr : all) ++ex_off[pr.first + 1];
+    for (std::size_t i = 0; i < n; ++i) ex_off[i + 1] += ex_off[i];
+    for (const auto& pr : all) ex.push_back(pr.second);  // sorted by first, then second
+  }
+  lap("tie candidates");
+  if (ties.load()) {
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t(0), nchunks, [&](std::size_t c) {
+        Chunk& out_c = chunks[c];
+        out_c.rp.clear();
+        out_c.rv = Csr();
+        Scratch sc;
+        for (std::size_t ii = c * chunk; ii < std::min(n, (c + 1) * chunk); ++ii)
+          if (vertex[ii]) ridges_of(static_cast<std::int64_t>(ii), true, sc, out_c);
+      });
+    });
+    lap("ridges with ties");
+  }
+
+  for (Chunk& c : chunks) {
+    out.ridge_points.insert(out.ridge_points.end(), c.rp.begin(), c.rp.end());
+    const std::int64_t base_rv = static_cast<std::int64_t>(out.ridge_vertices.val.size());
+    for (std::size_t x = 1; x < c.rv.off.size(); ++x) out.ridge_vertices.off.push_back(base_rv + c.rv.off[x]);
+    out.ridge_vertices.val.insert(out.ridge_vertices.val.end(), c.rv.val.begin(), c.rv.val.end());
+    const std::int64_t base_rg = static_cast<std::int64_t>(out.regions.val.size());
+    for (std::size_t x = 1; x < c.rg.off.size(); ++x) out.regions.off.push_back(base_rg + c.rg.off[x]);
+    out.regions.val.insert(out.regions.val.end(), c.rg.val.begin(), c.rg.val.end());
+    c = Chunk();
+  }
+  lap("join");
+  out.simplex_vertex = std::move(group);
+  return out;
+}
+
+// (vertices, simplex_vertex, ridge_points, ridge_offsets, ridge_values,
+// region_offsets, region_values); see voronoi_core.
+nb::tuple voronoi(const Points& p, const std::optional<Vector>& w, const Cells& c, int threads) {
+  const PointSet ps = point_set(p, w);
+  const int d = ps.dim;
+  if (d < 2 || d > 5) throw std::invalid_argument("Voronoi expects points of shape (n, d) with d = 2..5");
+  if (c.shape(1) != static_cast<std::size_t>(d + 1)) throw std::invalid_argument("simplices must have d + 1 columns");
+  const std::size_t m = c.shape(0), n = ps.size();
+  if (n >= (std::size_t(1) << 31) || m >= (std::size_t(1) << 32)) throw std::invalid_argument("too many points");
+  for (std::size_t x = 0; x < m * c.shape(1); ++x)
+    if (c.data()[x] < 0 || static_cast<std::size_t>(c.data()[x]) >= n)
+      throw std::invalid_argument("simplices name a point that does not exist");
+  VoronoiResult r;
+  {
+    nb::gil_scoped_release nogil;
+    r = voronoi_core(ps, c.data(), m, threads);
+  }
+  const std::size_t nr = r.ridge_points.size() / 2;
+  return nb::make_tuple(double_array(std::move(r.vertices), r.nv, static_cast<std::size_t>(d)),
+                        index_array(std::move(r.simplex_vertex), m, 0, true),
+                        index_array(std::move(r.ridge_points), nr, 2),
+                        index_array(r.ridge_vertices.off, r.ridge_vertices.off.size(), 0, true),
+                        index_array(r.ridge_vertices.val, r.ridge_vertices.val.size(), 0, true),
+                        index_array(r.regions.off, r.regions.off.size(), 0, true),
+                        index_array(r.regions.val, r.regions.val.size(), 0, true));
+}
+
+// For the tests: the correctly rounded value of M / D * 2^E (decimal strings).
+double _round_ratio(const std::string& M, const std::string& D, long E) {
+  Mpz a, b, q, r, tmp;
+  mpz_set_str(a.v, M.c_str(), 10);
+  mpz_set_str(b.v, D.c_str(), 10);
+  if (mpz_sgn(b.v) <= 0) throw std::invalid_argument("D must be positive");
+  return round_ratio(a.v, b.v, E, q.v, r.v, tmp.v);
+}
+
 }  // namespace
 
 NB_MODULE(_flipflop, m) {
@@ -968,4 +2098,6 @@ NB_MODULE(_flipflop, m) {
   m.def("dimension_of", &gen::dimension_of);
   m.def("_reads_in_place", &reads_in_place, nb::arg("points"), nb::arg("weights").none());
   m.def("instant_flip", &instant_flip, nb::arg("points"), nb::arg("w"), nb::arg("u"));
+  m.def("voronoi", &voronoi, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"), nb::arg("threads"));
+  m.def("_round_ratio", &_round_ratio, nb::arg("M"), nb::arg("D"), nb::arg("E"));
 }

@@ -1,0 +1,654 @@
+"""scipy.spatial's constructor and attribute surface of flipflop.ConvexHull
+and flipflop.Delaunay (issue 39; docs/scipy_porting.md).
+
+  * on random input (general position) every attribute and keyword equals
+    scipy 1.10's (Qhull): simplices as sets, neighbors, convex_hull,
+    vertex_neighbor_vertices, transform (as barycentric coordinates, 1e-12),
+    plane_distance and lift_points up to the scale convention, equations'
+    signs, good (QGn / QG-n), bounds and counts;
+  * on degenerate input (grids, duplicates, cocircular points, points a few
+    ulps from a facet) the exact attributes (coplanar, good, the NaN rows of
+    transform) equal oracles that share no code with the package: small
+    cases computed by hand and brute force with fractions.Fraction;
+  * add_points in many batches gives the one-shot answer, array for array;
+  * bad input raises what scipy raises (checked against scipy in the test
+    where scipy raises at all).
+"""
+import inspect
+from fractions import Fraction
+from itertools import combinations
+
+import numpy as np
+import pytest
+import scipy.spatial as ss
+
+import flipflop
+
+
+def sets(simplices):
+    return {frozenset(int(x) for x in r) for r in simplices}
+
+
+def index_of(simplices):
+    return {frozenset(int(x) for x in r): k for k, r in enumerate(simplices)}
+
+
+def fdet(rows):
+    """Exact determinant of a square matrix of Fractions (Leibniz-free
+    Gaussian elimination, written here independently of the package)."""
+    m = [list(r) for r in rows]
+    n, det = len(m), Fraction(1)
+    for c in range(n):
+        p = next((r for r in range(c, n) if m[r][c] != 0), None)
+        if p is None:
+            return Fraction(0)
+        if p != c:
+            m[c], m[p] = m[p], m[c]
+            det = -det
+        det *= m[c][c]
+        for r in range(c + 1, n):
+            f = m[r][c] / m[c][c]
+            for k in range(c, n):
+                m[r][k] -= f * m[c][k]
+    return det
+
+
+def F(v):
+    return [Fraction(float(x)) for x in v]
+
+
+def in_simplex_exact(points, simplex, x):
+    """x in the closed simplex, exactly: every barycentric coordinate >= 0."""
+    V = [F(points[i]) for i in simplex]
+    X = F(x)
+    d = len(X)
+    base = fdet([[V[j][c] - V[0][c] for c in range(d)] for j in range(1, d + 1)])
+    if base == 0:
+        return False
+    for j in range(d + 1):
+        W = [X if k == j else V[k] for k in range(d + 1)]
+        if fdet([[W[k][c] - W[0][c] for c in range(d)] for k in range(1, d + 1)]) * base < 0:
+            return False
+    return True
+
+
+# ---- signatures ---------------------------------------------------------------------
+
+def test_signatures_follow_scipy():
+    for ours, theirs in ((flipflop.Delaunay, ss.Delaunay), (flipflop.ConvexHull, ss.ConvexHull)):
+        mine = inspect.signature(ours)
+        scipy_names = list(inspect.signature(theirs).parameters)
+        positional = [n for n, p in mine.parameters.items()
+                      if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+        assert positional == scipy_names
+        for n in scipy_names:
+            assert mine.parameters[n].default == inspect.signature(theirs).parameters[n].default
+        keyword_only = {n for n, p in mine.parameters.items() if p.kind == p.KEYWORD_ONLY}
+        assert keyword_only >= {"strict", "backend", "threads"}
+    assert "weights" in inspect.signature(flipflop.Delaunay).parameters
+    assert inspect.signature(flipflop.Delaunay).parameters["weights"].kind == inspect.Parameter.KEYWORD_ONLY
+    for cls in (flipflop.Delaunay, flipflop.ConvexHull):
+        for method in ("add_points", "close"):
+            assert callable(getattr(cls, method))
+    assert list(inspect.signature(flipflop.Delaunay.find_simplex).parameters) == ["self", "xi", "bruteforce", "tol"]
+    assert list(inspect.signature(flipflop.Delaunay.add_points).parameters)[:3] == ["self", "points", "restart"]
+
+
+def test_positional_weights_are_refused_with_a_pointer():
+    p = np.random.default_rng(0).random((20, 2))
+    with pytest.raises(ValueError, match="keyword-only"):
+        flipflop.Delaunay(p, np.ones(20))
+
+
+# ---- Delaunay against scipy on random input ------------------------------------------
+
+CASES = [(2, 300), (3, 150), (4, 40), (5, 22)]
+
+
+@pytest.fixture(scope="module", params=CASES, ids=lambda c: f"{c[0]}d")
+def pair(request):
+    d, n = request.param
+    p = np.random.default_rng(100 + d).random((n, d))
+    return p, flipflop.Delaunay(p), ss.Delaunay(p)
+
+
+def test_counts_bounds_and_simplices(pair):
+    p, t, s = pair
+    assert sets(t.simplices) == sets(s.simplices)
+    assert (t.nsimplex, t.npoints, t.ndim) == (s.nsimplex, s.npoints, s.ndim)
+    assert np.array_equal(t.min_bound, s.min_bound) and np.array_equal(t.max_bound, s.max_bound)
+    assert t.furthest_site is False and s.furthest_site is False
+    assert sets(t.convex_hull) == sets(s.convex_hull)
+    assert t.coplanar.shape == s.coplanar.shape == (0, 3)
+    assert np.array_equal(t.good, np.ones(t.nsimplex)) and np.array_equal(s.good, np.ones(s.nsimplex))
+
+
+def test_neighbors_vertex_to_simplex_and_vertex_neighbor_vertices(pair):
+    p, t, s = pair
+    where = index_of(s.simplices)
+    to_scipy = np.array([where[frozenset(r)] for r in t.simplices.tolist()])
+    for i, r in enumerate(t.simplices):
+        k = to_scipy[i]
+        for j, v in enumerate(r):
+            jj = list(s.simplices[k]).index(v)  # the same vertex in scipy's row
+            a, b = t.neighbors[i, j], s.neighbors[k, jj]
+            assert (a < 0) == (b < 0)
+            if a >= 0:
+                assert to_scipy[a] == b
+    v2s = t.vertex_to_simplex
+    assert v2s.shape == (t.npoints,)
+    for v in range(t.npoints):
+        assert v in t.simplices[v2s[v]]
+    (ip, ix), (jp, jx) = t.vertex_neighbor_vertices, s.vertex_neighbor_vertices
+    assert ip.shape == jp.shape == (t.npoints + 1,)
+    for v in range(t.npoints):
+        assert set(ix[ip[v]:ip[v + 1]]) == set(jx[jp[v]:jp[v + 1]])
+        # the definition: joined by an edge of some simplex
+        assert set(ix[ip[v]:ip[v + 1]]) == {int(x) for r in t.simplices if v in r for x in r} - {v}
+
+
+def test_transform_gives_scipys_barycentric_coordinates(pair):
+    p, t, s = pair
+    d = p.shape[1]
+    assert t.transform.shape == (t.nsimplex, d + 1, d) and t.transform.dtype == np.float64
+    where = index_of(s.simplices)
+    q = np.random.default_rng(7).random((40, d))
+    for i, r in enumerate(t.simplices):
+        k = where[frozenset(r.tolist())]
+        T, U = t.transform[i], s.transform[k]
+        for x in np.vstack([q[:3], p[r].mean(axis=0)]):
+            b = T[:d] @ (x - T[d])
+            c = U[:d] @ (x - U[d])
+            ours = dict(zip(r.tolist(), np.r_[b, 1 - b.sum()]))
+            theirs = dict(zip(s.simplices[k].tolist(), np.r_[c, 1 - c.sum()]))
+            scale = max(1.0, np.abs(list(theirs.values())).max())
+            assert all(abs(ours[v] - theirs[v]) <= 1e-12 * scale * 10 ** (d - 2) for v in ours), (i, x)
+        # the definition: vertex j has coordinate e_j
+        for j in range(d):
+            e = T[:d] @ (p[r[j]] - T[d])
+            assert np.allclose(e, np.eye(d)[j], atol=1e-9)
+
+
+def test_lift_points_and_plane_distance_agree_with_scipy_up_to_scale(pair):
+    p, t, s = pair
+    d = p.shape[1]
+    x = np.random.default_rng(3).random((25, d)) * 1.4 - 0.2
+    L, M = t.lift_points(x), s.lift_points(x)
+    assert np.array_equal(L[:, :d], x) and np.array_equal(M[:, :d], x)
+    # both are scale * |x|^2 + shift, each with its own scale and shift
+    assert np.allclose((L[:, d] - t.paraboloid_shift) / t.paraboloid_scale,
+                       (M[:, d] - s.paraboloid_shift) / s.paraboloid_scale, rtol=1e-13)
+    assert t.lift_points(x[0]).shape == (d + 1,)
+    assert t.equations.shape == (t.nsimplex, d + 2)
+    assert np.allclose(np.linalg.norm(t.equations[:, :-1], axis=1), 1)
+    assert (t.equations[:, d] < 0).all() and (s.equations[:, d] < 0).all()  # lower hull: normal down
+    # plane_distance is, per simplex, a positive multiple of scipy's (both
+    # are positive multiples of the power function |x - c|^2 - r^2, negated)
+    D, E = t.plane_distance(x), s.plane_distance(x)
+    assert D.shape == E.shape == (len(x), t.nsimplex)
+    where = index_of(s.simplices)
+    k = [where[frozenset(r)] for r in t.simplices.tolist()]
+    ratio = D / E[:, k]
+    assert (ratio > 0).all()
+    assert np.allclose(ratio, ratio[0], rtol=1e-8)
+    assert t.plane_distance(x[0]).shape == (t.nsimplex,)
+    # the vertices lie on their simplices' planes, the other points above them
+    own = t.plane_distance(p)
+    scale = np.abs(own).max()
+    for i, r in enumerate(t.simplices):
+        assert np.abs(own[r, i]).max() <= 1e-12 * scale
+    assert (own <= 1e-12 * scale).all()
+
+
+def test_find_simplex_accepts_scipys_keywords(pair):
+    p, t, s = pair
+    d = p.shape[1]
+    x = np.random.default_rng(4).random((50, d))
+    a = t.find_simplex(x)
+    assert np.array_equal(a, t.find_simplex(x, bruteforce=True))
+    assert np.array_equal(a, t.find_simplex(x, tol=1e-3))
+    assert np.array_equal(a, t.find_simplex(x, True, 0.0))
+    b = s.find_simplex(x)
+    assert [frozenset(t.simplices[i].tolist()) if i >= 0 else None for i in a] == \
+           [frozenset(s.simplices[i].tolist()) if i >= 0 else None for i in b]
+    for bad in ("a", [1, 2]):
+        with pytest.raises(TypeError):
+            s.find_simplex(x, tol=bad)
+        with pytest.raises(TypeError):
+            t.find_simplex(x, tol=bad)
+    assert t.find_simplex(x[0]).shape == s.find_simplex(x[0]).shape == ()
+    with pytest.raises(ValueError):
+        s.find_simplex(x[:, :1])
+    with pytest.raises(ValueError):
+        t.find_simplex(x[:, :1])
+
+
+def test_vertices_is_the_deprecated_alias():
+    p = np.random.default_rng(0).random((30, 2))
+    t = flipflop.Delaunay(p)
+    with pytest.warns(DeprecationWarning):
+        v = t.vertices
+    assert v is t.simplices
+    with pytest.warns(DeprecationWarning):
+        ss.Delaunay(p).vertices
+
+
+# ---- Delaunay: exact attributes on degenerate input ---------------------------------
+
+def grid(k, d):
+    return np.array(np.meshgrid(*[np.arange(float(k))] * d, indexing="ij")).reshape(d, -1).T.copy()
+
+
+@pytest.mark.parametrize("d,k", [(2, 5), (3, 3)])
+def test_transform_is_nan_exactly_on_zero_volume_simplices(d, k):
+    p = grid(k, d) * 0.1  # not integers: 0.1 is not exact, the flat ones are still flat
+    t = flipflop.Delaunay(p)
+    T = t.transform
+    flat = []
+    for r in t.simplices:
+        V = [F(p[i]) for i in r]
+        flat.append(fdet([[V[j][c] - V[0][c] for c in range(d)] for j in range(1, d + 1)]) == 0)
+    flat = np.array(flat)
+    assert flat.any() and not flat.all()  # the canonical answer keeps some (README)
+    assert np.isnan(T[flat]).all()
+    assert np.isfinite(T[~flat]).all()
+    for i in np.flatnonzero(~flat):
+        r = t.simplices[i]
+        Tm = (p[r[:d]] - p[r[d]]).T
+        assert np.allclose(T[i, :d] @ Tm, np.eye(d), atol=1e-10)
+        assert np.array_equal(T[i, d], p[r[d]])
+    # the strict view has no flat simplex, so no NaN
+    assert np.isfinite(flipflop.Delaunay(p, strict=True).transform).all()
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_coplanar_and_vertex_to_simplex_on_duplicates(d):
+    rng = np.random.default_rng(11 + d)
+    base = rng.random((25, d))
+    dup = [3, 7, 7, 20]  # point 7 three times
+    p = np.vstack([base, base[dup]])
+    t = flipflop.Delaunay(p)
+    s = ss.Delaunay(p)
+    c = t.coplanar
+    # exactly the points that are not vertices; the copies of a point are
+    # joined by zero-volume simplices or left out as the perturbation decides
+    # (README: the canonical answer on duplicates), so which copies these are
+    # is flipflop's choice, not scipy's
+    vertices = set(t.simplices.ravel().tolist())
+    assert set(range(25)) - {3, 7, 20} <= vertices
+    assert c.dtype == np.int64 and c.shape[1] == 3 and len(c) >= 1
+    assert c[:, 0].tolist() == sorted(set(range(len(p))) - vertices)
+    groups = [{3, 25}, {7, 26, 27}, {20, 28}]
+    for pt, simplex, vertex in c:
+        group = next(g for g in groups if pt in g)
+        assert vertex in group and vertex in vertices and vertex != pt  # a copy: at distance 0
+        assert vertex in t.simplices[simplex]
+        assert in_simplex_exact(p, t.simplices[simplex], p[pt])
+        assert t.vertex_to_simplex[pt] == simplex
+    assert set(c[:, 0].tolist()) == set(t.redundant.tolist())
+    assert len(s.coplanar) == len(dup)  # scipy drops every copy but one
+    # without Qc (a given qhull_options replaces scipy's default), as scipy:
+    # no coplanar points, -1 for the points that are not vertices
+    for opts in ("Qbb Qz", b"Qbb Qz"):
+        u = flipflop.Delaunay(p, qhull_options=opts)
+        assert u.coplanar.shape == (0, 3)
+        assert np.flatnonzero(u.vertex_to_simplex < 0).tolist() == c[:, 0].tolist()
+        assert (ss.Delaunay(p, qhull_options="Qbb Qz").vertex_to_simplex < 0).sum() == len(dup)  # scipy: the same rule
+
+
+def test_weighted_lift_equations_and_redundant_points():
+    rng = np.random.default_rng(5)
+    p = rng.random((60, 2))
+    w = rng.random(60) * 0.02
+    w[:5] = -1.0  # hidden: 0..4 are redundant unless on the hull
+    t = flipflop.Delaunay(p, weights=w)
+    red = set(t.redundant.tolist())
+    assert red and red == set(range(60)) - set(t.simplices.ravel().tolist())
+    assert set(t.coplanar[:, 0].tolist()) == red
+    for pt, simplex, vertex in t.coplanar:
+        assert in_simplex_exact(p, t.simplices[simplex], p[pt])
+        assert vertex in t.simplices[simplex]
+    # the lift is s * (|x|^2 - w): the lifted vertices lie on their simplex's
+    # hyperplane, every lifted point on or above every hyperplane
+    z = np.c_[p, t.paraboloid_scale * ((p ** 2).sum(axis=1) - w) + t.paraboloid_shift]
+    dist = z @ t.equations[:, :-1].T + t.equations[:, -1]
+    for i, r in enumerate(t.simplices):
+        assert np.abs(dist[r, i]).max() < 1e-13
+    assert (dist < 1e-13).all()
+    # plane_distance lifts an unweighted query: |x|^2
+    assert np.allclose(t.plane_distance(p), (t.lift_points(p) @ t.equations[:, :-1].T + t.equations[:, -1]))
+
+
+def test_delaunay_good_against_scipy_and_by_hand():
+    rng = np.random.default_rng(8)
+    for d, n in ((2, 60), (3, 40)):
+        p = rng.random((n, d))
+        for g in (0, 5, n - 1):
+            for sign in ("", "-"):
+                t = flipflop.Delaunay(p, qhull_options=f"Qbb Qc Qz QG{sign}{g}")
+                s = ss.Delaunay(p, qhull_options=f"Qbb Qc Qz QG{sign}{g}")
+                assert g not in t.simplices
+                assert sets(t.simplices) == sets(s.simplices)
+                assert sets(t.simplices[t.good == 1]) == sets(s.simplices[s.good == 1])
+    # by hand: the rectangle (+-3, +-4) lies on the circle of radius 5;
+    # (5, 0) and (0, -5) lie on it exactly (not seen), (0, 4.5) inside, (6, 0) outside
+    rect = np.array([[3.0, 4.0], [-3.0, 4.0], [-3.0, -4.0], [3.0, -4.0]])
+    for x, inside in (([5.0, 0.0], False), ([0.0, -5.0], False), ([0.0, 4.5], True), ([6.0, 0.0], False),
+                      ([5.0, np.nextafter(0.0, 1.0)], False), ([np.nextafter(5.0, 0.0), 0.0], True)):
+        p = np.vstack([rect, [x]])
+        t = flipflop.Delaunay(p, qhull_options="QG4")
+        assert len(t.simplices) == 2 and t.good.tolist() == [int(inside)] * 2, x
+        assert flipflop.Delaunay(p, qhull_options="QG-4").good.tolist() == [int(not inside)] * 2
+
+
+# ---- ConvexHull ----------------------------------------------------------------------
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_hull_counts_bounds_and_good_equal_scipy(d):
+    rng = np.random.default_rng(20 + d)
+    p = rng.random((80, d))
+    h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
+    assert (h.npoints, h.nsimplex, h.ndim) == (s.npoints, s.nsimplex, s.ndim)
+    assert np.array_equal(h.min_bound, s.min_bound) and np.array_equal(h.max_bound, s.max_bound)
+    assert h.good is None and s.good is None
+    assert h.coplanar.shape == s.coplanar.shape == (0, 3)
+    vertices = [int(v) for v in s.vertices]
+    inner = [i for i in range(80) if i not in vertices][:2]
+    for g in vertices[:3] + inner:
+        for sign in ("", "-"):
+            hg = flipflop.ConvexHull(p, qhull_options=f"QG{sign}{g}")
+            sg = ss.ConvexHull(p, qhull_options=f"QG{sign}{g}")
+            assert hg.good.dtype == bool and hg.good.shape == (hg.nsimplex,)
+            assert sets(hg.simplices) == sets(sg.simplices)
+            assert sets(hg.simplices[hg.good]) == sets(sg.simplices[sg.good])
+            assert g not in hg.vertices
+
+
+def test_hull_good_exact_by_hand():
+    sq = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    tiny = np.nextafter(1.0, 2.0)
+    for x, seen in (([0.5, tiny], {(2, 3)}), ([2.0, 1.0], {(1, 2)}), ([0.5, 1.0], set()),
+                    ([2.0, 2.0], {(1, 2), (2, 3)}), ([0.5, 0.5], set())):
+        h = flipflop.ConvexHull(np.vstack([sq, [x]]), qhull_options="QG4")
+        assert {frozenset(e) for e in h.simplices[h.good].tolist()} == {frozenset(e) for e in seen}, x
+    cube = grid(2, 3)
+    for x, n in (([0.5, 0.5, np.nextafter(1.0, 2.0)], 2), ([0.5, 0.5, 1.0], 0), ([2.0, 2.0, 0.5], 4),
+                 ([0.5, 0.5, 0.5], 0)):
+        h = flipflop.ConvexHull(np.vstack([cube, [x]]), qhull_options="QG8")
+        assert h.good.sum() == n, x  # two triangles per square face seen
+        assert (~flipflop.ConvexHull(np.vstack([cube, [x]]), qhull_options="QG-8").good).sum() == n
+
+
+def boundary_oracle(p, lo, hi):
+    """On the boundary of the box [lo, hi]^d exactly."""
+    return {i for i, x in enumerate(p.tolist()) if any(c in (lo, hi) for c in x)}
+
+
+@pytest.mark.parametrize("d,k", [(2, 5), (3, 4)])
+def test_hull_coplanar_on_grids(d, k):
+    p = grid(k, d)
+    for strict in ((False, True) if d == 3 else (False,)):
+        h = flipflop.ConvexHull(p, qhull_options="Qc", strict=strict)
+        want = boundary_oracle(p, 0.0, k - 1.0) - set(h.vertices.tolist())
+        assert set(h.coplanar[:, 0].tolist()) == want
+        assert h.coplanar.dtype == np.int64 and h.coplanar.shape[1] == 3
+        for pt, facet, vertex in h.coplanar:
+            V = [F(p[i]) for i in h.simplices[facet]]
+            X = F(p[pt])
+            assert fdet([[v[c] - V[0][c] for c in range(d)] for v in V[1:] + [X]]) == 0
+            assert vertex in h.simplices[facet]
+        if strict:
+            assert len(h.vertices) == 2 ** d and len(h.coplanar) == len(boundary_oracle(p, 0, k - 1)) - 2 ** d
+    assert flipflop.ConvexHull(p).coplanar.shape == (0, 3)  # only with Qc, as scipy
+
+
+def test_hull_coplanar_is_exact():
+    # a tetrahedron's slanted facet x + y + z = 1: (0.25, 0.25, 0.5) lies on
+    # it exactly, the same point an ulp lower does not
+    tet = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+    on = [0.25, 0.25, 0.5]
+    below = [0.25, 0.25, np.nextafter(0.5, 0.0)]
+    p = np.vstack([tet, [on], [below], [[0.1, 0.1, 0.1]]])
+    h = flipflop.ConvexHull(p, qhull_options="Qc")
+    assert h.coplanar[:, 0].tolist() == [4]
+    facet = h.simplices[h.coplanar[0, 1]]
+    assert set(facet.tolist()) == {1, 2, 3}
+    assert h.coplanar[0, 2] == 3  # (0, 0, 1) is the nearest of the facet's vertices
+    sq = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.5, 0.0], [0.5, 5e-324], [0.5, 1e-300]])
+    h = flipflop.ConvexHull(sq, qhull_options=b"Qc")
+    assert set(h.coplanar[:, 0].tolist()) == {4} - set(h.vertices.tolist())
+    assert 5 not in h.coplanar[:, 0] and 6 not in h.coplanar[:, 0]
+
+
+# ---- add_points ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("d", [2, 3, 4])
+def test_delaunay_add_points_in_batches_equals_one_shot(d):
+    rng = np.random.default_rng(30 + d)
+    p = rng.random((60 if d < 4 else 30, d))
+    p[-5:] = p[:5]  # duplicates arrive late
+    one = flipflop.Delaunay(p)
+    t = flipflop.Delaunay(p[:d + 3], incremental=True)
+    for lo in range(d + 3, len(p), 7):
+        t.add_points(p[lo:lo + 7], restart=lo % 2 == 0)
+    assert np.array_equal(t.points, p)
+    for name in ("simplices", "neighbors", "convex_hull", "redundant", "coplanar", "vertex_to_simplex",
+                 "transform", "equations"):
+        assert np.array_equal(getattr(t, name), getattr(one, name), equal_nan=name in ("transform", "equations")), name
+    assert np.array_equal(t.vertex_neighbor_vertices[1], one.vertex_neighbor_vertices[1])
+    assert t.npoints == len(p)
+
+
+def test_weighted_add_points_and_hull_add_points():
+    rng = np.random.default_rng(40)
+    p, w = rng.random((50, 2)), rng.random(50) * 0.01
+    t = flipflop.Delaunay(p[:10], incremental=True, weights=w[:10])
+    for lo in range(10, 50, 9):
+        t.add_points(p[lo:lo + 9], weights=w[lo:lo + 9])
+    assert np.array_equal(t.simplices, flipflop.Delaunay(p, weights=w).simplices)
+    with pytest.raises(ValueError):
+        t.add_points(p[:2])  # weighted: weights needed
+    for d in (2, 3):
+        q = rng.random((70, d))
+        one = flipflop.ConvexHull(q, qhull_options="Qc QG3")
+        h = flipflop.ConvexHull(q[:d + 2], incremental=True, qhull_options="Qc QG3")
+        for lo in range(d + 2, 70, 6):
+            h.add_points(q[lo:lo + 6])
+        for name in ("simplices", "vertices", "neighbors", "equations", "good", "coplanar"):
+            assert np.array_equal(getattr(h, name), getattr(one, name)), name
+        assert (h.volume, h.area, h.npoints) == (one.volume, one.area, 70)
+
+
+# ---- bad input: what scipy raises -----------------------------------------------------
+
+def test_add_points_without_incremental_or_after_close():
+    p = np.random.default_rng(0).random((20, 3))
+    for ours, theirs in ((flipflop.Delaunay, ss.Delaunay), (flipflop.ConvexHull, ss.ConvexHull)):
+        for obj in (ours(p), theirs(p)):
+            with pytest.raises(RuntimeError, match="incremental"):
+                obj.add_points(p[:2])
+        for obj in (ours(p, incremental=True), theirs(p, incremental=True)):
+            obj.close()
+            obj.close()  # twice is fine
+            with pytest.raises(RuntimeError, match="incremental"):
+                obj.add_points(p[:2])
+        for obj in (ours(p, incremental=True), theirs(p, incremental=True)):
+            with pytest.raises(ValueError):
+                obj.add_points(p[:2, :2])
+        t = ours(p, incremental=True)
+        before = t.simplices.copy()
+        with pytest.raises(ValueError):
+            t.add_points(np.array([[np.nan, 0.5, 0.5]]))  # scipy's hull takes NaN here; flipflop refuses it
+        assert np.array_equal(t.simplices, before) and t.npoints == 20
+
+
+def test_qhull_options_accepted_applied_and_refused():
+    p = np.random.default_rng(1).random((30, 3))
+    plain = flipflop.Delaunay(p).simplices
+    for opts in ("Qbb Qc Qz Qx QJ Qt Q12", "Qbb Qc Qz Q12", "Qbb Qc Qz Qx Q12", "QJ1e-10 Pp", "QbB", "", b"Qt Qbb",
+                 "Qbb Qc Qz Qx QJ Qt Q12 QG3 Pp"):
+        t = flipflop.Delaunay(p, qhull_options=opts)
+        if "QG" not in str(opts):
+            assert np.array_equal(t.simplices, plain)
+        else:  # the triangulation of the other points, as scipy
+            assert sets(t.simplices) == sets(ss.Delaunay(np.delete(p, 3, 0)).simplices + (np.arange(29) >= 3)[
+                ss.Delaunay(np.delete(p, 3, 0)).simplices])
+        h = flipflop.ConvexHull(p, qhull_options=opts)
+        if "QG" not in str(opts):
+            assert np.array_equal(h.simplices, flipflop.ConvexHull(p).simplices)
+    for bad in ("Foo", "Qbb Zz", "QGx", "Qu", "QG3 QG4", "QJx", "Qbb Qc Qv"):
+        for cls in (flipflop.Delaunay, flipflop.ConvexHull):
+            with pytest.raises(ValueError, match="qhull option"):
+                cls(p, qhull_options=bad)
+            with pytest.raises(RuntimeError):  # as scipy's QhullError
+                cls(p, qhull_options=bad)
+    for bad in ("Zz", "QGx", "QG40"):  # scipy refuses these too, with QhullError (a RuntimeError)
+        with pytest.raises(RuntimeError):
+            ss.ConvexHull(p, qhull_options=bad)
+    for cls in (flipflop.Delaunay, flipflop.ConvexHull):
+        with pytest.raises(ValueError, match="30 points"):
+            cls(p, qhull_options="QG30")
+        with pytest.raises(ValueError):
+            cls(p, qhull_options=5)
+
+
+def test_bad_input_raises_like_scipy():
+    p = np.random.default_rng(2).random((20, 3))
+    nan = p.copy()
+    nan[3, 1] = np.nan
+    for ours, theirs in ((flipflop.Delaunay, ss.Delaunay), (flipflop.ConvexHull, ss.ConvexHull)):
+        for bad in (nan, np.zeros((10, 1)), [["a", "b"], ["c", "d"], ["e", "f"]]):
+            with pytest.raises(ValueError):
+                theirs(bad)
+            with pytest.raises(ValueError):
+                ours(bad)
+        with pytest.raises(ValueError):
+            ours(p[:, 0])  # scipy: IndexError
+        with pytest.raises(ValueError):
+            ours(p[None])  # scipy crashes (segmentation fault) on this one
+    with pytest.raises(ValueError, match="furthest_site"):
+        flipflop.Delaunay(p, furthest_site=True)
+    with pytest.raises(ValueError):
+        flipflop.Delaunay(p[:, :2], True)
+    t = flipflop.Delaunay(p)
+    with pytest.raises(ValueError):
+        t.plane_distance(p[:, :2])
+    with pytest.raises(ValueError):
+        ss.Delaunay(p).plane_distance(p[:, :2])
+
+
+# ---- the exact sign helper behind good, coplanar and transform's NaN rows -------------
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 6])
+def test_det_signs_equal_a_fraction_oracle(n):
+    """flipflop._det_signs (float filter, then Bareiss on integers) against
+    fdet above on matrices that are singular, a few ulps from singular, or
+    at extreme magnitudes."""
+    rng = np.random.default_rng(50 + n)
+    mats = []
+    for k in range(60):
+        m = rng.integers(-3, 4, size=(n, n)).astype(float)
+        if k % 3 == 0:
+            m[-1] = m[0] + m[1]  # singular
+        elif k % 3 == 1:
+            m[-1] = m[0] + m[1]
+            m[-1, k % n] = np.nextafter(m[-1, k % n], np.inf)  # an ulp from singular
+        m *= [1e-300, 1e300, 1.0, 0.1][k % 4] if k % 5 == 0 else 1.0
+        mats.append(m)
+    mats = np.array(mats)
+    want = [int(np.sign(fdet([F(r) for r in m]))) for m in mats]
+    got = flipflop._det_signs(mats, lambda i: [F(r) for r in mats[i]])
+    assert got.tolist() == want
+    assert 0 in want and 1 in want and -1 in want
+
+
+# ---- ConvexHull in 4D and 5D (the canonical Delaunay triangulation's boundary) --------
+
+@pytest.mark.parametrize("d,n", [(4, 60), (5, 30)])
+def test_hull_4d_5d_equals_scipy(d, n):
+    p = np.random.default_rng(60 + d).random((n, d))
+    h, s = flipflop.ConvexHull(p), ss.ConvexHull(p)
+    assert sets(h.simplices) == sets(s.simplices)
+    assert h.vertices.tolist() == sorted(s.vertices.tolist())
+    assert np.isclose(h.volume, s.volume, rtol=1e-12) and np.isclose(h.area, s.area, rtol=1e-12)
+    where = index_of(s.simplices)
+    k = [where[frozenset(r)] for r in h.simplices.tolist()]
+    assert np.allclose(h.equations, s.equations[k], atol=1e-12)  # both outward
+    for i, r in enumerate(h.simplices):
+        for j in range(d):
+            a, b = h.neighbors[i, j], s.neighbors[k[i], list(s.simplices[k[i]]).index(r[j])]
+            assert k[a] == b
+    g = int(s.vertices[0])
+    hg, sg = flipflop.ConvexHull(p, qhull_options=f"QG{g}"), ss.ConvexHull(p, qhull_options=f"QG{g}")
+    assert sets(hg.simplices[hg.good]) == sets(sg.simplices[sg.good]) and hg.good.any()
+    with pytest.raises(ValueError, match="strict"):
+        flipflop.ConvexHull(p, strict=True)
+
+
+@pytest.mark.parametrize("d", [4, 5])
+def test_hull_4d_5d_on_a_grid_is_the_hull_by_definition(d):
+    """Every point on the inner side of, or on, every facet (exactly, in
+    integers), every facet of non-zero size, each ridge in two facets, the
+    outward orientation; and with Qc the boundary points that are not
+    vertices."""
+    k = 3 if d == 4 else 2
+    p = grid(k, d)
+    if d == 5:
+        p = np.vstack([p, [[0.5, 0.5, 0.5, 0.5, 0.0], [0.5, 0.5, 0.5, 0.5, 0.5]]])  # on a face, inside
+    h = flipflop.ConvexHull(p, qhull_options="Qc")
+    P = [[Fraction(x) for x in r] for r in p.tolist()]
+    for f in h.simplices.tolist():
+        rows = [[P[v][c] - P[f[0]][c] for c in range(d)] for v in f[1:]]
+        signs = {int(np.sign(fdet(rows + [[P[x][c] - P[f[0]][c] for c in range(d)]]))) for x in range(len(p))}
+        assert signs <= {0, -1}  # outward: the points are inside or on the plane
+        # {0}: a facet of zero size (the canonical answer's on degenerate input;
+        # a hyperplane holding every point is impossible, the input spans R^d)
+    ridges = {}
+    for f in h.simplices.tolist():
+        for r in combinations(sorted(f), d - 1):
+            ridges[r] = ridges.get(r, 0) + 1
+    assert set(ridges.values()) == {2}
+    corners = {i for i, x in enumerate(p.tolist()) if all(c in (0.0, k - 1.0) for c in x)}
+    assert len(corners) == 2 ** d and set(h.vertices.tolist()) >= corners
+    assert np.isclose(h.volume, (k - 1.0) ** d, rtol=1e-13)
+    assert np.isclose(h.area, 2 * d * (k - 1.0) ** (d - 1), rtol=1e-13)
+    want = boundary_oracle(p, 0.0, k - 1.0) - set(h.vertices.tolist())
+    assert set(h.coplanar[:, 0].tolist()) == want
+    assert len(want) > 0 if d == 4 else 33 not in want and 33 not in h.vertices
+
+
+@pytest.mark.parametrize("p", [grid(4, 3), grid(3, 3), grid(5, 2), np.vstack([grid(3, 3), grid(3, 3)]),
+                               np.random.default_rng(9).integers(0, 3, (40, 3)).astype(float),
+                               np.random.default_rng(9).integers(0, 3, (30, 2)).astype(float)],
+                         ids=["grid4^3", "grid3^3", "grid5^2", "grid3^3x2", "int3d", "int2d"])
+def test_the_4d_derivation_holds_where_both_exist(p):
+    """The premise of the 4D/5D hull (the canonical Delaunay triangulation's
+    boundary facets are the canonical hull's facets, degenerate input
+    included), checked in 2D and 3D, where the hull kernels share no code
+    with the triangulation."""
+    assert sets(flipflop.ConvexHull(p).simplices) == sets(flipflop.Delaunay(p).convex_hull)
+
+
+def test_hull_coplanar_where_floating_point_cannot_tell():
+    """Points on the plane z = 3x/8 + 5y/8 + 1/4 with 42-bit coordinates
+    (exactly on it: checked with Fractions) whose float orientation tests
+    round (products of 80 bits; most are not 0 in floating point), inside a
+    triangle of such points (the strict hull's base: one facet), and the same
+    points an ulp lower: only the first are coplanar."""
+    rng = np.random.default_rng(70)
+    u = 2.0 ** -42
+    corners = np.array([[0.01, 0.01], [0.48, 0.01], [0.01, 0.48]]) + rng.integers(1, 2 ** 20, (3, 2)) * u
+    xy = np.vstack([corners, 0.05 + rng.integers(1, 2 ** 40, size=(40, 2)) * (0.17 * u)])
+    xy = np.round(xy / u) * u
+    on = np.c_[xy, 0.375 * xy[:, 0] + 0.625 * xy[:, 1] + 0.25]
+    assert all(Fraction(z) == Fraction(3, 8) * Fraction(x) + Fraction(5, 8) * Fraction(y) + Fraction(1, 4)
+               for x, y, z in on.tolist())
+    below = on[3:].copy()
+    below[:, 2] = np.nextafter(below[:, 2], -np.inf)
+    apex = np.array([[0.2, 0.2, -5.0]])
+    p = np.vstack([apex, on, below])
+    for strict in (False, True):
+        h = flipflop.ConvexHull(p, qhull_options="Qc", strict=strict)
+        assert set(h.coplanar[:, 0].tolist()) == set(range(1, 44)) - set(h.vertices.tolist())
+        if strict:
+            assert h.vertices.tolist() == [0, 1, 2, 3] and len(h.coplanar) == 40

@@ -1,0 +1,805 @@
+"""flipflop.Voronoi (python/flipflop/voronoi.py) and flipflop.spatial.
+
+Oracles that share no code with what they check: scipy.spatial.Voronoi
+(Qhull) on general-position input; Python's Fraction arithmetic (exact
+circumcentres and power centres, rounded by float(Fraction), which rounds
+correctly); exact half-plane intersection from the definition of the power
+diagram; hand-counted answers on grids and circles.
+"""
+import itertools
+import math
+import random
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import flipflop._flipflop as _ff
+from flipflop.voronoi import Voronoi
+
+sp = pytest.importorskip("scipy.spatial")
+
+
+# ---- helpers -------------------------------------------------------------------------------
+
+def exact_centre(pts, w=None):
+    """The exact circumcentre (power centre with weights) of d + 1 points, as
+    Fractions; None when they span no volume. Gaussian elimination in
+    Fractions on 2 (p_k - p_0) . c = |p_k|^2 - |p_0|^2 - w_k + w_0."""
+    d = len(pts[0])
+    P = [[Fraction(float(x)) for x in p] for p in pts]
+    W = [Fraction(0)] * (d + 1) if w is None else [Fraction(float(x)) for x in w]
+    A = [[2 * (P[k][l] - P[0][l]) for l in range(d)] + [sum(x * x for x in P[k]) - sum(x * x for x in P[0])
+                                                           - W[k] + W[0]] for k in range(1, d + 1)]
+    for c in range(d):
+        piv = next((r for r in range(c, d) if A[r][c] != 0), None)
+        if piv is None:
+            return None
+        A[c], A[piv] = A[piv], A[c]
+        for r in range(d):
+            if r != c and A[r][c] != 0:
+                f = A[r][c] / A[c][c]
+                A[r] = [a - f * b for a, b in zip(A[r], A[c])]
+    return [A[c][d] / A[c][c] for c in range(d)]
+
+
+def region_sets(vor):
+    return [set(vor.regions[vor.point_region[i]]) for i in range(len(vor.points))]
+
+
+def ridge_map(vor):
+    return {tuple(sorted(map(int, p))): list(v) for p, v in zip(vor.ridge_points, vor.ridge_vertices)}
+
+
+def match_vertices(ours, theirs):
+    """ours index -> theirs index (nearest), and the largest distance."""
+    tree = sp.cKDTree(theirs.vertices)
+    dist, idx = tree.query(ours.vertices)
+    # relative to the vertex's size (Qhull's rounding errors scale with it)
+    rel = dist / np.maximum(1.0, np.abs(ours.vertices).max(axis=1))
+    return {i: int(j) for i, j in enumerate(idx)}, float(rel.max()) if len(rel) else 0.0
+
+
+def compare_with_scipy(p):
+    ours, qh = Voronoi(p), sp.Voronoi(p)
+    d = p.shape[1]
+    assert len(ours.vertices) == len(qh.vertices)
+    m, dist = match_vertices(ours, qh)
+    assert dist < 1e-9
+    assert len(set(m.values())) == len(m)  # a bijection
+    m[-1] = -1
+    mine, theirs = ridge_map(ours), ridge_map(qh)
+    # Qhull reports a ridge only when it has at least d vertices (the vertex at
+    # infinity counted once): the exact diagram's unbounded ridges with one
+    # finite vertex in 3D (V_i ∩ V_j = a vertex plus the cone of two hull
+    # normals: 2-dimensional) are missing there. Everything else is equal.
+    short = {e for e, v in mine.items() if len(v) < d}
+    assert all(-1 in mine[e] and len(mine[e]) == 2 for e in short)
+    if d == 2:
+        assert not short
+    assert set(mine) - short == set(theirs)
+    for e, v in theirs.items():
+        assert {m[x] for x in mine[e]} == set(v), e
+    for i in range(len(p)):
+        assert {m[x] for x in ours.regions[ours.point_region[i]]} == set(qh.regions[qh.point_region[i]]), i
+    return ours
+
+
+# ---- agreement with Qhull on general-position input ------------------------------------------
+
+@pytest.mark.parametrize("d,n,seed", [(2, 400, 1), (2, 1000, 2), (3, 300, 3), (3, 600, 4)])
+def test_equal_to_scipy_on_random_input(d, n, seed):
+    p = np.random.default_rng(seed).random((n, d))
+    compare_with_scipy(p)
+
+
+def test_equal_to_scipy_on_gaussian_input_3d():
+    p = np.random.default_rng(7).normal(size=(400, 3))
+    compare_with_scipy(p)
+
+
+def test_3d_cyclic_ridge_order_is_a_polygon():
+    # consecutive vertices of a bounded 3D ridge share an edge of the diagram:
+    # the simplices of both contain the ridge's two points and have a common facet
+    p = np.random.default_rng(11).random((300, 3))
+    vor = Voronoi(p)
+    S = vor.simplices
+    of_vertex = {}
+    for s, g in enumerate(vor.simplex_vertex):
+        of_vertex.setdefault(int(g), []).append(set(S[s].tolist()))
+    for (i, j), verts in zip(vor.ridge_points.tolist(), vor.ridge_vertices):
+        if -1 in verts:
+            continue
+        for a, b in zip(verts, verts[1:] + verts[:1]):
+            # cells a and b (general position: single tetrahedra) share a triangle holding i and j
+            ta, tb = of_vertex[a][0], of_vertex[b][0]
+            assert len(ta & tb) == 3 and {i, j} <= ta & tb
+
+
+# ---- correct rounding -----------------------------------------------------------------------
+
+def rounded(x):
+    """float(x), correctly rounded (Python's), with overflow to +-inf as IEEE rounding does."""
+    try:
+        return float(x)
+    except OverflowError:
+        return math.inf if x > 0 else -math.inf
+
+
+def check_rounding(vor):
+    S = vor.simplices
+    checked = 0
+    for s in range(len(S)):
+        pts = vor.points[S[s]]
+        w = None if vor.weights is None else vor.weights[S[s]]
+        c = exact_centre(pts, w)
+        g = int(vor.simplex_vertex[s])
+        if c is None:
+            assert g == -1
+            continue
+        assert g >= 0
+        assert [rounded(x) for x in c] == vor.vertices[g].tolist(), (s, c)
+        checked += 1
+    return checked
+
+
+@pytest.mark.parametrize("d,seed", [(2, 1), (3, 2)])
+def test_vertices_are_the_correctly_rounded_centres_random(d, seed):
+    p = np.random.default_rng(seed).random((150 if d == 2 else 60, d))
+    assert check_rounding(Voronoi(p)) > 50
+
+
+def test_vertices_correctly_rounded_weighted():
+    rng = np.random.default_rng(3)
+    p = rng.random((150, 2))
+    vor = Voronoi(p, weights=rng.random(150) * 1e-3)
+    assert check_rounding(vor) > 50
+    p3 = rng.random((60, 3))
+    assert check_rounding(Voronoi(p3, weights=rng.random(60) * 1e-3)) > 50
+
+
+def test_vertices_correctly_rounded_adversarial():
+    """Near-degenerate input where floating-point centres are wrong in many
+    bits: points one ulp off a circle or a sphere, nearly collinear triples,
+    wide exponent ranges."""
+    rng = np.random.default_rng(5)
+    # integer points on x^2 + y^2 = 5^2 * 13^2, each nudged by an ulp or not
+    r2 = 65 ** 2
+    circle = [(x, y) for x in range(-65, 66) for y in (-1, 1) if (y * math.isqrt(r2 - x * x)) ** 2 + x * x == r2
+              for y in [y * math.isqrt(r2 - x * x)]]
+    c = np.array(sorted(set(circle)), dtype=float)
+    c = np.nextafter(c, c + rng.choice([-1.0, 0.0, 1.0], size=c.shape))
+    assert check_rounding(Voronoi(c)) > 5
+    # a sliver-heavy set: nearly collinear points
+    t = rng.random(80)
+    q = np.c_[t, 1e-12 * rng.random(80) + t * 0.5]
+    assert check_rounding(Voronoi(q)) > 20
+    # many magnitudes at once
+    e = np.c_[rng.random(60) * 10.0 ** rng.integers(-150, 150, 60), rng.random(60) * 10.0 ** rng.integers(-150, 150, 60)]
+    assert check_rounding(Voronoi(e)) > 10
+    # tiny coordinates: the centres are subnormal or near it
+    s = rng.random((40, 2)) * 1e-300
+    assert check_rounding(Voronoi(s)) > 10
+    # 3D: a sphere's integer points, nudged
+    sph = np.array([v for v in itertools.product(range(-9, 10), repeat=3) if sum(x * x for x in v) == 81], float)
+    sph = np.nextafter(sph, sph + rng.choice([-1.0, 1.0], size=sph.shape))
+    assert check_rounding(Voronoi(sph)) > 10
+
+
+def test_round_ratio_against_fraction():
+    rnd = random.Random(9)
+    cases = [(1, 3, 0), (2, 3, 0), (1, 1, -1075), (1, 1, -1076), (3, 2, -1076), (5, 4, -1075), (1, 1, 1024),
+             ((1 << 53) - 1, 1, 971), ((1 << 54) - 1, 2, 970), (-7, 9, -1060), (2 ** 200 + 1, 3 ** 120, -700)]
+    for _ in range(3000):
+        M = rnd.randrange(-(1 << rnd.randrange(1, 400)), 1 << rnd.randrange(1, 400))
+        D = rnd.randrange(1, 1 << rnd.randrange(1, 400))
+        E = rnd.randrange(-1300, 1100)
+        cases.append((M, D, E))
+    for k in range(60):  # exact ties at the last place and in the subnormal range
+        cases.append((((1 << 53) + 2 * k + 1), 2, -1074 - rnd.randrange(0, 60)))
+    for M, D, E in cases:
+        q = Fraction(M, D) * (Fraction(2) ** E)
+        try:
+            want = float(q)
+        except OverflowError:
+            want = math.copysign(math.inf, M)
+        got = _ff._round_ratio(str(M), str(D), E)
+        assert got == want and math.copysign(1, got) == math.copysign(1, want if want else M or 1), (M, D, E)
+
+
+# ---- duality --------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_regions_are_the_centres_around_each_point(d):
+    rng = np.random.default_rng(20 + d)
+    p = rng.random((300, d))
+    vor = Voronoi(p)
+    around = [set() for _ in range(len(p))]
+    for s, g in zip(vor.simplices.tolist(), vor.simplex_vertex.tolist()):
+        for i in s:
+            around[i].add(g)
+    hull = set(sp.ConvexHull(p).vertices.tolist())
+    for i in range(len(p)):
+        want = around[i] | ({-1} if i in hull else set())
+        assert region_sets(vor)[i] == want
+    # every ridge's vertices are in both regions
+    for (i, j), v in zip(vor.ridge_points.tolist(), vor.ridge_vertices):
+        assert set(v) <= region_sets(vor)[i] & region_sets(vor)[j]
+
+
+# ---- degenerate input: the exact diagram ------------------------------------------------------
+
+def test_grid_3x3_has_four_vertices():
+    p = np.array([[i, j] for i in range(3) for j in range(3)], float)
+    vor = Voronoi(p)
+    assert sorted(map(tuple, vor.vertices.tolist())) == [(0.5, 0.5), (0.5, 1.5), (1.5, 0.5), (1.5, 1.5)]
+    want = {(a, b) for a in range(9) for b in range(a + 1, 9)
+            if abs(p[a] - p[b]).sum() == 1}  # axis neighbours only, never diagonals
+    assert set(ridge_map(vor)) == want
+    assert sorted(len(r) for r in vor.regions) == [2, 2, 2, 2, 3, 3, 3, 3, 4]
+    centre = vor.regions[vor.point_region[4]]
+    assert sorted(centre) == [0, 1, 2, 3]
+
+
+def test_grid_2d_larger_against_counts():
+    k = 12
+    p = np.array([[i, j] for i in range(k) for j in range(k)], float)
+    vor = Voronoi(p)
+    assert len(vor.vertices) == (k - 1) ** 2
+    assert len(vor.ridge_points) == 2 * k * (k - 1)
+    assert len(vor.ridge_points) < len({tuple(sorted(e)) for s in vor.simplices.tolist()
+                                        for e in itertools.combinations(s, 2)})  # diagonals dropped
+
+
+def test_points_on_a_circle_share_one_vertex():
+    pts = sorted({(x, y) for x in range(-5, 6) for y in range(-5, 6) if x * x + y * y == 25})
+    assert len(pts) == 12
+    vor = Voronoi(np.array(pts, float))
+    assert vor.vertices.tolist() == [[0.0, 0.0]]
+    ridges = ridge_map(vor)
+    assert len(ridges) == 12  # consecutive points around the circle only
+    assert all(sorted(v) == [-1, 0] for v in ridges.values())
+    assert all(sorted(r) == [-1, 0] for r in vor.regions)
+    # with the centre added: 12 bounded-by-one-vertex... the centre's cell is the 12-gon
+    vor2 = Voronoi(np.array(pts + [(0, 0)], float))
+    assert len(vor2.vertices) == 12 and -1 not in vor2.regions[vor2.point_region[12]]
+    assert len(vor2.regions[vor2.point_region[12]]) == 12
+
+
+def test_collinear_points_on_the_hull():
+    # points on the hull's edges: ab and bc are ridges, ac never
+    p = np.array([[0, 0], [1, 0], [2, 0], [3, 0], [0, 2], [3, 2], [1.5, 1]], float)
+    vor = Voronoi(p)
+    r = ridge_map(vor)
+    for a, b in [(0, 1), (1, 2), (2, 3)]:
+        assert (a, b) in r and -1 in r[(a, b)]
+    for a, b in [(0, 2), (1, 3), (0, 3)]:
+        assert (a, b) not in r
+    for i in range(4):
+        assert -1 in vor.regions[vor.point_region[i]]
+
+
+def test_cube_corners_3d():
+    p = np.array(list(itertools.product([0.0, 1.0], repeat=3)))
+    vor = Voronoi(p)
+    assert vor.vertices.tolist() == [[0.5, 0.5, 0.5]]
+    edges = {(a, b) for a in range(8) for b in range(a + 1, 8) if abs(p[a] - p[b]).sum() == 1}
+    assert set(ridge_map(vor)) == edges  # the cube's 12 edges: face and space diagonals are no ridges
+    assert all(sorted(v) == [-1, 0] for v in vor.ridge_vertices)
+
+
+def test_grid_3d_exact_topology():
+    k = 4
+    p = np.array(list(itertools.product(range(k), repeat=3)), float)
+    vor = Voronoi(p)
+    assert len(vor.vertices) == (k - 1) ** 3
+    assert sorted(map(tuple, vor.vertices.tolist())) == sorted(itertools.product([0.5, 1.5, 2.5], repeat=3))
+    want = {(a, b) for a in range(len(p)) for b in range(a + 1, len(p)) if abs(p[a] - p[b]).sum() == 1}
+    assert set(ridge_map(vor)) == want
+    for (a, b), v in ridge_map(vor).items():
+        # the ridge's vertices: the cube centres next to the edge; -1 iff the edge is on the boundary
+        mid = (p[a] + p[b]) / 2
+        near = {g for g, c in enumerate(vor.vertices) if np.all(np.abs(c - mid) <= 0.5 + 1e-12)}
+        axis = int(np.argmax(np.abs(p[a] - p[b])))
+        on_boundary = any(mid[x] in (0, k - 1) for x in range(3) if x != axis)
+        assert set(v) == near | ({-1} if on_boundary else set())
+        if not on_boundary:
+            assert len(v) == 4
+    inner = [i for i in range(len(p)) if np.all((p[i] > 0) & (p[i] < k - 1))]
+    assert all(len(vor.regions[vor.point_region[i]]) == 8 and -1 not in vor.regions[vor.point_region[i]]
+               for i in inner)
+
+
+def test_hypercube_4d():
+    p = np.array(list(itertools.product([0.0, 1.0], repeat=4)))
+    vor = Voronoi(p)
+    assert vor.vertices.tolist() == [[0.5] * 4]
+    assert len(vor.ridge_points) == 32 and all(abs(p[a] - p[b]).sum() == 1 for a, b in vor.ridge_points)
+
+
+def test_duplicates_have_empty_regions():
+    rng = np.random.default_rng(4)
+    p = rng.random((60, 2))
+    q = np.vstack([p, p[:5]])
+    a, b = Voronoi(p), Voronoi(q)
+    assert sorted(map(tuple, a.vertices.tolist())) == sorted(map(tuple, b.vertices.tolist()))
+
+    def coords(v, r):
+        return {tuple(v.vertices[g].tolist()) if g >= 0 else None for g in r}
+
+    # the SoS decides which copy keeps the cell; the other one's region is empty
+    cell = {}
+    for i in range(5):
+        ri, rj = b.regions[b.point_region[i]], b.regions[b.point_region[60 + i]]
+        assert sorted([len(ri) == 0, len(rj) == 0]) == [False, True]
+        assert coords(b, ri or rj) == coords(a, a.regions[i])
+        cell[60 + i] = i if ri else 60 + i
+    for i in range(5, 60):
+        assert coords(b, b.regions[i]) == coords(a, a.regions[i])
+    # the same ridges, with the copy that keeps the cell standing for the point
+    keep = {i: i for i in range(60)}
+    keep.update({i: (60 + i if cell[60 + i] == 60 + i else i) for i in range(5)})
+    assert {tuple(sorted((keep[x], keep[y]))) for x, y in a.ridge_points.tolist()} == set(ridge_map(b))
+
+
+# ---- power diagrams ------------------------------------------------------------------------
+
+def test_power_diagram_redundant_points_have_empty_regions():
+    rng = np.random.default_rng(8)
+    p = rng.random((200, 2))
+    w = rng.random(200) * 1e-2
+    vor = Voronoi(p, weights=w)
+    _s, redundant = _ff.triangulate(p, w, "cpu", False, 0)
+    assert len(redundant) > 10
+    used = {i for r in vor.ridge_points.tolist() for i in r}
+    for i in redundant.tolist():
+        assert vor.regions[vor.point_region[i]] == []
+        assert i not in used
+    for i in set(range(200)) - set(redundant.tolist()):
+        assert len(vor.regions[vor.point_region[i]]) >= 2
+
+
+def clip(poly, a, b, c):
+    """poly ∩ {x : a x + b y <= c}, exact (Sutherland–Hodgman in Fractions)."""
+    return _clip3(poly, (a, b), c)
+
+
+def area(poly):
+    return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
+               for k in range(len(poly))) / 2 if len(poly) >= 3 else Fraction(0)
+
+
+def power_cell(i, others, P, W, box):
+    """box ∩ {x : |x - p_i|^2 - w_i <= |x - p_j|^2 - w_j for j in others}."""
+    poly = box
+    for j in others:
+        a = 2 * (P[j][0] - P[i][0])
+        b = 2 * (P[j][1] - P[i][1])
+        c = P[j][0] ** 2 + P[j][1] ** 2 - W[j] - P[i][0] ** 2 - P[i][1] ** 2 + W[i]
+        poly = clip(poly, a, b, c)
+        if not poly:
+            break
+    return poly
+
+
+@pytest.mark.parametrize("case,seed", [("random", 1), ("random", 2), ("grid-equal", 3), ("grid-hidden", 4),
+                                       ("grid-hidden", 5), ("cocircular", 6)])
+def test_oracle_power_diagram_by_half_planes(case, seed):
+    rng = np.random.default_rng(seed)
+    if case == "random":
+        p = rng.random((25, 2))
+        w = rng.random(25) * 0.05
+    elif case == "grid-equal":  # every power vertex is shared by four cells
+        p = np.array([[i, j] for i in range(5) for j in range(5)], float)
+        w = np.full(25, 0.25)
+    elif case == "grid-hidden":  # cospherical ties and hidden points, but no cell of zero area
+        p = np.array([[i, j] for i in range(5) for j in range(5)], float)
+        w = rng.choice([0.0, 0.3, 3.0], size=25)
+    else:
+        pts = sorted({(x, y) for x in range(-5, 6) for y in range(-5, 6) if x * x + y * y == 25})
+        p = np.array(pts + [(0, 0), (1, 1)], float)
+        w = rng.choice([0.0, 1.0], size=len(p))
+    vor = Voronoi(p, weights=w)
+    n = len(p)
+    P = [(Fraction(float(x)), Fraction(float(y))) for x, y in p]
+    W = [Fraction(float(x)) for x in w]
+    # a box holding every Voronoi vertex well inside
+    lo = Fraction(math.floor(min(vor.vertices.min(), p.min()))) - 3
+    hi = Fraction(math.ceil(max(vor.vertices.max(), p.max()))) + 3
+    box = [(lo, lo), (hi, lo), (hi, hi), (lo, hi)]
+    neighbours = [set() for _ in range(n)]
+    for a, b in vor.ridge_points.tolist():
+        neighbours[a].add(b)
+        neighbours[b].add(a)
+    total = Fraction(0)
+    for i in range(n):
+        oracle = power_cell(i, [j for j in range(n) if j != i], P, W, box)
+        region = vor.regions[vor.point_region[i]]
+        if not region:
+            assert area(oracle) == 0  # hidden (or a duplicate): no cell of positive area
+            continue
+        mine = power_cell(i, sorted(neighbours[i]), P, W, box)
+        assert sorted(mine) == sorted(oracle), i  # the diagram's neighbours cut out the exact cell
+        total += area(mine)
+        inner = {(float(x), float(y)) for x, y in oracle if lo < x < hi and lo < y < hi}
+        assert inner == {tuple(vor.vertices[g].tolist()) for g in region if g >= 0}, i
+        touches_box = any(x in (lo, hi) or y in (lo, hi) for x, y in oracle)
+        assert touches_box == (-1 in region), i
+        # each neighbour shares an edge of positive length with the oracle cell
+        for j in neighbours[i]:
+            other = power_cell(j, [l for l in range(n) if l != j], P, W, box)
+            shared = set(oracle) & set(other)
+            assert len(shared) >= 2, (i, j)
+    assert total == (hi - lo) ** 2
+
+
+# ---- power diagrams with exact ties among the weights ----------------------------------------
+#
+# A point whose lifted point (p, |p|^2 - w) lies exactly on a face of the lower
+# hull without being one of its vertices keeps a place in the canonical
+# triangulation (the perturbation makes it a vertex) but has a cell of no
+# interior; the exact ridge between the two points of the hull's edge it lies
+# on passes "through" it although the triangulation has no edge between them.
+
+def centres_box(P, W, d):
+    """A bound B with every power centre of d + 1 of the points inside
+    (-B, B)^d, from all (d+1)-subsets: an independent box for the oracles."""
+    H = [sum(x * x for x in q) - w for q, w in zip(P, W)]
+    B = max(abs(x) for q in P for x in q) + 1
+    for sub in itertools.combinations(range(len(P)), d + 1):
+        a = sub[0]
+        A = [[2 * (P[q][l] - P[a][l]) for l in range(d)] + [H[q] - H[a]] for q in sub[1:]]
+        for c in range(d):  # Gauss–Jordan in Fractions
+            piv = next((r for r in range(c, d) if A[r][c] != 0), None)
+            if piv is None:
+                break
+            A[c], A[piv] = A[piv], A[c]
+            for r in range(d):
+                if r != c and A[r][c] != 0:
+                    f = A[r][c] / A[c][c]
+                    A[r] = [x - f * y for x, y in zip(A[r], A[c])]
+        else:
+            B = max(B, max(abs(A[c][d] / A[c][c]) for c in range(d)) + 1)
+    return Fraction(math.ceil(B)) + 1
+
+
+def check_power_diagram_2d(p, w):
+    """Everything of a 2D power diagram against half-plane intersection in
+    Fractions: which points have a cell of positive area, their cells'
+    vertices and whether unbounded, which pairs share an edge of positive
+    length (all of them, none else) and that edge's vertices. Exact duplicates
+    (equal point and weight): one of them, chosen by the perturbation, has the
+    cell, the others nothing."""
+    vor = Voronoi(p, weights=w)
+    n = len(p)
+    P = [(Fraction(float(x)), Fraction(float(y))) for x, y in p]
+    W = [Fraction(float(x)) for x in w]
+    B = centres_box(P, W, 2)
+    box = [(-B, -B), (B, -B), (B, B), (-B, B)]
+    coords = [tuple(c) for c in vor.vertices.tolist()]
+    copies = {}
+    for i in range(n):
+        copies.setdefault((P[i], W[i]), []).append(i)
+    gone = set()
+    for cls in copies.values():
+        keep = [i for i in cls if vor.regions[vor.point_region[i]]]
+        assert len(keep) <= 1, cls
+        gone |= set(cls) - set(keep[:1])
+    live = [i for i in range(n) if i not in gone]
+    cell = {i: power_cell(i, [j for j in live if j != i], P, W, box) for i in live}
+    full = {i for i in live if area(cell[i]) > 0}
+
+    def vertex_ids(poly):
+        ids = set()
+        for x, y in poly:
+            if abs(x) == B or abs(y) == B:
+                ids.add(-1)
+            else:
+                ids.add(coords.index((float(x), float(y))))  # ValueError: a vertex flipflop has not
+        return ids
+
+    for i in range(n):
+        r = vor.regions[vor.point_region[i]]
+        if i not in full:
+            assert r == [], i  # hidden, a duplicate, or a cell of zero area
+        else:
+            assert len(r) == len(set(r)) and set(r) == vertex_ids(cell[i]), i
+    want = {}
+    for i, j in itertools.combinations(sorted(full), 2):
+        shared = set(cell[i]) & set(cell[j])
+        if len(shared) >= 2:  # convex cells: an edge of positive length
+            want[(i, j)] = shared
+    got = ridge_map(vor)
+    assert set(got) == set(want), (sorted(set(want) - set(got)), sorted(set(got) - set(want)))
+    for e, shared in want.items():
+        v = got[e]
+        assert len(v) == 2 and set(v) == vertex_ids(shared), (e, v)
+    return vor, full
+
+
+def tie_points(vor):
+    """Points of the canonical triangulation without a cell of their own."""
+    used = set(vor.simplices.ravel().tolist())
+    return [i for i in sorted(used) if not vor.regions[vor.point_region[i]]]
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_oracle_power_diagram_grid_with_weight_ties(seed):
+    rng = np.random.default_rng(100 + seed)
+    p = np.array([[i, j] for i in range(5) for j in range(5)], float)
+    w = rng.choice([0.0, 0.25, 0.5, 1.5], size=25)
+    check_power_diagram_2d(p, w)
+
+
+def test_weight_tie_grids_exercise_the_ties():
+    # the grids above: most have points of the triangulation whose cell has
+    # no area (the case the ridges through them are about)
+    count = 0
+    for seed in range(40):
+        rng = np.random.default_rng(100 + seed)
+        p = np.array([[i, j] for i in range(5) for j in range(5)], float)
+        w = rng.choice([0.0, 0.25, 0.5, 1.5], size=25)
+        count += bool(tie_points(Voronoi(p, weights=w)))
+    assert count >= 20
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_oracle_power_diagram_small_integers(seed):
+    # many exact ties: repeated points, equal and hiding weights, collinear
+    # and cocircular points
+    rng = np.random.default_rng(200 + seed)
+    n = int(rng.integers(8, 30))
+    p = rng.integers(0, 5, size=(n, 2)).astype(float)
+    w = rng.integers(0, 3, size=n).astype(float)
+    check_power_diagram_2d(p, w)
+
+
+def test_lifted_points_all_coplanar():
+    # w = |p|^2: every lifted point at height 0, one face; only the corners
+    # of the grid (square, cube) have cells, the others lie inside the face
+    for d, k in ((2, 5), (3, 3)):
+        g = np.array(list(itertools.product(range(k), repeat=d)), float)
+        vor = Voronoi(g, weights=(g ** 2).sum(axis=1))
+        assert vor.vertices.tolist() == [[0.0] * d]
+        corners = [i for i in range(len(g)) if np.all((g[i] == 0) | (g[i] == k - 1))]
+        assert [i for i in range(len(g)) if vor.regions[i]] == corners
+        want = {(a, b) for a, b in itertools.combinations(corners, 2) if np.abs(g[a] - g[b]).sum() == k - 1}
+        assert set(ridge_map(vor)) == want  # the edges of the square / cube
+        assert all(sorted(v) == [-1, 0] for v in vor.ridge_vertices)
+    g = np.array(list(itertools.product(range(4), repeat=2)), float)
+    check_power_diagram_2d(g, (g ** 2).sum(axis=1))
+    g = np.array(list(itertools.product(range(3), repeat=3)), float)
+    check_power_diagram_3d(g, (g ** 2).sum(axis=1))
+
+
+# 3D: the ridges from their definition. For each pair a, b the polygon
+# {x : pow_a(x) = pow_b(x) <= pow_m(x) for all m} in a box that holds every
+# power centre of four points strictly inside (Sutherland–Hodgman in
+# Fractions, in 3D). A polygon of positive area is the face V_a ∩ V_b; the
+# pairs giving the same polygon are the points whose lifted points lie on one
+# edge of the lower hull: collinear, the two extreme ones are the edge's
+# vertices (their cells have volume), the others lie inside it (no volume).
+
+def _clip3(poly, a, c):
+    """poly ∩ {x : a.x <= c} in any dimension, exact (Sutherland–Hodgman in
+    Fractions): the 2D cells' clip and the 3D bisector polygons'."""
+    out = []
+    for k in range(len(poly)):
+        A, C = poly[k], poly[(k + 1) % len(poly)]
+        fa = sum(x * y for x, y in zip(a, A)) - c
+        fc = sum(x * y for x, y in zip(a, C)) - c
+        if fa <= 0:
+            out.append(A)
+        if (fa < 0 < fc) or (fc < 0 < fa):
+            t = fa / (fa - fc)
+            out.append(tuple(x + t * (y - x) for x, y in zip(A, C)))
+    res = []
+    for x in out:
+        if not res or res[-1] != x:
+            res.append(x)
+    if len(res) > 1 and res[0] == res[-1]:
+        res.pop()
+    return res
+
+
+def _cross(u, v):
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+
+def _corners(poly):
+    """poly without vertices on the segment between their neighbours."""
+    return [poly[k] for k in range(len(poly))
+            if any(_cross([b - a for a, b in zip(poly[k - 1], poly[k])],
+                          [b - a for a, b in zip(poly[k], poly[(k + 1) % len(poly)])]))]
+
+
+def oracle_ridges_3d(p, w):
+    """{(i, j): the ridge's corners in cyclic order, None for a corner on the
+    box}, and the points whose cells have volume. Needs distinct points."""
+    n = len(p)
+    P = [[Fraction(float(x)) for x in q] for q in p]
+    W = [Fraction(float(x)) for x in w]
+    H = [sum(x * x for x in P[i]) - W[i] for i in range(n)]
+    B = centres_box(P, W, 3)
+    classes = {}
+    for a, b in itertools.combinations(range(n), 2):
+        nrm = [2 * (P[b][l] - P[a][l]) for l in range(3)]
+        c = H[b] - H[a]  # the plane nrm . x = c
+        k = max(range(3), key=lambda l: abs(nrm[l]))
+        x0 = [Fraction(0)] * 3
+        x0[k] = c / nrm[k]
+        e = [0, 0, 0]
+        e[min(set(range(3)) - {k})] = 1
+        u = _cross(nrm, e)
+        v = _cross(nrm, u)
+        R = 4 * (B + sum(abs(x) for x in x0))  # the square x0 + [-R, R] u' + [-R, R] v' holds plane ∩ box
+        su, sv = max(map(abs, u)), max(map(abs, v))
+        poly = [tuple(x0[l] + s * R * u[l] / su + t * R * v[l] / sv for l in range(3))
+                for s, t in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        for l in range(3):
+            for sg in (1, -1):
+                poly = _clip3(poly, [sg if x == l else 0 for x in range(3)], B)
+        for m in range(n):
+            if m not in (a, b) and poly:
+                poly = _clip3(poly, [2 * (P[m][l] - P[a][l]) for l in range(3)], H[m] - H[a])
+        poly = _corners(poly)
+        if len(poly) >= 3:
+            classes.setdefault(frozenset(poly), (poly, set()))[1].update((a, b))
+    ridges, full = {}, set()
+    for poly, pts in classes.values():
+        pts = sorted(pts)
+        o = P[pts[0]]
+        far = max(pts, key=lambda q: sum((x - y) ** 2 for x, y in zip(P[q], o)))
+        dvec = [x - y for x, y in zip(P[far], o)]
+        for q in pts:
+            assert not any(_cross([x - y for x, y in zip(P[q], o)], dvec))  # collinear
+        t = {q: sum(x * y for x, y in zip([x - y for x, y in zip(P[q], o)], dvec)) for q in pts}
+        i, j = min(pts, key=t.get), max(pts, key=t.get)
+        ridges[(min(i, j), max(i, j))] = [None if any(abs(x) == B for x in c) else c for c in poly]
+        full |= {i, j}
+    return ridges, full
+
+
+def check_power_diagram_3d(p, w):
+    vor = Voronoi(p, weights=w)
+    ridges, full = oracle_ridges_3d(p, w)
+    got = ridge_map(vor)
+    assert set(got) == set(ridges), (sorted(set(ridges) - set(got)), sorted(set(got) - set(ridges)))
+    coords = [tuple(c) for c in vor.vertices.tolist()]
+
+    def vid(c):
+        return -1 if c is None else coords.index(tuple(float(y) for y in c))
+
+    for e, poly in ridges.items():
+        cyc = []  # the oracle's cycle, each stretch along the box as one -1
+        for c in poly:
+            if not cyc or cyc[-1] != vid(c):
+                cyc.append(vid(c))
+        if len(cyc) > 1 and cyc[0] == cyc[-1]:
+            cyc.pop()
+        v = got[e]
+        assert len(v) == len(cyc) and set(v) == set(cyc), (e, v, cyc)
+        k = cyc.index(v[0])
+        fwd = cyc[k:] + cyc[:k]
+        assert v in (fwd, [fwd[0]] + fwd[:0:-1]), (e, v, cyc)  # the cyclic order, either way round
+    for i in range(len(p)):
+        r = vor.regions[vor.point_region[i]]
+        want = {vid(c) for e, poly in ridges.items() if i in e for c in poly}
+        assert len(r) == len(set(r)) and set(r) == want, (i, r, want)
+        assert (i in full) == bool(r)
+    return vor
+
+
+def _tie_case_3d(seed):
+    # 16 distinct points of the 3x3x3 grid, weights with many exact ties
+    rng = np.random.default_rng(300 + seed)
+    cube = np.array(list(itertools.product(range(3), repeat=3)), float)
+    w = rng.choice([0.0, 0.5, 1.0, 2.0] if seed % 2 == 0 else [0.0, 1.0, 2.0], size=16)
+    return cube[rng.choice(len(cube), size=16, replace=False)], w
+
+
+@pytest.mark.parametrize("seed", range(16))
+def test_oracle_power_diagram_3d_with_weight_ties(seed):
+    check_power_diagram_3d(*_tie_case_3d(seed))
+
+
+def test_3d_weight_tie_cases_exercise_the_ties():
+    assert sum(bool(tie_points(Voronoi(p, weights=w))) for p, w in map(_tie_case_3d, range(16))) >= 6
+
+
+# ---- API: scipy's behaviour on bad input, incremental mode, plotting, flipflop.spatial ----------
+
+def test_bad_input():
+    p = np.random.default_rng(1).random((10, 2))
+    q = p.copy()
+    q[3, 1] = np.nan
+    with pytest.raises(ValueError):
+        Voronoi(q)
+    with pytest.raises(ValueError):
+        Voronoi(np.r_[p[:, :1].T, p[:, :1].T])  # too few points for 10D
+    with pytest.raises(ValueError):
+        Voronoi(p[:, 0])
+    with pytest.raises(ValueError):
+        Voronoi(np.random.rand(10, 6))
+    with pytest.raises(ValueError):
+        Voronoi(np.random.rand(10, 1))
+    with pytest.raises(ValueError):
+        Voronoi(p[:2])
+    with pytest.raises(ValueError, match="Qfoo"):
+        Voronoi(p, qhull_options="Qbb Qfoo")
+    with pytest.raises(ValueError, match="furthest_site"):
+        Voronoi(p, furthest_site=True)
+    with pytest.raises(ValueError):
+        Voronoi(p, weights=np.ones(3))
+    with pytest.raises(ValueError):
+        Voronoi(np.zeros((10, 2)))  # all points equal: no diagram
+    with pytest.raises(ValueError):
+        Voronoi(np.c_[np.arange(10.0), np.arange(10.0)])  # collinear
+    Voronoi(p, qhull_options="Qbb Qc Qz Qx QJ Qt Q12")
+    Voronoi(p, qhull_options=b"Qbb Qc Qz")
+
+
+def test_incremental():
+    rng = np.random.default_rng(2)
+    p = rng.random((60, 2))
+    v = Voronoi(p[:30], incremental=True)
+    v.add_points(p[30:45])
+    v.add_points(p[45:], restart=True)
+    full = Voronoi(p)
+    assert np.array_equal(v.vertices, full.vertices)
+    assert np.array_equal(v.ridge_points, full.ridge_points)
+    assert v.regions == full.regions and v.npoints == 60
+    v.close()
+    with pytest.raises(RuntimeError):
+        v.add_points(p[:3])
+    with pytest.raises(RuntimeError):
+        Voronoi(p).add_points(p[:3])
+    with pytest.raises(ValueError):
+        Voronoi(p, incremental=True).add_points(np.ones((2, 3)))
+    w = Voronoi(p[:30], incremental=True, weights=np.zeros(30))
+    w.add_points(p[30:], weights=np.zeros(30))
+    assert np.array_equal(w.vertices, full.vertices)
+
+
+def test_attributes_like_scipy():
+    p = np.random.default_rng(3).random((50, 2))
+    ours, qh = Voronoi(p), sp.Voronoi(p)
+    for name in ("points", "vertices", "ridge_points", "ridge_vertices", "regions", "point_region",
+                 "furthest_site", "ndim", "npoints", "min_bound", "max_bound"):
+        assert hasattr(ours, name), name
+    assert ours.ndim == 2 and ours.npoints == 50 and ours.furthest_site is False
+    assert np.array_equal(ours.min_bound, qh.min_bound) and np.array_equal(ours.max_bound, qh.max_bound)
+    assert ours.ridge_points.dtype == qh.ridge_points.dtype
+    assert isinstance(ours.ridge_vertices, list) and isinstance(ours.regions, list)
+    assert set(ours.ridge_dict) == {tuple(sorted(k)) for k in qh.ridge_dict}
+
+
+@pytest.mark.parametrize("case", ["random", "grid"])
+def test_voronoi_plot_2d(case, tmp_path):
+    mpl = pytest.importorskip("matplotlib")
+    mpl.use("Agg")
+    import matplotlib.pyplot as plt
+    if case == "random":
+        p = np.random.default_rng(4).random((40, 2))
+    else:
+        p = np.array([[i, j] for i in range(4) for j in range(4)], float)
+    fig = sp.voronoi_plot_2d(Voronoi(p))
+    fig.savefig(tmp_path / "v.png")
+    ax = fig.axes[0]
+    segments = sum(len(c.get_segments()) for c in ax.collections)
+    assert segments == len(Voronoi(p).ridge_points)
+    plt.close(fig)
+
+
+def test_spatial_module():
+    import flipflop
+    import flipflop.spatial as fs
+    assert fs.Voronoi is Voronoi
+    assert fs.ConvexHull is flipflop.ConvexHull and fs.Delaunay is flipflop.Delaunay
+    assert fs.cKDTree is sp.cKDTree and fs.voronoi_plot_2d is sp.voronoi_plot_2d
+    assert fs.distance is sp.distance
+    from flipflop.spatial import KDTree  # noqa: F401  (forwarded through __getattr__)
+    with pytest.raises(AttributeError):
+        fs.no_such_name
+    assert not hasattr(fs, "__path__")
+    assert "cKDTree" in dir(fs) and "Voronoi" in dir(fs)
