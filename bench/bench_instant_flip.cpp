@@ -93,9 +93,11 @@ int bench_instant_flip(const Args& a) {
          return peers::cgal_regular_d(pu, nullptr, &t_cgal);
        },
        [&] { return t_cgal; }}};
-  if (!a.csv)
+  if (!a.csv) {
     std::printf("flipflop bench instant-flip: d %d, n %zu, step %g, seed %llu, median of %d runs\n", a.dim, a.n,
                 a.step, a.seed, a.reps);
+    std::printf("machine: %s\n", machine_line().c_str());
+  }
   const int rc = compare_peers<Simplices>(a, g.pu, rows, "simplices");
   if (chosen(a, "flipflop:instant-flip"))
     std::fprintf(stderr,

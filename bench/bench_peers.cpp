@@ -113,6 +113,7 @@ int bench_peers(const Args& a) {
                 pts.size(), a.seed);
     if (a.weighted) std::printf(", weights in [%g, %g]", a.wlo, a.whi);
     std::printf(", median of %d runs (input generated in %.3f s, not timed)\n", a.reps, gen_s);
+    std::printf("machine: %s\n", machine_line().c_str());
   }
 
   using Cycle = std::vector<Index>;

@@ -367,6 +367,7 @@ int bench_predicates(const Args& a) {
   } else {
     std::printf("flipflop bench predicates: %zu calls per run, median of %d runs, seed %llu (ns per call)\n",
                 a.n, a.reps, a.seed);
+    std::printf("machine: %s\n", machine_line().c_str());
     std::printf("%-9s %-16s %10s %9s %9s %10s %10s %10s %8s %8s\n", "predicate", "input", "flipflop",
                 "static", "dynamic", "expansion", "cgal", "gmp", "static%", "dyn%");
   }

@@ -80,7 +80,8 @@ Tets as_tets(const std::vector<std::vector<Index>>& s) {
 
 }  // namespace
 
-// The machine, as one line (timing.hpp).
+// The machine, as one line (timing.hpp): CPU model, logical processors,
+// data cache sizes, load average.
 std::string machine_line() {
   std::string model = "unknown CPU";
   int cpus = 0;
@@ -98,7 +99,19 @@ std::string machine_line() {
     avg >> one >> five >> fifteen;
     load = one + " " + five + " " + fifteen;
   }
-  return model + ", " + std::to_string(cpus) + " logical processors, load average " + load;
+  // the data caches of CPU 0 as the kernel reports them (L1d, L2, L3: the
+  // sizes another machine of the same kind most often differs in)
+  std::string caches;
+  for (int i = 0; i < 8; ++i) {
+    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(i) + "/";
+    std::ifstream level(dir + "level"), type(dir + "type"), size(dir + "size");
+    std::string l, t, z;
+    if (!(level >> l) || !(type >> t) || !(size >> z)) break;
+    if (t == "Instruction") continue;
+    caches += std::string(caches.empty() ? "" : " ") + "L" + l + (t == "Data" ? "d" : "") + " " + z;
+  }
+  return model + ", " + std::to_string(cpus) + " logical processors" + (caches.empty() ? "" : ", caches " + caches) +
+         ", load average " + load;
 }
 
 int bench_rt3(const Args& a) {

@@ -56,7 +56,8 @@ struct Args {
 int bench_predicates(const Args& a);
 int bench_peers(const Args& a);
 int bench_stages(const Args& a);  // hull2|hull3|rt2|dt2|rt3|dt3 --stages
-// The machine, as one line: CPU model, logical processors, load average
+// The machine, as one line: CPU model, logical processors, data cache sizes,
+// load average
 // (bench_rt3.cpp); printed beside every table.
 std::string machine_line();
 int bench_instant_flip(const Args& a);
