@@ -24,8 +24,6 @@
 using namespace flipflop;
 using namespace flipflop::test;
 
-#ifdef FLIPFLOP_HAVE_KERNELS_OMP
-
 namespace {
 
 std::vector<int> omp_backend(const kernels::PredicateBatch& b, kernels::PredicateStats* stats) {
@@ -113,10 +111,3 @@ TEST_CASE("device predicates (OpenMP): empty batches and preconditions", "[kerne
   CHECK_THROWS_AS(kernels_omp::lambda_signs(bad), std::invalid_argument);
 }
 
-#else
-
-TEST_CASE("device predicates (OpenMP): equal GMP on every family", "[kernels][predicates]") {
-  WARN("flipflop_kernels_omp not built (no CUDA toolkit headers or OpenMP): nothing to test");
-}
-
-#endif
