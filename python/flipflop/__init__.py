@@ -563,16 +563,16 @@ def _nondegenerate_facets(points: np.ndarray, facets: np.ndarray) -> np.ndarray:
     U = np.stack([points[facets[:, j]] - points[facets[:, 0]] for j in range(1, d)], axis=1)  # (m, d-1, d)
     ok = np.zeros(len(facets), dtype=bool)
     for cols in combinations(range(d), d - 1):
-        todo = np.flatnonzero(~ok)
-        if len(todo) == 0:
+        undecided = np.flatnonzero(~ok)
+        if len(undecided) == 0:
             break
-        mats = U[todo][:, :, list(cols)]
+        mats = U[undecided][:, :, list(cols)]
 
-        def exact(k, cols=cols, todo=todo):
-            rows = _differences(points, list(facets[todo[k], 1:]), facets[todo[k], 0])
+        def exact(k, cols=cols, undecided=undecided):
+            rows = _differences(points, list(facets[undecided[k], 1:]), facets[undecided[k], 0])
             return [[r[c] for c in cols] for r in rows]
 
-        ok[todo] = _det_signs(mats, exact) != 0
+        ok[undecided] = _det_signs(mats, exact) != 0
     return ok
 
 
