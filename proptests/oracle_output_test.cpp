@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "proptests/support/predicate_inputs.hpp"  // lattice_sphere (input generation only)
 #include "proptests/support/rc_scaled.hpp"
 #include "proptests/support/sos_brute.hpp"
 #include "reference/hull2/hull2.hpp"
@@ -228,22 +229,6 @@ struct Gen {
   double unit() { return static_cast<double>(g() >> 11) * 0x1.0p-53; }
 };
 
-// Lattice points of {-r..r}^d with |x|² = r2.
-std::vector<std::vector<int>> lattice_sphere(int d, int r, int r2) {
-  std::vector<std::vector<int>> out;
-  std::vector<int> x(static_cast<size_t>(d), -r);
-  for (;;) {
-    int s = 0;
-    for (int v : x) s += v * v;
-    if (s == r2) out.push_back(x);
-    int j = 0;
-    while (j < d && x[static_cast<size_t>(j)] == r) x[static_cast<size_t>(j++)] = -r;
-    if (j == d) break;
-    ++x[static_cast<size_t>(j)];
-  }
-  return out;
-}
-
 constexpr int kFamilies = 8;
 const char* family_name(int f) {
   static const char* names[kFamilies] = {"grid {0,1,2}^d, zero weights",
@@ -279,8 +264,7 @@ Input family_input(int f, int d, int n, std::uint64_t seed) {
       break;
     case 2: {
       static const int r2[6] = {0, 0, 25, 9, 4, 4};
-      static const int rr[6] = {0, 0, 5, 3, 2, 2};
-      auto s = lattice_sphere(d, rr[d], r2[d]);
+      std::vector<std::vector<int>> s = test::lattice_sphere(d, r2[d]);  // a copy: shuffled below
       for (size_t i = s.size(); i > 1; --i) std::swap(s[i - 1], s[g.g() % i]);  // shuffle
       for (int i = 0; i < n; ++i) add(s[static_cast<size_t>(i) % s.size()]);
       const double w = g.pick(-2, 2);

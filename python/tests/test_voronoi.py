@@ -17,7 +17,7 @@ import pytest
 import flipflop._flipflop as _ff
 from flipflop.voronoi import Voronoi
 
-sp = pytest.importorskip("scipy.spatial")
+import scipy.spatial as sp  # make deps installs python3-scipy: a hard dependency of this suite
 
 
 # ---- helpers -------------------------------------------------------------------------------
@@ -776,7 +776,7 @@ def test_attributes_like_scipy():
 
 @pytest.mark.parametrize("case", ["random", "grid"])
 def test_voronoi_plot_2d(case, tmp_path):
-    mpl = pytest.importorskip("matplotlib")
+    import matplotlib as mpl  # make deps installs python3-matplotlib: no silent skip
     mpl.use("Agg")
     import matplotlib.pyplot as plt
     if case == "random":
