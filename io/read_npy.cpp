@@ -17,6 +17,7 @@
 
 #include "io/formats.hpp"
 #include "io/input_error.hpp"
+#include "io/npy.hpp"
 #include "io/text.hpp"
 
 namespace flipflop::io::detail {
@@ -42,7 +43,16 @@ std::string dict_value(const std::string& h, const std::string& k, const std::st
 
 }  // namespace
 
-PointSet read_npy(const std::string& path, int dim, bool weighted) {
+}  // namespace flipflop::io::detail
+
+namespace flipflop::io {
+
+std::string nonfinite_problem(double value, std::uint64_t row, int column, int dim) {
+  return std::string(std::isnan(value) ? "NaN" : "Inf") + " in row " + std::to_string(row) + ", column " +
+         std::to_string(column + 1) + " (" + detail::column_name(column, dim) + ")";
+}
+
+NpyLayout npy_layout(const std::string& path, int dim, bool weighted) {
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(path, "cannot open");
   char magic[8] = {};
@@ -61,13 +71,13 @@ PointSet read_npy(const std::string& path, int dim, bool weighted) {
   f.read(h.data(), static_cast<std::streamsize>(hlen));
   if (!f) throw InputError(path, "npy header is truncated");
 
-  const std::string descr = dict_value(h, "descr", path);
+  const std::string descr = detail::dict_value(h, "descr", path);
   if (descr != "'<f8'" && descr != "'f8'")
-    throw InputError(path, "npy dtype " + show(descr.size() >= 2 && descr.front() == '\'' ? descr.substr(1, descr.size() - 2) : descr) +
+    throw InputError(path, "npy dtype " + detail::show(descr.size() >= 2 && descr.front() == '\'' ? descr.substr(1, descr.size() - 2) : descr) +
                                ": expected little-endian float64 ('<f8')");
-  if (dict_value(h, "fortran_order", path) != "False")
+  if (detail::dict_value(h, "fortran_order", path) != "False")
     throw InputError(path, "npy array in Fortran order: expected C order (numpy.ascontiguousarray)");
-  const std::string shape = dict_value(h, "shape", path);  // "(n, c)"
+  const std::string shape = detail::dict_value(h, "shape", path);  // "(n, c)"
   long long n = -1, c = -1;
   {
     std::string s = shape.substr(1, shape.size() - 2);
@@ -80,14 +90,37 @@ PointSet read_npy(const std::string& path, int dim, bool weighted) {
     };
     a = trim(a);
     b = trim(b);
-    if (b.find(',') != std::string::npos || !parse_integer(a, 0, 1LL << 40, n) || !parse_integer(b, 0, 64, c))
-      throw InputError(path, "npy shape " + show(shape) + ": expected (n, " + std::to_string(dim) +
+    if (b.find(',') != std::string::npos || !detail::parse_integer(a, 0, 1LL << 40, n) || !detail::parse_integer(b, 0, 64, c))
+      throw InputError(path, "npy shape " + detail::show(shape) + ": expected (n, " + std::to_string(dim) +
                                  (weighted ? " + 1" : "") + ")");
   }
   const long long cols = dim + (weighted ? 1 : 0);
   if (c != cols)
-    throw InputError(path, "npy shape " + show(shape) + ": expected " + std::to_string(cols) + " columns (" +
+    throw InputError(path, "npy shape " + detail::show(shape) + ": expected " + std::to_string(cols) + " columns (" +
                                std::to_string(dim) + " coordinates" + (weighted ? " and a weight" : "") + ")");
+  NpyLayout out;
+  out.rows = static_cast<std::uint64_t>(n);
+  out.cols = static_cast<int>(c);
+  out.data_offset = static_cast<std::uint64_t>(f.tellg());
+  f.seekg(0, std::ios::end);
+  const auto size = static_cast<std::uint64_t>(f.tellg());
+  const std::uint64_t need = out.rows * static_cast<std::uint64_t>(c) * sizeof(double);
+  if (size < out.data_offset + need)
+    throw InputError(path, "npy data is truncated: " + std::to_string((size - out.data_offset) / 8) + " of " +
+                               std::to_string(need / 8) + " values");
+  return out;
+}
+
+}  // namespace flipflop::io
+
+namespace flipflop::io::detail {
+
+PointSet read_npy(const std::string& path, int dim, bool weighted) {
+  const NpyLayout lay = npy_layout(path, dim, weighted);
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path, "cannot open");
+  f.seekg(static_cast<std::streamoff>(lay.data_offset));
+  const long long n = static_cast<long long>(lay.rows), c = lay.cols;
   PointSet ps;
   ps.dim = dim;
   ps.weighted = weighted;
@@ -101,10 +134,8 @@ PointSet read_npy(const std::string& path, int dim, bool weighted) {
                                std::to_string(values) + " values");
   for (std::size_t i = 0; i < values; ++i)
     if (!std::isfinite(target[i]))
-      throw InputError(path, std::string(std::isnan(target[i]) ? "NaN" : "Inf") + " in row " +
-                                 std::to_string(i / static_cast<std::size_t>(c)) + ", column " +
-                                 std::to_string(i % static_cast<std::size_t>(c) + 1) + " (" +
-                                 column_name(static_cast<int>(i % static_cast<std::size_t>(c)), dim) + ")");
+      throw InputError(path, nonfinite_problem(target[i], i / static_cast<std::size_t>(c),
+                                               static_cast<int>(i % static_cast<std::size_t>(c)), dim));
   if (weighted) {
     ps.coords.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(dim));
     ps.weights.resize(static_cast<std::size_t>(n));

@@ -175,7 +175,9 @@ void write_vtu(std::ostream& os, const PointSet& ps, const Vertices& v, const st
   os << "        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
 }
 
-void write_npy(std::ostream& os, const std::vector<std::vector<Index>>& cells, bool one_cycle) {
+}  // namespace
+
+void write_npy_indices(std::ostream& os, const std::vector<std::vector<Index>>& cells, bool one_cycle) {
   std::string shape;
   std::size_t k = cells.empty() ? 0 : cells[0].size();
   if (one_cycle) shape = "(" + std::to_string(k) + ",)";
@@ -189,6 +191,8 @@ void write_npy(std::ostream& os, const std::vector<std::vector<Index>>& cells, b
       os.write(b, 8);
     }
 }
+
+namespace {
 
 void write_svg(std::ostream& os, const PointSet& ps, const std::vector<std::vector<Index>>& cells,
                const std::vector<Index>& marked) {
@@ -301,7 +305,7 @@ void write_cells(const std::string& path, Format f, const PointSet& ps, const st
       }
       case Format::ply: write_ply(os, ps, v, written, ascii, path); break;
       case Format::vtu: write_vtu(os, ps, v, written, kind); break;
-      case Format::npy: write_npy(os, written, kind == CellKind::cycle); break;
+      case Format::npy: write_npy_indices(os, written, kind == CellKind::cycle); break;
       case Format::svg: write_svg(os, ps, written, marked); break;
       case Format::index: break;
     }

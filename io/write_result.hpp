@@ -38,6 +38,7 @@
 // formats that can; nothing is written then.
 #pragma once
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,12 @@ enum class CellKind { cycle, polygons, simplices };
 // be written.
 void write_cells(const std::string& path, Format f, const PointSet& ps, const std::vector<std::vector<Index>>& cells,
                  CellKind kind, const std::vector<Index>& marked = {}, bool ascii = false);
+
+// The .npy index array of `cells` (format 1.0, little-endian int64): shape
+// (cells, k) when every cell has k vertices, (k,) for one cycle (the 2D
+// hull), as write_cells writes Format::npy. The cells must all have the same
+// size.
+void write_npy_indices(std::ostream& os, const std::vector<std::vector<Index>>& cells, bool one_cycle);
 
 // Fan triangulation of convex polygons from their first vertex, leaving out
 // the triangles whose three points are collinear (exact orient test in the

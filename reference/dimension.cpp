@@ -66,17 +66,22 @@ int affine_dimension(const PointSet& ps) {
   return d == n ? 2 : 3;
 }
 
-std::string dimension_problem(const PointSet& ps) {
-  const std::size_t n = ps.size();
-  if (n < static_cast<std::size_t>(ps.dim) + 1)
-    return std::to_string(n) + " point" + (n == 1 ? "" : "s") + ", at least " +
-           std::to_string(ps.dim + 1) + " needed in " + std::to_string(ps.dim) + "D";
-  int d = affine_dimension(ps);
-  if (d == ps.dim) return {};
+std::string dimension_problem(std::size_t n, int dim, int affine_dim) {
+  if (n < static_cast<std::size_t>(dim) + 1)
+    return std::to_string(n) + " point" + (n == 1 ? "" : "s") + ", at least " + std::to_string(dim + 1) +
+           " needed in " + std::to_string(dim) + "D";
+  const int d = affine_dim;
+  if (d == dim) return {};
   static const char* what[] = {"are equal", "are collinear", "are coplanar"};
   return "input is lower-dimensional: all " + std::to_string(n) + " points " +
          (d <= 2 ? std::string(what[d]) : "lie in an affine subspace of dimension " + std::to_string(d)) +
          " (affine dimension " + std::to_string(d) + ")";
+}
+
+std::string dimension_problem(const PointSet& ps) {
+  const std::size_t n = ps.size();
+  if (n < static_cast<std::size_t>(ps.dim) + 1) return dimension_problem(n, ps.dim, 0);
+  return dimension_problem(n, ps.dim, affine_dimension(ps));
 }
 
 }  // namespace flipflop

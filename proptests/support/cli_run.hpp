@@ -48,10 +48,10 @@ struct TempDir {
   }
 };
 
-// FLIPFLOP_BINARY ARGS, its stdout and stderr through files in t.
-inline Run run(const TempDir& t, const std::string& args) {
+// A shell command line, its stdout and stderr through files in t.
+inline Run run_command(const TempDir& t, const std::string& command) {
   const fs::path out = t.dir / "stdout.txt", err = t.dir / "stderr.txt";
-  const std::string cmd = std::string(FLIPFLOP_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
+  const std::string cmd = command + " > " + out.string() + " 2> " + err.string();
   const int status = std::system(cmd.c_str());
   Run r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -59,6 +59,9 @@ inline Run run(const TempDir& t, const std::string& args) {
   r.err = slurp(err);
   return r;
 }
+
+// FLIPFLOP_BINARY ARGS.
+inline Run run(const TempDir& t, const std::string& args) { return run_command(t, std::string(FLIPFLOP_BINARY) + " " + args); }
 
 inline int lines(const std::string& s) {
   int n = 0;

@@ -1,0 +1,384 @@
+"""flipflop.dask: the exact convex hull of a dask array, on any dask
+scheduler (the default threaded one, "synchronous", or a dask.distributed
+cluster), equal to flipflop.ConvexHull of the computed array bit for bit.
+
+    >>> import dask.array as da, flipflop.dask
+    >>> x = da.random.random((10**7, 3), chunks=(10**6, 3))
+    >>> hull = flipflop.dask.ConvexHull(x)       # attributes as flipflop.ConvexHull
+
+Only hull vertices travel between tasks; the points stay where their chunks
+are (docs/distributed_dask.md).
+
+How (one dask graph, computed once):
+
+1. One task per row-chunk: the chunk's hull vertices, as (global row ids
+   ascending, their float64 coordinates). A chunk whose points span less
+   than the full dimension (or has fewer than d + 1 points) forwards all
+   its points.
+2. A tree reduction (split_every children per node): concatenate, sort by
+   global id, keep the hull vertices of the union (all of it where it is
+   lower-dimensional).
+3. The root: flipflop.ConvexHull of the remaining candidates, sorted by
+   global id, its indices mapped back to global ids.
+4. One task per chunk certifies its points: flipflop.certify(...,
+   canonical=True) on the final hull's vertices outside the chunk, the
+   chunk's own points and the final facets, in global order.
+
+Why it is exact: Simulation of Simplicity perturbs point i by powers of
+epsilon ordered by i (DESIGN.md, "The perturbation"), so every perturbed
+predicate's sign depends only on the relative order of the indices
+involved. The hull of a subset, computed with its points in ascending
+global order, is therefore the canonical hull of those perturbed points,
+and mapping its indices back (a monotone map) keeps the canonical form. The
+hull of a union is the hull of the union of its parts' hull vertices; a
+lower-dimensional part forwards all its points, a superset of its vertices.
+The root's call sees the final vertices' coordinates in the same order as
+the in-memory call, so its equations, area and volume (computed from the
+facets' vertices alone: python/src/module.cpp, hull2_measures and
+hull3_measures) are the same doubles. A chunk's certificate shows that the
+final facets are the canonical hull of the chunk's points together with the
+hull's vertices; every point lies in some chunk, so all certificates
+together show that they are the canonical hull of all points.
+"""
+from __future__ import annotations
+
+import contextlib
+import math
+import sys
+from typing import List, Optional, Sequence
+
+import numpy as np
+import dask
+import dask.array as da
+
+from . import Certificate
+from . import ConvexHull as _MemoryHull
+from . import certify as _certify
+
+__all__ = ["ConvexHull", "CertificationError", "certify_chunks"]
+
+_WHAT = "flipflop.dask.ConvexHull"
+
+
+class CertificationError(RuntimeError):
+    """A chunk's points are not certified against the hull: `chunk` is the
+    chunk's number, `rows` its global rows [start, stop), `certificate` the
+    failed flipflop.Certificate (condition and detail)."""
+
+    def __init__(self, chunk: int, rows: Sequence[int], certificate: Certificate):
+        self.chunk, self.rows, self.certificate = chunk, tuple(rows), certificate
+        super().__init__(f"{_WHAT}: chunk {chunk} (rows {rows[0]}..{rows[1] - 1}) is not certified: "
+                         f"{certificate.condition}: {certificate.detail}")
+
+
+# ---- the input -------------------------------------------------------------------------
+
+def _dask_points(x, what: str) -> da.Array:
+    """A dask array (n, d), d in (2, 3), one chunk across the columns, with
+    known chunk sizes; ValueError otherwise."""
+    if not isinstance(x, da.Array):
+        try:
+            x = da.asarray(x)
+        except (TypeError, ValueError) as e:
+            raise ValueError(f"{what}: points must be a dask array or an array-like: {e}") from None
+    if x.ndim != 2 or x.shape[1] not in (2, 3):
+        raise ValueError(f"{what}: points must have shape (n, d) with d in (2, 3), got {x.shape}")
+    if any(math.isnan(c) for c in x.chunks[0]):
+        raise ValueError(f"{what}: the chunk sizes along the rows are unknown; call x.compute_chunk_sizes() first")
+    if not (np.issubdtype(x.dtype, np.number) or x.dtype == np.bool_) or np.issubdtype(x.dtype, np.complexfloating):
+        raise ValueError(f"{what}: points must be real numbers, got dtype {x.dtype}")
+    if len(x.chunks[1]) != 1:
+        x = x.rechunk({1: -1})
+    return x
+
+
+def _offsets(x: da.Array) -> np.ndarray:
+    """Global row of each chunk's first point, and n last."""
+    return np.concatenate([[0], np.cumsum(x.chunks[0], dtype=np.int64)])
+
+
+def _chunk_array(block, start: int, what: str) -> np.ndarray:
+    """A chunk as C-contiguous float64 (n, d); ValueError naming the first
+    global row with NaN or an infinite coordinate."""
+    a = np.ascontiguousarray(np.asarray(block, dtype=np.float64))
+    finite = np.isfinite(a).all(axis=1)
+    if not finite.all():
+        row = start + int(np.argmin(finite))
+        raise ValueError(f"{what}: the points hold NaN or infinite coordinates (row {row})")
+    return a
+
+
+# ---- the tasks -------------------------------------------------------------------------
+#
+# A candidate set is (ids, coords, nbytes): global row ids (int64, ascending),
+# their coordinates (float64, (k, d)), and the bytes of candidate sets that
+# the tasks below it passed on (ids and coordinates; counted for the
+# attribute transfer_bytes).
+
+def _vertices(coords: np.ndarray, threads: int) -> Optional[np.ndarray]:
+    """The local indices (ascending) of the hull vertices of coords, or None
+    where flipflop.ConvexHull raises for it (fewer than d + 1 points or a
+    lower-dimensional set: all of them are candidates). coords is finite."""
+    if coords.shape[0] < coords.shape[1] + 1:
+        return None
+    try:
+        v = _MemoryHull(coords, threads=threads).vertices
+    except ValueError:
+        return None
+    return np.sort(v)
+
+
+def _chunk_candidates(block, start: int, threads: int):
+    a = _chunk_array(block, start, _WHAT)
+    v = _vertices(a, threads)
+    if v is None:
+        ids, coords = np.arange(start, start + a.shape[0], dtype=np.int64), a
+    else:
+        ids, coords = v.astype(np.int64) + start, np.ascontiguousarray(a[v])
+    return ids, coords, 0
+
+
+def _union(parts):
+    ids = np.concatenate([p[0] for p in parts])
+    coords = np.concatenate([p[1] for p in parts])
+    order = np.argsort(ids, kind="stable")  # the parts come in order already: then a no-op
+    passed = sum(p[2] + p[0].nbytes + p[1].nbytes for p in parts)
+    return ids[order], np.ascontiguousarray(coords[order]), passed
+
+
+def _merge_candidates(threads: int, *parts):
+    ids, coords, passed = _union(parts)
+    v = _vertices(coords, threads)
+    if v is None:
+        return ids, coords, passed
+    return ids[v], np.ascontiguousarray(coords[v]), passed
+
+
+def _final_hull(threads: int, *parts) -> dict:
+    """The root: flipflop.ConvexHull of the candidates (its ValueError for a
+    lower-dimensional input is the in-memory call's, which sees the same
+    points: every part of such an input forwards all its points), indices
+    mapped to global ids."""
+    ids, coords, passed = _union(parts)
+    h = _MemoryHull(coords, threads=threads)
+    vertices = np.unique(h.simplices)  # the hull's vertices, ascending (local = rank among the candidates)
+    return {"simplices": ids[h.simplices], "vertices": ids[h.vertices], "neighbors": h.neighbors,
+            "equations": h.equations, "volume": h.volume, "area": h.area,
+            "vertex_ids": ids[vertices], "vertex_coords": np.ascontiguousarray(coords[vertices]),
+            "reduction_bytes": passed}
+
+
+def _certify_chunk(block, start: int, stop: int, hull: dict) -> Certificate:
+    """The chunk's certificate: the final facets are the canonical hull of the
+    hull's vertices outside [start, stop) with the chunk's points, in global
+    order (the hull's vertices inside the range are the chunk's own rows)."""
+    a = _chunk_array(block, start, _WHAT)
+    ids, coords, simplices = hull["vertex_ids"], hull["vertex_coords"], hull["simplices"]
+    lo, hi = np.searchsorted(ids, start), np.searchsorted(ids, stop)
+    before, after = coords[:lo], coords[hi:]
+    combined = np.concatenate([before, a, after])
+    s = simplices.ravel()
+    if len(s) and (s.min() < 0 or s.max() >= hull["npoints"]):
+        return Certificate(False, "index", f"a facet names a row outside 0..{hull['npoints'] - 1}",
+                           "hull%d" % a.shape[1], "canonical")
+    local = np.where(s < start, np.searchsorted(ids[:lo], s),
+                     np.where(s < stop, s - start + lo, lo + (stop - start) + np.searchsorted(ids[hi:], s)))
+    # a facet vertex outside the chunk that is not among the given vertices
+    outside = s[(s < start) | (s >= stop)]
+    known = np.isin(outside, ids)
+    if not known.all():
+        return Certificate(False, "index", f"facet vertex {int(outside[np.argmin(known)])} has no coordinates",
+                           "hull%d" % a.shape[1], "canonical")
+    return _certify("hull%d" % a.shape[1], combined, local.reshape(simplices.shape), canonical=True)
+
+
+def _for_certificates(hull: dict, n: int) -> dict:
+    """What each certificate task receives: the hull's vertices (ids and
+    coordinates) and facets, nothing else."""
+    return {"vertex_ids": hull["vertex_ids"], "vertex_coords": hull["vertex_coords"],
+            "simplices": hull["simplices"], "npoints": n}
+
+
+# ---- the graph -------------------------------------------------------------------------
+#
+# The tasks are impure (dask.delayed's default): every call computes afresh,
+# rather than finding a previous call's results still held by a cluster.
+
+def _client(compute_kwargs: dict):
+    """The dask.distributed Client that dask.compute(..., **compute_kwargs)
+    will use, or None (a local scheduler)."""
+    if "distributed" not in sys.modules:  # no Client can exist
+        return None
+    from distributed import Client
+    try:
+        get = dask.base.get_scheduler(scheduler=compute_kwargs.get("scheduler"))
+    except Exception:  # an unknown scheduler name: dask.compute will say so
+        return None
+    client = getattr(get, "__self__", None)
+    return client if isinstance(client, Client) else None
+
+
+def _placement(x: da.Array, compute_kwargs: dict):
+    """(x, the workers of each chunk or None). On a distributed cluster x is
+    persisted (nothing happens where it already is) and every task that reads
+    a chunk is restricted to the workers holding it, so that no chunk of
+    points crosses between workers, whatever the scheduler's load balancing
+    would do; allow_other_workers keeps a run alive when those workers are
+    lost (the chunk is then recomputed elsewhere)."""
+    client = _client(compute_kwargs)
+    if client is None:
+        return x, None
+    from distributed import wait
+    x = client.persist(x)
+    with client.as_current():  # wait() asks for the default client
+        wait(x)
+    who = {str(k): w for k, w in client.who_has(x).items()}  # keyed by str(key) in distributed 2022.12
+    keys = [k for row in x.__dask_keys__() for k in row]
+    return x, [list(who.get(str(k), who.get(k, ()))) or None for k in keys]
+
+
+def _on(workers, i: int):
+    """The annotation context for a task reading chunk i."""
+    if workers is None or workers[i] is None:
+        return contextlib.nullcontext()
+    return dask.annotate(workers=workers[i], allow_other_workers=True)
+
+
+def _certificate_tasks(x: da.Array, hull, workers=None) -> list:
+    """One delayed certificate per chunk of x against hull (a delayed or
+    concrete dict with vertex_ids, vertex_coords, simplices)."""
+    offsets = _offsets(x)
+    hull = dask.delayed(_for_certificates)(hull, int(x.shape[0]))
+    tasks = []
+    for i, b in enumerate(x.to_delayed().ravel()):
+        with _on(workers, i):
+            tasks.append(dask.delayed(_certify_chunk)(b, int(offsets[i]), int(offsets[i + 1]), hull))
+    return tasks
+
+
+def _reduction(x: da.Array, threads: int, split_every: int, workers=None):
+    """The delayed root (_final_hull's dict) of the tree over x's chunks."""
+    offsets = _offsets(x)
+    level = []
+    for i, b in enumerate(x.to_delayed().ravel()):
+        with _on(workers, i):
+            level.append(dask.delayed(_chunk_candidates)(b, int(offsets[i]), threads))
+    merge = dask.delayed(_merge_candidates)
+    while len(level) > split_every:
+        level = [merge(threads, *level[i:i + split_every]) for i in range(0, len(level), split_every)]
+    return dask.delayed(_final_hull)(threads, *level)
+
+
+def certify_chunks(x, simplices, vertex_points=None, *, compute_kwargs: Optional[dict] = None) -> List[Certificate]:
+    """The per-chunk certificates of a claimed hull of the dask array x: one
+    task per row-chunk checks (flipflop.certify, canonical=True) that
+    `simplices` (global row ids: 3D triangles, 2D the (k, 2) edges or the
+    vertex cycle, as flipflop.ConvexHull gives them) are the canonical hull
+    of the chunk's points together with the hull's vertices. All are
+    truthy exactly when `simplices` is flipflop.ConvexHull(x.compute())'s.
+    vertex_points: the coordinates of the hull's vertices (np.unique of
+    simplices, in that order); gathered from x where not given. Returns one
+    flipflop.Certificate per chunk, in chunk order (the constructor raises
+    CertificationError on the first that fails)."""
+    x = _dask_points(x, "certify_chunks")
+    d = x.shape[1]
+    s = np.asarray(simplices, dtype=np.int64)
+    if d == 2 and s.ndim == 1:
+        s = np.stack([s, np.roll(s, -1)], axis=1)
+    if s.ndim != 2 or s.shape[1] != d:
+        raise ValueError(f"certify_chunks: simplices must have shape (m, {d}), got {s.shape}")
+    if len(s) and (s.min() < 0 or s.max() >= x.shape[0]):
+        raise ValueError(f"certify_chunks: simplices name rows outside 0..{x.shape[0] - 1}")
+    ids = np.unique(s)
+    if vertex_points is None:
+        vertex_points = x[ids].compute(**(compute_kwargs or {}))
+    coords = np.ascontiguousarray(np.asarray(vertex_points, dtype=np.float64))
+    if coords.shape != (len(ids), d):
+        raise ValueError(f"certify_chunks: vertex_points must have shape ({len(ids)}, {d}), got {coords.shape}")
+    hull = {"vertex_ids": ids, "vertex_coords": coords, "simplices": s}
+    x, workers = _placement(x, compute_kwargs or {})
+    return list(dask.compute(*_certificate_tasks(x, hull, workers), **(compute_kwargs or {})))
+
+
+class ConvexHull:
+    """The convex hull of a dask array x of shape (n, 2) or (n, 3), with
+    flipflop.ConvexHull's attributes in global row indices, equal to
+    flipflop.ConvexHull(x.compute()) exactly (every array and float), on
+    any dask scheduler.
+
+    ConvexHull(x, *, threads=0, split_every=8, certify=True, **compute_kwargs)
+
+    x: a dask array (array-likes are wrapped with dask.array.asarray); any
+    row chunking (chunks of one point, empty chunks and chunks of interior
+    points included); the columns are brought into one chunk. Real dtypes,
+    taken as float64.
+    threads: worker threads of each task's compiled call (0: every core of
+    the process; on a cluster with several workers per machine, 1).
+    split_every: children per node of the reduction tree.
+    certify: run one certificate task per chunk (CertificationError, a
+    RuntimeError naming the chunk and the failed condition, where one
+    fails). Without it the answer is still each chunk's and the root's
+    certified hull, but the final facets are not checked against every
+    point.
+    compute_kwargs: passed to dask.compute (scheduler=..., ...).
+
+    Attributes (as flipflop.ConvexHull; docs/distributed_dask.md):
+      points      x itself, the dask array (not computed; on a cluster the
+                  run persists it and lets go of it when done)
+      simplices, vertices, neighbors, equations, volume, area
+      ndim, npoints, nsimplex, min_bound, max_bound (the bounds of the
+                  hull's vertices: those of all points)
+      coplanar    (0, 3) int64 (no qhull_options); good None
+      certificates  the per-chunk flipflop.Certificates (empty without
+                  certify)
+      transfer_bytes  bytes of the candidate sets (ids and coordinates)
+                  passed between tasks in the reduction, plus the hull's
+                  vertices and facets sent to each certificate task: an
+                  upper bound of what crosses between workers, never a
+                  chunk of points
+      nchunks     x's row-chunks
+
+    Bad input raises ValueError: NaN or infinity naming its global row; an
+    input with fewer than d + 1 points or lower-dimensional the in-memory
+    call's message (from the root, which then holds every point).
+    """
+
+    def __init__(self, x, *, threads: int = 0, split_every: Optional[int] = 8, certify: bool = True,
+                 **compute_kwargs):
+        x = _dask_points(x, _WHAT)
+        threads = int(threads)
+        if threads < 0:
+            raise ValueError(f"{_WHAT}: threads must be 0 (all cores) or positive, got {threads}")
+        split_every = 8 if split_every is None else int(split_every)
+        if split_every < 2:
+            raise ValueError(f"{_WHAT}: split_every must be at least 2, got {split_every}")
+        given = x
+        x, workers = _placement(x, compute_kwargs)
+        root = _reduction(x, threads, split_every, workers)
+        tasks = _certificate_tasks(x, root, workers) if certify else []
+        hull, *certificates = dask.compute(root, *tasks, **compute_kwargs)
+        for i, c in enumerate(certificates):
+            if not c:
+                off = _offsets(x)
+                raise CertificationError(i, (int(off[i]), int(off[i + 1])), c)
+        d = x.shape[1]
+        self.points, self.ndim, self.nchunks = given, d, len(x.chunks[0])
+        self.simplices, self.vertices, self.neighbors = hull["simplices"], hull["vertices"], hull["neighbors"]
+        self.equations, self.volume, self.area = hull["equations"], hull["volume"], hull["area"]
+        self.coplanar, self.good, self.polygons = np.zeros((0, 3), dtype=np.int64), None, None
+        self.certificates = certificates
+        vc = hull["vertex_coords"]
+        self.min_bound, self.max_bound = vc.min(axis=0), vc.max(axis=0)
+        broadcast = hull["vertex_ids"].nbytes + vc.nbytes + hull["simplices"].nbytes
+        self.transfer_bytes = int(hull["reduction_bytes"]) + broadcast * len(certificates)
+
+    @property
+    def npoints(self) -> int:
+        return int(self.points.shape[0])
+
+    @property
+    def nsimplex(self) -> int:
+        return int(self.simplices.shape[0])
+
+    def close(self) -> None:
+        """As scipy's: no resources to free (the hull is not incremental)."""
