@@ -230,19 +230,19 @@ Local local_blocks(const dist::ShardSet& s, std::uint64_t begin, std::uint64_t e
 }
 
 // Step 3: the final vertices in rows [begin, end) are this rank's points, bit
-// for bit.
+// for bit (each row read alone: mapping them would map the pages around each).
 void check_vertex_rows(const dist::ShardSet& s, std::uint64_t begin, std::uint64_t end, const dist::FinalHull& h,
                        Status& st) {
   const auto d = static_cast<std::size_t>(s.dim);
+  std::vector<double> x(d);
   for (const dist::Piece& p : dist::pieces(s, begin, end)) {
     const dist::Shard& sh = s.shards[p.shard];
     const std::uint64_t lo = sh.first_row + p.row, hi = lo + p.count;
-    auto it = std::lower_bound(h.vertices.ids.begin(), h.vertices.ids.end(), lo);
-    if (it == h.vertices.ids.end() || *it >= hi) continue;
-    const dist::MappedRows rows(sh, s.dim, p.row, p.count);
-    for (; it != h.vertices.ids.end() && *it < hi; ++it) {
+    for (auto it = std::lower_bound(h.vertices.ids.begin(), h.vertices.ids.end(), lo);
+         it != h.vertices.ids.end() && *it < hi; ++it) {
       const auto k = static_cast<std::size_t>(it - h.vertices.ids.begin());
-      if (!std::equal(h.vertices.point(k), h.vertices.point(k) + d, rows.data() + (*it - lo) * d))
+      dist::read_row(sh, s.dim, *it - sh.first_row, x.data());
+      if (!std::equal(h.vertices.point(k), h.vertices.point(k) + d, x.begin()))
         st.set(3, *it,
                "rank " + std::to_string(rank_of()) + ": vertex " + std::to_string(*it) +
                    " of the final hull does not have the coordinates of row " + std::to_string(*it - sh.first_row) +

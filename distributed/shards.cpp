@@ -62,6 +62,15 @@ std::vector<Piece> pieces(const ShardSet& s, std::uint64_t begin, std::uint64_t 
   return out;
 }
 
+void read_row(const Shard& shard, int dim, std::uint64_t row, double* out) {
+  const int fd = ::open(shard.path.c_str(), O_RDONLY);
+  if (fd < 0) throw io::InputError(shard.path, std::string("cannot open: ") + std::strerror(errno));
+  const std::size_t bytes = static_cast<std::size_t>(dim) * sizeof(double);
+  const ssize_t r = ::pread(fd, out, bytes, static_cast<off_t>(shard.data_offset + row * bytes));
+  ::close(fd);
+  if (r != static_cast<ssize_t>(bytes)) throw io::InputError(shard.path, "cannot read row " + std::to_string(row));
+}
+
 MappedRows::MappedRows(const Shard& shard, int dim, std::uint64_t row, std::uint64_t count) : dim_(dim) {
   const std::uint64_t row_bytes = static_cast<std::uint64_t>(dim) * sizeof(double);
   const std::uint64_t offset = shard.data_offset + row * row_bytes, bytes = count * row_bytes;

@@ -48,6 +48,11 @@ struct Piece {
 };
 std::vector<Piece> pieces(const ShardSet& s, std::uint64_t begin, std::uint64_t end);
 
+// Row `row` of a shard (dim doubles) read with pread: single rows spread
+// over a shard (the final hull's vertices) without mapping the pages around
+// them. Throws io::InputError when the file cannot be read.
+void read_row(const Shard& shard, int dim, std::uint64_t row, double* out);
+
 // Rows [row, row + count) of one shard, mapped read-only (mmap). data() is
 // the first row's first coordinate, count * dim doubles in C order; when the
 // rows are not 8-byte aligned in the file they are copied into memory

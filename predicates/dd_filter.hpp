@@ -186,6 +186,35 @@ FF_HD constexpr int dd_beta(int n, bool lifted) {
   return lifted ? b + 9 + 4 * (n - 1) : b;
 }
 
+// The entries of dd_filter_sign's matrix T (row i: p_i - p_{K-1}, and with
+// weights the lifted difference Σ (p_i - p_{K-1})_j^2 - (w_i - w_{K-1})) in
+// double-double, and their magnitudes from the heads (|d.h|; lifted: Σ d.h^2 +
+// |Δw.h|), from which its threshold is computed. Shared with the filter's
+// deterministic sensitivity test (proptests/filter_sensitivity_test.cpp).
+template <int K, bool Fma>
+FF_HD FF_FORCEINLINE void dd_filter_entries(const double* const* p, const double* w, DDv<Fma>* t, Mag* m) {
+  constexpr int N = K - 1;
+  using V = DDv<Fma>;
+  const int ncoord = w ? N - 1 : N;
+  const double* base = p[K - 1];
+  for (int i = 0; i < N; ++i) {
+    double lmag = 0.0;
+    for (int j = 0; j < ncoord; ++j) {
+      const V d = V::difference(p[i][j], base[j]);
+      t[i * N + j] = d;
+      m[i * N + j].v = std::fabs(d.h);
+      lmag += d.h * d.h;
+    }
+    if (w) {
+      V lift = -V::difference(w[i], w[K - 1]);
+      lmag += std::fabs(lift.h);
+      for (int j = 0; j < ncoord; ++j) lift = lift + t[i * N + j] * t[i * N + j];
+      t[i * N + N - 1] = lift;
+      m[i * N + N - 1].v = lmag;
+    }
+  }
+}
+
 // +1 / -1 when certain; 0 when undecided; 2 when an input value lies outside
 // the window (the caller's other filters and exact stages decide). `window`:
 // the caller knows every input value to lie in the window
@@ -215,24 +244,8 @@ FF_HD FF_FORCEINLINE int dd_filter_sign(const double* const* p, const double* w,
   }
   using V = DDv<Fma>;
   V t[N * N];
-  Mag m[N * N];  // entry magnitudes from the heads: |d.h|, Σ d.h^2 + |Δw.h|
-  const double* base = p[K - 1];
-  for (int i = 0; i < N; ++i) {
-    double lmag = 0.0;
-    for (int j = 0; j < ncoord; ++j) {
-      const V d = V::difference(p[i][j], base[j]);
-      t[i * N + j] = d;
-      m[i * N + j].v = std::fabs(d.h);
-      lmag += d.h * d.h;
-    }
-    if (w) {
-      V lift = -V::difference(w[i], w[K - 1]);
-      lmag += std::fabs(lift.h);
-      for (int j = 0; j < ncoord; ++j) lift = lift + t[i * N + j] * t[i * N + j];
-      t[i * N + N - 1] = lift;
-      m[i * N + N - 1].v = lmag;
-    }
-  }
+  Mag m[N * N];
+  dd_filter_entries<K, Fma>(p, w, t, m);
   if constexpr (Fma && K == 3) {
     // Exact differences: det T = a d - b c of four doubles, a = t00, b =
     // t01, c = t10, d = t11. Kahan's algorithm with FMA: w = fl(b c), e =

@@ -41,6 +41,9 @@ class RationalKernel : public KernelPoint {
 
   const pred::RationalPoint& point() const { return p_; }
   pred::PointId id() const { return id_; }
+  // side()'s per-input filter bound (+inf: none; the exact stage decides):
+  // for the deterministic sensitivity test (filter_sensitivity_test.cpp)
+  double static_bound() const { return static_bound_; }
 
  private:
   const PointSet* ps_;
