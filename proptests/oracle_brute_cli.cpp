@@ -14,7 +14,9 @@
 //        dt     d = 2..5 columns; the Delaunay triangulation (weights 0)
 //        rt     d + 1 columns, the last one the weight (d = 2..5); the
 //               regular triangulation (lifted height |x|^2 - w)
-//        dt and rt print the canonical simplices (positively oriented,
+//        dt-furthest  d = 2..5 columns; the furthest-site Delaunay
+//               triangulation (the upper hull of the same lifted points)
+//        dt, dt-furthest and rt print the canonical simplices (positively oriented,
 //        smallest first, lines sorted), then one line "redundant:" followed
 //        by the indices of the points in no simplex.
 // FILE   one point per line, whitespace-separated decimal or hexadecimal
@@ -40,7 +42,7 @@ namespace sb = flipflop::test::sos_brute;
 namespace {
 
 int usage(const std::string& why) {
-  std::cerr << "oracle_brute_cli: " << why << "\nusage: oracle_brute_cli hull2|hull3|dt|rt FILE\n";
+  std::cerr << "oracle_brute_cli: " << why << "\nusage: oracle_brute_cli hull2|hull3|dt|dt-furthest|rt FILE\n";
   return 2;
 }
 
@@ -49,7 +51,8 @@ int usage(const std::string& why) {
 int main(int argc, char** argv) {
   if (argc != 3) return usage("two arguments needed");
   const std::string kind = argv[1];
-  if (kind != "hull2" && kind != "hull3" && kind != "dt" && kind != "rt") return usage("unknown kind '" + kind + "'");
+  if (kind != "hull2" && kind != "hull3" && kind != "dt" && kind != "dt-furthest" && kind != "rt")
+    return usage("unknown kind '" + kind + "'");
   std::ifstream f(argv[2]);
   if (!f) return usage(std::string("cannot read ") + argv[2]);
   std::vector<std::vector<double>> rows;
@@ -99,7 +102,7 @@ int main(int argc, char** argv) {
   } else if (kind == "hull3") {
     std::cout << sb::text(sb::hull3(in));
   } else {
-    const sb::Rt r = sb::rt(in);
+    const sb::Rt r = sb::rt(in, kind == "dt-furthest");
     std::cout << sb::text(r.simplices) << "redundant:";
     for (auto v : r.redundant) std::cout << ' ' << v;
     std::cout << '\n';

@@ -53,6 +53,7 @@
 #include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
 #include "reference/rt2/rt2.hpp"
+#include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
 using namespace flipflop;
@@ -221,6 +222,36 @@ std::string check_rt(const Input& in) {
   return bad.empty() ? "" : describe(in, true) + bad;
 }
 
+// The furthest-site triangulation (RT+1 with every power sign negated,
+// ref::rtd_incremental's `furthest`; weights kept: heights -(|x|^2 - w))
+// against the brute force's upper hull, and certify::rtd's furthest mode:
+// it accepts that answer and rejects the (lower) regular triangulation where
+// the two differ.
+std::string check_furthest(const Input& in) {
+  const PointSet ps = to_ps(in, true);
+  std::string bad;
+  if (!sb::spans(in)) {
+    bad += expect_rejected("rtd_incremental furthest", [&] { ref::rtd_incremental(ps, nullptr, true); });
+  } else {
+    const sb::Rt r = sb::rt(in, /*furthest=*/true);
+    const std::string want = sb::text(r.simplices), want_red = sb::cycle_text(r.redundant);
+    bad += guarded("rtd_incremental furthest", [&] {
+      const ref::Rtd got = ref::rtd_incremental(ps, nullptr, true);
+      std::string out = mismatch("rtd_incremental furthest", want, lib_text(tuples(got.simplices))) +
+                        mismatch("rtd_incremental furthest redundant", want_red,
+                                 sb::cycle_text(Tuple(got.redundant.begin(), got.redundant.end())));
+      const certify::Report c = certify::rtd(ps, got.simplices, certify::Level::canonical, true);
+      if (!c.ok) out += "  certify::rtd (furthest) rejects it: " + c.message() + "\n";
+      const ref::Rtd lower = ref::rtd_incremental(ps);
+      const bool same = tuples(lower.simplices) == tuples(got.simplices);
+      if (!same && certify::rtd(ps, lower.simplices, certify::Level::canonical, true).ok)
+        out += "  certify::rtd (furthest) accepts the lower regular triangulation\n";
+      return out;
+    });
+  }
+  return bad.empty() ? "" : describe(in, true) + bad;
+}
+
 // ---- deterministic degenerate families ---------------------------------------------------
 struct Gen {
   std::mt19937_64 g;
@@ -347,9 +378,12 @@ Input family_input(int f, int d, int n, std::uint64_t seed) {
   return in;
 }
 
-enum class Kind { hull2, hull3, rt };
+enum class Kind { hull2, hull3, rt, furthest };
 std::string check(Kind k, const Input& in) {
-  return k == Kind::hull2 ? check_hull2(in) : k == Kind::hull3 ? check_hull3(in) : check_rt(in);
+  return k == Kind::hull2   ? check_hull2(in)
+         : k == Kind::hull3 ? check_hull3(in)
+         : k == Kind::rt    ? check_rt(in)
+                            : check_furthest(in);
 }
 
 // Every family, n = nlo..nhi, `seeds` seeds each; counts the cases and the
@@ -423,6 +457,13 @@ TEST_CASE("oracle: rtd (RT+1) equals the SoS lower hull on degenerate and random
 TEST_CASE("oracle: rtd (RT+1) equals the SoS lower hull on degenerate and random sets in d = 4 and 5") {
   sweep(Kind::rt, 4, 5, 9, 8);
   sweep(Kind::rt, 5, 6, 9, 4);
+}
+
+TEST_CASE("oracle: the furthest-site triangulation (RT+1, power signs negated) equals the SoS upper hull in d = 2 to 5") {
+  sweep(Kind::furthest, 2, 3, 11, 20);
+  sweep(Kind::furthest, 3, 4, 9, 10);
+  sweep(Kind::furthest, 4, 5, 8, 4);
+  sweep(Kind::furthest, 5, 6, 8, 2);
 }
 
 TEST_CASE("oracle: rtd (RT+1) equals the SoS lower hull in a larger sweep in d = 3 to 5", "[long]") {

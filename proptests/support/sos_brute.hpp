@@ -212,7 +212,10 @@ struct Rt {
   Tuple redundant;               // sorted
 };
 
-inline Rt rt(const Input& in) {
+// furthest: the furthest-site triangulation, the upper hull of the same
+// perturbed lifted points — every other lifted point strictly BELOW the
+// simplex's lifted hyperplane.
+inline Rt rt(const Input& in, bool furthest = false) {
   const int d = in.d;
   const auto n = static_cast<std::uint32_t>(in.n());
   const int above = (d % 2 == 1) ? 1 : -1;  // (-1)^(d+1)
@@ -230,7 +233,7 @@ inline Rt rt(const Input& in) {
     for (std::uint32_t q = 0; q < n && lower; ++q) {
       if (std::find(t.begin(), t.end(), q) != t.end()) continue;
       rows.back() = q;
-      lower = power(in, rows) == above;
+      lower = power(in, rows) == (furthest ? -above : above);
     }
     if (lower) {
       r.simplices.push_back(canonical(pos));

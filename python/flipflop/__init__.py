@@ -702,7 +702,7 @@ class Delaunay(_QhullUser):
                    exact), the triangulation then being that of the other
                    points (as Qhull)
       redundant    the points that are not vertices
-      nsimplex, npoints, ndim, min_bound, max_bound, furthest_site (False),
+      nsimplex, npoints, ndim, min_bound, max_bound, furthest_site,
       vertices     scipy's deprecated alias of simplices (DeprecationWarning)
     The floating-point attributes are computed on first use, like scipy's
     transform. find_simplex(xi) locates points exactly (-1: outside the
@@ -716,8 +716,18 @@ class Delaunay(_QhullUser):
     simplices per cube of a grid in d >= 3), certified (`dt2 --strict`,
     `rtd --strict` on the command line).
 
-    furthest_site=True (the furthest-site triangulation) is not available
-    yet: ValueError. incremental=True allows add_points(points,
+    furthest_site=True: the furthest-site Delaunay triangulation (every
+    dimension 2..5, unweighted, the 'reference' backend; no strict view):
+    the upper hull of the lifted points projected, its vertices those of
+    the convex hull (the other points are in `redundant`; `coplanar` is
+    empty, as scipy's), certified exactly. Its canonical answer is the upper
+    hull of flipflop's perturbed lifted points (x + ε_x, |x|^2 + ε_h): on
+    cospherical input it splits the ties as that perturbation decides
+    (Qhull's may differ there). `equations` then point up (outward of the
+    upper hull, as scipy's), and QGn / QG-n's `good` marks the simplices
+    whose circumsphere point n lies strictly outside of / not. RT+1 inserts
+    every point (interior points become redundant as the hull grows): for
+    modest inputs. incremental=True allows add_points(points,
     restart=False, *, weights=None); it recomputes the triangulation of all
     points (the canonical answer does not depend on the insertion order, so
     it is the answer an in-place insertion would give); in-place insertion
@@ -748,14 +758,18 @@ class Delaunay(_QhullUser):
                 isinstance(furthest_site, (int, np.integer)) and furthest_site in (0, 1)):
             raise ValueError("Delaunay: furthest_site must be a bool (weights are keyword-only: "
                              "Delaunay(points, weights=w))")
-        if furthest_site:
-            raise ValueError("Delaunay: furthest_site=True is not available: flipflop does not compute the "
-                             "furthest-site triangulation yet")
+        self.furthest_site = bool(furthest_site)
+        if self.furthest_site and strict:
+            raise ValueError("Delaunay: furthest_site=True has no strict view (strict=True)")
+        if self.furthest_site and weights is not None:
+            raise ValueError("Delaunay: furthest_site=True takes no weights")
+        if self.furthest_site and backend not in (None, "reference"):
+            raise ValueError(f"Delaunay: furthest_site=True is computed by the 'reference' backend, got {backend!r}")
         a = _points(points, (2, 3, 4, 5), "Delaunay", finite=False)
         d = a.shape[1]
         self._options = _qhull_options(qhull_options, "Delaunay", "Qbb Qc Qz Qx Q12" if d > 4 else "Qbb Qc Qz Q12")
         self._strict, self._threads = bool(strict), _threads(threads, "Delaunay")
-        self._backend = _backend(backend, _DELAUNAY_BACKENDS[d], "Delaunay")
+        self._backend = "reference" if self.furthest_site else _backend(backend, _DELAUNAY_BACKENDS[d], "Delaunay")
         self._incremental, self._closed = bool(incremental), False
         self._update(a, _weights(weights, a.shape[0], "Delaunay"))
 
@@ -785,7 +799,7 @@ class Delaunay(_QhullUser):
             sub = np.ascontiguousarray(a[keep])
             sw = None if w is None else np.ascontiguousarray(w[keep])
         simplices, redundant = _native("Delaunay", _flipflop.triangulate, sub, sw, self._backend, self._strict,
-                                       self._threads)
+                                       self._threads, self.furthest_site)
         if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
             simplices, redundant = keep[simplices], keep[redundant]
         d = a.shape[1]
@@ -953,6 +967,8 @@ class Delaunay(_QhullUser):
             for k in range(d + 1):
                 n[:, k] = (-1) ** k * _det(np.delete(Ms, k, axis=2))
             n *= (-1) ** (d + 1)
+            if self.furthest_site:  # the upper hull's facets: outward is up
+                n = -n
             n /= np.linalg.norm(n, axis=1)[:, None]
             off = -(n * Z[:, 0]).sum(axis=1)
         return np.concatenate([n, off[:, None]], axis=1)
@@ -976,7 +992,7 @@ class Delaunay(_QhullUser):
         return indptr, dst.astype(np.int64)
 
     def _compute_coplanar(self) -> np.ndarray:
-        if not self._options.coplanar or len(self.redundant) == 0:
+        if not self._options.coplanar or len(self.redundant) == 0 or self.furthest_site:
             return np.zeros((0, 3), dtype=np.int64)
         r = self.redundant
         s = self.find_simplex(self.points[r])
@@ -1012,7 +1028,10 @@ class Delaunay(_QhullUser):
                 rows.append(r + [sum(c * c for c in r) - wv + fwx])
             return rows
 
-        inside = _det_signs(mats, exact, mags) == _INSPHERE[d]
+        # visible from the lifted point n: strictly inside the circumsphere
+        # (below the lower hull's facet); furthest site: strictly outside
+        # (above the upper hull's facet)
+        inside = _det_signs(mats, exact, mags) == (-_INSPHERE[d] if self.furthest_site else _INSPHERE[d])
         return (inside if self._options.visible else ~inside).astype(np.int64)
 
 

@@ -599,11 +599,18 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 // as `flipflop rt3|dt3`) or RT+1, d = 4, 5 by RT+1; all canonical. The
 // strict views are derived from the certified canonical answer by the
 // reference's rules (strict_rt2, strict_rtd), whichever backend computed it.
+// furthest: the furthest-site triangulation (any d, the reference's RT+1 with
+// every power sign negated: ref::rtd_incremental's `furthest`), certified by
+// certify::rtd with the same negation; not with strict.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
-                                              const std::string& backend, bool strict, int threads) {
+                                              const std::string& backend, bool strict, int threads,
+                                              bool furthest) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
+  if (furthest && (strict || backend != "reference"))
+    throw std::invalid_argument("the furthest-site triangulation is computed by the 'reference' backend, "
+                                "without strict");
   if (!(backend == "reference" || (backend == "cpu" && (d == 2 || d == 3)) || (gpu_backend(backend) && d == 2)))
     throw std::invalid_argument("Delaunay backends: 'cpu' (2D, 3D), 'reference'" +
                                 (backend_list("").empty() ? std::string() : backend_list("") + " (2D)") + "; got '" +
@@ -616,7 +623,13 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
   {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
-    if (d == 2) {
+    if (furthest) {
+      ref::Rtd r = ref::rtd_incremental(ps, nullptr, /*furthest=*/true);
+      check_certified(certify::rtd(ps, r.simplices, certify::Level::canonical, /*furthest=*/true),
+                      "furthest-site Delaunay");
+      simplices = std::move(r.simplices);
+      redundant = std::move(r.redundant);
+    } else if (d == 2) {
       cpu::Rt2Options o;
       o.threads = threads;
       if (backend == "cpu") {  // certified from the kernel's witness, as `flipflop rt2|dt2`
@@ -671,7 +684,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       }
     }
   }
-  return {d == 2      ? cells_array(tris, 3)
+  return {d == 2 && !furthest ? cells_array(tris, 3)
           : flat_tets ? cells_array(tets, 4)
                       : cells_array(simplices, static_cast<std::size_t>(d + 1)),
           list_array(redundant)};
@@ -2085,7 +2098,7 @@ NB_MODULE(_flipflop, m) {
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("threads"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
-        nb::arg("strict"), nb::arg("threads"));
+        nb::arg("strict"), nb::arg("threads"), nb::arg("furthest") = false);
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
         nb::arg("queries"));

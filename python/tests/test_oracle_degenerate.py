@@ -380,3 +380,33 @@ def test_the_sets_are_degenerate_the_perturbation_decides(name, points, kind):
         mapped = _canonical_rows(perm[simplices])
         told += bool(rt_differences(tri, (mapped, np.sort(perm[redundant]))))
     assert told > 0, name
+
+
+# ---- the furthest-site triangulation (Delaunay(furthest_site=True)) ------------------------
+# The upper hull of the same perturbed lifted points: the brute force keeps
+# the simplices with every other lifted point strictly below (sos_brute.hpp
+# rt(in, furthest)); the bindings compute it by RT+1 with every power sign
+# negated. On these sets (cocircular and cospherical points, grids, points on
+# the hull's edges, duplicates) the ties are the perturbation's to break.
+FURTHEST = ([(n, p) for n, p in SETS2.items()] + [(n, p) for n, p in SETS3.items()] +
+            [(n, p) for n, p in SETS4.items()] + [(n, p) for n, p in SETS5.items()])
+
+
+@pytest.mark.parametrize("name,points", FURTHEST, ids=[n for n, _ in FURTHEST])
+def test_furthest_site_equals_brute_force(name, points):
+    answer = brute("dt-furthest", points)
+    tri = flipflop.Delaunay(points, furthest_site=True)
+    assert tri.furthest_site
+    _assert_same(f"{name}, furthest site", rt_differences(tri, answer))
+    # (its vertices need not be ConvexHull's on these sets: the hull's
+    # perturbation has d coordinates, the lifted one d + 1, so duplicates and
+    # points inside hull edges may be decided differently)
+
+
+def test_furthest_site_differs_from_delaunay_and_planted_errors_are_detected():
+    pts = _circle25()
+    near, far = brute("dt", pts), brute("dt-furthest", pts)
+    assert differences(near[0], far[0])  # the perturbation's two hulls differ on cocircular points
+    tri = flipflop.Delaunay(pts, furthest_site=True)
+    assert not rt_differences(tri, far)
+    assert rt_differences(tri, near)

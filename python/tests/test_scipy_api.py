@@ -527,9 +527,13 @@ def test_bad_input_raises_like_scipy():
         with pytest.raises(ValueError):
             ours(p[None])  # scipy crashes (segmentation fault) on this one
     with pytest.raises(ValueError, match="furthest_site"):
-        flipflop.Delaunay(p, furthest_site=True)
-    with pytest.raises(ValueError):
-        flipflop.Delaunay(p[:, :2], True)
+        flipflop.Delaunay(p, furthest_site="yes")
+    with pytest.raises(ValueError, match="furthest_site"):
+        flipflop.Delaunay(p, furthest_site=True, strict=True)
+    with pytest.raises(ValueError, match="furthest_site"):
+        flipflop.Delaunay(p, furthest_site=True, weights=np.zeros(len(p)))
+    with pytest.raises(ValueError, match="furthest_site"):
+        flipflop.Delaunay(p, furthest_site=True, backend="cpu")
     t = flipflop.Delaunay(p)
     with pytest.raises(ValueError):
         t.plane_distance(p[:, :2])
@@ -652,3 +656,78 @@ def test_hull_coplanar_where_floating_point_cannot_tell():
         assert set(h.coplanar[:, 0].tolist()) == set(range(1, 44)) - set(h.vertices.tolist())
         if strict:
             assert h.vertices.tolist() == [0, 1, 2, 3] and len(h.coplanar) == 40
+
+
+# ---- furthest_site=True ------------------------------------------------------------------
+# Random points (general position: one furthest-site triangulation, Qhull's
+# and flipflop's alike); the defining property checked exactly: every
+# simplex's circumsphere holds every input point (closed), i.e. every lifted
+# point lies on or below the simplex's lifted hyperplane. (Degenerate sets:
+# test_oracle_degenerate.py, against the independent brute force.)
+
+def _circumsphere_holds_all(points, simplex):
+    """Exact: every point p has |p - c|^2 <= r^2 for the circumsphere
+    (c, r) of the simplex, decided as the sign of the lifted determinant."""
+    P = [[Fraction(float(c)) for c in row] for row in points]
+    S = [P[i] for i in simplex]
+    d = len(P[0])
+
+    def lifted(p, o):
+        r = [a - b for a, b in zip(p, o)]
+        return r + [sum(x * x for x in r)]
+
+    o = S[0]
+    assert fdet([lifted(v, o)[:d] for v in S[1:]]) != 0
+
+    def side(p):  # zero on the circumsphere, one sign inside, the other outside
+        return fdet([lifted(v, o) for v in S[1:]] + [lifted(p, o)])
+
+    centroid = [sum(v[j] for v in S) / (d + 1) for j in range(d)]  # strictly inside the sphere
+    inside = side(centroid)
+    assert inside != 0
+    return all(side(p) * inside >= 0 for p in P)
+
+
+@pytest.mark.parametrize("d,n", [(2, 60), (3, 40), (4, 25)])
+def test_furthest_site_random_equals_scipy_and_holds_every_point(d, n):
+    rng = np.random.default_rng(100 + d)
+    p = rng.standard_normal((n, d))
+    ours, theirs = flipflop.Delaunay(p, furthest_site=True), ss.Delaunay(p, furthest_site=True)
+    assert ours.furthest_site is True and theirs.furthest_site
+    assert {tuple(sorted(s)) for s in ours.simplices.tolist()} == {tuple(sorted(s)) for s in theirs.simplices.tolist()}
+    hull = ss.ConvexHull(p)
+    assert sorted(np.unique(ours.simplices).tolist()) == sorted(hull.vertices.tolist())
+    assert sorted(ours.redundant.tolist()) == sorted(set(range(n)) - set(hull.vertices.tolist()))
+    for s in ours.simplices[:12]:
+        assert _circumsphere_holds_all(p, s)
+    # (the check can fail: a Delaunay simplex's circumsphere is empty instead)
+    assert not any(_circumsphere_holds_all(p, s) for s in flipflop.Delaunay(p).simplices[:5])
+    # equations: outward of the upper hull (up), every lifted point on or below
+    assert (ours.equations[:, d] > 0).all() and (theirs.equations[:, d] > 0).all()
+    dist = ours.plane_distance(p)
+    assert (dist <= 1e-9 * np.abs(ours.lift_points(p)).max()).all()
+    # the simplices tile the hull: find_simplex locates points inside it
+    q = p[hull.vertices].mean(axis=0) + 0.01 * rng.standard_normal((50, d))
+    found = ours.find_simplex(q)
+    assert (found >= 0).all()
+    bary = np.einsum("ijk,ik->ij", ours.transform[found, :d], q - ours.transform[found, d])
+    assert (bary >= -1e-9).all() and (bary.sum(axis=1) <= 1 + 1e-9).all()
+    assert (ours.find_simplex(p.max(axis=0) + 1.0) == -1).all()
+    assert ours.coplanar.shape == (0, 3) == theirs.coplanar.shape
+
+
+def test_furthest_site_add_points_and_good():
+    rng = np.random.default_rng(7)
+    p = rng.random((30, 2))
+    t = flipflop.Delaunay(p[:20], furthest_site=True, incremental=True)
+    t.add_points(p[20:])
+    whole = flipflop.Delaunay(p, furthest_site=True)
+    assert np.array_equal(t.simplices, whole.simplices) and t.furthest_site
+    # QG0: the simplices whose circumsphere point 0 lies strictly outside of
+    # (visible from its lifted point), the triangulation that of the others
+    g = flipflop.Delaunay(p, furthest_site=True, qhull_options="QG0")
+    others = np.arange(1, 30)
+    for s, good in zip(g.simplices, g.good):
+        assert 0 not in s
+        centre_ok = _circumsphere_holds_all(np.concatenate([p[others], p[:1]]), [list(others).index(v) for v in s])
+        assert bool(good) == (not centre_ok)

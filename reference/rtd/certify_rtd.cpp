@@ -53,6 +53,7 @@ struct Checker {
   int d;
   Orientation given;
   bool exact = false;  // Level::exact: unperturbed signs (may be 0), weak conditions
+  bool furthest = false;  // the furthest-site triangulation: every power sign negated
   bool swap_last_two() const { return given == Orientation::volume && d % 2 == 1; }
   pred::Pt P(Index i) const { return {i, ps.point(i)}; }
   pred::WPt W(Index i) const { return {i, ps.point(i), ps.weight(i)}; }
@@ -87,9 +88,9 @@ struct Checker {
         rows[i] = p[i].x;
         w[i] = p[i].w;
       }
-      return pred::power_d_exact(d, rows, w);
+      return furthest ? -pred::power_d_exact(d, rows, w) : pred::power_d_exact(d, rows, w);
     }
-    return pred::power_d(d, p);
+    return furthest ? -pred::power_d(d, p) : pred::power_d(d, p);
   }
 };
 
@@ -252,7 +253,7 @@ std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Ind
 }
 }  // namespace rtd_detail
 
-Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level) {
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest) {
   const int d = ps.dim;
   const bool exact = level == Level::exact;
   if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2..5");
@@ -269,6 +270,7 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
                                                 " are not sorted or repeat");
   }
   Checker ck{ps, d, Orientation::volume, exact};
+  ck.furthest = furthest;
   Facets F;
   if (std::string why = tiling(ck, S, F); !why.empty()) return fail_from(why);
   // (the tiling covers a full-dimensional convex region, so the input spans R^d)
@@ -288,7 +290,8 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
         return Report::fail("locally-regular", "the facet between " + simplex_str(S[s]) + " and " + simplex_str(u) +
                                                    " is not locally regular: the lifted point of " + std::to_string(b) +
                                                    " is not " + (exact ? "on or above" : "strictly above") +
-                                                   " the lifted " + simplex_str(S[s]));
+                                                   " the lifted " + simplex_str(S[s]) +
+                                                   (furthest ? " (furthest site: the heights negated)" : ""));
     }
 
   // every missing point redundant: locate it (visibility walk, perturbed),
@@ -338,7 +341,8 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
       return Report::fail("missing-point-redundant",
                           "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is " +
                               (exact ? "strictly below" : "not strictly above") + " the lifted simplex " +
-                              simplex_str(S[static_cast<std::size_t>(found)]));
+                              simplex_str(S[static_cast<std::size_t>(found)]) +
+                              (furthest ? " (furthest site: the heights negated)" : ""));
     cur = static_cast<std::size_t>(found);
   }
   (void)w;

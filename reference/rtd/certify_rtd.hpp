@@ -87,7 +87,13 @@ namespace flipflop::certify {
 // linear function is then convex (weakly regular facets) and interpolates
 // the lifted vertices with every other lifted point on or above it: it is
 // the lower hull (Thm 2.2, weak form), i.e. a regular triangulation.
-Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level = Level::canonical);
+//
+// furthest: the furthest-site triangulation (ref::rtd_incremental's
+// `furthest`): the same conditions with every power_d sign negated — the lower
+// hull of the negated lifted heights, i.e. the upper hull of the lifted points;
+// the argument above holds for any heights.
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level = Level::canonical,
+           bool furthest = false);
 
 namespace rtd_detail {
 // The structural part (conditions simplex-indices, simplex-orientation,

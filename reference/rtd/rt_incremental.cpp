@@ -258,7 +258,7 @@ struct Inserter {
 
 }  // namespace
 
-rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled) {
+rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled, bool furthest) {
   validate_input(ps);
   RtdStats local;
   RtdStats& st = stats ? *stats : local;
@@ -267,6 +267,7 @@ rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled) 
   const std::vector<Index> order = insertion_order(ps);
   TriangulationD T = make_simplex(ps, order.data());
   T.pulled = pulled;  // make_simplex decides orientations only (orient_d: no height)
+  T.furthest = furthest;
   st.insertions = static_cast<std::uint64_t>(d + 1);
   std::vector<Index> redundant;
   Inserter ins{T, st, redundant, {}};
@@ -308,8 +309,8 @@ rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled) 
   return T;
 }
 
-Rtd rtd_incremental(const PointSet& ps, RtdStats* stats) {
-  const TriangulationD T = build_rtd(ps, stats);
+Rtd rtd_incremental(const PointSet& ps, RtdStats* stats, bool furthest) {
+  const TriangulationD T = build_rtd(ps, stats, false, furthest);
   Rtd out;
   out.simplices = real_simplices(T);
   for (Index x = 0; x < T.n; ++x)

@@ -57,12 +57,21 @@ struct Rtd {
 // ridges of the new vertex are flipped while locally non-regular and
 // flippable, from a queue, until none (monotonic flips; (d+1)-1 flips remove
 // vertices that became redundant).
-Rtd rtd_incremental(const PointSet& ps, RtdStats* stats = nullptr);
+//
+// furthest: the furthest-site triangulation instead — the lower hull of the
+// points lifted to the NEGATED heights -(|x|^2 - w) - ε_h, i.e. the upper hull
+// of flipflop's perturbed lifted points (x + ε_x, |x|^2 - w + ε_h) (DESIGN.md):
+// every power_d sign negated (multilinearity in the height column), orient_d
+// unchanged. One consistent real configuration again, so RT+1 applies as it
+// is (the heights are any heights for Edelsbrunner-Shah); its vertices are the
+// vertices of the convex hull, every other point is redundant.
+Rtd rtd_incremental(const PointSet& ps, RtdStats* stats = nullptr, bool furthest = false);
 
 // The same, returning the structure (for the instant flip, thesis §9.2).
 // pulled: under pred::power_d_pulled instead of the canonical perturbation
 // (the strict view, strict_rtd.hpp); the algorithm is the same, it needs only
 // one consistent perturbation.
-rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats = nullptr, bool pulled = false);
+rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats = nullptr, bool pulled = false,
+                              bool furthest = false);
 
 }  // namespace flipflop::ref

@@ -188,7 +188,8 @@ int orient(const TriangulationD& T, const Index* tuple) {
 int power(const TriangulationD& T, const Index* tuple) {
   pred::WPt p[kMaxDim + 2];
   for (int i = 0; i <= T.d + 1; ++i) p[i] = wpt(T, tuple[i]);
-  return T.pulled ? pred::power_d_pulled(T.d, p) : pred::power_d(T.d, p);
+  const int s = T.pulled ? pred::power_d_pulled(T.d, p) : pred::power_d(T.d, p);
+  return T.furthest ? -s : s;
 }
 
 bool locally_regular(const TriangulationD& T, RidgeD r) {

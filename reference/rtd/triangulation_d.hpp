@@ -107,6 +107,7 @@ struct TriangulationD {
   std::vector<std::int32_t> vsimplex;    // n+1: a live simplex containing the vertex, kNone if not a vertex
   std::size_t live = 0;                  // live simplices (real and virtual)
   bool pulled = false;                   // power() under pred::power_d_pulled (strict_rtd.hpp)
+  bool furthest = false;                 // power() negated: the furthest-site triangulation (rt_incremental.hpp)
 
   int width() const { return d + 1; }
   Index virtual_vertex() const { return n; }
