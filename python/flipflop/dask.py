@@ -7,10 +7,12 @@ cluster), equal to flipflop.ConvexHull of the computed array bit for bit.
     >>> hull = flipflop.dask.ConvexHull(x)       # attributes as flipflop.ConvexHull
 
 Only hull vertices travel between tasks; the points stay where their chunks
-are (docs/distributed_dask.md).
+are (docs/distributed_dask.md). An input larger than memory (a directory of
+.npy shards: from_npy_shards) is read chunk by chunk, twice.
 
-How (one dask graph, computed once):
+How (two dask.compute passes):
 
+Pass 1, one graph:
 1. One task per row-chunk: the chunk's hull vertices, as (global row ids
    ascending, their float64 coordinates). A chunk whose points span less
    than the full dimension (or has fewer than d + 1 points) forwards all
@@ -20,9 +22,16 @@ How (one dask graph, computed once):
    lower-dimensional).
 3. The root: flipflop.ConvexHull of the remaining candidates, sorted by
    global id, its indices mapped back to global ids.
+Pass 2, a second graph with the final hull as a plain argument:
 4. One task per chunk certifies its points: flipflop.certify(...,
    canonical=True) on the final hull's vertices outside the chunk, the
    chunk's own points and the final facets, in global order.
+Each chunk is needed by one task per pass, so a chunk read from files (or
+generated) is dropped after its task: peak memory is about one chunk per
+worker thread plus the candidates. On a dask.distributed cluster x is
+persisted first when it fits (see ConvexHull's `persist`); then pass 2
+reads the chunks from the workers' memory and every chunk's tasks are
+pinned to the workers holding it.
 
 Why it is exact: Simulation of Simplicity perturbs point i by powers of
 epsilon ordered by i (DESIGN.md, "The perturbation"), so every perturbed
@@ -44,8 +53,10 @@ from __future__ import annotations
 
 import contextlib
 import math
+import os
 import sys
-from typing import List, Optional, Sequence
+import time
+from typing import List, Optional, Sequence, Union
 
 import numpy as np
 import dask
@@ -55,7 +66,7 @@ from . import Certificate
 from . import ConvexHull as _MemoryHull
 from . import certify as _certify
 
-__all__ = ["ConvexHull", "CertificationError", "certify_chunks"]
+__all__ = ["ConvexHull", "CertificationError", "certify_chunks", "from_npy_shards"]
 
 _WHAT = "flipflop.dask.ConvexHull"
 
@@ -106,6 +117,125 @@ def _chunk_array(block, start: int, what: str) -> np.ndarray:
         row = start + int(np.argmin(finite))
         raise ValueError(f"{what}: the points hold NaN or infinite coordinates (row {row})")
     return a
+
+
+# ---- .npy shards ------------------------------------------------------------------------
+
+_SHARDS = "flipflop.dask.from_npy_shards"
+_F8 = np.dtype("<f8")
+
+
+def _shard_paths(path) -> List[str]:
+    """As flipflop-mpi (distributed/shards.cpp): a directory's files whose
+    names end in ".npy" (longer than that), sorted byte-wise; or one .npy
+    file."""
+    path = os.fspath(path)
+    if os.path.isdir(path):
+        try:
+            names = os.listdir(path)
+        except OSError as e:
+            raise ValueError(f"{_SHARDS}: {path}: cannot list the directory: {e.strerror}") from None
+        paths = [os.path.join(path, n) for n in names
+                 if len(n) > 4 and n.endswith(".npy") and not os.path.isdir(os.path.join(path, n))]
+        if not paths:
+            raise ValueError(f"{_SHARDS}: {path}: no .npy shards in the directory")
+        return sorted(paths, key=os.fsencode)
+    if not os.path.exists(path):
+        raise ValueError(f"{_SHARDS}: {path}: no such file or directory")
+    if os.path.splitext(path)[1] not in (".npy", ".NPY"):
+        raise ValueError(f"{_SHARDS}: {path}: expected a .npy file or a directory of .npy shards")
+    return [path]
+
+
+def _npy_header(path: str):
+    """(rows, columns, offset of the data) of a .npy shard of little-endian
+    float64 in C order, shape (n, 2) or (n, 3), holding all its rows (what
+    flipflop-mpi accepts); ValueError naming the file otherwise."""
+    fmt = np.lib.format
+    try:
+        with open(path, "rb") as f:
+            version = fmt.read_magic(f)
+            if version == (1, 0):
+                shape, fortran, dtype = fmt.read_array_header_1_0(f)
+            elif version == (2, 0):
+                shape, fortran, dtype = fmt.read_array_header_2_0(f)
+            else:
+                shape, fortran, dtype = fmt._read_array_header(f, version)
+            offset = f.tell()
+        size = os.path.getsize(path)
+    except OSError as e:
+        raise ValueError(f"{_SHARDS}: {path}: cannot read: {e.strerror or e}") from None
+    except ValueError as e:
+        raise ValueError(f"{_SHARDS}: {path}: not a .npy file: {e}") from None
+    if dtype != _F8:
+        raise ValueError(f"{_SHARDS}: {path}: npy dtype {dtype.str}, expected float64 ('<f8')")
+    if len(shape) != 2 or shape[1] not in (2, 3):
+        raise ValueError(f"{_SHARDS}: {path}: shape {tuple(shape)}, expected (n, 2) or (n, 3)")
+    if fortran:
+        raise ValueError(f"{_SHARDS}: {path}: Fortran order, expected C order")
+    if size < offset + shape[0] * shape[1] * 8:
+        raise ValueError(f"{_SHARDS}: {path}: npy data is truncated ({size - offset} bytes of "
+                         f"{shape[0] * shape[1] * 8})")
+    return int(shape[0]), int(shape[1]), int(offset)
+
+
+def _read_rows(path: str, header: tuple, start: int, stop: int) -> np.ndarray:
+    """Rows [start, stop) of a shard, read straight into a new array (no
+    mapping: the worker's resident memory is the result alone). header:
+    what _npy_header found when the array was made; a shard that changed
+    since raises ValueError."""
+    if _npy_header(path) != header:
+        raise ValueError(f"{_SHARDS}: {path}: the shard changed since from_npy_shards read its header")
+    rows, width, offset = header
+    out = np.empty((stop - start, width), dtype=np.float64)
+    if start == stop:
+        return out
+    with open(path, "rb") as f:
+        f.seek(offset + start * width * 8)
+        got = f.readinto(memoryview(out).cast("B"))
+    if got != out.nbytes:
+        raise ValueError(f"{_SHARDS}: {path}: npy data is truncated (rows {start}..{stop - 1})")
+    return out
+
+
+def from_npy_shards(path: Union[str, os.PathLike], chunk_rows: int = 2 ** 23) -> da.Array:
+    """A dask array (n, d) of the rows of a directory's .npy shards, in the
+    order flipflop-mpi reads them: the files whose names end in ".npy",
+    sorted by name (byte-wise), their rows concatenated, so that global row
+    g is the row flipflop-mpi (and flipflop hull2|hull3 of the concatenated
+    array) numbers g. path may also be one .npy file.
+
+    Each shard must be little-endian float64 in C order of shape (n, 2) or
+    (n, 3), all of the same width; every header is checked here (ValueError
+    naming the file: dtype, shape, width, order, truncation). The data is
+    not read: each chunk is one task that reads its row range from its
+    shard when it runs, so nothing but file names and row numbers is
+    pickled, and a chunk a task has used can be dropped and read again.
+
+    chunk_rows: at most this many rows per chunk (default 2**23: 192 MiB of
+    3D points); a chunk never spans two shards (a shard is cut into equal
+    parts; an empty shard gives no chunk)."""
+    chunk_rows = int(chunk_rows)
+    if chunk_rows < 1:
+        raise ValueError(f"{_SHARDS}: chunk_rows must be positive, got {chunk_rows}")
+    paths = _shard_paths(path)
+    headers = [_npy_header(p) for p in paths]
+    width = headers[0][1]
+    for p, h in zip(paths, headers):
+        if h[1] != width:
+            raise ValueError(f"{_SHARDS}: {p}: {h[1]} columns, but {paths[0]} has {width}")
+    pieces = []  # (shard, start, stop)
+    for k, (rows, _, _) in enumerate(headers):
+        parts = -(-rows // chunk_rows)
+        cuts = [rows * i // parts for i in range(parts + 1)] if parts else []
+        pieces += [(k, lo, hi) for lo, hi in zip(cuts[:-1], cuts[1:])]
+    if not pieces:  # every shard is empty: one empty chunk
+        pieces = [(0, 0, 0)]
+    stats = [(p, os.stat(p).st_mtime_ns, h) for p, h in zip(paths, headers)]
+    name = "from-npy-shards-" + dask.base.tokenize(stats, pieces)
+    graph = {(name, i, 0): (_read_rows, paths[k], headers[k], lo, hi) for i, (k, lo, hi) in enumerate(pieces)}
+    chunks = (tuple(hi - lo for _, lo, hi in pieces), (width,))
+    return da.Array(graph, name, chunks=chunks, dtype=np.float64)
 
 
 # ---- the tasks -------------------------------------------------------------------------
@@ -218,23 +348,65 @@ def _client(compute_kwargs: dict):
     return client if isinstance(client, Client) else None
 
 
-def _placement(x: da.Array, compute_kwargs: dict):
-    """(x, the workers of each chunk or None). On a distributed cluster x is
-    persisted (nothing happens where it already is) and every task that reads
-    a chunk is restricted to the workers holding it, so that no chunk of
-    points crosses between workers, whatever the scheduler's load balancing
-    would do; allow_other_workers keeps a run alive when those workers are
-    lost (the chunk is then recomputed elsewhere)."""
-    client = _client(compute_kwargs)
+def _held(x: da.Array) -> bool:
+    """Whether x is already persisted on a cluster: every chunk's key maps to
+    a distributed Future in x's graph."""
+    if "distributed" not in sys.modules:
+        return False
+    from distributed import Future
+    graph = x.__dask_graph__()
+    try:
+        return all(isinstance(graph[k], Future) for row in x.__dask_keys__() for k in row)
+    except KeyError:
+        return False
+
+
+def _cluster_memory(client) -> int:
+    """The sum of the workers' memory limits, 0 where a worker has none (or
+    there are no workers)."""
+    limits = [w.get("memory_limit") or 0 for w in client.scheduler_info()["workers"].values()]
+    return 0 if not limits or min(limits) <= 0 else int(sum(limits))
+
+
+def _should_persist(x: da.Array, client, persist: Optional[bool]) -> bool:
+    """persist=None: on a cluster, when x.nbytes is below half the workers'
+    memory limits together (never where a worker has no limit); on a local
+    scheduler never. True/False: as given."""
+    if persist is not None:
+        return bool(persist)
     if client is None:
-        return x, None
+        return False
+    memory = _cluster_memory(client)
+    return memory > 0 and x.nbytes < memory / 2
+
+
+def _placement(x: da.Array, compute_kwargs: dict, persist: Optional[bool] = None):
+    """(x, the workers of each chunk or None, whether x is held in memory).
+
+    Where x is persisted (already, or now by the persist rule: _should_persist)
+    on a distributed cluster, every task that reads a chunk is restricted to
+    the workers holding it, so that no chunk of points crosses between
+    workers, whatever the scheduler's load balancing would do;
+    allow_other_workers keeps a run alive when those workers are lost (the
+    chunk is then recomputed elsewhere). Where it is not, no task is pinned:
+    a chunk's tasks then depend only on the task that reads (or makes) it,
+    and the scheduler runs them on the worker that did. On a local scheduler
+    persist=True computes x into this process's memory."""
+    client = _client(compute_kwargs)
+    held = _held(x)
+    if client is None:
+        if persist and not held:
+            (x,) = dask.persist(x, **compute_kwargs)
+        return x, None, bool(persist) or held
+    if not held and not _should_persist(x, client, persist):
+        return x, None, False
     from distributed import wait
     x = client.persist(x)
     with client.as_current():  # wait() asks for the default client
         wait(x)
     who = {str(k): w for k, w in client.who_has(x).items()}  # keyed by str(key) in distributed 2022.12
     keys = [k for row in x.__dask_keys__() for k in row]
-    return x, [list(who.get(str(k), who.get(k, ()))) or None for k in keys]
+    return x, [list(who.get(str(k), who.get(k, ()))) or None for k in keys], True
 
 
 def _on(workers, i: int):
@@ -244,9 +416,11 @@ def _on(workers, i: int):
     return dask.annotate(workers=workers[i], allow_other_workers=True)
 
 
-def _certificate_tasks(x: da.Array, hull, workers=None) -> list:
-    """One delayed certificate per chunk of x against hull (a delayed or
-    concrete dict with vertex_ids, vertex_coords, simplices)."""
+def _certificate_tasks(x: da.Array, hull: dict, workers=None) -> list:
+    """One delayed certificate per chunk of x against hull (a dict with
+    vertex_ids, vertex_coords, simplices: one task of the graph holds it,
+    every certificate task depends on that one, so a cluster sends it to
+    each worker once)."""
     offsets = _offsets(x)
     hull = dask.delayed(_for_certificates)(hull, int(x.shape[0]))
     tasks = []
@@ -269,7 +443,37 @@ def _reduction(x: da.Array, threads: int, split_every: int, workers=None):
     return dask.delayed(_final_hull)(threads, *level)
 
 
-def certify_chunks(x, simplices, vertex_points=None, *, compute_kwargs: Optional[dict] = None) -> List[Certificate]:
+def _compute(tasks: list, x: da.Array, held: bool, compute_kwargs: dict) -> list:
+    """dask.compute of the delayed tasks, each of which reads at most one
+    chunk of x. Where x is not held in memory, each chunk's task and the
+    tasks that only it depends on (the shard reading, the generating) are
+    first inlined into the one task of the pass that uses the chunk
+    (dask.optimization.inline): no chunk is then ever a result of its own,
+    which a cluster's scheduler could move to another worker to balance
+    the load (it did, in tests: a chunk read on one worker, its certificate
+    computed on the other), and the chunk is dropped when the task ends."""
+    if not held:
+        from dask.core import reverse_dict
+        from dask.delayed import Delayed
+        from dask.optimization import cull, inline
+        keys = [t.key for t in tasks]
+        graph, dependencies = cull(dict(dask.base.collections_to_dsk(tasks)), keys)
+        dependents = reverse_dict(dependencies)
+        chunks = {k for row in x.__dask_keys__() for k in row}
+        exclusive, todo = set(), [k for k in chunks if k in graph]
+        while todo:  # the chunks and their ancestors that have one dependent
+            k = todo.pop()
+            if k not in exclusive and len(dependents[k]) == 1 and k not in keys:
+                exclusive.add(k)
+                todo.extend(dependencies[k])
+        graph = inline(graph, keys=exclusive, inline_constants=False, dependencies=dependencies)
+        graph, _ = cull(graph, keys)  # inline leaves the inlined keys in the graph
+        tasks = [Delayed(k, graph) for k in keys]
+    return list(dask.compute(*tasks, **compute_kwargs))
+
+
+def certify_chunks(x, simplices, vertex_points=None, *, persist: Optional[bool] = False,
+                   compute_kwargs: Optional[dict] = None) -> List[Certificate]:
     """The per-chunk certificates of a claimed hull of the dask array x: one
     task per row-chunk checks (flipflop.certify, canonical=True) that
     `simplices` (global row ids: 3D triangles, 2D the (k, 2) edges or the
@@ -279,7 +483,9 @@ def certify_chunks(x, simplices, vertex_points=None, *, compute_kwargs: Optional
     vertex_points: the coordinates of the hull's vertices (np.unique of
     simplices, in that order); gathered from x where not given. Returns one
     flipflop.Certificate per chunk, in chunk order (the constructor raises
-    CertificationError on the first that fails)."""
+    CertificationError on the first that fails). persist: as ConvexHull's,
+    but False by default (one pass over x, or two where vertex_points must
+    be gathered)."""
     x = _dask_points(x, "certify_chunks")
     d = x.shape[1]
     s = np.asarray(simplices, dtype=np.int64)
@@ -296,8 +502,8 @@ def certify_chunks(x, simplices, vertex_points=None, *, compute_kwargs: Optional
     if coords.shape != (len(ids), d):
         raise ValueError(f"certify_chunks: vertex_points must have shape ({len(ids)}, {d}), got {coords.shape}")
     hull = {"vertex_ids": ids, "vertex_coords": coords, "simplices": s}
-    x, workers = _placement(x, compute_kwargs or {})
-    return list(dask.compute(*_certificate_tasks(x, hull, workers), **(compute_kwargs or {})))
+    x, workers, held = _placement(x, compute_kwargs or {}, persist)
+    return _compute(_certificate_tasks(x, hull, workers), x, held, compute_kwargs or {})
 
 
 class ConvexHull:
@@ -306,7 +512,8 @@ class ConvexHull:
     flipflop.ConvexHull(x.compute()) exactly (every array and float), on
     any dask scheduler.
 
-    ConvexHull(x, *, threads=0, split_every=8, certify=True, **compute_kwargs)
+    ConvexHull(x, *, threads=0, split_every=8, certify=True, persist=None,
+               **compute_kwargs)
 
     x: a dask array (array-likes are wrapped with dask.array.asarray); any
     row chunking (chunks of one point, empty chunks and chunks of interior
@@ -320,11 +527,23 @@ class ConvexHull:
     fails). Without it the answer is still each chunk's and the root's
     certified hull, but the final facets are not checked against every
     point.
+    persist: whether x is first persisted. Two passes read every chunk (the
+    hull pass, then the certificate pass): a persisted x is read once and
+    its chunks' tasks run on the workers holding them; an x that is not
+    is read (or generated) again in pass 2, one chunk per task, and never
+    held whole. None (default): persist on a dask.distributed cluster when
+    x.nbytes is below half the sum of the workers' memory limits
+    (client.scheduler_info(); never where a worker has no limit), never
+    on a local scheduler. True/False force it (True on a local scheduler:
+    into this process's memory). An x already persisted on the cluster is
+    used where it is, pinned, whatever persist says.
     compute_kwargs: passed to dask.compute (scheduler=..., ...).
 
     Attributes (as flipflop.ConvexHull; docs/distributed_dask.md):
-      points      x itself, the dask array (not computed; on a cluster the
-                  run persists it and lets go of it when done)
+      points      x itself, the dask array (not computed; where the run
+                  persists it, it lets go of it when done)
+      persisted   whether the run held x in memory (persisted by it or
+                  before it)
       simplices, vertices, neighbors, equations, volume, area
       ndim, npoints, nsimplex, min_bound, max_bound (the bounds of the
                   hull's vertices: those of all points)
@@ -337,6 +556,8 @@ class ConvexHull:
                   upper bound of what crosses between workers, never a
                   chunk of points
       nchunks     x's row-chunks
+      pass_seconds  wall seconds of the hull pass and of the certificate
+                  pass (0.0 without certify)
 
     Bad input raises ValueError: NaN or infinity naming its global row; an
     input with fewer than d + 1 points or lower-dimensional the in-memory
@@ -344,7 +565,7 @@ class ConvexHull:
     """
 
     def __init__(self, x, *, threads: int = 0, split_every: Optional[int] = 8, certify: bool = True,
-                 **compute_kwargs):
+                 persist: Optional[bool] = None, **compute_kwargs):
         x = _dask_points(x, _WHAT)
         threads = int(threads)
         if threads < 0:
@@ -352,11 +573,19 @@ class ConvexHull:
         split_every = 8 if split_every is None else int(split_every)
         if split_every < 2:
             raise ValueError(f"{_WHAT}: split_every must be at least 2, got {split_every}")
+        if persist is not None and not isinstance(persist, bool):
+            raise ValueError(f"{_WHAT}: persist must be None, True or False, got {persist!r}")
         given = x
-        x, workers = _placement(x, compute_kwargs)
-        root = _reduction(x, threads, split_every, workers)
-        tasks = _certificate_tasks(x, root, workers) if certify else []
-        hull, *certificates = dask.compute(root, *tasks, **compute_kwargs)
+        x, workers, self.persisted = _placement(x, compute_kwargs, persist)
+        # pass 1: the chunks' candidates, the reduction and the root
+        t0 = time.perf_counter()
+        (hull,) = _compute([_reduction(x, threads, split_every, workers)], x, self.persisted, compute_kwargs)
+        t1 = time.perf_counter()
+        # pass 2: every chunk again, against the final hull (a plain argument)
+        certificates = []
+        if certify:
+            certificates = _compute(_certificate_tasks(x, hull, workers), x, self.persisted, compute_kwargs)
+        self.pass_seconds = (t1 - t0, time.perf_counter() - t1)
         for i, c in enumerate(certificates):
             if not c:
                 off = _offsets(x)

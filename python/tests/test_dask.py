@@ -3,6 +3,7 @@ computed array on every attribute, across chunkings and degenerate families,
 on the synchronous scheduler, the default threaded one and a two-worker
 dask.distributed LocalCluster; the per-chunk certificates reject a hull that
 misses a point only one chunk holds."""
+import pickle
 import subprocess
 import sys
 
@@ -37,7 +38,7 @@ def scheduler(request):
     return "synchronous"
 
 
-def assert_same(h, a):
+def assert_same(h, a, scheduler=None):
     """h (flipflop.dask.ConvexHull) equals flipflop.ConvexHull(a) exactly."""
     m = flipflop.ConvexHull(a)
     for k in ARRAYS:
@@ -46,7 +47,7 @@ def assert_same(h, a):
         assert np.array_equal(x, y, equal_nan=True), k
     assert h.volume == m.volume and h.area == m.area
     assert (h.ndim, h.npoints, h.nsimplex, h.good) == (m.ndim, m.npoints, m.nsimplex, m.good)
-    assert np.array_equal(h.points.compute(), a)
+    assert np.array_equal(h.points.compute(scheduler=scheduler), a)
     assert len(h.certificates) == h.nchunks and all(h.certificates)
 
 
@@ -173,14 +174,17 @@ def test_transfer_is_hull_vertices_only(scheduler):
     assert h.transfer_bytes < a.nbytes // 10
 
 
-def test_lazy_array_generated_in_tasks(client):
+@pytest.mark.parametrize("persist", [None, False])
+def test_lazy_array_generated_in_tasks(client, persist):
     # data that never exists in the client: each chunk made by its own task
+    # (persist=False: made again for the certificates, inside their tasks)
     def block(seed, n):
         return np.random.default_rng(seed).normal(size=(n, 3))
 
     parts = [da.from_delayed(dask.delayed(block)(s, 3000), shape=(3000, 3), dtype=np.float64) for s in range(6)]
     x = da.concatenate(parts)
-    h = fdask.ConvexHull(x, scheduler=client)
+    h = fdask.ConvexHull(x, persist=persist, scheduler=client)
+    assert h.persisted == (persist is None)
     assert_same(h, x.compute(scheduler="synchronous"))
 
 
@@ -292,3 +296,166 @@ def test_import_flipflop_does_not_import_dask():
     code = "import sys, flipflop; assert 'dask' not in sys.modules; import flipflop.dask; print(flipflop.dask.__name__)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "flipflop.dask"
+
+
+# ---- out of core: two passes, the persist rule, .npy shards ------------------------------
+
+def task_names(ts):
+    return [t["key"][0] if isinstance(t["key"], tuple) else t["key"] for t in ts.data]
+
+
+def write_shards(directory, sizes, d, seed):
+    """Shards of the given sizes (in name order), and their concatenation."""
+    rng = np.random.default_rng(seed)
+    parts = [rng.normal(size=(n, d)) for n in sizes]
+    for i, p in enumerate(parts):
+        np.save(directory / f"part{i:03d}.npy", p)
+    return np.concatenate(parts)
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_npy_shards_uneven_with_an_empty_shard(d, tmp_path, scheduler):
+    sizes = (700, 0, 1300, 5, 2000, 1)
+    a = write_shards(tmp_path, sizes, d, seed=d)
+    (tmp_path / "notes.txt").write_text("not a shard")
+    x = fdask.from_npy_shards(tmp_path, chunk_rows=600)
+    # every shard cut into equal parts of at most 600 rows, no chunk across
+    # two shards, the empty shard none
+    assert x.chunks == ((350, 350, 433, 433, 434, 5, 500, 500, 500, 500, 1), (d,))
+    assert x.dtype == np.float64
+    # only file names and row numbers in the graph, not the points
+    assert len(pickle.dumps(dict(x.__dask_graph__()))) < 10_000
+    h = fdask.ConvexHull(x, scheduler=scheduler)
+    assert_same(h, a)
+
+
+def test_npy_shards_in_name_order_as_flipflop_mpi(tmp_path):
+    # byte-wise order of the names (upper case first), other files and
+    # directories ending in .npy ignored; one .npy file works too
+    rng = np.random.default_rng(5)
+    named = {"b.npy": rng.random((30, 3)), "B.npy": rng.random((20, 3)), "a10.npy": rng.random((10, 3)),
+             "a9.npy": rng.random((9, 3)), ".hidden.npy": rng.random((4, 3))}
+    for k, v in named.items():
+        np.save(tmp_path / k, v)
+    (tmp_path / "dir.npy").mkdir()
+    with open(tmp_path / "c.NPY", "wb") as f:  # not ".npy": ignored in a directory
+        np.save(f, rng.random((5, 3)))
+    order = [".hidden.npy", "B.npy", "a10.npy", "a9.npy", "b.npy"]
+    x = fdask.from_npy_shards(str(tmp_path), chunk_rows=8)
+    assert np.array_equal(x.compute(scheduler="synchronous"), np.concatenate([named[k] for k in order]))
+    one = fdask.from_npy_shards(tmp_path / "b.npy")
+    assert one.chunks == ((30,), (3,)) and np.array_equal(one.compute(), named["b.npy"])
+
+
+def test_npy_shards_bad_shard_names_the_file(tmp_path):
+    good = np.random.default_rng(1).random((50, 3))
+    np.save(tmp_path / "s0.npy", good)
+    cases = [("s1.npy", good[:, :2], r"s1\.npy: 2 columns, but .*s0\.npy has 3"),
+             ("s1.npy", good.astype(np.float32), r"s1\.npy: npy dtype <f4, expected float64"),
+             ("s1.npy", good.astype(">f8"), r"s1\.npy: npy dtype >f8"),
+             ("s1.npy", good[:, 0], r"s1\.npy: shape \(50,\), expected \(n, 2\) or \(n, 3\)"),
+             ("s1.npy", good[:, :1], r"s1\.npy: shape \(50, 1\)"),
+             ("s1.npy", np.asfortranarray(good), r"s1\.npy: Fortran order"),
+             ("s1.npy", np.zeros((3, 4)), r"s1\.npy: shape \(3, 4\)")]
+    for name, arr, message in cases:
+        np.save(tmp_path / name, arr)
+        with pytest.raises(ValueError, match=message):
+            fdask.from_npy_shards(tmp_path)
+    (tmp_path / "s1.npy").write_bytes(b"not numpy at all")
+    with pytest.raises(ValueError, match=r"s1\.npy: not a \.npy file"):
+        fdask.from_npy_shards(tmp_path)
+    np.save(tmp_path / "s1.npy", good)
+    data = (tmp_path / "s1.npy").read_bytes()
+    (tmp_path / "s1.npy").write_bytes(data[:-8])
+    with pytest.raises(ValueError, match=r"s1\.npy: npy data is truncated"):
+        fdask.from_npy_shards(tmp_path)
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    with pytest.raises(ValueError, match="no .npy shards in the directory"):
+        fdask.from_npy_shards(empty)
+    with pytest.raises(ValueError, match="no such file"):
+        fdask.from_npy_shards(tmp_path / "missing")
+    with pytest.raises(ValueError, match="chunk_rows"):
+        fdask.from_npy_shards(tmp_path / "s0.npy", chunk_rows=0)
+
+
+def test_npy_shards_changed_after_reading_the_headers(tmp_path):
+    a = write_shards(tmp_path, (100, 200), 3, seed=3)
+    x = fdask.from_npy_shards(tmp_path)
+    np.save(tmp_path / "part001.npy", a[:150])  # fewer rows than the header said
+    with pytest.raises(ValueError, match=r"part001\.npy: the shard changed"):
+        x.compute(scheduler="synchronous")
+
+
+def test_all_shards_empty(tmp_path):
+    np.save(tmp_path / "a.npy", np.zeros((0, 3)))
+    x = fdask.from_npy_shards(tmp_path)
+    assert x.shape == (0, 3)
+    with pytest.raises(ValueError) as mem:
+        flipflop.ConvexHull(np.zeros((0, 3)))
+    with pytest.raises(ValueError) as dist:
+        fdask.ConvexHull(x, scheduler="synchronous")
+    assert str(dist.value) == str(mem.value)
+
+
+def test_unpersisted_shards_are_read_once_per_pass_and_never_move(tmp_path, client):
+    # persist=False: the hull pass and the certificate pass each read every
+    # chunk once; the tasks are not pinned, yet no chunk crosses between the
+    # workers (each chunk's task runs where the chunk was read)
+    a = write_shards(tmp_path, (30_000,) * 4, 3, seed=11)
+    x = fdask.from_npy_shards(tmp_path, chunk_rows=15_000)  # 8 chunks of 360 kB
+    sent = lambda: sum(client.run(lambda dask_worker: dask_worker.transfer_outgoing_bytes_total).values())
+    before = sent()
+    with get_task_stream(client) as ts:
+        h = fdask.ConvexHull(x, persist=False, scheduler=client)
+    moved = sent() - before
+    assert not h.persisted
+    assert_same(h, a)
+    names = task_names(ts)
+    assert sum("from-npy-shards" in k for k in names) == 0  # read inside them
+    assert sum("_certify_chunk" in k for k in names) == 8
+    assert moved < 15_000 * 24 // 2, moved  # hull vertices, not a chunk
+    # persisted (the rule's choice for an array this small): read once
+    with get_task_stream(client) as ts:
+        h = fdask.ConvexHull(x, scheduler=client)
+    assert h.persisted
+    assert_same(h, a)
+    assert sum("from-npy-shards" in k for k in task_names(ts)) == 8
+
+
+def test_persist_rule(client):
+    memory = fdask._cluster_memory(client)
+    assert memory > 0  # LocalCluster's workers have limits
+    small = da.zeros((1000, 3), chunks=(100, 3))
+    huge = da.zeros((memory // 48 + 1, 3), chunks=(10**8, 3))  # just over half the memory; never computed
+    assert fdask._should_persist(small, client, None)
+    assert not fdask._should_persist(huge, client, None)
+    assert fdask._should_persist(huge, client, True) and not fdask._should_persist(small, client, False)
+    assert not fdask._should_persist(small, None, None)  # a local scheduler: never by default
+    # already persisted: used where it is, pinned, whatever persist says
+    a = uniform(2000, 3, seed=6)
+    held = client.persist(da.from_array(a, chunks=(500, 3)))
+    assert fdask._held(held) and not fdask._held(small)
+    h = fdask.ConvexHull(held, persist=False, scheduler=client)
+    assert h.persisted
+    assert_same(h, a, scheduler=client)
+    with pytest.raises(ValueError, match="persist"):
+        fdask.ConvexHull(small, persist="yes")
+
+
+def test_persist_on_a_local_scheduler():
+    a = uniform(3000, 3, seed=8)
+    calls = []
+
+    def block(i):
+        calls.append(i)
+        return a[i * 1000:(i + 1) * 1000]
+
+    x = da.concatenate([da.from_delayed(dask.delayed(block)(i), shape=(1000, 3), dtype=np.float64)
+                        for i in range(3)])
+    h = fdask.ConvexHull(x, scheduler="synchronous")
+    assert not h.persisted and sorted(calls) == [0, 0, 1, 1, 2, 2]  # made once per pass
+    calls.clear()
+    h = fdask.ConvexHull(x, persist=True, scheduler="synchronous")
+    assert h.persisted and sorted(calls) == [0, 1, 2]
+    assert_same(h, a)
