@@ -72,7 +72,8 @@ def run_shards(args, client):
           f"chunks of at most {args.chunk_rows} rows on {args.workers} workers (1 thread each, not persisted); "
           f"flipflop threads per task: {args.threads}")
     before = sent_bytes(client)
-    t_dask, h = median_time(lambda: fdask.ConvexHull(x, threads=args.threads, persist=False), args.repeat)
+    t_dask, h = median_time(lambda: fdask.ConvexHull(x, threads=args.threads, persist=False,
+                                                                certify=args.certify), args.repeat)
     sent = (sent_bytes(client) - before) // args.repeat
     print(f"flipflop.dask.ConvexHull   {t_dask:8.3f} s (median of {args.repeat}; last run: hull pass "
           f"{h.pass_seconds[0]:.3f} s, certificate pass {h.pass_seconds[1]:.3f} s)  {len(h.vertices)} vertices, "
@@ -112,6 +113,8 @@ def main():
     ap.add_argument("--shards", metavar="DIR", help="the hull of a directory of .npy shards (not persisted)")
     ap.add_argument("--chunk-rows", type=int, default=2 ** 23, help="with --shards: rows per chunk at most "
                     "(default 2^23)")
+    ap.add_argument("--certify", choices=("points", "chain"), default="points",
+                    help="pass 2: every chunk's points (default) or its certified hull vertices")
     ap.add_argument("--compare-file", metavar="FILE.txt", help="with --shards: compare with an index-text hull")
     args = ap.parse_args()
     if args.shards:
@@ -142,7 +145,7 @@ def main():
               f"{args.workers} workers; flipflop threads per task: {args.threads}")
 
         def distributed():
-            return fdask.ConvexHull(x, threads=args.threads)
+            return fdask.ConvexHull(x, threads=args.threads, certify=args.certify)
 
         before = sent_bytes(client)
         t_dask, h = median_time(distributed, args.repeat)

@@ -322,6 +322,33 @@ def _certify_chunk(block, start: int, stop: int, hull: dict) -> Certificate:
     return _certify("hull%d" % a.shape[1], combined, local.reshape(simplices.shape), canonical=True)
 
 
+def _certify_candidates(cand, start: int, stop: int, hull: dict) -> Certificate:
+    """certify="chain": the chunk's certificate from its candidates (the
+    vertices of its flipflop.ConvexHull, certified when pass 1 computed it;
+    all its points where that hull is not defined): the final facets are the
+    canonical hull of the hull's vertices together with the candidates, the
+    final vertices in the chunk's rows are among its candidates, with the
+    same coordinates. With pass 1's certificate of the chunk's hull this
+    puts every point of the chunk in the final hull, strictly unless a
+    vertex (the argument of distributed/partial_hull.hpp)."""
+    ids_c, coords_c = cand[0], cand[1]
+    vid, vco, simplices = hull["vertex_ids"], hull["vertex_coords"], hull["simplices"]
+    kind = "hull%d" % vco.shape[1]
+    mine = vid[(vid >= start) & (vid < stop)]
+    missing = mine[~np.isin(mine, ids_c)]
+    if len(missing):
+        return Certificate(False, "vertex-rows", f"row {int(missing[0])} is a vertex of the hull but not of the "
+                                                 f"chunk's certified hull", kind, "canonical")
+    common, ic, iv = np.intersect1d(ids_c, vid, assume_unique=True, return_indices=True)
+    differ = (coords_c[ic] != vco[iv]).any(axis=1)
+    if differ.any():
+        return Certificate(False, "vertex-rows", f"row {int(common[np.argmax(differ)])}: the hull's coordinates are "
+                                                 f"not the chunk's", kind, "canonical")
+    ids, first = np.unique(np.concatenate([vid, ids_c]), return_index=True)
+    coords = np.ascontiguousarray(np.concatenate([vco, coords_c])[first])
+    return _certify(kind, coords, np.searchsorted(ids, simplices), canonical=True)
+
+
 def _for_certificates(hull: dict, n: int) -> dict:
     """What each certificate task receives: the hull's vertices (ids and
     coordinates) and facets, nothing else."""
@@ -431,16 +458,18 @@ def _certificate_tasks(x: da.Array, hull: dict, workers=None) -> list:
 
 
 def _reduction(x: da.Array, threads: int, split_every: int, workers=None):
-    """The delayed root (_final_hull's dict) of the tree over x's chunks."""
+    """The delayed root (_final_hull's dict) of the tree over x's chunks, and
+    the chunks' candidate tasks."""
     offsets = _offsets(x)
     level = []
     for i, b in enumerate(x.to_delayed().ravel()):
         with _on(workers, i):
             level.append(dask.delayed(_chunk_candidates)(b, int(offsets[i]), threads))
+    chunks = level
     merge = dask.delayed(_merge_candidates)
     while len(level) > split_every:
         level = [merge(threads, *level[i:i + split_every]) for i in range(0, len(level), split_every)]
-    return dask.delayed(_final_hull)(threads, *level)
+    return dask.delayed(_final_hull)(threads, *level), chunks
 
 
 def _compute(tasks: list, x: da.Array, held: bool, compute_kwargs: dict) -> list:
@@ -524,9 +553,17 @@ class ConvexHull:
     split_every: children per node of the reduction tree.
     certify: run one certificate task per chunk (CertificationError, a
     RuntimeError naming the chunk and the failed condition, where one
-    fails). Without it the answer is still each chunk's and the root's
-    certified hull, but the final facets are not checked against every
-    point.
+    fails). True or "points" (default): pass 2 reads every chunk again and
+    certifies its points against the final hull. "chain": pass 2 certifies
+    only each chunk's candidates (its hull's vertices, from pass 1, where
+    flipflop.ConvexHull certified the chunk's hull while it held the chunk)
+    against the final hull, as flipflop-mpi does: no second read (out of
+    core: a few seconds instead of a pass over the data), but it trusts the
+    code between a chunk's certified hull and the vertices its task returns
+    (a test shows a task that drops a vertex there is caught by "points" and
+    not by "chain"). False: no pass 2; the answer is still each chunk's and
+    the root's certified hull, but the final facets are not checked against
+    every point.
     persist: whether x is first persisted. Two passes read every chunk (the
     hull pass, then the certificate pass): a persisted x is read once and
     its chunks' tasks run on the workers holding them; an x that is not
@@ -552,9 +589,10 @@ class ConvexHull:
                   certify)
       transfer_bytes  bytes of the candidate sets (ids and coordinates)
                   passed between tasks in the reduction, plus the hull's
-                  vertices and facets sent to each certificate task: an
-                  upper bound of what crosses between workers, never a
-                  chunk of points
+                  vertices and facets sent to each certificate task (and,
+                  with certify="chain", the chunks' candidates gathered
+                  and sent back): an upper bound of what crosses between
+                  workers, never a chunk of points
       nchunks     x's row-chunks
       pass_seconds  wall seconds of the hull pass and of the certificate
                   pass (0.0 without certify)
@@ -575,15 +613,27 @@ class ConvexHull:
             raise ValueError(f"{_WHAT}: split_every must be at least 2, got {split_every}")
         if persist is not None and not isinstance(persist, bool):
             raise ValueError(f"{_WHAT}: persist must be None, True or False, got {persist!r}")
+        if certify not in (True, False, "points", "chain"):
+            raise ValueError(f"{_WHAT}: certify must be True, False, 'points' or 'chain', got {certify!r}")
+        chain = certify == "chain"
         given = x
         x, workers, self.persisted = _placement(x, compute_kwargs, persist)
-        # pass 1: the chunks' candidates, the reduction and the root
+        # pass 1: the chunks' candidates, the reduction and the root (and,
+        # for the chain, the candidates themselves)
         t0 = time.perf_counter()
-        (hull,) = _compute([_reduction(x, threads, split_every, workers)], x, self.persisted, compute_kwargs)
+        root, chunk_tasks = _reduction(x, threads, split_every, workers)
+        hull, *candidates = _compute([root] + (chunk_tasks if chain else []), x, self.persisted, compute_kwargs)
         t1 = time.perf_counter()
-        # pass 2: every chunk again, against the final hull (a plain argument)
+        # pass 2: every chunk again (or its candidates), against the final
+        # hull (a plain argument)
         certificates = []
-        if certify:
+        if chain:
+            off = _offsets(x)
+            shared = dask.delayed(_for_certificates)(hull, int(x.shape[0]))
+            tasks = [dask.delayed(_certify_candidates)(c, int(off[i]), int(off[i + 1]), shared)
+                     for i, c in enumerate(candidates)]
+            certificates = list(dask.compute(*tasks, **compute_kwargs))
+        elif certify:
             certificates = _compute(_certificate_tasks(x, hull, workers), x, self.persisted, compute_kwargs)
         self.pass_seconds = (t1 - t0, time.perf_counter() - t1)
         for i, c in enumerate(certificates):
@@ -600,6 +650,8 @@ class ConvexHull:
         self.min_bound, self.max_bound = vc.min(axis=0), vc.max(axis=0)
         broadcast = hull["vertex_ids"].nbytes + vc.nbytes + hull["simplices"].nbytes
         self.transfer_bytes = int(hull["reduction_bytes"]) + broadcast * len(certificates)
+        if chain:  # the chunks' candidates to this process and back to the certificate tasks
+            self.transfer_bytes += 2 * sum(int(c[0].nbytes + c[1].nbytes) for c in candidates)
 
     @property
     def npoints(self) -> int:

@@ -250,6 +250,19 @@ def hull_without(a, row):
     return keep[flipflop.ConvexHull(a[keep]).simplices]
 
 
+def drop_from_chunk_task(monkeypatch, row):
+    """Make every chunk task lose `row` from the candidates it returns (as a
+    faulty task would, after its chunk's hull was certified)."""
+    real = fdask._chunk_candidates
+
+    def lossy(block, start, threads):
+        ids, coords, passed = real(block, start, threads)
+        keep = ids != row
+        return ids[keep], coords[keep], passed
+
+    monkeypatch.setattr(fdask, "_chunk_candidates", lossy)
+
+
 @pytest.mark.parametrize("d", [2, 3])
 def test_certificates_reject_a_hull_missing_one_chunks_point(d, scheduler):
     a, c, chunk, row = outlier_input(d)
@@ -273,14 +286,7 @@ def test_constructor_raises_when_a_chunk_fails(d, monkeypatch):
     # a chunk task that loses the outlier (as a faulty task would): the
     # root's hull misses it, and the outlier's chunk's certificate fails
     a, c, chunk, row = outlier_input(d)
-    real = fdask._chunk_candidates
-
-    def lossy(block, start, threads):
-        ids, coords, passed = real(block, start, threads)
-        keep = ids != row
-        return ids[keep], coords[keep], passed
-
-    monkeypatch.setattr(fdask, "_chunk_candidates", lossy)
+    drop_from_chunk_task(monkeypatch, row)
     x = da.from_array(a, chunks=(c, d))
     with pytest.raises(fdask.CertificationError) as e:
         fdask.ConvexHull(x, scheduler="synchronous")
@@ -290,6 +296,48 @@ def test_constructor_raises_when_a_chunk_fails(d, monkeypatch):
     # without certification the wrong hull is returned: the check is what catches it
     h = fdask.ConvexHull(x, scheduler="synchronous", certify=False)
     assert row not in h.vertices and h.certificates == []
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_chain_certificate_equals_and_rejects(d, scheduler, monkeypatch):
+    # certify="chain": the chunks' certified hull vertices against the final
+    # hull, no second pass over the points
+    a = uniform(3000, d, 40 + d)
+    x = da.from_array(a, chunks=(700, d))
+    h = fdask.ConvexHull(x, certify="chain", scheduler=scheduler)
+    assert_same(h, a, scheduler)
+    # a root that loses a vertex only one chunk holds: that chunk's chain
+    # certificate fails, naming it
+    b, c, chunk, row = outlier_input(d)
+    real = fdask._final_hull
+
+    def lossy_root(threads, *parts):
+        parts = [(i[i != row], co[i != row], n) for i, co, n in parts]
+        return real(threads, *parts)
+
+    monkeypatch.setattr(fdask, "_final_hull", lossy_root)
+    y = da.from_array(b, chunks=(c, d))
+    with pytest.raises(fdask.CertificationError) as e:
+        fdask.ConvexHull(y, certify="chain", scheduler="synchronous")
+    assert e.value.chunk == chunk and not e.value.certificate
+    with pytest.raises(fdask.CertificationError):  # the per-point pass catches it as well
+        fdask.ConvexHull(y, scheduler="synchronous")
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_chain_trusts_the_chunk_task_points_does_not(d, monkeypatch):
+    # the trust boundary of "chain", shown: a chunk task that drops one of
+    # its certified hull's vertices before returning them is caught by the
+    # per-point pass only
+    a, c, chunk, row = outlier_input(d)
+    drop_from_chunk_task(monkeypatch, row)
+    x = da.from_array(a, chunks=(c, d))
+    h = fdask.ConvexHull(x, certify="chain", scheduler="synchronous")
+    assert row not in h.vertices and all(h.certificates)
+    with pytest.raises(fdask.CertificationError):
+        fdask.ConvexHull(x, certify="points", scheduler="synchronous")
+    with pytest.raises(ValueError, match="certify"):
+        fdask.ConvexHull(x, certify="sometimes")
 
 
 def test_import_flipflop_does_not_import_dask():
