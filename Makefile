@@ -12,6 +12,16 @@ PKGS  := cmake g++ make clang lld libomp-14-dev libgmp-dev libmpfr-dev libcgal-d
 
 all: build
 
+# thrust, CUB and libcu++ (CCCL) for the GPU kernels' OpenMP build, whose
+# *_cuda_omp tests are the GPU code's coverage without a GPU: from the CUDA
+# toolkit where one is installed, otherwise make deps fetches PyPI's
+# nvidia-cuda-cccl-cu12 (headers only, 3 MB) into build-deps/cccl and every
+# configure below passes it (kernels_cuda/CMakeLists.txt: FLIPFLOP_CCCL_INCLUDE).
+CCCL_DIR   := $(CURDIR)/build-deps/cccl
+CCCL_INC   := $(CCCL_DIR)/nvidia/cuda_cccl/include
+CCCL_WHEEL := nvidia-cuda-cccl-cu12==12.9.27
+CCCL_ARG    = $(shell test -d $(CCCL_INC)/thrust && echo -DFLIPFLOP_CCCL_INCLUDE=$(CCCL_INC))
+
 deps:
 	@missing=""; for p in $(PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
@@ -19,6 +29,14 @@ deps:
 	  if [ "$$(id -u)" -ne 0 ]; then SUDO=sudo; else SUDO=; fi; \
 	  $$SUDO apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	@if ! ls -d /usr/local/cuda*/include/thrust /usr/local/cuda*/include/cccl/thrust >/dev/null 2>&1 && \
+	    [ ! -d $(CCCL_INC)/thrust ]; then \
+	  echo "flipflop: no CUDA toolkit headers: fetching thrust/CUB/libcu++ ($(CCCL_WHEEL), PyPI) into $(CCCL_DIR)"; \
+	  rm -rf $(CCCL_DIR) && mkdir -p $(CCCL_DIR) && \
+	  /usr/bin/python3 -m pip download -q --disable-pip-version-check --no-deps --only-binary=:all: \
+	    -d $(CCCL_DIR) "$(CCCL_WHEEL)" && \
+	  /usr/bin/python3 -m zipfile -e $(CCCL_DIR)/*.whl $(CCCL_DIR) && test -d $(CCCL_INC)/thrust; \
 	fi
 
 # ccache (when installed; make deps installs it): the Python package's build
@@ -34,7 +52,7 @@ WITH_CCACHE = cc=$$(command -v ccache || true); \
 # compiles in 50-70 % of -O3's time (-O2: 90-100 %); the tests that inline the
 # predicates run up to 30 % longer, the rest as fast.
 configure: deps
-	@$(WITH_CCACHE) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFLIPFLOP_PYTHON_TESTS=ON \
+	@$(WITH_CCACHE) cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DFLIPFLOP_PYTHON_TESTS=ON $(CCCL_ARG) \
 	  -DFLIPFLOP_TESTS_OPT=-O1 > $(BUILD).configure.log 2>&1 || \
 	  { cat $(BUILD).configure.log; exit 1; }
 
@@ -70,7 +88,7 @@ python: build
 	@test -x $(PYVENV)/bin/python || /usr/bin/python3 -m venv --system-site-packages $(PYVENV)
 	@$(PYVENV)/bin/python -c "import nanobind, scikit_build_core" 2>/dev/null || \
 	  $(PYVENV)/bin/python -m pip install -q --disable-pip-version-check "nanobind>=2.0" "scikit-build-core>=0.8"
-	$(WITH_CCACHE) CC=$${CC:-cc} CXX=$${CXX:-c++} CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) \
+	$(WITH_CCACHE) CC=$${CC:-cc} CXX=$${CXX:-c++} CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) CMAKE_ARGS="$(CCCL_ARG)" \
 	  $(PYVENV)/bin/python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 # ---- sanitizers (run by .ci/run) ---------------------------------------------
@@ -137,7 +155,7 @@ ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/
 tsan: deps
 	@test -n "$(ARCHER)" || { echo "tsan: libarcher.so (libomp-14-dev) not found"; exit 1; }
 	@CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON -DFLIPFLOP_LONG_TESTS=ON \
-	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" \
+	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" $(CCCL_ARG) \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan.configure.log 2>&1 || \
 	  { cat build-tsan.configure.log; exit 1; }
 	cmake --build build-tsan -j $(JOBS) --target $(TSAN_TESTS)

@@ -42,7 +42,11 @@ fi
 start=$(date +%s)
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then
   echo "run_all: configuring $BUILD with clang"
-  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
+  # the CCCL headers make deps fetched where no CUDA toolkit has them (Makefile: CCCL_DIR)
+  cccl=()
+  [ -d "$ROOT/build-deps/cccl/nvidia/cuda_cccl/include/thrust" ] &&
+    cccl=(-DFLIPFLOP_CCCL_INCLUDE="$ROOT/build-deps/cccl/nvidia/cuda_cccl/include")
+  CC=clang CXX=clang++ cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "${cccl[@]}" \
     -DFLIPFLOP_TESTS=OFF -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_FUZZ=ON > "$BUILD.configure.log" 2>&1 ||
     { cat "$BUILD.configure.log"; exit 1; }
 fi
