@@ -30,7 +30,7 @@ deps:
 	  $$SUDO apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
-	@if ! ls -d /usr/local/cuda*/include/thrust /usr/local/cuda*/include/cccl/thrust >/dev/null 2>&1 && \
+	@if ! ls -d /usr/local/cuda*/include/thrust /usr/local/cuda*/include/cccl/thrust 2>/dev/null | grep -q . && \
 	    [ ! -d $(CCCL_INC)/thrust ]; then \
 	  echo "flipflop: no CUDA toolkit headers: fetching thrust/CUB/libcu++ ($(CCCL_WHEEL), PyPI) into $(CCCL_DIR)"; \
 	  rm -rf $(CCCL_DIR) && mkdir -p $(CCCL_DIR) && \
