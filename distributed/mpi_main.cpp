@@ -238,10 +238,12 @@ void check_vertex_rows(const dist::ShardSet& s, std::uint64_t begin, std::uint64
   for (const dist::Piece& p : dist::pieces(s, begin, end)) {
     const dist::Shard& sh = s.shards[p.shard];
     const std::uint64_t lo = sh.first_row + p.row, hi = lo + p.count;
-    for (auto it = std::lower_bound(h.vertices.ids.begin(), h.vertices.ids.end(), lo);
-         it != h.vertices.ids.end() && *it < hi; ++it) {
+    auto it = std::lower_bound(h.vertices.ids.begin(), h.vertices.ids.end(), lo);
+    if (it == h.vertices.ids.end() || *it >= hi) continue;
+    const dist::ShardRows file(sh, s.dim);
+    for (; it != h.vertices.ids.end() && *it < hi; ++it) {
       const auto k = static_cast<std::size_t>(it - h.vertices.ids.begin());
-      dist::read_row(sh, s.dim, *it - sh.first_row, x.data());
+      file.read(*it - sh.first_row, x.data());
       if (!std::equal(h.vertices.point(k), h.vertices.point(k) + d, x.begin()))
         st.set(3, *it,
                "rank " + std::to_string(rank_of()) + ": vertex " + std::to_string(*it) +

@@ -62,13 +62,16 @@ std::vector<Piece> pieces(const ShardSet& s, std::uint64_t begin, std::uint64_t 
   return out;
 }
 
-void read_row(const Shard& shard, int dim, std::uint64_t row, double* out) {
-  const int fd = ::open(shard.path.c_str(), O_RDONLY);
-  if (fd < 0) throw io::InputError(shard.path, std::string("cannot open: ") + std::strerror(errno));
-  const std::size_t bytes = static_cast<std::size_t>(dim) * sizeof(double);
-  const ssize_t r = ::pread(fd, out, bytes, static_cast<off_t>(shard.data_offset + row * bytes));
-  ::close(fd);
-  if (r != static_cast<ssize_t>(bytes)) throw io::InputError(shard.path, "cannot read row " + std::to_string(row));
+ShardRows::ShardRows(const Shard& shard, int dim) : shard_(&shard), dim_(dim), fd_(::open(shard.path.c_str(), O_RDONLY)) {
+  if (fd_ < 0) throw io::InputError(shard.path, std::string("cannot open: ") + std::strerror(errno));
+}
+
+ShardRows::~ShardRows() { ::close(fd_); }
+
+void ShardRows::read(std::uint64_t row, double* out) const {
+  const std::size_t bytes = static_cast<std::size_t>(dim_) * sizeof(double);
+  const ssize_t r = ::pread(fd_, out, bytes, static_cast<off_t>(shard_->data_offset + row * bytes));
+  if (r != static_cast<ssize_t>(bytes)) throw io::InputError(shard_->path, "cannot read row " + std::to_string(row));
 }
 
 MappedRows::MappedRows(const Shard& shard, int dim, std::uint64_t row, std::uint64_t count) : dim_(dim) {

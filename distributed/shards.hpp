@@ -48,10 +48,22 @@ struct Piece {
 };
 std::vector<Piece> pieces(const ShardSet& s, std::uint64_t begin, std::uint64_t end);
 
-// Row `row` of a shard (dim doubles) read with pread: single rows spread
-// over a shard (the final hull's vertices) without mapping the pages around
-// them. Throws io::InputError when the file cannot be read.
-void read_row(const Shard& shard, int dim, std::uint64_t row, double* out);
+// Single rows of a shard read with pread (the final hull's vertices, spread
+// over the shard) without mapping the pages around them. Throws
+// io::InputError when the file cannot be opened or a row read.
+class ShardRows {
+ public:
+  ShardRows(const Shard& shard, int dim);
+  ~ShardRows();
+  ShardRows(const ShardRows&) = delete;
+  ShardRows& operator=(const ShardRows&) = delete;
+  void read(std::uint64_t row, double* out) const;  // dim doubles
+
+ private:
+  const Shard* shard_;
+  int dim_;
+  int fd_;
+};
 
 // Rows [row, row + count) of one shard, mapped read-only (mmap). data() is
 // the first row's first coordinate, count * dim doubles in C order; when the

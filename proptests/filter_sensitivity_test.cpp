@@ -101,6 +101,7 @@
 #include "predicates/rational_point.hpp"
 #include "predicates/staged.hpp"
 #include "predicates/static_filter.hpp"
+#include "proptests/support/predicate_inputs.hpp"  // set_last_row_affine
 #include "reference/hull3/rational_kernel.hpp"
 #include "reference/point_set.hpp"
 
@@ -431,16 +432,7 @@ Input start(int k, bool lifted, int family, Rng& r) {
   const double M = std::ldexp(1.0 + 0x1p-20 * r.unit(), e);  // just above 2^e
   if (family == 0) {
     for (double& v : in.x) v = M * r.sym();
-    if (!lifted) {
-      double lam[8], sum = 0.0;
-      for (int i = 0; i + 2 < k; ++i) sum += (lam[i] = r.sym());
-      lam[k - 2] = 1.0 - sum;
-      for (int j = 0; j < nc; ++j) {
-        double v = 0.0;
-        for (int i = 0; i + 1 < k; ++i) v += lam[i] * in.p(i)[j];
-        in.p(k - 1)[j] = v;
-      }
-    }
+    if (!lifted) flipflop::test::set_last_row_affine(in.x.data(), k, nc, [&] { return r.sym(); });
   } else {
     // corners: rows 0..k-2 near M s, the last near -M s; T nearly of rank
     // one. Family 3: M = 2^e exactly and every magnitude 2^e plus a few

@@ -1138,14 +1138,7 @@ TEST_CASE("stages: a weakened static filter errs, the true one does not", "[pred
       for (double& v : in.x) v = unit(rng);
       if (!sh.lifted) {
         // affine weights: λ_0..λ_{k-3} random, λ_{k-2} = 1 - Σ
-        double lam[8], sum = 0.0;
-        for (int i = 0; i + 2 < k; ++i) sum += (lam[i] = unit(rng));
-        lam[k - 2] = 1.0 - sum;
-        for (int j = 0; j < nc; ++j) {
-          double v = 0.0;
-          for (int i = 0; i + 1 < k; ++i) v += lam[i] * in.p(i)[j];
-          in.p(k - 1)[j] = v;
-        }
+        set_last_row_affine(in.x.data(), k, nc, [&] { return unit(rng); });
       } else {
         double alpha[8];
         for (int j = 0; j < nc; ++j) alpha[j] = unit(rng);

@@ -356,4 +356,20 @@ inline Instance gen_any(const Spec& s) {
                                                                   std::end(kFamilies))));
 }
 
+// k rows of nc doubles (row-major at x): row k-1 replaced by the affine
+// combination Σ_{i<k-1} λ_i row_i, λ_0..λ_{k-3} = draw() in that order and
+// λ_{k-2} = 1 - their sum — k points on one hyperplane up to the rounding of
+// the combination (near-degenerate orientation inputs; k <= 9).
+template <class Draw>
+void set_last_row_affine(double* x, int k, int nc, Draw&& draw) {
+  double lam[8], sum = 0.0;
+  for (int i = 0; i + 2 < k; ++i) sum += (lam[i] = draw());
+  lam[k - 2] = 1.0 - sum;
+  for (int j = 0; j < nc; ++j) {
+    double v = 0.0;
+    for (int i = 0; i + 1 < k; ++i) v += lam[i] * x[i * nc + j];
+    x[(k - 1) * nc + j] = v;
+  }
+}
+
 }  // namespace flipflop::test

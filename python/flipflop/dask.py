@@ -489,12 +489,12 @@ def _compute(tasks: list, x: da.Array, held: bool, compute_kwargs: dict) -> list
         graph, dependencies = cull(dict(dask.base.collections_to_dsk(tasks)), keys)
         dependents = reverse_dict(dependencies)
         chunks = {k for row in x.__dask_keys__() for k in row}
-        exclusive, todo = set(), [k for k in chunks if k in graph]
-        while todo:  # the chunks and their ancestors that have one dependent
-            k = todo.pop()
+        exclusive, pending = set(), [k for k in chunks if k in graph]
+        while pending:  # the chunks and their ancestors that have one dependent
+            k = pending.pop()
             if k not in exclusive and len(dependents[k]) == 1 and k not in keys:
                 exclusive.add(k)
-                todo.extend(dependencies[k])
+                pending.extend(dependencies[k])
         graph = inline(graph, keys=exclusive, inline_constants=False, dependencies=dependencies)
         graph, _ = cull(graph, keys)  # inline leaves the inlined keys in the graph
         tasks = [Delayed(k, graph) for k in keys]
