@@ -4,7 +4,7 @@
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
 //   flipflop rt3|dt3 IN [-o OUT] [--backend cpu|reference] [--threads N] [--strict] [--stats]
-//   flipflop rtd IN --dim d [-o OUT] [--backend cpu (d = 3)|reference] [--threads N] [--strict] [--stats]
+//   flipflop rtd IN --dim d [-o OUT] [--backend cpu|reference] [--threads N (d = 3)] [--strict] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
@@ -118,8 +118,9 @@ int main(int argc, char** argv) {
                   ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
   rtd->add_flag("--ascii", r.ascii, ".ply and .stl output in ASCII (default binary)");
   rtd->add_option("--backend", r.backend,
-                  "cpu (d = 3 only, the default there: kernels_cpu/rt3, as flipflop rt3) or reference (RT+1, the "
-                  "default for d != 3)")
+                  "cpu (d = 3: kernels_cpu/rt3, multithreaded, as flipflop rt3; d = 2, 4, 5: kernels_cpu/rtd, "
+                  "cavity insertion on one thread; the default for d = 3, 4, 5) or reference (RT+1, the default "
+                  "for d = 2); the same answer byte for byte")
       ->check(CLI::IsMember({"cpu", "reference"}));
   rtd->add_option("--threads", r.threads, "d = 3, cpu backend: worker threads (default: all cores)")
       ->check(CLI::PositiveNumber);

@@ -20,6 +20,7 @@
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/perturbation_order.hpp"
+#include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 #include "reference/rtd/strict_rtd.hpp"
 #include "reference/rtd/timeline.hpp"
@@ -96,15 +97,15 @@ void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
 
 int run_rtd(const RtdArgs& a) {
   check_dim(a.dim);
-  // the backend: kernels_cpu/rt3 for d = 3 (the default there, byte for byte
-  // the reference's answer), the reference (RT+1) for every d
-  if (a.backend == "cpu" && a.dim != 3)
-    throw UsageError("--backend cpu computes d = 3 only (kernels_cpu/rt3); rtd --dim " + std::to_string(a.dim) +
-                     " has the reference backend (--backend reference, the default there)");
-  const std::string backend = !a.backend.empty() ? a.backend : a.dim == 3 ? "cpu" : "reference";
-  if (a.threads != 0 && backend != "cpu")
-    throw UsageError("--threads applies to the multithreaded backend (--backend cpu, d = 3), not '" + backend + "'");
-  if (backend == "cpu") {
+  // the backend: cpu — kernels_cpu/rt3 for d = 3 (multithreaded), the cavity
+  // kernel kernels_cpu/rtd for d = 2, 4, 5 (sequential insertion); both
+  // return the reference's answer byte for byte and are the default for
+  // d = 3, 4, 5 — or the reference (RT+1) itself, the default for d = 2
+  const std::string backend = !a.backend.empty() ? a.backend : a.dim == 2 ? "reference" : "cpu";
+  if (a.threads != 0 && (backend != "cpu" || a.dim != 3))
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu, d = 3); rtd --dim " +
+                     std::to_string(a.dim) + " --backend " + backend + " runs on one thread");
+  if (backend == "cpu" && a.dim == 3) {
     Rt3Args r;
     r.kind = "rtd";
     r.in = a.in;
@@ -121,7 +122,10 @@ int run_rtd(const RtdArgs& a) {
   check_spans(ps, a.in);
   const auto t0 = Clock::now();
   ref::RtdStats st;
-  const ref::Rtd rt = with_input_errors(a.in, [&] { return ref::rtd_incremental(ps, &st); });
+  cpu::RtdCavityStats cst;
+  const ref::Rtd rt = with_input_errors(a.in, [&] {
+    return backend == "cpu" ? cpu::rtd_cavity(ps, &cst) : ref::rtd_incremental(ps, &st);
+  });
   const double t_compute = seconds_since(t0);
   const auto t1 = Clock::now();
   certify_or_throw(ps, rt.simplices, "the rtd result");
@@ -145,11 +149,18 @@ int run_rtd(const RtdArgs& a) {
   report_redundant("rtd", rt.redundant);
   if (a.stats) {
     std::cerr << "rtd: " << ps.size() << " points in R^" << a.dim << ", " << rt.simplices.size()
-              << " simplices, " << rt.redundant.size() << " redundant; flips";
-    for (int k = 1; k <= a.dim + 1; ++k)
-      std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
-    std::cerr << ", queue pushes " << st.queue_pushes << ", pops " << st.queue_pops
-              << "; compute " << t_compute << " s, certify " << t_certify << " s\n";
+              << " simplices, " << rt.redundant.size() << " redundant; ";
+    if (backend == "cpu") {
+      std::cerr << "backend cpu (cavity insertion): inserted " << cst.inserted << " (placed outside the hull "
+                << cst.placed << "), discarded " << cst.discarded << ", removed " << cst.removed
+                << ", simplices replaced " << cst.cavity << ", created " << cst.created << ", walk steps "
+                << cst.walk_steps;
+    } else {
+      std::cerr << "backend reference (RT+1): flips";
+      for (int k = 1; k <= a.dim + 1; ++k) std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
+      std::cerr << ", queue pushes " << st.queue_pushes << ", pops " << st.queue_pops;
+    }
+    std::cerr << "; compute " << t_compute << " s, certify " << t_certify << " s\n";
   }
   return 0;
 }

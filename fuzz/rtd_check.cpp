@@ -24,6 +24,9 @@
 //     d+1 + placed + 1-(d+1) flips; insertions + redundant - removed = n;
 //     removed = (d+1)-1 flips; the queue runs empty); its strict view
 //     (reference/rtd/strict_rtd.hpp) is certified at the exact level;
+//   * the cavity-insertion kernel (kernels_cpu/rtd/rtd_cavity.hpp) returns
+//     the same simplices and redundant points, nearest- and furthest-site
+//     (the furthest-site answer of RT+1 certified with the negation);
 //   * the instant flip from T = build_rtd(S ⊕ W) to U, with insertion
 //     events (a redundant point enters by a 1-(d+1) flip when it becomes
 //     non-redundant). Coordinates in general position (no d+1 points on a
@@ -53,6 +56,7 @@
 #include <vector>
 
 #include "fuzz/checks.hpp"
+#include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "proptests/support/rtd_oracles.hpp"
 #include "predicates/predicates.hpp"
@@ -150,6 +154,20 @@ ref::Rtd check_rt_incremental(const PointSet& ps) {
             "rtd_incremental:\n" + describe(R.simplices) + "brute_rtd:\n" + describe(test::brute_rtd(ps)));
   if (ref::rtd::real_simplices(must_return(ps, {}, "build_rtd", [&] { return ref::build_rtd(ps); })) != R.simplices)
     fail_on(ps, {}, "build_rtd differs from rtd_incremental");
+  for (bool furthest : {false, true}) {
+    cpu::RtdCavityOptions o;
+    o.furthest = furthest;
+    o.brio_min = 1 + ps.size() % 5;
+    const ref::Rtd C = must_return(ps, {}, "rtd_cavity", [&] { return cpu::rtd_cavity(ps, nullptr, o); });
+    const ref::Rtd E = furthest ? must_return(ps, {}, "rtd_incremental (furthest)",
+                                              [&] { return ref::rtd_incremental(ps, nullptr, true); })
+                                : R;
+    if (C.simplices != E.simplices || C.redundant != E.redundant)
+      fail_on(ps, {}, std::string("the cavity kernel differs from RT+1") + (furthest ? " (furthest site)" : ""),
+              "rtd_cavity:\n" + describe(C.simplices) + "rtd_incremental:\n" + describe(E.simplices));
+    if (furthest && !certify::rtd(ps, E.simplices, certify::Level::canonical, true).ok)
+      fail_on(ps, {}, "certify::rtd rejected the furthest-site RT+1");
+  }
   if (d == 2) {
     Simplices t;
     for (const Triangle& x : must_return(ps, {}, "rt2_ffrt", [&] { return ref::rt2_ffrt(ps); })) t.push_back({x[0], x[1], x[2]});

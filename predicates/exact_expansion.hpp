@@ -1117,35 +1117,56 @@ FF_HD inline int lambda_sign_dd(const double* const* p, const double* w) {
 // Exact sign of det Λ of K points in the given row order; with `sos`, the
 // Simulation-of-Simplicity sign (rows must then be sorted by increasing,
 // distinct point index).
+// The input values of one call (coordinates, weights).
 template <int K>
-FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos) {
+FF_HD inline Range call_range(const double* const* p, const double* w) {
   Range range;
   const int ncoord = w ? K - 2 : K - 1;
   for (int i = 0; i < K; ++i) {
     for (int j = 0; j < ncoord; ++j) range.add(p[i][j]);
     if (w) range.add(w[i]);
   }
+  return range;
+}
+
+// Small integers and lattices (the exactly degenerate inputs): when every
+// entry of Λ is a double (lambda_doubles) and doubles_exact_minors proves
+// every operation of det_plain exact for the whole K x K determinant, its
+// plain-double value is det Λ itself — a computed 0 is a true 0 — and the
+// same holds for every smaller minor the perturbation asks for. Fills a and
+// returns true in that case (K <= 7; inside the double window).
+template <int K>
+FF_HD inline bool lattice_doubles(const double* const* p, const double* w, const Range& range, double (&a)[K][K]) {
+  if constexpr (K <= 7) {
+    return range.finite && range.fits(w ? K : K - 1) && lambda_doubles<K>(p, w, a) &&
+           doubles_exact_minors<K>(a, w != nullptr, range, K);
+  } else {
+    (void)p, (void)w, (void)range, (void)a;
+    return false;
+  }
+}
+
+// The exact (sos: SoS) sign on lattice_doubles' matrix.
+template <int K>
+FF_HD inline int lattice_sign(const double (&a)[K][K], bool sos) {
+  auto sign_of = [&](unsigned kr, unsigned kc) -> int {
+    const double m = double_minor<K>(a, kr, kc);
+    return (m > 0.0) - (m < 0.0);
+  };
+  constexpr unsigned kAll = (1u << K) - 1u;
+  const int s = sign_of(kAll, kAll);
+  if (s != 0 || !sos) return s;
+  return sos_search<K>(true, sign_of);
+}
+
+template <int K>
+FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos) {
+  const Range range = call_range<K>(p, w);
   if (!range.finite) return non_finite_input();
   const int degree = w ? K : K - 1;
   if (range.fits(degree)) {
-    if constexpr (K <= 7) {
-      // Small integers and lattices (the exactly degenerate inputs): when
-      // every entry of Λ is a double and doubles_exact_minors proves every
-      // operation of det_plain exact for the whole K x K determinant, its
-      // plain-double value is det Λ itself — a computed 0 is a true 0 — and
-      // the same holds for every smaller minor the perturbation asks for.
-      double a[K][K];
-      if (lambda_doubles<K>(p, w, a) && doubles_exact_minors<K>(a, w != nullptr, range, K)) {
-        auto sign_of = [&](unsigned kr, unsigned kc) -> int {
-          const double m = double_minor<K>(a, kr, kc);
-          return (m > 0.0) - (m < 0.0);
-        };
-        constexpr unsigned kAll = (1u << K) - 1u;
-        const int s = sign_of(kAll, kAll);
-        if (s != 0 || !sos) return s;
-        return sos_search<K>(true, sign_of);
-      }
-    }
+    double a[K][K];
+    if (lattice_doubles<K>(p, w, range, a)) return lattice_sign<K>(a, sos);
     int s = lambda_sign_dd<K>(p, w);
     if constexpr (K == 3 || K == 4)
       if (!w && s == 2) s = orient_adaptive<K>(p);

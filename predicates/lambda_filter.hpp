@@ -29,6 +29,8 @@
 // build).
 #pragma once
 
+#include <utility>
+
 #include "err_double.hpp"
 
 namespace flipflop::pred {
@@ -76,34 +78,47 @@ FF_HD FF_FORCEINLINE V det_small(const V* t) {
 // order, signs (-1)^((|S|-1) + position) — det_by_minors (R = N) and
 // top_minors (static_filter.hpp, R = N - 1) share this operation order, on
 // which the bounds derived for them rest. d holds 2^N entries.
+//
+// The subsets are visited in increasing numeric order (every subset needed by
+// d[S], S less one column, is smaller than S), one instantiation per subset
+// (minor_of_subset<..., S>: its size, the row and the columns are constants,
+// so the loop over the columns unrolls and no subset bookkeeping is left at
+// run time — the loop over all 2^N subsets per level with a popcount test
+// cost more than the arithmetic for N = 5, 6). Each d[S] is the same
+// expression in the same order as before, so the same value bit for bit.
+template <int N, int R, class V, int S>
+FF_HD FF_FORCEINLINE void minor_of_subset(const V* t, V* d) {
+  constexpr int r = popcount_small(static_cast<unsigned>(S));
+  if constexpr (r >= 2 && r <= R) {
+    V acc{};  // assigned by the first term (value-initialised: no maybe-uninitialized)
+    bool first = true;
+    int pos = 0;  // position of column j inside subset S
+    for (int j = 0; j < N; ++j) {
+      if (!(S & (1 << j))) continue;
+      // Laplace along row r-1: sign (-1)^((r-1) + pos)
+      const V term = t[(r - 1) * N + j] * d[S & ~(1 << j)];
+      const bool negative = ((r - 1 + pos) & 1) != 0;
+      if (first) {
+        acc = negative ? -term : term;
+        first = false;
+      } else {
+        acc = negative ? acc - term : acc + term;
+      }
+      ++pos;
+    }
+    d[S] = acc;
+  }
+}
+
+template <int N, int R, class V, int... S>
+FF_HD FF_FORCEINLINE void minors_of_subsets(const V* t, V* d, std::integer_sequence<int, S...>) {
+  (minor_of_subset<N, R, V, S>(t, d), ...);
+}
+
 template <int N, int R, class V>
 FF_HD inline void minor_levels(const V* t, V* d) {
-  constexpr int kSubsets = 1 << N;
   for (int j = 0; j < N; ++j) d[1 << j] = t[j];  // row 0, single columns
-  // Process subsets in increasing popcount order: subsets of size r use
-  // row r-1 and the minors of size r-1.
-  for (int r = 2; r <= R; ++r) {
-    for (int s = 1; s < kSubsets; ++s) {
-      if (popcount_small(static_cast<unsigned>(s)) != r) continue;
-      V acc{};  // assigned by the first term (value-initialised: no maybe-uninitialized)
-      bool first = true;
-      int pos = 0;  // position of column j inside subset s
-      for (int j = 0; j < N; ++j) {
-        if (!(s & (1 << j))) continue;
-        // Laplace along row r-1: sign (-1)^((r-1) + pos)
-        const V term = t[(r - 1) * N + j] * d[s & ~(1 << j)];
-        const bool negative = ((r - 1 + pos) & 1) != 0;
-        if (first) {
-          acc = negative ? -term : term;
-          first = false;
-        } else {
-          acc = negative ? acc - term : acc + term;
-        }
-        ++pos;
-      }
-      d[s] = acc;
-    }
-  }
+  minors_of_subsets<N, R, V>(t, d, std::make_integer_sequence<int, (1 << N)>{});
 }
 
 // Determinant of an N x N matrix of ErrDouble (row-major) by expansion over

@@ -108,6 +108,16 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     if (s == 1 || s == -1) return s;
     if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
   }
+  if constexpr (K >= 6) {
+    // 5D and 6D orientations, 4D and 5D power tests: on lattice input (small
+    // integers, the exactly degenerate calls) the exact stage evaluates the
+    // determinant in plain doubles, exactly (xp::lattice_doubles) — cheaper
+    // than the dynamic filter's 2^(K-1) ErrDouble minors, which cannot decide
+    // a zero determinant anyway
+    double a[K][K];
+    if (xp::lattice_doubles<K>(p, w, xp::call_range<K>(p, w), a))
+      return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+  }
   if (const int s = lambda_sign_filter<K>(p, w)) return s;
   return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
 }

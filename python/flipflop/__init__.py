@@ -49,13 +49,15 @@ __all__ = ["ConvexHull", "Delaunay", "Voronoi", "QhullOptionError", "Certificate
 gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 
 _GPU = ("cuda-omp", "cuda") if gpu_backends else ()
-_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU, 4: ("reference",),
-                  5: ("reference",)}
+# 4D, 5D hulls: the boundary of the Delaunay triangulation by that backend
+_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU, 4: ("cpu", "reference"),
+                  5: ("cpu", "reference")}
 # per dimension, the default first: the multithreaded kernels exist for d = 2
-# and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the GPU kernels for d = 2
+# and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the cavity-insertion kernel for
+# d = 4, 5 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2
 # (kernels_cuda/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"), 4: ("reference",),
-                      5: ("reference",)}
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"), 4: ("cpu", "reference"),
+                      5: ("cpu", "reference")}
 
 
 def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:
@@ -339,7 +341,7 @@ class ConvexHull(_QhullUser):
     scipy.spatial.ConvexHull's constructor and attributes
     (docs/scipy_porting.md lists every name and difference). 4D and 5D:
     the boundary facets of the canonical Delaunay triangulation (the
-    reference's RT+1, certified; slow: for modest inputs), which are the
+    cavity-insertion kernel or the reference's RT+1, certified), which are the
     canonical hull's facets (_hull_from_triangulation says why), with the
     attributes below computed in Python; facets outward (det[f1-f0, ...,
     x-f0] > 0 beyond), ascending but for a swap of the last two.
@@ -392,8 +394,9 @@ class ConvexHull(_QhullUser):
     answer is exact); anything else raises QhullOptionError (a ValueError
     and a RuntimeError). str or bytes.
 
-    backend: 'cpu' (the default in 2D and 3D: the multithreaded kernels),
-    'reference' (the exact sequential reference; the only one in 4D and 5D)
+    backend: 'cpu' (the default: the multithreaded kernels in 2D and 3D,
+    the cavity-insertion kernel of the 4D / 5D triangulation),
+    'reference' (the exact sequential reference)
     or one of `gpu_backends` ('cuda-omp': the GPU kernels on thrust's OpenMP
     backend); every backend returns the same answer. strict=True (3D only)
     uses the 'cpu' kernel whatever the backend.
@@ -439,8 +442,8 @@ class ConvexHull(_QhullUser):
             attributes = _native("ConvexHull", _flipflop.hull2, sub, _backend(self._backend, _HULL_BACKENDS[2],
                                                                                 "ConvexHull"), threads)
         elif d > 3:
-            _backend(self._backend, _HULL_BACKENDS[d], "ConvexHull")
-            attributes = _hull_from_triangulation(sub, threads)
+            attributes = _hull_from_triangulation(sub, _backend(self._backend, _HULL_BACKENDS[d], "ConvexHull"),
+                                                  threads)
         elif self._strict:
             attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, sub, threads)
             polygons = [np.asarray(p, dtype=np.int64) for p in polys]
@@ -468,9 +471,9 @@ class ConvexHull(_QhullUser):
         self.volume, self.area, self.good, self.coplanar = volume, area, good, coplanar
 
 
-def _hull_from_triangulation(a: np.ndarray, threads: int):
+def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
     """The convex hull in 4D and 5D: the boundary facets of the canonical
-    Delaunay triangulation (the reference's RT+1, certified), with the
+    Delaunay triangulation (by `backend`, certified), with the
     attributes the compiled call gives in 2D and 3D, computed here in
     floating point. Why it is the canonical hull: an unweighted Delaunay
     triangulation covers the convex hull of all points, so its boundary
@@ -487,7 +490,7 @@ def _hull_from_triangulation(a: np.ndarray, threads: int):
     (the 3D hull's counter-clockwise rule), vertices ascending but for a
     swap of the last two where the orientation needs it; rows sorted."""
     d = a.shape[1]
-    simplices, _ = _native("ConvexHull", _flipflop.triangulate, a, None, "reference", False, threads)
+    simplices, _ = _native("ConvexHull", _flipflop.triangulate, a, None, backend, False, threads)
     nb = _flipflop.neighbors(simplices)
     i, j = np.nonzero(nb < 0)
     keep = np.ones((len(i), d + 1), dtype=bool)
@@ -717,7 +720,8 @@ class Delaunay(_QhullUser):
     `rtd --strict` on the command line).
 
     furthest_site=True: the furthest-site Delaunay triangulation (every
-    dimension 2..5, unweighted, the 'reference' backend; no strict view):
+    dimension 2..5, unweighted, the 'cpu' backend — the cavity-insertion
+    kernel, every dimension — or 'reference'; no strict view):
     the upper hull of the lifted points projected, its vertices those of
     the convex hull (the other points are in `redundant`; `coplanar` is
     empty, as scipy's), certified exactly. Its canonical answer is the upper
@@ -725,9 +729,8 @@ class Delaunay(_QhullUser):
     cospherical input it splits the ties as that perturbation decides
     (Qhull's may differ there). `equations` then point up (outward of the
     upper hull, as scipy's), and QGn / QG-n's `good` marks the simplices
-    whose circumsphere point n lies strictly outside of / not. RT+1 inserts
-    every point (interior points become redundant as the hull grows): for
-    modest inputs. incremental=True allows add_points(points,
+    whose circumsphere point n lies strictly outside of / not.
+    incremental=True allows add_points(points,
     restart=False, *, weights=None); it recomputes the triangulation of all
     points (the canonical answer does not depend on the insertion order, so
     it is the answer an in-place insertion would give); in-place insertion
@@ -739,10 +742,12 @@ class Delaunay(_QhullUser):
     and a RuntimeError). Default, as scipy: "Qbb Qc Qz Q12" ("Qbb Qc Qz Qx
     Q12" for d > 4). str or bytes.
 
-    backend: 'cpu' (2D and 3D, the default there: the multithreaded kernels
-    of kernels_cpu/rt2 and kernels_cpu/rt3, certified from their witnesses),
-    'reference' (the exact sequential reference: ffRT in 2D, RT+1 in 3D..5D,
-    the default in 4D and 5D) or, in 2D, one of `gpu_backends` ('cuda-omp':
+    backend: 'cpu' (the default: the multithreaded kernels of kernels_cpu/rt2
+    and kernels_cpu/rt3, certified from their witnesses, in 2D and 3D; the
+    cavity-insertion kernel of kernels_cpu/rtd, one thread, certified by the
+    d-dimensional certifier, in 4D and 5D), 'reference' (the exact
+    sequential reference: ffRT in 2D, RT+1 in 3D..5D) or, in 2D, one of
+    `gpu_backends` ('cuda-omp':
     the GPU ffRT on thrust's OpenMP backend); every backend returns the same
     simplices. strict=True derives the strict view from the backend's
     certified answer by the reference's (sequential) rule.
@@ -763,13 +768,15 @@ class Delaunay(_QhullUser):
             raise ValueError("Delaunay: furthest_site=True has no strict view (strict=True)")
         if self.furthest_site and weights is not None:
             raise ValueError("Delaunay: furthest_site=True takes no weights")
-        if self.furthest_site and backend not in (None, "reference"):
-            raise ValueError(f"Delaunay: furthest_site=True is computed by the 'reference' backend, got {backend!r}")
+        if self.furthest_site and backend not in (None, "cpu", "reference"):
+            raise ValueError(f"Delaunay: furthest_site=True is computed by the 'cpu' or the 'reference' backend, "
+                             f"got {backend!r}")
         a = _points(points, (2, 3, 4, 5), "Delaunay", finite=False)
         d = a.shape[1]
         self._options = _qhull_options(qhull_options, "Delaunay", "Qbb Qc Qz Qx Q12" if d > 4 else "Qbb Qc Qz Q12")
         self._strict, self._threads = bool(strict), _threads(threads, "Delaunay")
-        self._backend = "reference" if self.furthest_site else _backend(backend, _DELAUNAY_BACKENDS[d], "Delaunay")
+        self._backend = ((backend or "cpu") if self.furthest_site
+                         else _backend(backend, _DELAUNAY_BACKENDS[d], "Delaunay"))
         self._incremental, self._closed = bool(incremental), False
         self._update(a, _weights(weights, a.shape[0], "Delaunay"))
 

@@ -69,6 +69,7 @@
 #include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
+#include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 #include "reference/rtd/triangulation_d.hpp"
 
@@ -596,23 +597,25 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 // (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by the
 // cpu backend (kernels_cpu/rt2) or ffRT (the 2D reference), d = 3 by the cpu
 // backend (kernels_cpu/rt3, certified from its witness by cpu::certify_rt3,
-// as `flipflop rt3|dt3`) or RT+1, d = 4, 5 by RT+1; all canonical. The
-// strict views are derived from the certified canonical answer by the
-// reference's rules (strict_rt2, strict_rtd), whichever backend computed it.
-// furthest: the furthest-site triangulation (any d, the reference's RT+1 with
-// every power sign negated: ref::rtd_incremental's `furthest`), certified by
-// certify::rtd with the same negation; not with strict.
+// as `flipflop rt3|dt3`) or RT+1, d = 4, 5 by the cpu backend (the cavity
+// kernel kernels_cpu/rtd, as `flipflop rtd --dim 4|5`) or RT+1, certified by
+// certify::rtd; all canonical. The strict views are derived from the
+// certified canonical answer by the reference's rules (strict_rt2,
+// strict_rtd), whichever backend computed it. furthest: the furthest-site
+// triangulation (any d, every power sign negated: the cavity kernel's or
+// ref::rtd_incremental's `furthest`), certified by certify::rtd with the same
+// negation; not with strict.
 std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::optional<Vector>& w,
                                               const std::string& backend, bool strict, int threads,
                                               bool furthest) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
-  if (furthest && (strict || backend != "reference"))
-    throw std::invalid_argument("the furthest-site triangulation is computed by the 'reference' backend, "
-                                "without strict");
-  if (!(backend == "reference" || (backend == "cpu" && (d == 2 || d == 3)) || (gpu_backend(backend) && d == 2)))
-    throw std::invalid_argument("Delaunay backends: 'cpu' (2D, 3D), 'reference'" +
+  if (furthest && (strict || (backend != "reference" && backend != "cpu")))
+    throw std::invalid_argument("the furthest-site triangulation is computed by the 'cpu' or the 'reference' "
+                                "backend, without strict");
+  if (!(backend == "reference" || backend == "cpu" || (gpu_backend(backend) && d == 2)))
+    throw std::invalid_argument("Delaunay backends: 'cpu', 'reference'" +
                                 (backend_list("").empty() ? std::string() : backend_list("") + " (2D)") + "; got '" +
                                 backend + "'");
   std::vector<std::vector<Index>> simplices;
@@ -624,7 +627,10 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     if (furthest) {
-      ref::Rtd r = ref::rtd_incremental(ps, nullptr, /*furthest=*/true);
+      cpu::RtdCavityOptions o;
+      o.furthest = true;
+      o.threads = threads;
+      ref::Rtd r = backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps, nullptr, true);
       check_certified(certify::rtd(ps, r.simplices, certify::Level::canonical, /*furthest=*/true),
                       "furthest-site Delaunay");
       simplices = std::move(r.simplices);
@@ -673,7 +679,9 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
         flat_tets = true;
       }
     } else {
-      ref::Rtd r = ref::rtd_incremental(ps);
+      cpu::RtdCavityOptions o;
+      o.threads = threads;
+      ref::Rtd r = backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps);
       check_certified(certify::rtd(ps, r.simplices), "Delaunay");
       simplices = std::move(r.simplices);
       redundant = std::move(r.redundant);

@@ -533,7 +533,7 @@ def test_bad_input_raises_like_scipy():
     with pytest.raises(ValueError, match="furthest_site"):
         flipflop.Delaunay(p, furthest_site=True, weights=np.zeros(len(p)))
     with pytest.raises(ValueError, match="furthest_site"):
-        flipflop.Delaunay(p, furthest_site=True, backend="cpu")
+        flipflop.Delaunay(p, furthest_site=True, backend="cuda-omp")
     t = flipflop.Delaunay(p)
     with pytest.raises(ValueError):
         t.plane_distance(p[:, :2])

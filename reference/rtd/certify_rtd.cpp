@@ -5,10 +5,11 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
+#include <optional>
 
 #include <gmpxx.h>
 
+#include "predicates/lambda_filter.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -19,14 +20,7 @@ namespace {
 
 constexpr int kMaxD = 5;
 using FacetKey = std::array<Index, kMaxD>;  // sorted facet vertices, unused = ~0
-
-struct FacetKeyHash {
-  std::size_t operator()(const FacetKey& k) const {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (Index x : k) h = (h ^ x) * 0x100000001B3ull + (h >> 29);
-    return static_cast<std::size_t>(h);
-  }
-};
+using ErrDoubleRow = std::array<pred::ErrDouble, kMaxD + 1>;
 
 std::string simplex_str(const std::vector<Index>& t) {
   std::string o = "(";
@@ -113,8 +107,172 @@ std::string index_problem(const std::vector<std::vector<Index>>& simplices, std:
   return {};
 }
 
+// The orient_d sign of a boundary facet's simplex with its apex replaced by
+// x, as an affine function of x: det Λ is linear in the replaced row, so it
+// is Σ_j c_j (x_j - b_j) + c_d, b a vertex of the facet (translation changes
+// no determinant) and c the cofactors of that row — (d x d) minors of the
+// other rows, computed once per facet in ErrDouble (err_double.hpp: a proven
+// running error bound, the rounded differences included). Evaluating it for a
+// vertex in ErrDouble and taking sign_if_certain decides the sign exactly
+// whenever the bound allows; an undecided vertex (on or near the facet's
+// hyperplane: every exactly degenerate one) goes to the exact SoS predicate.
+// The rows are those of Checker::orient (the convention's swap included), so
+// a decided sign is the one it would return.
+struct FacetForm {
+  int d = 0;
+  ErrDoubleRow c;  // c[0..d-1] coordinate cofactors, c[d] the 1-column's
+  const double* base = nullptr;
+  FacetForm(const Checker& ck, const std::vector<Index>& t, int apex) : d(ck.d) {
+    int pos[kMaxD + 1];
+    for (int k = 0; k <= d; ++k) pos[k] = k;
+    if (ck.swap_last_two()) std::swap(pos[d - 1], pos[d]);
+    int xrow = 0;  // the row the apex's replacement lands in
+    for (int k = 0; k <= d; ++k)
+      if (pos[k] == apex) xrow = k;
+    base = ck.ps.point(t[static_cast<std::size_t>(apex == 0 ? 1 : 0)]);
+    // rows of Λ (translated by base) other than xrow, with the 1-column
+    pred::ErrDouble rows[kMaxD][kMaxD + 1];
+    int r = 0;
+    for (int k = 0; k <= d; ++k) {
+      if (k == xrow) continue;
+      const double* p = ck.ps.point(t[static_cast<std::size_t>(pos[k])]);
+      for (int j = 0; j < d; ++j) rows[r][j] = pred::ErrDouble(p[j]) - pred::ErrDouble(base[j]);
+      rows[r][d] = pred::ErrDouble(1.0);
+      ++r;
+    }
+    for (int j = 0; j <= d; ++j) {
+      pred::ErrDouble m[kMaxD * kMaxD];
+      for (int a = 0; a < d; ++a) {
+        int b = 0;
+        for (int col = 0; col <= d; ++col)
+          if (col != j) m[a * d + b++] = rows[a][col];
+      }
+      pred::ErrDouble minor = det_err(m, d);
+      if ((xrow + j) % 2 != 0) minor = -minor;
+      c[static_cast<std::size_t>(j)] = minor;
+    }
+  }
+  static pred::ErrDouble det_err(const pred::ErrDouble* m, int n) {
+    switch (n) {
+      case 2: return pred::det_by_minors<2>(m);
+      case 3: return pred::det_by_minors<3>(m);
+      case 4: return pred::det_by_minors<4>(m);
+      default: return pred::det_by_minors<5>(m);
+    }
+  }
+  // +1 / -1 when certain, 0 when undecided
+  int sign(const double* x) const {
+    pred::ErrDouble v = c[static_cast<std::size_t>(d)];
+    for (int j = 0; j < d; ++j) v = v + c[static_cast<std::size_t>(j)] * (pred::ErrDouble(x[j]) - pred::ErrDouble(base[j]));
+    return pred::sign_if_certain(v);
+  }
+};
+
+// boundary-is-hull at the canonical level in time linear in the boundary
+// (certify_rtd.hpp, "The boundary in linear time"): the boundary facets pair
+// up at every ridge, convexly; an interior vertex v (not on the boundary)
+// lies strictly inside every boundary facet; the vertical ray up from v
+// crosses exactly one of them. Returns "" when all hold, the violation when
+// one fails, nothing when every vertex is a boundary vertex (the caller then
+// tests every boundary vertex against every boundary facet).
+std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<std::vector<Index>>& S,
+                                           const std::vector<std::pair<std::uint32_t, int>>& boundary,
+                                           const std::vector<Index>& bverts) {
+  const int d = ck.d;
+  auto facet_of = [&](std::size_t k) {
+    const auto& [s, i] = boundary[k];
+    std::vector<Index> f;
+    for (int j = 0; j <= d; ++j)
+      if (j != i) f.push_back(S[s][static_cast<std::size_t>(j)]);
+    return f;
+  };
+  auto outside = [&](std::size_t k, Index x, const std::string& who) {
+    return "boundary-is-hull: " + who + " " + std::to_string(x) + " is not strictly inside the boundary facet " +
+           simplex_str(facet_of(k)) + " of simplex " + simplex_str(S[boundary[k].first]);
+  };
+  // an interior vertex: the smallest vertex that is not a boundary vertex
+  std::vector<char> is_vertex(ck.ps.size(), 0);
+  for (const auto& t : S)
+    for (Index x : t) is_vertex[x] = 1;
+  for (Index x : bverts) is_vertex[x] = 0;
+  Index v = 0;
+  while (v < is_vertex.size() && !is_vertex[v]) ++v;
+  if (v == is_vertex.size()) return std::nullopt;
+  // the ridges of the boundary: each in exactly two boundary facets, the
+  // vertex of each not on the ridge strictly inside the other
+  struct Ridge {
+    FacetKey key;
+    std::uint32_t k;  // boundary facet
+    int j;            // position (in its simplex) of the facet's vertex off the ridge
+  };
+  std::vector<Ridge> ridges(boundary.size() * static_cast<std::size_t>(d));
+  std::size_t nr = 0;
+  for (std::uint32_t k = 0; k < boundary.size(); ++k) {
+    const auto& [s, i] = boundary[k];
+    for (int j = 0; j <= d; ++j) {
+      if (j == i) continue;
+      Ridge& r = ridges[nr++];
+      r.k = k;
+      r.j = j;
+      r.key.fill(~Index{0});
+      int c = 0;
+      for (int q = 0; q <= d; ++q)
+        if (q != i && q != j) r.key[static_cast<std::size_t>(c++)] = S[s][static_cast<std::size_t>(q)];
+      std::sort(r.key.begin(), r.key.begin() + c);
+    }
+  }
+  std::sort(ridges.begin(), ridges.end(), [](const Ridge& a, const Ridge& b) {
+    return a.key != b.key ? a.key < b.key : a.k != b.k ? a.k < b.k : a.j < b.j;
+  });
+  for (std::size_t a = 0; a < ridges.size();) {
+    std::size_t b = a + 1;
+    while (b < ridges.size() && ridges[b].key == ridges[a].key) ++b;
+    if (b - a != 2)
+      return "boundary-is-hull: the boundary facets do not form a closed surface: the ridge " +
+             simplex_str(std::vector<Index>(ridges[a].key.begin(), ridges[a].key.begin() + (d - 1))) + " lies in " +
+             std::to_string(b - a) + " boundary facet" + (b - a == 1 ? "" : "s");
+    for (int side = 0; side < 2; ++side) {
+      const Ridge &f = ridges[a + static_cast<std::size_t>(side)], &g = ridges[a + 1 - static_cast<std::size_t>(side)];
+      const Index x = S[boundary[g.k].first][static_cast<std::size_t>(g.j)];
+      if (ck.orient_with(S[boundary[f.k].first], boundary[f.k].second, x) <= 0)
+        return outside(f.k, x, "boundary vertex");
+    }
+    a = b;
+  }
+  // v strictly inside every boundary facet; the vertical ray up from v: a
+  // facet f is crossed when v's projection (the first d-1 coordinates) lies
+  // in f's projection and f passes above v — then (header) orient_d(f, v)
+  // has the sign of f's projected orientation
+  std::size_t crossed = 0;
+  for (std::size_t k = 0; k < boundary.size(); ++k) {
+    const auto& [s, i] = boundary[k];
+    if (ck.orient_with(S[s], i, v) <= 0) return outside(k, v, "interior vertex");
+    pred::Pt p[kMaxD + 1];
+    int c = 0;
+    for (int j = 0; j <= d; ++j)
+      if (j != i) p[c++] = ck.P(S[s][static_cast<std::size_t>(j)]);
+    const int o = pred::orient_d(d - 1, p);
+    bool inside = true;
+    for (int j = 0; j < d && inside; ++j) {
+      const pred::Pt keep = p[j];
+      p[j] = ck.P(v);
+      inside = pred::orient_d(d - 1, p) == o;
+      p[j] = keep;
+    }
+    if (!inside) continue;
+    p[d] = ck.P(v);
+    if (pred::orient_d(d, p) == o) ++crossed;
+  }
+  if (crossed != 1)
+    return "boundary-is-hull: the boundary facets wind " + std::to_string(crossed) + " times around the interior "
+           "vertex " + std::to_string(v) + " (the vertical ray up from it crosses " + std::to_string(crossed) +
+           " of them; a convex boundary: exactly one)";
+  return std::string();
+}
+
 // Conditions simplex-orientation, facet-manifold, boundary-is-hull (header).
-// Fills `F` for the later conditions.
+// Fills `F` for the later conditions. Facets are matched by sorting their
+// keys (sorted vertices, unused entries ~0), not by a hash map of vectors.
 std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, Facets& F) {
   const int d = ck.d;
   const std::size_t w = static_cast<std::size_t>(d + 1);
@@ -126,53 +284,56 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
              "certified at the canonical level)";
     if (o < 0) return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
   }
-  // facet -> (simplex, position, induced orientation sign)
-  struct Entry {
+  // every (simplex, position): its facet's key and induced orientation
+  struct Half {
+    FacetKey key;
     std::uint32_t s;
     int i;
     bool odd;
-    int count;
-    std::uint32_t s2;
-    int i2;
   };
-  std::unordered_map<FacetKey, Entry, FacetKeyHash> facets;
-  facets.reserve(S.size() * w);
+  std::vector<Half> halves(S.size() * w);
   for (std::uint32_t s = 0; s < S.size(); ++s) {
     for (int i = 0; i <= d; ++i) {
-      std::vector<Index> f;
+      Half& h = halves[s * w + static_cast<std::size_t>(i)];
+      h.key.fill(~Index{0});
+      int c = 0;
       for (int j = 0; j <= d; ++j)
-        if (j != i) f.push_back(S[s][static_cast<std::size_t>(j)]);
+        if (j != i) h.key[static_cast<std::size_t>(c++)] = S[s][static_cast<std::size_t>(j)];
       // induced orientation of the facet: (-1)^i (t without t_i); compare
       // with its sorted order
-      const bool odd = odd_sorting_parity(f) != (i % 2 != 0);
-      std::sort(f.begin(), f.end());
-      FacetKey key;
-      key.fill(~Index{0});
-      std::copy(f.begin(), f.end(), key.begin());
-      auto [it, fresh] = facets.try_emplace(key, Entry{s, i, odd, 1, 0, 0});
-      if (fresh) continue;
-      Entry& e = it->second;
-      if (e.count >= 2)
-        return "facet-manifold: facet " + simplex_str(f) + " lies in three or more simplices";
-      if (e.odd == odd)
-        return "facet-manifold: simplices " + simplex_str(S[e.s]) + " and " + simplex_str(S[s]) +
-               " lie on the same side of their common facet " + simplex_str(f);
-      e.count = 2;
-      e.s2 = s;
-      e.i2 = i;
+      bool odd = i % 2 != 0;
+      for (int a = 0; a < d; ++a)
+        for (int b = a + 1; b < d; ++b)
+          if (h.key[static_cast<std::size_t>(b)] < h.key[static_cast<std::size_t>(a)]) odd = !odd;
+      std::sort(h.key.begin(), h.key.begin() + d);
+      h.s = s;
+      h.i = i;
+      h.odd = odd;
     }
   }
+  std::sort(halves.begin(), halves.end(), [](const Half& a, const Half& b) {
+    return a.key != b.key ? a.key < b.key : a.s != b.s ? a.s < b.s : a.i < b.i;
+  });
+  auto facet_vec = [&](const FacetKey& k) { return std::vector<Index>(k.begin(), k.begin() + d); };
   F.d = d;
   F.across.assign(S.size() * w, -1);
   std::vector<std::pair<std::uint32_t, int>> boundary;
-  for (const auto& [key, e] : facets) {
-    (void)key;
-    if (e.count == 2) {
-      F.across[e.s * w + static_cast<std::size_t>(e.i)] = e.s2;
-      F.across[e.s2 * w + static_cast<std::size_t>(e.i2)] = e.s;
+  for (std::size_t a = 0; a < halves.size();) {
+    std::size_t b = a + 1;
+    while (b < halves.size() && halves[b].key == halves[a].key) ++b;
+    if (b - a >= 3)
+      return "facet-manifold: facet " + simplex_str(facet_vec(halves[a].key)) + " lies in three or more simplices";
+    if (b - a == 2) {
+      const Half &x = halves[a], &y = halves[a + 1];
+      if (x.odd == y.odd)
+        return "facet-manifold: simplices " + simplex_str(S[x.s]) + " and " + simplex_str(S[y.s]) +
+               " lie on the same side of their common facet " + simplex_str(facet_vec(x.key));
+      F.across[x.s * w + static_cast<std::size_t>(x.i)] = y.s;
+      F.across[y.s * w + static_cast<std::size_t>(y.i)] = x.s;
     } else {
-      boundary.emplace_back(e.s, e.i);
+      boundary.emplace_back(halves[a].s, halves[a].i);
     }
+    a = b;
   }
   if (boundary.empty()) return "boundary-is-hull: the simplices have no boundary";
   std::sort(boundary.begin(), boundary.end());
@@ -182,12 +343,15 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
       if (j != i) bverts.push_back(S[s][static_cast<std::size_t>(j)]);
   std::sort(bverts.begin(), bverts.end());
   bverts.erase(std::unique(bverts.begin(), bverts.end()), bverts.end());
+  if (!ck.exact)
+    if (const std::optional<std::string> why = convex_boundary(ck, S, boundary, bverts)) return *why;
   for (const auto& [s, i] : boundary) {
     const auto& t = S[s];
+    const FacetForm form(ck, t, i);
     for (Index x : bverts) {
-      if (std::find(t.begin(), t.end(), x) != t.end() && x != t[static_cast<std::size_t>(i)]) continue;  // on f
-      if (x == t[static_cast<std::size_t>(i)]) continue;  // the simplex's own apex: inside by orientation
-      const int o = ck.orient_with(t, i, x);
+      if (std::find(t.begin(), t.end(), x) != t.end()) continue;  // on f, or the simplex's own apex
+      int o = form.sign(ck.ps.point(x));
+      if (o == 0) o = ck.orient_with(t, i, x);
       if (o < 0 || (o == 0 && !ck.exact)) {
         std::vector<Index> f;
         for (int j = 0; j <= d; ++j)

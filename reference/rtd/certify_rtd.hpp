@@ -55,8 +55,40 @@
 //     lifted simplex containing it lies strictly above the lower hull (which
 //     is that convex function), so it is redundant: the triangulation is
 //     RT(S ⊕ W), the unique lower hull of all perturbed lifted points.
-// Cost: O(|B-vertices| · |B|) orient_d for the hull condition, O(#simplices)
-// power_d, and a visibility walk per missing point.
+// The boundary in linear time (Level::canonical, when some vertex v of the
+// simplices is not a boundary vertex): boundary-is-hull is then established
+// by three checks whose cost is linear in |B| instead of testing every
+// boundary vertex against every boundary facet:
+//   (a) every ridge of B lies in exactly two facets of B, and each of the
+//       two has its vertex off the ridge strictly on the inner side of the
+//       other (B is a closed surface, convex at every ridge);
+//   (b) v lies strictly on the inner side of every facet of B;
+//   (c) the vertical ray up from v (the last coordinate growing) crosses
+//       exactly one facet of B: a facet f (vertices f_0..f_{d-1}) is crossed
+//       iff the projection of v to the first d-1 coordinates lies strictly in
+//       f's projection and f passes strictly above v; since det Λ(f, v) is
+//       affine in v's last coordinate with slope -orient_{d-1}(f projected),
+//       "above" is sign orient_d(f, v) = sign orient_{d-1}(f projected).
+//       Projections are predicates on a prefix of the columns, so they are
+//       signs of the same perturbed configuration (predicates.hpp).
+// Why they suffice: by (b) the central projection from v maps every facet
+// of B onto the sphere around v preserving orientation, so its degree is the
+// number of facets over any regular value — by (c), 1 — and every direction
+// from v meets B exactly once: B is an embedded surface star-shaped from v.
+// A compact region bounded by an embedded polyhedral surface that is convex
+// at every ridge is locally convex at every boundary point (at a face of
+// lower dimension its link is again such a surface, one dimension lower, by
+// induction), hence convex (Tietze–Nakajima). Every vertex of B is then in
+// the closed region and, the configuration being in general position under
+// SoS, strictly inside every facet it is not on: the condition of 1. holds.
+// (The degree check is what (a) and (b) cannot replace: a boundary winding
+// twice around v — a branched double cover — is convex at every ridge.)
+// When every vertex is a boundary vertex, and at Level::exact, the quadratic
+// test runs (each pair first through a floating-point filter of the facet's
+// affine orientation form, certify_rtd.cpp FacetForm).
+// Cost: O(|B|) orient_d for the hull condition (O(|B-vertices| · |B|)
+// without an interior vertex), O(#simplices) power_d, and a visibility walk
+// per missing point.
 #pragma once
 
 #include <string>

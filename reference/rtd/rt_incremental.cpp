@@ -50,14 +50,11 @@
 
 namespace flipflop::ref {
 
-namespace {
-using namespace rtd;
-
 // ---- input validation -----------------------------------------------------------
 
-void validate_input(const PointSet& ps) {
-  if (ps.dim < 2 || ps.dim > kMaxDim)
-    throw std::invalid_argument("rtd needs points of dimension 2.." + std::to_string(kMaxDim) + ", got " +
+void validate_rtd_input(const PointSet& ps) {
+  if (ps.dim < 2 || ps.dim > rtd::kMaxDim)
+    throw std::invalid_argument("rtd needs points of dimension 2.." + std::to_string(rtd::kMaxDim) + ", got " +
                                 std::to_string(ps.dim));
   if (ps.weighted && ps.weights.size() != ps.size())
     throw std::invalid_argument("rtd: " + std::to_string(ps.weights.size()) + " weights for " +
@@ -69,6 +66,9 @@ void validate_input(const PointSet& ps) {
   if (ps.size() > 0xfffffff0u) throw std::invalid_argument("rtd: too many points");
   if (std::string why = dimension_problem(ps); !why.empty()) throw std::invalid_argument(why);
 }
+
+namespace {
+using namespace rtd;
 
 // ---- insertion order ----------------------------------------------------------------
 // Morton (Z-order) of the points in their bounding box: spatial coherence for
@@ -259,7 +259,7 @@ struct Inserter {
 }  // namespace
 
 rtd::TriangulationD build_rtd(const PointSet& ps, RtdStats* stats, bool pulled, bool furthest) {
-  validate_input(ps);
+  validate_rtd_input(ps);
   RtdStats local;
   RtdStats& st = stats ? *stats : local;
   st = RtdStats{};

@@ -47,6 +47,12 @@ struct Rtd {
   std::vector<Index> redundant;               // sorted
 };
 
+// The input checks of rtd_incremental (shared with kernels_cpu/rtd): throws
+// std::invalid_argument for a dimension outside 2..kMaxDim, a weight count
+// that is not the point count, a non-finite value, more than 2^32 - 16 points,
+// or points that do not span R^d (dimension_problem's message).
+void validate_rtd_input(const PointSet& ps);
+
 // RT+1 [ES92]: insert the points one at a time (in a spatially coherent
 // order; the result does not depend on the order); a point inside the
 // current hull is located (exact visibility walk) and is either redundant

@@ -1,0 +1,410 @@
+// rtd_cavity.cpp — the d-dimensional regular triangulation by cavity
+// insertion (rtd_cavity.hpp: stages, and why the answer is the reference's).
+//
+// ============================================================================
+// Insertion: the cavity step is Edelsbrunner–Shah's flips, composed
+// ============================================================================
+// The argument of kernels_cpu/rt3/rt3.cpp, in R^d. Lift every point x to
+// x̂ = (x, |x|² - w) in R^(d+1) (thesis §2.1, §9.2.2; the height perturbed as
+// an independent coordinate under SoS). With the virtual vertex v read as the
+// point at infinity straight up, the extended triangulation is the boundary
+// complex of Q = conv(lifted points) + upward ray: a real simplex is a lower
+// facet of Q, a virtual simplex (v, f) the vertical facet over the hull facet
+// f. Inserting p adds p̂ to Q (beneath–beyond). A facet is VISIBLE from p̂
+// when p̂ lies strictly on its outer side:
+//   * a real simplex (positive under orient_d): p̂ strictly below its lifted
+//     hyperplane — power_d(simplex, p) > 0 (predicates.hpp);
+//   * a virtual simplex (v, f): p strictly beyond the hull facet f — orient_d
+//     of its tuple with v replaced by p > 0 (the orientation rule of
+//     reference/rtd/triangulation_d.hpp, make_simplex).
+// Under SoS no facet is flat to p̂. The visible facets of a convex polytope
+// form a non-empty connected set whose boundary (the horizon) is a closed
+// (d-1)-manifold of ridges; conv(Q ∪ p̂) keeps the invisible facets and adds
+// the cone from p̂ over the horizon. No visible facet (the real simplex
+// containing p passes below p̂): p is redundant, for good (Q only grows).
+// Edelsbrunner–Shah's RT+1 ([ES92]; thesis §3.1 Table 3.1, §9.1;
+// reference/rtd/rt_incremental.cpp) — the 1-(d+1) flip into the simplex
+// containing p (or, outside the hull, the placing step), then monotonic flips
+// of p's non-regular link ridges — ends in the regular triangulation of the
+// points so far, unique under SoS; each of its flips replaces facets visible
+// from p̂ by facets through p̂ (the lifted surface only descends), and the
+// cavity step performs the whole sequence at once: it removes every visible
+// facet (a vertex all of whose simplices are visible is the (d+1)-1 flip's
+// removed vertex, redundant from then on) and creates the cone.
+//
+// The visible set is found by a breadth-first search from the simplex the
+// walk ends in (every visible facet is reached through visible facets), so
+// only the visible simplices and their neighbours are tested. The new simplex
+// over a horizon ridge is the visible simplex with its corner opposite that
+// ridge replaced by p (same position): p lies on that corner's side of the
+// ridge, so a real new simplex stays positive and a virtual one keeps the
+// orientation rule; across every facet the two tuples still induce opposite
+// orientations.
+#include "kernels_cpu/rtd/rtd_cavity.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "kernels_cpu/brio.hpp"
+#include "kernels_cpu/parallel.hpp"
+#include "predicates/staged.hpp"
+#include "reference/rtd/canonical_d.hpp"
+
+namespace flipflop::cpu {
+
+namespace {
+
+constexpr std::uint32_t kDead = 0xffffffffu;
+
+// Morton index of the point's cell on the 2^(30/D) grid per axis (< 2^30).
+template <int D>
+std::uint32_t morton(const double* x, const std::array<double, 2 * D>& box) {
+  constexpr int kBits = 30 / D;
+  std::uint32_t cell[D];
+  for (int j = 0; j < D; ++j) cell[j] = brio::grid<kBits>(x[j], box[static_cast<std::size_t>(j)], box[static_cast<std::size_t>(j + D)]);
+  std::uint32_t key = 0;
+  for (int b = kBits - 1; b >= 0; --b)
+    for (int j = 0; j < D; ++j) key = (key << 1) | ((cell[j] >> b) & 1u);
+  return key;
+}
+
+template <int D>
+class Builder {
+  static constexpr int W = D + 1;  // corners per simplex
+  static constexpr int kKey = D - 1;  // vertices of a cone facet's key (its ridge minus one corner)
+
+ public:
+  Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest)
+      : n_(order.size()), V_(static_cast<std::uint32_t>(order.size())), furthest_(furthest) {
+    xs_.resize(n_ * D);
+    ws_.resize(n_);
+    ids_.resize(n_);
+    for (std::size_t k = 0; k < n_; ++k) {
+      const double* x = ps.point(order[k]);
+      for (int j = 0; j < D; ++j) xs_[k * D + static_cast<std::size_t>(j)] = x[j];
+      ws_[k] = ps.weight(order[k]);
+      ids_[k] = order[k];
+    }
+    f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D, ps.weighted ? ps.weights.data() : nullptr);
+    const std::size_t guess = 8 * n_ * static_cast<std::size_t>(D) + 64;
+    tv_.reserve(guess * W);
+    tn_.reserve(guess * W);
+    mark_.reserve(guess);
+  }
+
+  void run(RtdCavityStats& st) {
+    start(st);
+    for (std::size_t k = W; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
+  }
+
+  ref::Rtd output(RtdCavityStats& st) const {
+    ref::Rtd r;
+    std::vector<char> vertex(n_, 0);
+    std::vector<Index> t(W);
+    const std::size_t slots = mark_.size();
+    for (std::size_t s = 0; s < slots; ++s) {
+      const std::uint32_t* v = tv_.data() + s * W;
+      if (v[0] == kDead || is_virtual(static_cast<std::uint32_t>(s))) continue;
+      for (int j = 0; j < W; ++j) {
+        t[static_cast<std::size_t>(j)] = ids_[v[j]];
+        vertex[v[j]] = 1;
+      }
+      r.simplices.push_back(canonical_simplex(t, Orientation::orient_d));
+    }
+    std::sort(r.simplices.begin(), r.simplices.end());
+    for (std::size_t k = 0; k < n_; ++k)
+      if (!vertex[k]) r.redundant.push_back(ids_[k]);
+    std::sort(r.redundant.begin(), r.redundant.end());
+    st.removed = r.redundant.size() - st.discarded;
+    return r;
+  }
+
+ private:
+  std::size_t n_;
+  std::uint32_t V_;  // the virtual vertex (position n)
+  bool furthest_;
+  std::vector<double> xs_, ws_;
+  std::vector<pred::PointId> ids_;
+  pred::StaticFilter f_;
+  std::vector<std::uint32_t> tv_, tn_, mark_, free_;
+  std::uint32_t stamp_ = 0;
+  std::uint32_t last_ = kDead;
+  std::uint64_t rng_ = 0x2545F4914F6CDD1Dull;
+
+  struct Horizon {
+    std::uint32_t v[W];  // the visible simplex's tuple with corner i := p
+    int i;               // corner of p (the facet opposite it is the horizon ridge)
+    std::uint32_t out;   // link W u + j of the invisible neighbour across it
+  };
+  std::vector<std::uint32_t> cavity_;
+  std::vector<Horizon> horizon_;
+  struct Half {
+    std::array<std::uint32_t, kKey> key;
+    std::uint32_t link;
+    std::uint8_t state;  // 0 empty, 1 open, 2 matched (tombstone)
+  };
+  std::vector<Half> table_;
+
+  const std::uint32_t* simplex(std::uint32_t t) const { return tv_.data() + static_cast<std::size_t>(t) * W; }
+  bool is_virtual(std::uint32_t t) const {
+    const std::uint32_t* v = simplex(t);
+    bool any = false;
+    for (int j = 0; j < W; ++j) any |= v[j] == V_;
+    return any;
+  }
+
+  // orient_d of D+1 positions (none virtual)
+  int orient(const std::uint32_t* u) const {
+    pred::PointId id[W];
+    const double* p[W];
+    for (int j = 0; j < W; ++j) {
+      id[j] = ids_[u[j]];
+      p[j] = xs_.data() + static_cast<std::size_t>(u[j]) * D;
+    }
+    return pred::lambda_sign_staged<W>(&f_, id, p, static_cast<const double*>(nullptr));
+  }
+  // power_d of a real simplex and p: > 0 iff p̂ strictly below its lifted hyperplane
+  int power(const std::uint32_t* u, std::uint32_t q) const {
+    pred::PointId id[W + 1];
+    const double* p[W + 1];
+    double w[W + 1];
+    for (int j = 0; j <= W; ++j) {
+      const std::uint32_t x = j < W ? u[j] : q;
+      id[j] = ids_[x];
+      p[j] = xs_.data() + static_cast<std::size_t>(x) * D;
+      w[j] = ws_[x];
+    }
+    const int s = pred::lambda_sign_staged<W + 1>(&f_, id, p, w);
+    return furthest_ ? -s : s;
+  }
+  bool visible(std::uint32_t t, std::uint32_t p) const {
+    const std::uint32_t* v = simplex(t);
+    for (int j = 0; j < W; ++j)
+      if (v[j] == V_) {
+        std::uint32_t u[W];
+        for (int q = 0; q < W; ++q) u[q] = v[q];
+        u[j] = p;
+        return orient(u) > 0;
+      }
+    return power(v, p) > 0;
+  }
+
+  std::uint32_t take_slot() {
+    if (!free_.empty()) {
+      const std::uint32_t s = free_.back();
+      free_.pop_back();
+      return s;
+    }
+    const std::size_t s = mark_.size();
+    if ((s + 1) * W >= kDead) throw std::length_error("rtd (cpu): more simplices than 32-bit neighbour links hold");
+    tv_.resize((s + 1) * W, kDead);
+    tn_.resize((s + 1) * W, kDead);
+    mark_.push_back(0);
+    return static_cast<std::uint32_t>(s);
+  }
+
+  // The first simplex (positions 0..D: distinct indices, never flat under
+  // SoS), made positive, and its D+1 virtual simplices (v, facet i): the real
+  // tuple with corner i := v and two other corners swapped, so that replacing
+  // v by a point beyond facet i gives a positive tuple (make_simplex's rule).
+  void start(RtdCavityStats& st) {
+    std::uint32_t r[W];
+    for (int j = 0; j < W; ++j) r[j] = static_cast<std::uint32_t>(j);
+    if (orient(r) < 0) std::swap(r[0], r[1]);
+    const std::uint32_t t0 = take_slot();
+    for (int j = 0; j < W; ++j) tv_[static_cast<std::size_t>(t0) * W + static_cast<std::size_t>(j)] = r[j];
+    cavity_.clear();
+    horizon_.clear();
+    for (int i = 0; i < W; ++i) {
+      Horizon h;
+      for (int j = 0; j < W; ++j) h.v[j] = r[j];
+      h.v[i] = V_;
+      const int j1 = i == 0 ? 1 : 0, j2 = (i == 0 || i == 1) ? 2 : 1;
+      std::swap(h.v[j1], h.v[j2]);
+      h.i = i;
+      h.out = t0 * W + static_cast<std::uint32_t>(i);
+      horizon_.push_back(h);
+    }
+    link_cone(st);
+    last_ = t0;
+    st.inserted = W;
+  }
+
+  // One simplex per horizon entry (the cavity's slots first), linked to the
+  // invisible neighbour across its horizon ridge and, across its other D
+  // facets — each the apex and a (D-2)-face of the horizon, shared by exactly
+  // two horizon ridges (the horizon is a closed (D-1)-manifold) — to the new
+  // simplex across, matched by that face's sorted vertices in a hash table.
+  void link_cone(RtdCavityStats& st) {
+    const std::size_t m = horizon_.size();
+    std::size_t cap = 16;
+    while (cap < 2 * m * D) cap <<= 1;
+    if (table_.size() < cap) table_.resize(cap);
+    for (std::size_t q = 0; q < cap; ++q) table_[q].state = 0;
+    const std::size_t mask = cap - 1;
+    std::ptrdiff_t open = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+      const Horizon& h = horizon_[k];
+      const std::uint32_t s = k < cavity_.size() ? cavity_[k] : take_slot();
+      std::uint32_t* v = tv_.data() + static_cast<std::size_t>(s) * W;
+      bool real = true;
+      for (int j = 0; j < W; ++j) {
+        v[j] = h.v[j];
+        real &= h.v[j] != V_;
+      }
+      tn_[static_cast<std::size_t>(s) * W + static_cast<std::size_t>(h.i)] = h.out;
+      tn_[h.out] = s * W + static_cast<std::uint32_t>(h.i);
+      for (int j = 0; j < W; ++j) {
+        if (j == h.i) continue;
+        std::array<std::uint32_t, kKey> key;
+        int c = 0;
+        for (int q = 0; q < W; ++q)
+          if (q != j && q != h.i) key[static_cast<std::size_t>(c++)] = h.v[q];
+        std::sort(key.begin(), key.end());
+        std::uint64_t hash = 0x9E3779B97F4A7C15ull;
+        for (std::uint32_t x : key) hash = (hash ^ x) * 0x100000001B3ull;
+        const std::uint32_t half = s * W + static_cast<std::uint32_t>(j);
+        for (std::size_t slot = (hash >> 20) & mask;; slot = (slot + 1) & mask) {
+          Half& e = table_[slot];
+          if (e.state == 1 && e.key == key) {
+            tn_[half] = e.link;
+            tn_[e.link] = half;
+            e.state = 2;
+            --open;
+            break;
+          }
+          if (e.state == 0) {
+            e.key = key;
+            e.link = half;
+            e.state = 1;
+            ++open;
+            break;
+          }
+        }
+      }
+      if (real) last_ = s;
+    }
+    if (open != 0) throw std::logic_error("rtd (cpu): the horizon of an insertion is not a closed manifold");
+    for (std::size_t q = m; q < cavity_.size(); ++q) {  // cavity slots not reused
+      const std::uint32_t s = cavity_[q];
+      for (int j = 0; j < W; ++j) tv_[static_cast<std::size_t>(s) * W + static_cast<std::size_t>(j)] = kDead;
+      free_.push_back(s);
+    }
+    st.created += m;
+  }
+
+  // Visibility walk from real simplex t toward p: across a facet that
+  // separates t from p (orient_d with that corner replaced by p negative),
+  // never back across the facet just crossed, the facets tried from a random
+  // one (the stochastic walk of Devillers–Pion–Teillaud; it terminates on a
+  // regular triangulation: Edelsbrunner's acyclicity theorem, as
+  // reference/rtd's locate). Returns the real simplex containing p (SoS:
+  // strictly) or the first virtual simplex reached (one whose hull facet p
+  // sees).
+  std::uint32_t walk(std::uint32_t p, std::uint32_t t, RtdCavityStats& st) {
+    int from = W;
+    for (;;) {
+      ++st.walk_steps;
+      rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+      const int r = static_cast<int>((rng_ >> 32) % static_cast<std::uint64_t>(W));
+      const std::uint32_t* v = simplex(t);
+      std::uint32_t next = kDead;
+      for (int q = 0; q < W; ++q) {
+        const int i = (r + q) % W;
+        if (i == from) continue;
+        std::uint32_t u[W];
+        for (int j = 0; j < W; ++j) u[j] = v[j];
+        u[i] = p;
+        if (orient(u) < 0) {
+          next = tn_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(i)];
+          break;
+        }
+      }
+      if (next == kDead) return t;
+      t = next / W;
+      from = static_cast<int>(next % W);
+      if (is_virtual(t)) return t;
+    }
+  }
+
+  void insert(std::uint32_t p, RtdCavityStats& st) {
+    const std::uint32_t root = walk(p, last_, st);
+    if (!visible(root, p)) {  // real (a virtual end is visible): p̂ inside Q
+      ++st.discarded;
+      last_ = root;
+      return;
+    }
+    stamp_ += 2;
+    if (stamp_ < 2) {  // wrapped: clear the stamps
+      std::fill(mark_.begin(), mark_.end(), 0u);
+      stamp_ = 2;
+    }
+    const std::uint32_t in = stamp_, out = stamp_ + 1;
+    cavity_.clear();
+    horizon_.clear();
+    cavity_.push_back(root);
+    mark_[root] = in;
+    for (std::size_t q = 0; q < cavity_.size(); ++q) {
+      const std::uint32_t t = cavity_[q];
+      for (int i = 0; i < W; ++i) {
+        const std::uint32_t l = tn_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(i)];
+        const std::uint32_t u = l / W;
+        if (mark_[u] == in) continue;
+        if (mark_[u] != out) {
+          if (visible(u, p)) {
+            mark_[u] = in;
+            cavity_.push_back(u);
+            continue;
+          }
+          mark_[u] = out;
+        }
+        Horizon h;
+        const std::uint32_t* v = simplex(t);
+        for (int j = 0; j < W; ++j) h.v[j] = v[j];
+        h.v[i] = p;
+        h.i = i;
+        h.out = l;
+        horizon_.push_back(h);
+      }
+    }
+    if (is_virtual(root)) ++st.placed;
+    link_cone(st);
+    ++st.inserted;
+    st.cavity += cavity_.size();
+  }
+};
+
+template <int D>
+ref::Rtd run(const PointSet& ps, RtdCavityStats& st, const RtdCavityOptions& o) {
+  std::vector<Index> order;
+  with_threads(o.threads, [&] {
+    const std::array<double, 2 * D> box = brio::bounding_box<D>(ps);
+    order = brio::order(ps.size(), o.brio_min, [&](std::size_t i) { return morton<D>(ps.point(i), box); }, nullptr);
+  });
+  Builder<D> b(ps, order, o.furthest);
+  b.run(st);
+  return b.output(st);
+}
+
+}  // namespace
+
+ref::Rtd rtd_cavity(const PointSet& ps, RtdCavityStats* stats, const RtdCavityOptions& options) {
+  ref::validate_rtd_input(ps);
+  if (ps.size() >= (std::size_t{1} << brio::kIndexBits))
+    throw std::length_error("rtd (cpu): more than 2^29 points");
+  RtdCavityStats local;
+  RtdCavityStats& st = stats ? *stats : local;
+  st = RtdCavityStats{};
+  switch (ps.dim) {
+    case 2: return run<2>(ps, st, options);
+    case 3: return run<3>(ps, st, options);
+    case 4: return run<4>(ps, st, options);
+    default: return run<5>(ps, st, options);
+  }
+}
+
+}  // namespace flipflop::cpu

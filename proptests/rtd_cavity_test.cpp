@@ -1,0 +1,181 @@
+// rtd_cavity_test.cpp — the d-dimensional cavity-insertion kernel
+// (kernels_cpu/rtd, cpu backend of `rtd --dim 2|4|5` and of Python's 4D/5D
+// Delaunay) against the exact sequential reference RT+1
+// (ref::rtd_incremental): the same canonical simplices and redundant points
+// for every input in d = 2..5, weighted or not, nearest- and furthest-site,
+// degenerate inputs included, at two BRIO settings and two thread counts of
+// its sort; consistent counters; the same rejection of bad input; and every
+// answer certified by certify::rtd.
+//
+// Oracles: ref::rtd_incremental (tested against brute force over simplices
+// and CGAL in rtd_reference_test.cpp and the oracle_* tests) and certify::rtd
+// (witness-free). Case counts: RC_PARAMS max_success = 2000 under ctest,
+// divided per property by prop_scaled (the divisor in each call).
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "kernels_cpu/rtd/rtd_cavity.hpp"
+#include "proptests/support/families.hpp"
+#include "proptests/support/rc_scaled.hpp"
+#include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/certify_rtd.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+
+using namespace flipflop;
+
+namespace {
+
+std::string text_of(const ref::Rtd& r) {
+  std::ostringstream os;
+  write_simplices(os, r.simplices);
+  os << "redundant";
+  for (Index x : r.redundant) os << ' ' << x;
+  return os.str();
+}
+
+std::string ref_text(const PointSet& ps, bool furthest) {
+  try {
+    return text_of(ref::rtd_incremental(ps, nullptr, furthest));
+  } catch (const std::invalid_argument& e) {
+    return std::string("error: ") + e.what();
+  }
+}
+
+struct Setting {
+  std::size_t brio;
+  int threads;
+};
+constexpr Setting kSettings[] = {{1, 1}, {64, 2}};
+
+std::string cavity_text(const PointSet& ps, bool furthest, const Setting& s, cpu::RtdCavityStats* st) {
+  cpu::RtdCavityOptions o;
+  o.brio_min = s.brio;
+  o.threads = s.threads;
+  o.furthest = furthest;
+  try {
+    return text_of(cpu::rtd_cavity(ps, st, o));
+  } catch (const std::invalid_argument& e) {
+    return std::string("error: ") + e.what();
+  }
+}
+
+bool is_error(const std::string& s) { return s.rfind("error: ", 0) == 0; }
+
+// kernel == reference in both settings; the counters add up (every point one
+// of the first d+1, inserted, or discarded when located; the redundant points
+// are the discarded and the removed ones); the answer certified.
+template <class Assert>
+void check(const PointSet& ps, bool furthest, const Assert& require) {
+  const std::string expect = ref_text(ps, furthest);
+  for (const Setting& s : kSettings) {
+    cpu::RtdCavityStats st;
+    require(cavity_text(ps, furthest, s, &st) == expect);
+    if (!is_error(expect)) {
+      require(st.inserted + st.discarded == ps.size());
+      const ref::Rtd r = cpu::rtd_cavity(ps, nullptr, {s.brio, furthest, s.threads});
+      require(st.discarded + st.removed == r.redundant.size());
+      require(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest).ok);
+    }
+  }
+}
+
+int nmax_of(int d) { return d <= 3 ? 60 : d == 4 ? 36 : 24; }
+
+}  // namespace
+
+TEST_CASE("rtd cavity: degenerate and random sets in 2D..5D equal the reference, certified (shrinking)",
+          "[rtd_cavity]") {
+  for (int d = 2; d <= 5; ++d)
+    for (bool weighted : {false, true})
+      test::prop_scaled("degenerate " + std::to_string(d) + "D sets of " + std::to_string(d + 1) + ".." +
+                            std::to_string(nmax_of(d)) + " points, " + (weighted ? "weighted" : "unweighted") +
+                            ": cavity kernel == RT+1 byte for byte, certified",
+                        d <= 3 ? 8 : 16, [d, weighted] {
+                          const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax_of(d), weighted);
+                          check(ps, false, [](bool ok) { RC_ASSERT(ok); });
+                        });
+}
+
+TEST_CASE("rtd cavity: furthest-site triangulations in 2D..5D equal the reference (shrinking)", "[rtd_cavity]") {
+  for (int d = 2; d <= 5; ++d)
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets, furthest site: cavity kernel == RT+1 with every "
+                                                          "lifted sign negated, certified",
+                      d <= 3 ? 16 : 32, [d] {
+                        const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax_of(d), false);
+                        check(ps, true, [](bool ok) { RC_ASSERT(ok); });
+                      });
+}
+
+// Lattices, where every predicate call of the insertion is exactly
+// degenerate and decided by the perturbation.
+TEST_CASE("rtd cavity: integer grids in 4D and 5D, unweighted and with lattice weights, equal the reference",
+          "[rtd_cavity]") {
+  for (int d : {4, 5})
+    for (int side : {2, 3}) {
+      if (d == 5 && side == 3) continue;  // 243 points: the [long] case below
+      PointSet ps;
+      ps.dim = d;
+      int n = 1;
+      for (int j = 0; j < d; ++j) n *= side;
+      std::vector<double> c, w;
+      for (int i = 0; i < n; ++i) {
+        int x = i;
+        for (int j = 0; j < d; ++j, x /= side) c.push_back(x % side);
+        w.push_back((i % 3) * 0.25);
+      }
+      ps.coords = Values(std::move(c));
+      INFO(d << "D grid of side " << side);
+      check(ps, false, [](bool ok) { REQUIRE(ok); });
+      ps.weighted = true;
+      ps.weights = Values(std::move(w));
+      check(ps, false, [](bool ok) { REQUIRE(ok); });
+    }
+}
+
+TEST_CASE("rtd cavity: the 3^5 grid and 3000 random 4D points equal the reference", "[rtd_cavity][long]") {
+  PointSet grid;
+  grid.dim = 5;
+  std::vector<double> c;
+  for (int i = 0; i < 243; ++i) {
+    int x = i;
+    for (int j = 0; j < 5; ++j, x /= 3) c.push_back(x % 3);
+  }
+  grid.coords = Values(std::move(c));
+  check(grid, false, [](bool ok) { REQUIRE(ok); });
+  PointSet r4;
+  r4.dim = 4;
+  std::vector<double> x;
+  std::uint64_t s = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < 3000 * 4; ++i) {
+    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+    x.push_back(static_cast<double>(s >> 11) * 0x1p-53);
+  }
+  r4.coords = Values(std::move(x));
+  check(r4, false, [](bool ok) { REQUIRE(ok); });
+}
+
+TEST_CASE("rtd cavity: bad input is rejected as the reference rejects it", "[rtd_cavity]") {
+  PointSet flat;  // 4D points in a hyperplane
+  flat.dim = 4;
+  flat.coords = Values(std::vector<double>{0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 1, 0, 2, 3, 1, 0});
+  const std::string e = cavity_text(flat, false, kSettings[0], nullptr);
+  REQUIRE(is_error(e));
+  REQUIRE(e == ref_text(flat, false));
+  PointSet nan = flat;
+  std::vector<double> v(nan.coords.begin(), nan.coords.end());
+  v[4 * 4 + 3] = 5;  // now spanning
+  v[2] = std::nan("");
+  nan.coords = Values(std::move(v));
+  REQUIRE(cavity_text(nan, false, kSettings[0], nullptr) == ref_text(nan, false));
+  REQUIRE(is_error(ref_text(nan, false)));
+  PointSet few;
+  few.dim = 5;
+  few.coords = Values(std::vector<double>(5 * 5, 1.0));
+  REQUIRE(is_error(cavity_text(few, false, kSettings[0], nullptr)));
+  REQUIRE(cavity_text(few, false, kSettings[0], nullptr) == ref_text(few, false));
+}
