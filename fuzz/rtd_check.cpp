@@ -26,7 +26,9 @@
 //     (reference/rtd/strict_rtd.hpp) is certified at the exact level;
 //   * the cavity-insertion kernel (kernels_cpu/rtd/rtd_cavity.hpp) returns
 //     the same simplices and redundant points, nearest- and furthest-site
-//     (the furthest-site answer of RT+1 certified with the negation);
+//     (the furthest-site answer of RT+1 certified with the negation); the
+//     hull kernel (kernels_cpu/rtd/hull_d.hpp) returns the boundary facets
+//     of the (unweighted) triangulation, and its certifier accepts them;
 //   * the instant flip from T = build_rtd(S ⊕ W) to U, with insertion
 //     events (a redundant point enters by a 1-(d+1) flip when it becomes
 //     non-redundant). Coordinates in general position (no d+1 points on a
@@ -56,6 +58,7 @@
 #include <vector>
 
 #include "fuzz/checks.hpp"
+#include "kernels_cpu/rtd/hull_d.hpp"
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "proptests/support/rtd_oracles.hpp"
@@ -167,6 +170,33 @@ ref::Rtd check_rt_incremental(const PointSet& ps) {
               "rtd_cavity:\n" + describe(C.simplices) + "rtd_incremental:\n" + describe(E.simplices));
     if (furthest && !certify::rtd(ps, E.simplices, certify::Level::canonical, true).ok)
       fail_on(ps, {}, "certify::rtd rejected the furthest-site RT+1");
+  }
+  {  // the hull kernel: the boundary of the unweighted triangulation
+    PointSet plain = ps;
+    plain.weighted = false;
+    plain.weights = Values();
+    const Simplices T = ps.weighted ? must_return(ps, {}, "rtd_incremental (unweighted)",
+                                                  [&] { return ref::rtd_incremental(plain).simplices; })
+                                    : R.simplices;
+    std::map<std::vector<Index>, int> count;
+    for (const auto& t : T)
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        std::vector<Index> f = t;
+        f.erase(f.begin() + static_cast<std::ptrdiff_t>(i));
+        std::sort(f.begin(), f.end());
+        ++count[f];
+      }
+    std::set<std::vector<Index>> boundary, hull;
+    for (const auto& [f, c] : count)
+      if (c == 1) boundary.insert(f);
+    const Simplices H = must_return(ps, {}, "hull_d", [&] { return cpu::hull_d(plain); });
+    for (std::vector<Index> f : H) {
+      std::sort(f.begin(), f.end());
+      hull.insert(f);
+    }
+    if (hull != boundary) fail_on(ps, {}, "hull_d differs from the triangulation's boundary");
+    if (const std::string why = cpu::hull_d_problem(plain, H); !why.empty())
+      fail_on(ps, {}, "hull_d_problem rejected hull_d: " + why);
   }
   if (d == 2) {
     Simplices t;

@@ -51,6 +51,7 @@
 
 #include "kernels_cpu/brio.hpp"
 #include "kernels_cpu/parallel.hpp"
+#include "kernels_cpu/rtd/visible_region.hpp"
 #include "predicates/staged.hpp"
 #include "reference/rtd/canonical_d.hpp"
 
@@ -343,34 +344,17 @@ class Builder {
       std::fill(mark_.begin(), mark_.end(), 0u);
       stamp_ = 2;
     }
-    const std::uint32_t in = stamp_, out = stamp_ + 1;
-    cavity_.clear();
     horizon_.clear();
-    cavity_.push_back(root);
-    mark_[root] = in;
-    for (std::size_t q = 0; q < cavity_.size(); ++q) {
-      const std::uint32_t t = cavity_[q];
-      for (int i = 0; i < W; ++i) {
-        const std::uint32_t l = tn_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(i)];
-        const std::uint32_t u = l / W;
-        if (mark_[u] == in) continue;
-        if (mark_[u] != out) {
-          if (visible(u, p)) {
-            mark_[u] = in;
-            cavity_.push_back(u);
-            continue;
-          }
-          mark_[u] = out;
-        }
-        Horizon h;
-        const std::uint32_t* v = simplex(t);
-        for (int j = 0; j < W; ++j) h.v[j] = v[j];
-        h.v[i] = p;
-        h.i = i;
-        h.out = l;
-        horizon_.push_back(h);
-      }
-    }
+    visible_region<W>(root, tn_, mark_, stamp_, cavity_, [&](std::uint32_t u) { return visible(u, p); },
+                      [&](std::uint32_t t, int i, std::uint32_t l) {
+                        Horizon h;
+                        const std::uint32_t* v = simplex(t);
+                        for (int j = 0; j < W; ++j) h.v[j] = v[j];
+                        h.v[i] = p;
+                        h.i = i;
+                        h.out = l;
+                        horizon_.push_back(h);
+                      });
     if (is_virtual(root)) ++st.placed;
     link_cone(st);
     ++st.inserted;

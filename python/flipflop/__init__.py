@@ -340,8 +340,9 @@ class ConvexHull(_QhullUser):
     """The convex hull of points in 2D..5D, exact and certified, with
     scipy.spatial.ConvexHull's constructor and attributes
     (docs/scipy_porting.md lists every name and difference). 4D and 5D:
-    the boundary facets of the canonical Delaunay triangulation (the
-    cavity-insertion kernel or the reference's RT+1, certified), which are the
+    the hull kernel's facets (beneath-beyond, exact, certified; backend
+    'cpu') or the boundary facets of the canonical Delaunay triangulation
+    (RT+1, certified; backend 'reference'), which are the
     canonical hull's facets (_hull_from_triangulation says why), with the
     attributes below computed in Python; facets outward (det[f1-f0, ...,
     x-f0] > 0 beyond), ascending but for a swap of the last two.
@@ -395,7 +396,7 @@ class ConvexHull(_QhullUser):
     and a RuntimeError). str or bytes.
 
     backend: 'cpu' (the default: the multithreaded kernels in 2D and 3D,
-    the cavity-insertion kernel of the 4D / 5D triangulation),
+    the d-dimensional hull kernel in 4D and 5D, one thread),
     'reference' (the exact sequential reference)
     or one of `gpu_backends` ('cuda-omp': the GPU kernels on thrust's OpenMP
     backend); every backend returns the same answer. strict=True (3D only)
@@ -472,8 +473,10 @@ class ConvexHull(_QhullUser):
 
 
 def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
-    """The convex hull in 4D and 5D: the boundary facets of the canonical
-    Delaunay triangulation (by `backend`, certified), with the
+    """The convex hull in 4D and 5D: backend 'cpu' the facets of the hull
+    kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
+    the boundary facets of the canonical Delaunay triangulation (RT+1,
+    certified) — the same facets —, with the
     attributes the compiled call gives in 2D and 3D, computed here in
     floating point. Why it is the canonical hull: an unweighted Delaunay
     triangulation covers the convex hull of all points, so its boundary
@@ -490,16 +493,25 @@ def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
     (the 3D hull's counter-clockwise rule), vertices ascending but for a
     swap of the last two where the orientation needs it; rows sorted."""
     d = a.shape[1]
-    simplices, _ = _native("ConvexHull", _flipflop.triangulate, a, None, backend, False, threads)
-    nb = _flipflop.neighbors(simplices)
-    i, j = np.nonzero(nb < 0)
-    keep = np.ones((len(i), d + 1), dtype=bool)
-    keep[np.arange(len(i)), j] = False
-    facets = simplices[i][keep].reshape(-1, d)
-    # the facet opposite vertex j of a positively oriented simplex, with
-    # that vertex appended, has the sign (-1)^(d-j); inside must be negative
-    flip = (d - j) % 2 == 0
-    facets[flip, -2:] = facets[flip, -1:-3:-1]
+    if backend == "cpu":
+        # the hull kernel's facets (kernels_cpu/rtd/hull_d, certified there):
+        # orient_d(facet, x) < 0 inside, and orient_d = (-1)^d det[f1-f0, ...,
+        # x-f0] (the 1-column of the predicates' matrix last): outward in the
+        # det convention after a swap in odd d
+        facets = _native("ConvexHull", _flipflop.hull_d, a)
+        if d % 2 == 1:
+            facets[:, -2:] = facets[:, -1:-3:-1]
+    else:
+        simplices, _ = _native("ConvexHull", _flipflop.triangulate, a, None, backend, False, threads)
+        nb = _flipflop.neighbors(simplices)
+        i, j = np.nonzero(nb < 0)
+        keep = np.ones((len(i), d + 1), dtype=bool)
+        keep[np.arange(len(i)), j] = False
+        facets = simplices[i][keep].reshape(-1, d)
+        # the facet opposite vertex j of a positively oriented simplex, with
+        # that vertex appended, has the sign (-1)^(d-j); inside must be negative
+        flip = (d - j) % 2 == 0
+        facets[flip, -2:] = facets[flip, -1:-3:-1]
     # canonical: ascending but for the last two (a sort's parity fixed by them)
     order = np.argsort(facets, axis=1, kind="stable")
     parity = np.zeros(len(facets), dtype=bool)

@@ -69,6 +69,7 @@
 #include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
+#include "kernels_cpu/rtd/hull_d.hpp"
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 #include "reference/rtd/triangulation_d.hpp"
@@ -696,6 +697,25 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
           : flat_tets ? cells_array(tets, 4)
                       : cells_array(simplices, static_cast<std::size_t>(d + 1)),
           list_array(redundant)};
+}
+
+// The facets of the convex hull in R^d, d = 2..5 (kernels_cpu/rtd/hull_d:
+// beneath-beyond in Quickhull's order, exact under SoS, one thread),
+// certified by cpu::hull_d_problem (closed convex surface star-shaped from a
+// point that is not a vertex, every other point inside by a walk): (m, d)
+// rows oriented so that orient_d(facet, x) < 0 for x inside.
+IndexArray hull_d(const Points& p) {
+  const PointSet ps = point_set(p, std::nullopt);
+  if (ps.dim < 2 || ps.dim > 5) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..5");
+  std::vector<std::vector<Index>> facets;
+  {
+    nb::gil_scoped_release nogil;
+    require_spanning(ps);
+    facets = cpu::hull_d(ps);
+    if (const std::string why = cpu::hull_d_problem(ps, facets); !why.empty())
+      throw std::runtime_error("the ConvexHull result failed certification: " + why);
+  }
+  return cells_array(facets, static_cast<std::size_t>(ps.dim));
 }
 
 // neighbors[i][j]: the simplex across the facet opposite vertex j of
@@ -2105,6 +2125,7 @@ NB_MODULE(_flipflop, m) {
   m.def("hull2", &hull2, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("threads"));
+  m.def("hull_d", &hull_d, nb::arg("points"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
         nb::arg("strict"), nb::arg("threads"), nb::arg("furthest") = false);
   m.def("neighbors", &neighbors, nb::arg("simplices"));

@@ -834,3 +834,28 @@ def test_rt3_command_line_formats_read_by_numpy_and_meshio(tmp_path):
     assert np.array_equal(used[m.cells[0].data], t.simplices)
     code, out, _ = cli("certify", "rt3", tmp_path / "w.xyz", tmp_path / "r.txt", "--canonical")
     assert code == 0 and out.startswith("certified (rt3, canonical)")
+
+
+@pytest.mark.parametrize("d", [4, 5])
+def test_hull_kernel_equals_triangulation_boundary(d):
+    # ConvexHull in 4D/5D: the hull kernel (backend 'cpu', kernels_cpu/rtd/
+    # hull_d) against the boundary of RT+1's Delaunay triangulation
+    # ('reference'), attribute by attribute, on random, grid and duplicated
+    # input; and against scipy's facets on random input
+    rng = np.random.default_rng(40 + d)
+    grid = np.array(np.meshgrid(*[np.arange(3.0)] * d)).reshape(d, -1).T
+    inputs = [rng.standard_normal((60 if d == 4 else 40, d)), grid,
+              np.vstack([grid[: 3 ** (d - 1) + 5], grid[:7]])]
+    for p in inputs:
+        if np.linalg.matrix_rank(p - p[0]) < d:
+            continue
+        a = flipflop.ConvexHull(p)
+        b = flipflop.ConvexHull(p, backend="reference")
+        assert (a.simplices == b.simplices).all()
+        assert (a.neighbors == b.neighbors).all()
+        assert (a.vertices == b.vertices).all()
+        assert a.volume == b.volume and a.area == b.area
+    p = inputs[0]
+    s = ss.ConvexHull(p)
+    assert ({tuple(sorted(x)) for x in flipflop.ConvexHull(p).simplices.tolist()} ==
+            {tuple(sorted(x)) for x in s.simplices.tolist()})

@@ -1,0 +1,526 @@
+// hull_d.cpp — the d-dimensional convex hull by beneath–beyond insertion in
+// Quickhull's order, and its certifier (hull_d.hpp: the algorithm, why the
+// answer is the canonical hull, the certificate's conditions).
+#include "kernels_cpu/rtd/hull_d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "predicates/predicates.hpp"
+#include "predicates/staged.hpp"
+#include "kernels_cpu/rtd/visible_region.hpp"
+#include "reference/rtd/rt_incremental.hpp"
+
+namespace flipflop::cpu {
+
+namespace {
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+// Determinant of an n x n double matrix (row-major, n <= 4) by Laplace along
+// the first row: floating point, for the furthest-point heuristic only.
+double det_small(const double* m, int n) {
+  if (n == 1) return m[0];
+  double sub[16], s = 0.0;
+  for (int c = 0; c < n; ++c) {
+    int k = 0;
+    for (int r = 1; r < n; ++r)
+      for (int cc = 0; cc < n; ++cc)
+        if (cc != c) sub[k++] = m[r * n + cc];
+    const double t = m[c] * det_small(sub, n - 1);
+    s += c % 2 ? -t : t;
+  }
+  return s;
+}
+
+template <int D>
+class HullBuilder {
+ public:
+  HullBuilder(const PointSet& ps, HullDStats& st) : ps_(ps), st_(st), n_(ps.size()) {
+    f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D);
+  }
+
+  std::vector<std::vector<Index>> run() {
+    start();
+    while (!work_.empty()) {
+      const std::uint32_t f = work_.back();
+      work_.pop_back();
+      if (!alive(f) || out_[f].empty()) continue;
+      insert(f);
+    }
+    std::vector<std::vector<Index>> out;
+    for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
+      if (alive(f)) out.emplace_back(fv_.begin() + static_cast<std::ptrdiff_t>(f) * D,
+                                     fv_.begin() + static_cast<std::ptrdiff_t>(f + 1) * D);
+    return out;
+  }
+
+ private:
+  const PointSet& ps_;
+  HullDStats& st_;
+  std::size_t n_;
+  pred::StaticFilter f_;
+  std::vector<Index> fv_;                      // D vertices per facet slot (kNone: dead)
+  std::vector<std::uint32_t> fn_;              // D links per slot: D t + k across the ridge opposite vertex j
+  std::vector<std::vector<Index>> out_;        // outside set per slot
+  std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
+  std::vector<std::uint32_t> mark_, free_, work_;
+  std::uint32_t stamp_ = 0;
+
+  bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
+
+  // orient_d(facet f, q) > 0: q strictly beyond f (SoS, never 0)
+  bool sees(std::uint32_t f, Index q) {
+    ++st_.tests;
+    pred::PointId id[D + 1];
+    const double* p[D + 1];
+    for (int j = 0; j < D; ++j) {
+      const Index x = fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(j)];
+      id[j] = x;
+      p[j] = ps_.point(x);
+    }
+    id[D] = q;
+    p[D] = ps_.point(q);
+    return pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr)) > 0;
+  }
+
+  // the floating-point hyperplane n . x + c of facet f (heuristic only)
+  void plane(std::uint32_t f) {
+    const double* a = ps_.point(fv_[static_cast<std::size_t>(f) * D]);
+    double m[(D - 1) * D];
+    for (int r = 1; r < D; ++r) {
+      const double* b = ps_.point(fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(r)]);
+      for (int c = 0; c < D; ++c) m[(r - 1) * D + c] = b[c] - a[c];
+    }
+    auto& h = nrm_[f];
+    double c0 = 0.0;
+    for (int k = 0; k < D; ++k) {
+      double sub[16];
+      int q = 0;
+      for (int r = 0; r < D - 1; ++r)
+        for (int c = 0; c < D; ++c)
+          if (c != k) sub[q++] = m[r * D + c];
+      h[static_cast<std::size_t>(k)] = (k % 2 ? -1.0 : 1.0) * (D > 1 ? det_small(sub, D - 1) : 1.0);
+      c0 -= h[static_cast<std::size_t>(k)] * a[k];
+    }
+    h[D] = c0;
+  }
+  double height(std::uint32_t f, Index q) const {
+    const auto& h = nrm_[f];
+    const double* x = ps_.point(q);
+    double s = h[D];
+    for (int k = 0; k < D; ++k) s += h[static_cast<std::size_t>(k)] * x[k];
+    return std::fabs(s);
+  }
+
+  std::uint32_t take_slot() {
+    if (!free_.empty()) {
+      const std::uint32_t s = free_.back();
+      free_.pop_back();
+      return s;
+    }
+    const std::size_t s = fv_.size() / D;
+    if ((s + 1) * D >= kNone) throw std::length_error("hull (cpu): more facets than 32-bit links hold");
+    fv_.resize((s + 1) * D, kNone);
+    fn_.resize((s + 1) * D, kNone);
+    out_.emplace_back();
+    nrm_.emplace_back();
+    mark_.push_back(0);
+    return static_cast<std::uint32_t>(s);
+  }
+
+  // Links the ridges of the facets `fs` (all but position skip[k] of fs[k],
+  // -1: none) among themselves: each such ridge is met exactly twice, and
+  // two halves are the same ridge when they hold the same vertices (sorted;
+  // a ridge has D-1 vertices, or D-2 besides the apex of a cone).
+  void match(const std::vector<std::uint32_t>& fs, const std::vector<int>& skip) {
+    struct Half {
+      std::array<Index, D - 1> key;
+      std::uint32_t link;
+    };
+    std::vector<Half> halves(fs.size() * D);
+    std::size_t nh = 0;
+    for (std::size_t k = 0; k < fs.size(); ++k)
+      for (int j = 0; j < D; ++j) {
+        if (j == skip[k]) continue;
+        Half& h = halves[nh++];
+        h.key.fill(kNone);
+        int c = 0;
+        for (int q = 0; q < D; ++q)
+          if (q != j && q != skip[k]) h.key[static_cast<std::size_t>(c++)] = fv_[fs[k] * D + static_cast<std::uint32_t>(q)];
+        std::sort(h.key.begin(), h.key.begin() + c);
+        h.link = fs[k] * D + static_cast<std::uint32_t>(j);
+      }
+    halves.resize(nh);
+    std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) {
+      return x.key != y.key ? x.key < y.key : x.link < y.link;
+    });
+    for (std::size_t a = 0; a < halves.size(); a += 2) {
+      if (a + 1 >= halves.size() || halves[a].key != halves[a + 1].key ||
+          (a + 2 < halves.size() && halves[a + 2].key == halves[a].key))
+        throw std::logic_error("hull (cpu): the horizon is not a closed ridge cycle");
+      fn_[halves[a].link] = halves[a + 1].link;
+      fn_[halves[a + 1].link] = halves[a].link;
+    }
+  }
+
+  // Adds q to facet f's outside set when f is the first of `fs` q sees;
+  // false when q sees none of them.
+  bool assign(Index q, const std::vector<std::uint32_t>& fs) {
+    for (std::uint32_t f : fs)
+      if (sees(f, q)) {
+        if (out_[f].empty()) work_.push_back(f);
+        out_[f].push_back(q);
+        return true;
+      }
+    return false;
+  }
+
+  void start() {
+    // d+1 points far apart in floating point (Gram–Schmidt); any d+1 do
+    // under SoS, the choice only steers the work
+    std::vector<Index> s;
+    Index lo = 0;
+    for (Index i = 1; i < n_; ++i)
+      if (ps_.point(i)[0] < ps_.point(lo)[0]) lo = i;
+    s.push_back(lo);
+    std::vector<std::array<double, D>> basis;
+    for (int k = 1; k <= D; ++k) {
+      double best = -1.0;
+      Index arg = kNone;
+      const double* o = ps_.point(s[0]);
+      for (Index i = 0; i < n_; ++i) {
+        if (std::find(s.begin(), s.end(), i) != s.end()) continue;
+        std::array<double, D> v;
+        for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] = ps_.point(i)[c] - o[c];
+        for (const auto& b : basis) {
+          double dot = 0.0;
+          for (int c = 0; c < D; ++c) dot += v[static_cast<std::size_t>(c)] * b[static_cast<std::size_t>(c)];
+          for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] -= dot * b[static_cast<std::size_t>(c)];
+        }
+        double len = 0.0;
+        for (int c = 0; c < D; ++c) len += v[static_cast<std::size_t>(c)] * v[static_cast<std::size_t>(c)];
+        if (std::isfinite(len) && len > best) best = len, arg = i;
+      }
+      if (arg == kNone)  // every length overflowed (magnitudes near DBL_MAX): any unchosen point
+        for (arg = 0; std::find(s.begin(), s.end(), arg) != s.end(); ++arg) {
+        }
+      s.push_back(arg);
+      std::array<double, D> v;
+      double len = 0.0;
+      for (int c = 0; c < D; ++c) {
+        v[static_cast<std::size_t>(c)] = ps_.point(arg)[c] - o[c];
+      }
+      for (const auto& b : basis) {
+        double dot = 0.0;
+        for (int c = 0; c < D; ++c) dot += v[static_cast<std::size_t>(c)] * b[static_cast<std::size_t>(c)];
+        for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] -= dot * b[static_cast<std::size_t>(c)];
+      }
+      for (int c = 0; c < D; ++c) len += v[static_cast<std::size_t>(c)] * v[static_cast<std::size_t>(c)];
+      len = std::sqrt(len);
+      for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] = len > 0 && std::isfinite(len) ? v[static_cast<std::size_t>(c)] / len : 0.0;
+      basis.push_back(v);
+    }
+    // positive: orient_d(s) > 0
+    {
+      pred::PointId id[D + 1];
+      const double* p[D + 1];
+      for (int j = 0; j <= D; ++j) id[j] = s[static_cast<std::size_t>(j)], p[j] = ps_.point(s[static_cast<std::size_t>(j)]);
+      if (pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr)) < 0) std::swap(s[0], s[1]);
+    }
+    std::vector<std::uint32_t> fs;
+    std::vector<int> skip;
+    for (int i = 0; i <= D; ++i) {
+      const std::uint32_t f = take_slot();
+      int c = 0;
+      for (int j = 0; j <= D; ++j)
+        if (j != i) fv_[f * D + static_cast<std::uint32_t>(c++)] = s[static_cast<std::size_t>(j)];
+      // orient(facet, s_i) = (-1)^(D-i) orient(s): negative wanted
+      if ((D - i) % 2 == 0) std::swap(fv_[f * D], fv_[f * D + 1]);
+      plane(f);
+      fs.push_back(f);
+      skip.push_back(-1);
+    }
+    match(fs, skip);
+    std::vector<char> used(n_, 0);
+    for (Index x : s) used[x] = 1;
+    for (Index q = 0; q < n_; ++q)
+      if (!used[q]) assign(q, fs);
+  }
+
+  void insert(std::uint32_t f0) {
+    // the apex: the furthest point of f0's outside set in floating point
+    std::vector<Index>& pts = out_[f0];
+    std::size_t best = 0;
+    double hb = -1.0;
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const double h = height(f0, pts[k]);
+      if (h > hb || !(hb >= 0)) hb = h, best = k;
+    }
+    const Index p = pts[best];
+    ++st_.apexes;
+    // the facets p sees: breadth-first from f0 (marks: in = stamp, out = stamp + 1)
+    stamp_ += 2;
+    if (stamp_ < 2) {  // wrapped: clear the stamps
+      std::fill(mark_.begin(), mark_.end(), 0u);
+      stamp_ = 2;
+    }
+    struct Horizon {
+      std::uint32_t f;
+      int i;
+      std::uint32_t link;
+    };
+    std::vector<Horizon> hz;
+    std::vector<std::uint32_t> vis;
+    visible_region<D>(f0, fn_, mark_, stamp_, vis, [&](std::uint32_t g) { return sees(g, p); },
+                      [&](std::uint32_t f, int i, std::uint32_t l) { hz.push_back({f, i, l}); });
+    // the cone: facet f with vertex i replaced by p, one per horizon ridge
+    std::vector<Index> orphans;
+    for (std::uint32_t f : vis)
+      for (Index q : out_[f])
+        if (q != p) orphans.push_back(q);
+    std::vector<std::array<Index, D>> tuples(hz.size());
+    for (std::size_t k = 0; k < hz.size(); ++k)
+      for (int j = 0; j < D; ++j)
+        tuples[k][static_cast<std::size_t>(j)] = j == hz[k].i ? p : fv_[hz[k].f * D + static_cast<std::uint32_t>(j)];
+    for (std::uint32_t f : vis) {
+      for (int j = 0; j < D; ++j) fv_[f * D + static_cast<std::uint32_t>(j)] = kNone;
+      out_[f].clear();
+      out_[f].shrink_to_fit();
+      free_.push_back(f);
+    }
+    st_.removed += vis.size();
+    std::vector<std::uint32_t> fresh;
+    std::vector<int> skip;
+    for (std::size_t k = 0; k < hz.size(); ++k) {
+      const std::uint32_t u = take_slot();
+      for (int j = 0; j < D; ++j) fv_[u * D + static_cast<std::uint32_t>(j)] = tuples[k][static_cast<std::size_t>(j)];
+      fn_[u * D + static_cast<std::uint32_t>(hz[k].i)] = hz[k].link;
+      fn_[hz[k].link] = u * D + static_cast<std::uint32_t>(hz[k].i);
+      mark_[u] = 0;
+      plane(u);
+      fresh.push_back(u);
+      skip.push_back(hz[k].i);
+    }
+    st_.created += fresh.size();
+    match(fresh, skip);
+    for (Index q : orphans) assign(q, fresh);
+  }
+};
+
+// ---- the certifier ---------------------------------------------------------------
+
+struct Certifier {
+  const PointSet& ps;
+  int d;
+  pred::StaticFilter filter;
+  int orient(const Index* t, Index x) const {
+    pred::PointId id[7];
+    const double* p[7];
+    for (int j = 0; j < d; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
+    id[d] = x, p[d] = ps.point(x);
+    return pred::lambda_sign(&filter, d + 1, id, p, nullptr);
+  }
+  // orient_{d-1} of the projections (the first d-1 coordinates) of t
+  int orient_projected(const Index* t) const {
+    pred::PointId id[7];
+    const double* p[7];
+    for (int j = 0; j < d; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
+    return pred::lambda_sign(d, id, p, nullptr, pred::Mode::filtered);
+  }
+};
+
+std::string tuple_str(const Index* t, int k) {
+  std::string o = "(";
+  for (int i = 0; i < k; ++i) o += (i ? "," : "") + std::to_string(t[i]);
+  return o + ")";
+}
+
+}  // namespace
+
+std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
+  PointSet plain = ps;  // validate_rtd_input checks weights too: the hull has none
+  plain.weighted = false;
+  plain.weights = Values();
+  ref::validate_rtd_input(plain);
+  HullDStats local;
+  HullDStats& st = stats ? *stats : local;
+  st = HullDStats{};
+  switch (ps.dim) {
+    case 2: return HullBuilder<2>(plain, st).run();
+    case 3: return HullBuilder<3>(plain, st).run();
+    case 4: return HullBuilder<4>(plain, st).run();
+    default: return HullBuilder<5>(plain, st).run();
+  }
+}
+
+std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets) {
+  const int d = ps.dim;
+  const std::size_t n = ps.size();
+  if (d < 2 || d > 5) return "input-dimension: d must be 2..5";
+  if (facets.size() < static_cast<std::size_t>(d + 1))
+    return "facet-indices: " + std::to_string(facets.size()) + " facets, a hull in R^" + std::to_string(d) +
+           " has at least " + std::to_string(d + 1);
+  std::vector<char> vertex(n, 0);
+  for (std::size_t k = 0; k < facets.size(); ++k) {
+    const auto& f = facets[k];
+    if (f.size() != static_cast<std::size_t>(d)) return "facet-indices: facet " + std::to_string(k) + " has " +
+                                                            std::to_string(f.size()) + " vertices, not " + std::to_string(d);
+    for (std::size_t a = 0; a < f.size(); ++a) {
+      if (f[a] >= n) return "facet-indices: facet " + std::to_string(k) + " names point " + std::to_string(f[a]);
+      for (std::size_t b = 0; b < a; ++b)
+        if (f[a] == f[b]) return "facet-indices: facet " + tuple_str(f.data(), d) + " repeats a vertex";
+      vertex[f[a]] = 1;
+    }
+  }
+  Certifier ck{ps, d, pred::StaticFilter::for_points(ps.coords.data(), n, d)};
+  // ridges: each in exactly two facets, convex
+  struct Ridge {
+    std::array<Index, 4> key;
+    std::uint32_t f;
+    int j;
+  };
+  std::vector<Ridge> ridges(facets.size() * static_cast<std::size_t>(d));
+  std::size_t nr = 0;
+  for (std::uint32_t k = 0; k < facets.size(); ++k)
+    for (int j = 0; j < d; ++j) {
+      Ridge& r = ridges[nr++];
+      r.f = k;
+      r.j = j;
+      r.key.fill(~Index{0});
+      int c = 0;
+      for (int q = 0; q < d; ++q)
+        if (q != j) r.key[static_cast<std::size_t>(c++)] = facets[k][static_cast<std::size_t>(q)];
+      std::sort(r.key.begin(), r.key.begin() + c);
+    }
+  std::sort(ridges.begin(), ridges.end(), [](const Ridge& a, const Ridge& b) {
+    return a.key != b.key ? a.key < b.key : a.f != b.f ? a.f < b.f : a.j < b.j;
+  });
+  // nb[k * d + j]: the facet across the ridge opposite vertex j of facet k
+  std::vector<std::uint32_t> nb(facets.size() * static_cast<std::size_t>(d));
+  for (std::size_t a = 0; a < ridges.size();) {
+    std::size_t b = a + 1;
+    while (b < ridges.size() && ridges[b].key == ridges[a].key) ++b;
+    if (b - a != 2)
+      return "closed-surface: the ridge " + tuple_str(ridges[a].key.data(), d - 1) + " lies in " +
+             std::to_string(b - a) + " facet" + (b - a == 1 ? "" : "s");
+    for (int side = 0; side < 2; ++side) {
+      const Ridge &f = ridges[a + static_cast<std::size_t>(side)], &g = ridges[a + 1 - static_cast<std::size_t>(side)];
+      const Index x = facets[g.f][static_cast<std::size_t>(g.j)];
+      if (ck.orient(facets[f.f].data(), x) >= 0)
+        return "convex: vertex " + std::to_string(x) + " of facet " + tuple_str(facets[g.f].data(), d) +
+               " is not strictly inside its neighbour " + tuple_str(facets[f.f].data(), d);
+      nb[f.f * static_cast<std::size_t>(d) + static_cast<std::size_t>(f.j)] = g.f;
+    }
+    a = b;
+  }
+  Index v = 0;
+  while (v < n && vertex[v]) ++v;
+  if (v == n) {  // every point a vertex: each against every facet
+    for (const auto& f : facets)
+      for (Index x = 0; x < n; ++x)
+        if (std::find(f.begin(), f.end(), x) == f.end() && ck.orient(f.data(), x) >= 0)
+          return "points-inside: vertex " + std::to_string(x) + " is not strictly inside the facet " +
+                 tuple_str(f.data(), d);
+    return {};
+  }
+  // v inside every facet; the vertical ray up from v crosses one facet
+  std::size_t crossed = 0;
+  for (const auto& f : facets) {
+    if (ck.orient(f.data(), v) >= 0)
+      return "star-shaped: point " + std::to_string(v) + " (not a vertex) is not strictly inside the facet " +
+             tuple_str(f.data(), d);
+    Index t[6];
+    for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
+    const int o = ck.orient_projected(t);
+    bool inside = true;
+    for (int j = 0; j < d && inside; ++j) {
+      const Index keep = t[j];
+      t[j] = v;
+      inside = ck.orient_projected(t) == o;
+      t[j] = keep;
+    }
+    if (inside && ck.orient(t, v) == o) ++crossed;
+  }
+  if (crossed != 1)
+    return "star-shaped: the facets wind " + std::to_string(crossed) + " times around point " + std::to_string(v) +
+           " (the vertical ray up from it crosses " + std::to_string(crossed) + " of them)";
+  // every other non-vertex point: a visibility walk in the cones (v, f). Side
+  // j of cone (v, f) is the hyperplane of f with f_j replaced by v; f_j's
+  // side is positive there (orient(f[j:=v], f_j) = -orient(f, v) > 0).
+  // (the points in Morton order of their bounding box: consecutive walks
+  // start near their target)
+  std::vector<std::pair<std::uint64_t, Index>> order;
+  {
+    std::array<double, 5> lo, hi;
+    lo.fill(HUGE_VAL), hi.fill(-HUGE_VAL);
+    for (Index q = 0; q < n; ++q)
+      for (int j = 0; j < d; ++j)
+        lo[static_cast<std::size_t>(j)] = std::min(lo[static_cast<std::size_t>(j)], ps.point(q)[j]),
+        hi[static_cast<std::size_t>(j)] = std::max(hi[static_cast<std::size_t>(j)], ps.point(q)[j]);
+    const int bits = 60 / d;
+    for (Index q = 0; q < n; ++q) {
+      if (vertex[q] || q == v) continue;
+      std::uint64_t key = 0;
+      std::uint32_t cell[5];
+      for (int j = 0; j < d; ++j) {
+        const double span = hi[static_cast<std::size_t>(j)] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5;
+        double u = span > 0 ? (ps.point(q)[j] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5) / span : 0.0;
+        if (!(u >= 0)) u = 0;
+        cell[j] = static_cast<std::uint32_t>(std::min(1.0, u) * static_cast<double>((1u << bits) - 1));
+      }
+      for (int b = bits - 1; b >= 0; --b)
+        for (int j = 0; j < d; ++j) key = (key << 1) | ((cell[j] >> b) & 1u);
+      order.emplace_back(key, q);
+    }
+    std::sort(order.begin(), order.end());
+  }
+  std::uint64_t rng = 0x9E3779B97F4A7C15ull;
+  std::size_t cur = 0;
+  const std::size_t cap = 4 * facets.size() + 100;
+  for (const auto& [key, q] : order) {
+    (void)key;
+    long found = -1;
+    for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
+      Index t[6];
+      for (int j = 0; j < d; ++j) t[j] = facets[cur][static_cast<std::size_t>(j)];
+      int cand[6], nc = 0;
+      for (int j = 0; j < d; ++j) {
+        const Index keep = t[j];
+        t[j] = v;
+        if (ck.orient(t, q) < 0) cand[nc++] = j;
+        t[j] = keep;
+      }
+      if (nc == 0) {
+        found = static_cast<long>(cur);
+        break;
+      }
+      rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+      cur = nb[cur * static_cast<std::size_t>(d) + static_cast<std::size_t>(cand[(rng >> 11) % static_cast<std::uint64_t>(nc)])];
+    }
+    if (found < 0) {  // the walk did not settle: the cone that holds q by a scan
+      for (std::size_t k = 0; k < facets.size() && found < 0; ++k) {
+        Index t[6];
+        for (int j = 0; j < d; ++j) t[j] = facets[k][static_cast<std::size_t>(j)];
+        bool in = true;
+        for (int j = 0; j < d && in; ++j) {
+          const Index keep = t[j];
+          t[j] = v;
+          in = ck.orient(t, q) > 0;
+          t[j] = keep;
+        }
+        if (in) found = static_cast<long>(k);
+      }
+      if (found < 0) return "points-inside: point " + std::to_string(q) + " lies in no cone from point " + std::to_string(v);
+      cur = static_cast<std::size_t>(found);
+    }
+    if (ck.orient(facets[cur].data(), q) >= 0)
+      return "points-inside: point " + std::to_string(q) + " is not a vertex and not strictly inside the facet " +
+             tuple_str(facets[cur].data(), d);
+  }
+  return {};
+}
+
+}  // namespace flipflop::cpu

@@ -1,0 +1,74 @@
+// hull_d.hpp — the convex hull in R^d (d = 2..5) by beneath–beyond insertion
+// with outside sets (Quickhull's order), exact under flipflop's Simulation of
+// Simplicity, and its certifier in time linear in the output plus a walk per
+// point. The backend of Python's `ConvexHull` in 4D and 5D (one thread).
+//
+// The answer. Under SoS the points are in general position, their hull is
+// simplicial and unique: its facets are the d-subsets whose hyperplane has
+// every other point strictly on one side (orient_d, predicates.hpp, with the
+// input index as SoS index). They are the boundary facets of the canonical
+// Delaunay triangulation (python/flipflop's _hull_from_triangulation gives
+// the argument), which the tests compare them with.
+//
+// The algorithm (beneath–beyond [Seidel; Clarkson–Shor], in Quickhull's
+// order [Barber, Dobkin, Huhdanpaa 1996]): an initial simplex of d+1 points
+// far apart in floating point (any d+1 points do under SoS; far apart ones
+// leave few points outside); every other point assigned to one facet it sees
+// strictly (orient_d(facet, q) > 0, facets oriented with the inside
+// negative) or discarded as inside. While some facet has points: its point
+// furthest from the facet's hyperplane in floating point (a heuristic only)
+// is the apex p; the facets p sees form a connected set (breadth-first
+// search over ridge links), each replaced by the cone from p over the
+// horizon — facet f with its vertex off a horizon ridge replaced by p keeps
+// the orientation, since that vertex lies strictly inside the new facet
+// (orient(f[i:=p], f_i) = -orient(f, p) < 0) —, and the points of the
+// removed facets are assigned to new facets they see, or discarded. A point
+// outside the new hull that saw a removed facet sees a new one: its visible
+// facets form a connected set that meets the removed ones, so it sees both
+// facets f, g of some horizon ridge, and the new facet u over that ridge has
+// its outer normal in the cone of those of f and g (the normal cone of the
+// grown hull at the ridge is a subcone), so it sees u too. Points of kept
+// facets keep their facet. Every decision is an exact SoS predicate.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "reference/point_set.hpp"
+
+namespace flipflop::cpu {
+
+struct HullDStats {
+  std::uint64_t apexes = 0;      // points made vertices after the initial simplex
+  std::uint64_t removed = 0;     // facets removed (visible from an apex)
+  std::uint64_t created = 0;     // facets created (cones)
+  std::uint64_t tests = 0;       // point-facet visibility tests
+};
+
+// The facets of the hull of ps (dim 2..5; weights ignored), each a d-tuple
+// of input indices oriented so that orient_d(facet, x) < 0 for every point x
+// inside (predicates.hpp's convention), in no particular order. Input the
+// reference rejects (not finite, not spanning R^d) is rejected with
+// ref::validate_rtd_input's std::invalid_argument.
+std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = nullptr);
+
+// Certifies `facets` (the convention above) as the canonical hull of ps:
+// returns "" or the first violated condition and what is wrong:
+//   facet-indices   d distinct in-range indices per facet, at least d+1 facets
+//   closed-surface  every ridge (d-1 vertices) in exactly two facets
+//   convex          at every ridge, the vertex of each facet off it strictly
+//                   inside the other
+//   star-shaped     a point v that is not a vertex (the smallest) strictly
+//                   inside every facet, and the vertical ray up from v crosses
+//                   exactly one facet (certify_rtd.hpp, "The boundary in
+//                   linear time": then the facets are those of a convex
+//                   polytope P star-shaped from v, and of conv(their vertices))
+//   points-inside   every other point that is not a vertex strictly inside P,
+//                   by a visibility walk in the cone triangulation {(v, f)}
+//                   (a scan of every facet where the walk does not settle)
+// When every point is a vertex (no v), every vertex is tested against every
+// facet instead of star-shaped (quadratic).
+std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets);
+
+}  // namespace flipflop::cpu
