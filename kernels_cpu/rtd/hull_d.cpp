@@ -68,23 +68,25 @@ class HullBuilder {
   std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
   std::vector<std::uint32_t> mark_, free_, work_;
   std::uint32_t stamp_ = 0;
+  std::uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 
   bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
 
-  // orient_d(facet f, q) > 0: q strictly beyond f (SoS, never 0)
-  bool sees(std::uint32_t f, Index q) {
+  // orient_d(t, q) of a d-tuple and a point (SoS, never 0 for distinct ids)
+  int orient_of(const Index* t, Index q) {
     ++st_.tests;
     pred::PointId id[D + 1];
     const double* p[D + 1];
     for (int j = 0; j < D; ++j) {
-      const Index x = fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(j)];
-      id[j] = x;
-      p[j] = ps_.point(x);
+      id[j] = t[j];
+      p[j] = ps_.point(t[j]);
     }
     id[D] = q;
     p[D] = ps_.point(q);
-    return pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr)) > 0;
+    return pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr));
   }
+  // q strictly beyond facet f
+  bool sees(std::uint32_t f, Index q) { return orient_of(&fv_[static_cast<std::size_t>(f) * D], q) > 0; }
 
   // the floating-point hyperplane n . x + c of facet f (heuristic only)
   void plane(std::uint32_t f) {
@@ -276,15 +278,28 @@ class HullBuilder {
     std::vector<std::uint32_t> vis;
     visible_region<D>(f0, fn_, mark_, stamp_, vis, [&](std::uint32_t g) { return sees(g, p); },
                       [&](std::uint32_t f, int i, std::uint32_t l) { hz.push_back({f, i, l}); });
-    // the cone: facet f with vertex i replaced by p, one per horizon ridge
-    std::vector<Index> orphans;
+    // the cone: facet f with vertex i replaced by p, one per horizon ridge,
+    // in slots other than the visible facets' (read below, freed after)
+    std::vector<std::uint32_t> fresh;
+    std::vector<int> skip;
+    for (const Horizon& h : hz) {
+      const std::uint32_t u = take_slot();
+      for (int j = 0; j < D; ++j)
+        fv_[u * D + static_cast<std::uint32_t>(j)] = j == h.i ? p : fv_[h.f * D + static_cast<std::uint32_t>(j)];
+      fn_[u * D + static_cast<std::uint32_t>(h.i)] = h.link;
+      fn_[h.link] = u * D + static_cast<std::uint32_t>(h.i);
+      mark_[u] = 0;
+      plane(u);
+      fresh.push_back(u);
+      skip.push_back(h.i);
+    }
+    st_.created += fresh.size();
+    match(fresh, skip);
+    // the points of the visible facets (p aside): each inside the grown hull
+    // or beyond one of the new facets (header)
     for (std::uint32_t f : vis)
       for (Index q : out_[f])
-        if (q != p) orphans.push_back(q);
-    std::vector<std::array<Index, D>> tuples(hz.size());
-    for (std::size_t k = 0; k < hz.size(); ++k)
-      for (int j = 0; j < D; ++j)
-        tuples[k][static_cast<std::size_t>(j)] = j == hz[k].i ? p : fv_[hz[k].f * D + static_cast<std::uint32_t>(j)];
+        if (q != p) place_orphan(q, f, p, fresh);
     for (std::uint32_t f : vis) {
       for (int j = 0; j < D; ++j) fv_[f * D + static_cast<std::uint32_t>(j)] = kNone;
       out_[f].clear();
@@ -292,21 +307,48 @@ class HullBuilder {
       free_.push_back(f);
     }
     st_.removed += vis.size();
-    std::vector<std::uint32_t> fresh;
-    std::vector<int> skip;
-    for (std::size_t k = 0; k < hz.size(); ++k) {
-      const std::uint32_t u = take_slot();
-      for (int j = 0; j < D; ++j) fv_[u * D + static_cast<std::uint32_t>(j)] = tuples[k][static_cast<std::size_t>(j)];
-      fn_[u * D + static_cast<std::uint32_t>(hz[k].i)] = hz[k].link;
-      fn_[hz[k].link] = u * D + static_cast<std::uint32_t>(hz[k].i);
-      mark_[u] = 0;
-      plane(u);
-      fresh.push_back(u);
-      skip.push_back(hz[k].i);
+  }
+
+  // q lay beyond the visible facet f. The grown hull adds to the old one the
+  // simplices conv(f' ∪ p) over the visible facets f'; a visibility walk
+  // through them from conv(f ∪ p) ends either inside one — every side
+  // (p, ridge) on q's side and q beyond f' itself: q is inside, discarded —
+  // or by crossing a side over a horizon ridge, which is the new facet u over
+  // it (the same tuple f'[j := p]), so q sees u and is assigned to it. Both
+  // conclusions are sound on any path; a walk that does not conclude (q
+  // behind f', or the step cap) falls back to testing every new facet.
+  void place_orphan(Index q, std::uint32_t f, Index p, const std::vector<std::uint32_t>& fresh) {
+    const std::uint32_t in = stamp_;
+    std::uint32_t cur = f;
+    bool beyond = true;  // q beyond cur (known for f)
+    for (std::size_t steps = 0; steps < 64; ++steps) {
+      rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+      const int r = static_cast<int>((rng_ >> 32) % static_cast<std::uint64_t>(D));
+      int exit = -1;
+      for (int k = 0; k < D && exit < 0; ++k) {
+        const int j = (r + k) % D;
+        Index t[D];
+        for (int c = 0; c < D; ++c) t[c] = c == j ? p : fv_[cur * D + static_cast<std::uint32_t>(c)];
+        if (orient_of(t, q) > 0) exit = j;
+      }
+      if (exit < 0) {
+        if (!beyond) break;
+        return;  // inside conv(cur ∪ p): inside the grown hull
+      }
+      const std::uint32_t l = fn_[cur * D + static_cast<std::uint32_t>(exit)];
+      const std::uint32_t g = l / D;
+      if (mark_[g] != in) {  // a horizon ridge: the new facet over it
+        const std::uint32_t u = fn_[l] / D;
+        if (out_[u].empty()) work_.push_back(u);
+        out_[u].push_back(q);
+        return;
+      }
+      cur = g;
+      Index t[D];
+      for (int c = 0; c < D; ++c) t[c] = fv_[cur * D + static_cast<std::uint32_t>(c)];
+      beyond = orient_of(t, q) > 0;
     }
-    st_.created += fresh.size();
-    match(fresh, skip);
-    for (Index q : orphans) assign(q, fresh);
+    assign(q, fresh);
   }
 };
 
