@@ -119,7 +119,7 @@ TEST_CASE("hull_d: grids and points on a sphere in 4D and 5D", "[hull_d]") {
     REQUIRE(cpu::hull_d_problem(grid, f).empty());
     if (d == 4) REQUIRE(as_sets(f) == triangulation_boundary(grid));
   }
-  // every point a vertex: the certifier's quadratic branch
+  // every point a vertex: the certifier is star-shaped from an auxiliary point (the vertices' average)
   PointSet sphere;
   sphere.dim = 4;
   std::vector<double> c;

@@ -380,6 +380,33 @@ std::string tuple_str(const Index* t, int k) {
   return o + ")";
 }
 
+// star-shaped (header): v strictly inside every facet, and the vertical ray
+// up from v crosses exactly one facet; "" or the violation.
+std::string star_shaped(const Certifier& ck, const std::vector<std::vector<Index>>& facets, Index v,
+                        const std::string& who) {
+  const int d = ck.d;
+  std::size_t crossed = 0;
+  for (const auto& f : facets) {
+    if (ck.orient(f.data(), v) >= 0)
+      return "star-shaped: " + who + " is not strictly inside the facet " + tuple_str(f.data(), d);
+    Index t[6];
+    for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
+    const int o = ck.orient_projected(t);
+    bool inside = true;
+    for (int j = 0; j < d && inside; ++j) {
+      const Index keep = t[j];
+      t[j] = v;
+      inside = ck.orient_projected(t) == o;
+      t[j] = keep;
+    }
+    if (inside && ck.orient(t, v) == o) ++crossed;
+  }
+  if (crossed != 1)
+    return "star-shaped: the facets wind " + std::to_string(crossed) + " times around " + who +
+           " (the vertical ray up from it crosses " + std::to_string(crossed) + " of them)";
+  return {};
+}
+
 }  // namespace
 
 std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
@@ -460,7 +487,27 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
   }
   Index v = 0;
   while (v < n && vertex[v]) ++v;
-  if (v == n) {  // every point a vertex: each against every facet
+  if (v == n) {
+    // every point a vertex: the centre is an auxiliary point c (the average
+    // of the vertices, rounded to doubles) with the SoS index n, after every
+    // input (predicates.hpp, "Points that are not inputs"); when it is
+    // strictly inside every facet the conditions below hold with it as they
+    // do with an input point. Otherwise (a hull too thin for the rounded
+    // average) every vertex is tested against every facet.
+    PointSet ext;
+    ext.dim = d;
+    std::vector<double> c(ps.coords.begin(), ps.coords.end());
+    std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
+    for (Index x = 0; x < n; ++x)
+      for (int j = 0; j < d; ++j) centre[static_cast<std::size_t>(j)] += ps.point(x)[j] / static_cast<double>(n);
+    c.insert(c.end(), centre.begin(), centre.end());
+    ext.coords = Values(std::move(c));
+    const Certifier ce{ext, d, pred::StaticFilter::for_points(ext.coords.data(), n + 1, d)};
+    bool inside = true;
+    for (const auto& f : facets)
+      if (ce.orient(f.data(), static_cast<Index>(n)) >= 0) inside = false;
+    if (inside) return star_shaped(ce, facets, static_cast<Index>(n), "the vertices' average (auxiliary point " +
+                                                                          std::to_string(n) + ")");
     for (const auto& f : facets)
       for (Index x = 0; x < n; ++x)
         if (std::find(f.begin(), f.end(), x) == f.end() && ck.orient(f.data(), x) >= 0)
@@ -468,27 +515,8 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
                  tuple_str(f.data(), d);
     return {};
   }
-  // v inside every facet; the vertical ray up from v crosses one facet
-  std::size_t crossed = 0;
-  for (const auto& f : facets) {
-    if (ck.orient(f.data(), v) >= 0)
-      return "star-shaped: point " + std::to_string(v) + " (not a vertex) is not strictly inside the facet " +
-             tuple_str(f.data(), d);
-    Index t[6];
-    for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
-    const int o = ck.orient_projected(t);
-    bool inside = true;
-    for (int j = 0; j < d && inside; ++j) {
-      const Index keep = t[j];
-      t[j] = v;
-      inside = ck.orient_projected(t) == o;
-      t[j] = keep;
-    }
-    if (inside && ck.orient(t, v) == o) ++crossed;
-  }
-  if (crossed != 1)
-    return "star-shaped: the facets wind " + std::to_string(crossed) + " times around point " + std::to_string(v) +
-           " (the vertical ray up from it crosses " + std::to_string(crossed) + " of them)";
+  if (std::string why = star_shaped(ck, facets, v, "point " + std::to_string(v) + " (not a vertex)"); !why.empty())
+    return why;
   // every other non-vertex point: a visibility walk in the cones (v, f). Side
   // j of cone (v, f) is the hyperplane of f with f_j replaced by v; f_j's
   // side is positive there (orient(f[j:=v], f_j) = -orient(f, v) > 0).

@@ -67,8 +67,11 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = n
 //   points-inside   every other point that is not a vertex strictly inside P,
 //                   by a visibility walk in the cone triangulation {(v, f)}
 //                   (a scan of every facet where the walk does not settle)
-// When every point is a vertex (no v), every vertex is tested against every
-// facet instead of star-shaped (quadratic).
+// When every point is a vertex (no such v), v is an auxiliary point: the
+// vertices' average rounded to doubles, with the SoS index n (after every
+// input, predicates.hpp), used when it is strictly inside every facet; only
+// where it is not (a hull too thin for the rounding) is every vertex tested
+// against every facet (quadratic).
 std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets);
 
 }  // namespace flipflop::cpu
