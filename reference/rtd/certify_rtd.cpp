@@ -197,7 +197,38 @@ std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<
   for (Index x : bverts) is_vertex[x] = 0;
   Index v = 0;
   while (v < is_vertex.size() && !is_vertex[v]) ++v;
-  if (v == is_vertex.size()) return std::nullopt;
+  // none (every vertex on the boundary): an auxiliary point, the boundary
+  // vertices' average rounded to doubles, with the SoS index n after every
+  // input (predicates.hpp, "Points that are not inputs"), in a copy of the
+  // input; used when it is strictly inside every boundary facet (else the
+  // caller's quadratic test)
+  PointSet ext;
+  std::optional<Checker> aux;
+  const Checker* cp = &ck;
+  if (v == is_vertex.size()) {
+    const std::size_t n = ck.ps.size();
+    ext.dim = d;
+    std::vector<double> c(ck.ps.coords.begin(), ck.ps.coords.end());
+    std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
+    for (Index x : bverts)
+      for (int j = 0; j < d; ++j)
+        centre[static_cast<std::size_t>(j)] += ck.ps.point(x)[j] / static_cast<double>(bverts.size());
+    c.insert(c.end(), centre.begin(), centre.end());
+    ext.coords = Values(std::move(c));
+    if (ck.ps.weighted) {
+      ext.weighted = true;
+      std::vector<double> w(ck.ps.weights.begin(), ck.ps.weights.end());
+      w.push_back(0.0);
+      ext.weights = Values(std::move(w));
+    }
+    aux.emplace(Checker{ext, d, ck.given, ck.exact, ck.furthest});
+    cp = &*aux;
+    for (const auto& [s, i] : boundary)
+      if (cp->orient_with(S[s], i, static_cast<Index>(n)) <= 0) return std::nullopt;
+    v = static_cast<Index>(n);
+  }
+  const Checker& cke = *cp;
+  const std::string vname = cp == &ck ? "interior vertex" : "auxiliary point (the boundary vertices' average)";
   // the ridges of the boundary: each in exactly two boundary facets, the
   // vertex of each not on the ridge strictly inside the other
   struct Ridge {
@@ -246,26 +277,26 @@ std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<
   std::size_t crossed = 0;
   for (std::size_t k = 0; k < boundary.size(); ++k) {
     const auto& [s, i] = boundary[k];
-    if (ck.orient_with(S[s], i, v) <= 0) return outside(k, v, "interior vertex");
+    if (cke.orient_with(S[s], i, v) <= 0) return outside(k, v, vname);
     pred::Pt p[kMaxD + 1];
     int c = 0;
     for (int j = 0; j <= d; ++j)
-      if (j != i) p[c++] = ck.P(S[s][static_cast<std::size_t>(j)]);
+      if (j != i) p[c++] = cke.P(S[s][static_cast<std::size_t>(j)]);
     const int o = pred::orient_d(d - 1, p);
     bool inside = true;
     for (int j = 0; j < d && inside; ++j) {
       const pred::Pt keep = p[j];
-      p[j] = ck.P(v);
+      p[j] = cke.P(v);
       inside = pred::orient_d(d - 1, p) == o;
       p[j] = keep;
     }
     if (!inside) continue;
-    p[d] = ck.P(v);
+    p[d] = cke.P(v);
     if (pred::orient_d(d, p) == o) ++crossed;
   }
   if (crossed != 1)
-    return "boundary-is-hull: the boundary facets wind " + std::to_string(crossed) + " times around the interior "
-           "vertex " + std::to_string(v) + " (the vertical ray up from it crosses " + std::to_string(crossed) +
+    return "boundary-is-hull: the boundary facets wind " + std::to_string(crossed) + " times around the " + vname +
+           " " + std::to_string(v) + " (the vertical ray up from it crosses " + std::to_string(crossed) +
            " of them; a convex boundary: exactly one)";
   return std::string();
 }

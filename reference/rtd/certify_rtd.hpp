@@ -55,8 +55,9 @@
 //     lifted simplex containing it lies strictly above the lower hull (which
 //     is that convex function), so it is redundant: the triangulation is
 //     RT(S ⊕ W), the unique lower hull of all perturbed lifted points.
-// The boundary in linear time (Level::canonical, when some vertex v of the
-// simplices is not a boundary vertex): boundary-is-hull is then established
+// The boundary in linear time (Level::canonical, with a vertex v of the
+// simplices that is not a boundary vertex, or the auxiliary point below):
+// boundary-is-hull is then established
 // by three checks whose cost is linear in |B| instead of testing every
 // boundary vertex against every boundary facet:
 //   (a) every ridge of B lies in exactly two facets of B, and each of the
@@ -83,9 +84,13 @@
 // SoS, strictly inside every facet it is not on: the condition of 1. holds.
 // (The degree check is what (a) and (b) cannot replace: a boundary winding
 // twice around v — a branched double cover — is convex at every ridge.)
-// When every vertex is a boundary vertex, and at Level::exact, the quadratic
-// test runs (each pair first through a floating-point filter of the facet's
-// affine orientation form, certify_rtd.cpp FacetForm).
+// When every vertex is a boundary vertex, v is an auxiliary point: the
+// boundary vertices' average rounded to doubles, with the SoS index n after
+// every input (predicates.hpp, "Points that are not inputs"; the argument is
+// the same for any point of the perturbed configuration), used when (b)
+// holds for it. Otherwise, and at Level::exact, the quadratic test runs
+// (each pair first through a floating-point filter of the facet's affine
+// orientation form, certify_rtd.cpp FacetForm).
 // Cost: O(|B|) orient_d for the hull condition (O(|B-vertices| · |B|)
 // without an interior vertex), O(#simplices) power_d, and a visibility walk
 // per missing point.
