@@ -102,23 +102,48 @@ class Builder {
     for (std::size_t k = W; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
   }
 
+  // The real simplices in canonical form (canonical_d.hpp's canonical_simplex
+  // on flat tuples: the volume convention, sorted, the last two swapped when
+  // the sort was odd), sorted; the redundant points.
   ref::Rtd output(RtdCavityStats& st) const {
     ref::Rtd r;
     std::vector<char> vertex(n_, 0);
-    std::vector<Index> t(W);
+    std::vector<Index> flat;
     const std::size_t slots = mark_.size();
     for (std::size_t s = 0; s < slots; ++s) {
       const std::uint32_t* v = tv_.data() + s * W;
       if (v[0] == kDead || is_virtual(static_cast<std::uint32_t>(s))) continue;
+      Index t[W];
       for (int j = 0; j < W; ++j) {
-        t[static_cast<std::size_t>(j)] = ids_[v[j]];
+        t[j] = static_cast<Index>(ids_[v[j]]);
         vertex[v[j]] = 1;
       }
-      r.simplices.push_back(canonical_simplex(t, Orientation::orient_d));
+      if (D % 2 == 1) std::swap(t[W - 1], t[W - 2]);  // orient_d -> volume convention (odd d)
+      bool odd = false;
+      for (int a = 1; a < W; ++a)  // insertion sort, counting swaps
+        for (int b = a; b > 0 && t[b] < t[b - 1]; --b) {
+          std::swap(t[b], t[b - 1]);
+          odd = !odd;
+        }
+      if (odd) std::swap(t[W - 1], t[W - 2]);
+      flat.insert(flat.end(), t, t + W);
     }
-    std::sort(r.simplices.begin(), r.simplices.end());
+    const std::size_t m = flat.size() / W;
+    std::vector<std::uint32_t> order(m);
+    for (std::size_t k = 0; k < m; ++k) order[k] = static_cast<std::uint32_t>(k);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const Index* x = flat.data() + static_cast<std::size_t>(a) * W;
+      const Index* y = flat.data() + static_cast<std::size_t>(b) * W;
+      for (int j = 0; j < W; ++j)
+        if (x[j] != y[j]) return x[j] < y[j];
+      return false;
+    });
+    r.simplices.reserve(m);
+    for (std::uint32_t k : order)
+      r.simplices.emplace_back(flat.begin() + static_cast<std::ptrdiff_t>(k) * W,
+                               flat.begin() + static_cast<std::ptrdiff_t>(k + 1) * W);
     for (std::size_t k = 0; k < n_; ++k)
-      if (!vertex[k]) r.redundant.push_back(ids_[k]);
+      if (!vertex[k]) r.redundant.push_back(static_cast<Index>(ids_[k]));
     std::sort(r.redundant.begin(), r.redundant.end());
     st.removed = r.redundant.size() - st.discarded;
     return r;
@@ -149,6 +174,7 @@ class Builder {
     std::uint8_t state;  // 0 empty, 1 open, 2 matched (tombstone)
   };
   std::vector<Half> table_;
+  std::vector<std::uint32_t> used_;  // table_ slots filled by this link_cone
 
   const std::uint32_t* simplex(std::uint32_t t) const { return tv_.data() + static_cast<std::size_t>(t) * W; }
   bool is_virtual(std::uint32_t t) const {
@@ -244,9 +270,9 @@ class Builder {
     const std::size_t m = horizon_.size();
     std::size_t cap = 16;
     while (cap < 2 * m * D) cap <<= 1;
-    if (table_.size() < cap) table_.resize(cap);
-    for (std::size_t q = 0; q < cap; ++q) table_[q].state = 0;
+    if (table_.size() < cap) table_.resize(cap);  // new entries empty; used ones are emptied below
     const std::size_t mask = cap - 1;
+    used_.clear();
     std::ptrdiff_t open = 0;
     for (std::size_t k = 0; k < m; ++k) {
       const Horizon& h = horizon_[k];
@@ -265,13 +291,17 @@ class Builder {
         int c = 0;
         for (int q = 0; q < W; ++q)
           if (q != j && q != h.i) key[static_cast<std::size_t>(c++)] = h.v[q];
-        std::sort(key.begin(), key.end());
+        for (int a = 1; a < kKey; ++a)  // insertion sort (at most 4 entries)
+          for (int b = a; b > 0 && key[static_cast<std::size_t>(b)] < key[static_cast<std::size_t>(b - 1)]; --b)
+            std::swap(key[static_cast<std::size_t>(b)], key[static_cast<std::size_t>(b - 1)]);
         std::uint64_t hash = 0x9E3779B97F4A7C15ull;
         for (std::uint32_t x : key) hash = (hash ^ x) * 0x100000001B3ull;
         const std::uint32_t half = s * W + static_cast<std::uint32_t>(j);
         for (std::size_t slot = (hash >> 20) & mask;; slot = (slot + 1) & mask) {
           Half& e = table_[slot];
-          if (e.state == 1 && e.key == key) {
+          bool same = e.state == 1;
+          for (int q = 0; q < kKey && same; ++q) same = e.key[static_cast<std::size_t>(q)] == key[static_cast<std::size_t>(q)];
+          if (same) {
             tn_[half] = e.link;
             tn_[e.link] = half;
             e.state = 2;
@@ -282,6 +312,7 @@ class Builder {
             e.key = key;
             e.link = half;
             e.state = 1;
+            used_.push_back(static_cast<std::uint32_t>(slot));
             ++open;
             break;
           }
@@ -289,6 +320,7 @@ class Builder {
       }
       if (real) last_ = s;
     }
+    for (std::uint32_t q : used_) table_[q].state = 0;
     if (open != 0) throw std::logic_error("rtd (cpu): the horizon of an insertion is not a closed manifold");
     for (std::size_t q = m; q < cavity_.size(); ++q) {  // cavity slots not reused
       const std::uint32_t s = cavity_[q];

@@ -342,16 +342,50 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
       h.odd = odd;
     }
   }
-  std::sort(halves.begin(), halves.end(), [](const Half& a, const Half& b) {
-    return a.key != b.key ? a.key < b.key : a.s != b.s ? a.s < b.s : a.i < b.i;
-  });
+  // the same order as a global sort by (key, simplex, position), without
+  // one: a counting sort by the facet's smallest vertex (a stable pass in
+  // (simplex, position) order), then each bucket — the facets whose smallest
+  // vertex is that point, a few dozen — sorted stably by its other vertices
+  {
+    const std::size_t n = ck.ps.size();
+    std::vector<std::size_t> start(n + 2, 0);
+    for (const Half& h : halves) ++start[static_cast<std::size_t>(h.key[0]) + 1];
+    for (std::size_t v = 0; v <= n; ++v) start[v + 1] += start[v];
+    std::vector<Half> sorted(halves.size());
+    {
+      std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+      for (const Half& h : halves) sorted[cursor[h.key[0]]++] = h;
+    }
+    const auto rest_less = [d](const Half& x, const Half& y) {
+      for (int j = 1; j < d; ++j)
+        if (x.key[static_cast<std::size_t>(j)] != y.key[static_cast<std::size_t>(j)])
+          return x.key[static_cast<std::size_t>(j)] < y.key[static_cast<std::size_t>(j)];
+      return false;
+    };
+    for (std::size_t v = 0; v < n; ++v) {
+      Half* lo = sorted.data() + start[v];
+      Half* hi = sorted.data() + start[v + 1];
+      if (hi - lo <= 32) {
+        for (Half* x = lo + 1; x < hi; ++x)
+          for (Half* y = x; y > lo && rest_less(*y, *(y - 1)); --y) std::swap(*y, *(y - 1));
+      } else {
+        std::stable_sort(lo, hi, rest_less);
+      }
+    }
+    halves.swap(sorted);
+  }
+  const auto same_key = [d](const Half& x, const Half& y) {
+    for (int j = 0; j < d; ++j)
+      if (x.key[static_cast<std::size_t>(j)] != y.key[static_cast<std::size_t>(j)]) return false;
+    return true;
+  };
   auto facet_vec = [&](const FacetKey& k) { return std::vector<Index>(k.begin(), k.begin() + d); };
   F.d = d;
   F.across.assign(S.size() * w, -1);
   std::vector<std::pair<std::uint32_t, int>> boundary;
   for (std::size_t a = 0; a < halves.size();) {
     std::size_t b = a + 1;
-    while (b < halves.size() && halves[b].key == halves[a].key) ++b;
+    while (b < halves.size() && same_key(halves[b], halves[a])) ++b;
     if (b - a >= 3)
       return "facet-manifold: facet " + simplex_str(facet_vec(halves[a].key)) + " lies in three or more simplices";
     if (b - a == 2) {
