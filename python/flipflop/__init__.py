@@ -118,6 +118,16 @@ def _backend(backend: Optional[str], allowed: Sequence[str], what: str) -> str:
 
 
 
+def _intc(a) -> np.ndarray:
+    """scipy's index dtype, np.intc (32 bits), for an index array; int64
+    where a value does not fit (beyond 2^31 - 1 points or simplices, where
+    scipy's own arrays would overflow)."""
+    a = np.asarray(a)
+    if a.size and int(a.max()) > np.iinfo(np.intc).max:
+        return a.astype(np.int64, copy=False)
+    return a.astype(np.intc)
+
+
 # ---- exact signs of small determinants (the scipy attributes' exact parts) ----------
 #
 # ConvexHull.good / .coplanar, Delaunay.good and the zero-volume test behind
@@ -363,7 +373,7 @@ class ConvexHull(_QhullUser):
                  normals for the zero-area facets of degenerate input)
       volume, area  (2D: area and perimeter; 3D..5D: volume and surface
                  area; inf or 0 only where the true value is not a double)
-      coplanar   (k, 3) int64 [point, facet, vertex], filled only when
+      coplanar   (k, 3) intc [point, facet, vertex], filled only when
                  qhull_options holds Qc (else shape (0, 3)): the points
                  that lie exactly on the hull's boundary but are not
                  vertices, each with a facet whose plane holds it exactly
@@ -468,8 +478,9 @@ class ConvexHull(_QhullUser):
                 others[g] = False
             coplanar = _hull_coplanar(a, simplices, np.flatnonzero(others))
         self.points, self.ndim, self.polygons = a, d, polygons
-        self.simplices, self.vertices, self.neighbors, self.equations = simplices, vertices, neighbors, equations
-        self.volume, self.area, self.good, self.coplanar = volume, area, good, coplanar
+        # scipy's index dtype (np.intc)
+        self.simplices, self.vertices, self.neighbors = _intc(simplices), _intc(vertices), _intc(neighbors)
+        self.equations, self.volume, self.area, self.good, self.coplanar = equations, volume, area, good, _intc(coplanar)
 
 
 def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
@@ -682,7 +693,7 @@ class Delaunay(_QhullUser):
              qhull_options=None, *, weights=None, strict=False,
              backend=None, threads=0)
 
-    Attributes (as scipy.spatial.Delaunay; indices int64):
+    Attributes (as scipy.spatial.Delaunay; index arrays np.intc, as scipy's):
       points       (n, d) float64
       simplices    (m, d+1) positively oriented (det[p1-p0, ..., pd-p0] > 0),
                    canonical order
@@ -829,8 +840,9 @@ class Delaunay(_QhullUser):
         leave = np.ones((len(i), d + 1), dtype=bool)
         leave[np.arange(len(i)), j] = False
         self.points, self.weights, self.ndim = a, w, d
-        self.simplices, self.redundant, self.neighbors = simplices, redundant, neighbors
-        self.convex_hull = simplices[i][leave].reshape(-1, d)
+        # scipy's index dtype (np.intc); `redundant` (flipflop's) stays int64
+        self.simplices, self.redundant, self.neighbors = _intc(simplices), redundant, _intc(neighbors)
+        self.convex_hull = _intc(simplices[i][leave].reshape(-1, d))
         self._good_index = g
         self._cache = {}
         big = float(np.abs(a).max())
@@ -920,7 +932,8 @@ class Delaunay(_QhullUser):
             raise ValueError(f"find_simplex: wrong dimensionality in xi: points must have shape (..., {self.ndim}), "
                              f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
-        return _flipflop.find_simplex(self.points, self.simplices, self.neighbors, q).reshape(shape)
+        s64, n64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))
+        return _intc(_flipflop.find_simplex(self.points, s64, n64, q).reshape(shape))
 
     # ---- their computation -----------------------------------------------------------
 
@@ -998,21 +1011,21 @@ class Delaunay(_QhullUser):
         out[S.ravel()[::-1]] = np.repeat(np.arange(len(S), dtype=np.int64), S.shape[1])[::-1]
         c = self.coplanar
         out[c[:, 0]] = c[:, 1]
-        return out
+        return _intc(out)
 
     def _compute_vertex_neighbor_vertices(self):
         S, n = self.simplices, self.npoints
         i, j = np.triu_indices(S.shape[1], 1)
-        a, b = S[:, i].ravel(), S[:, j].ravel()
+        a, b = S[:, i].ravel().astype(np.int64), S[:, j].ravel().astype(np.int64)
         key = np.unique(np.concatenate([a * n + b, b * n + a]))
         src, dst = key // n, key % n
         indptr = np.zeros(n + 1, dtype=np.int64)
         np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
-        return indptr, dst.astype(np.int64)
+        return _intc(indptr), _intc(dst)
 
     def _compute_coplanar(self) -> np.ndarray:
         if not self._options.coplanar or len(self.redundant) == 0 or self.furthest_site:
-            return np.zeros((0, 3), dtype=np.int64)
+            return np.zeros((0, 3), dtype=np.intc)
         r = self.redundant
         s = self.find_simplex(self.points[r])
         rows = []
@@ -1022,12 +1035,12 @@ class Delaunay(_QhullUser):
             verts = self.simplices[t]
             dist = ((self.points[verts] - self.points[p]) ** 2).sum(axis=1)
             rows.append((int(p), int(t), int(verts[int(np.argmin(dist))])))
-        return np.array(rows, dtype=np.int64).reshape(-1, 3)
+        return _intc(np.array(rows, dtype=np.int64).reshape(-1, 3))
 
     def _compute_good(self) -> np.ndarray:
         m, g = len(self.simplices), self._good_index
         if g is None:
-            return np.ones(m, dtype=np.int64)
+            return np.ones(m, dtype=np.intc)
         S, P, d = self.simplices, self.points, self.ndim
         x = P[g]
         wx = 0.0 if self.weights is None else self.weights[g]
@@ -1051,7 +1064,7 @@ class Delaunay(_QhullUser):
         # (below the lower hull's facet); furthest site: strictly outside
         # (above the upper hull's facet)
         inside = _det_signs(mats, exact, mags) == (-_INSPHERE[d] if self.furthest_site else _INSPHERE[d])
-        return (inside if self._options.visible else ~inside).astype(np.int64)
+        return (inside if self._options.visible else ~inside).astype(np.intc)
 
 
 class Certificate:

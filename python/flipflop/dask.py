@@ -65,6 +65,7 @@ import dask.array as da
 from . import Certificate
 from . import ConvexHull as _MemoryHull
 from . import certify as _certify
+from . import _intc
 
 __all__ = ["ConvexHull", "CertificationError", "certify_chunks", "from_npy_shards"]
 
@@ -642,9 +643,11 @@ class ConvexHull:
                 raise CertificationError(i, (int(off[i]), int(off[i + 1])), c)
         d = x.shape[1]
         self.points, self.ndim, self.nchunks = given, d, len(x.chunks[0])
-        self.simplices, self.vertices, self.neighbors = hull["simplices"], hull["vertices"], hull["neighbors"]
+        # scipy's (and flipflop.ConvexHull's) index dtype, np.intc
+        self.simplices, self.vertices = _intc(hull["simplices"]), _intc(hull["vertices"])
+        self.neighbors = _intc(hull["neighbors"])
         self.equations, self.volume, self.area = hull["equations"], hull["volume"], hull["area"]
-        self.coplanar, self.good, self.polygons = np.zeros((0, 3), dtype=np.int64), None, None
+        self.coplanar, self.good, self.polygons = np.zeros((0, 3), dtype=np.intc), None, None
         self.certificates = certificates
         vc = hull["vertex_coords"]
         self.min_bound, self.max_bound = vc.min(axis=0), vc.max(axis=0)

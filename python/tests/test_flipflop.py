@@ -638,7 +638,7 @@ def test_delaunay_3d_cpu_equals_reference(case):
     assert set(ref.redundant) == set(range(len(p))) - set(np.unique(ref.simplices))
     for backend, threads in ((None, 0), ("cpu", 1), ("cpu", 2), ("cpu", 8)):
         t = flipflop.Delaunay(p, weights=w, backend=backend, threads=threads)
-        assert t.simplices.dtype == np.int64 and t.simplices.shape == ref.simplices.shape, (name, threads)
+        assert t.simplices.dtype == np.intc and t.simplices.shape == ref.simplices.shape, (name, threads)
         assert np.array_equal(t.simplices, ref.simplices), (name, threads)
         assert np.array_equal(t.redundant, ref.redundant), (name, threads)
         assert np.array_equal(t.neighbors, ref.neighbors)

@@ -276,7 +276,7 @@ def test_coplanar_and_vertex_to_simplex_on_duplicates(d):
     # is flipflop's choice, not scipy's
     vertices = set(t.simplices.ravel().tolist())
     assert set(range(25)) - {3, 7, 20} <= vertices
-    assert c.dtype == np.int64 and c.shape[1] == 3 and len(c) >= 1
+    assert c.dtype == np.intc and c.shape[1] == 3 and len(c) >= 1
     assert c[:, 0].tolist() == sorted(set(range(len(p))) - vertices)
     groups = [{3, 25}, {7, 26, 27}, {20, 28}]
     for pt, simplex, vertex in c:
@@ -391,7 +391,7 @@ def test_hull_coplanar_on_grids(d, k):
         h = flipflop.ConvexHull(p, qhull_options="Qc", strict=strict)
         want = boundary_oracle(p, 0.0, k - 1.0) - set(h.vertices.tolist())
         assert set(h.coplanar[:, 0].tolist()) == want
-        assert h.coplanar.dtype == np.int64 and h.coplanar.shape[1] == 3
+        assert h.coplanar.dtype == np.intc and h.coplanar.shape[1] == 3
         for pt, facet, vertex in h.coplanar:
             V = [F(p[i]) for i in h.simplices[facet]]
             X = F(p[pt])
@@ -731,3 +731,22 @@ def test_furthest_site_add_points_and_good():
         assert 0 not in s
         centre_ok = _circumsphere_holds_all(np.concatenate([p[others], p[:1]]), [list(others).index(v) for v in s])
         assert bool(good) == (not centre_ok)
+
+
+@pytest.mark.parametrize("d", [2, 3, 4])
+def test_index_dtypes_are_scipys(d):
+    # every index array has scipy's dtype (np.intc; Voronoi.point_region np.intp)
+    p = np.random.default_rng(70 + d).random((40, d))
+    pairs = [(flipflop.Delaunay(p), ss.Delaunay(p)), (flipflop.ConvexHull(p), ss.ConvexHull(p))]
+    for ours, theirs in pairs:
+        for name in ("simplices", "neighbors", "coplanar", "vertices", "convex_hull", "vertex_to_simplex"):
+            if not hasattr(theirs, name) or name == "vertices" and isinstance(theirs, ss.Delaunay):
+                continue
+            assert getattr(ours, name).dtype == getattr(theirs, name).dtype, name
+    t, s = pairs[0]
+    assert t.find_simplex(p[:5]).dtype == s.find_simplex(p[:5]).dtype
+    assert all(a.dtype == b.dtype for a, b in zip(t.vertex_neighbor_vertices, s.vertex_neighbor_vertices))
+    assert t.good.dtype == s.good.dtype
+    if d > 2:
+        v, w = flipflop.Voronoi(p), ss.Voronoi(p)
+        assert v.ridge_points.dtype == w.ridge_points.dtype and v.point_region.dtype == w.point_region.dtype
