@@ -22,6 +22,7 @@
 #include "predicates/predicates.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/rc_scaled.hpp"
+#include "reference/dimension.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
 using namespace flipflop;
@@ -57,10 +58,11 @@ std::set<std::vector<Index>> triangulation_boundary(const PointSet& ps) {
 }
 
 int orient(const PointSet& ps, const std::vector<Index>& f, Index x) {
-  pred::Pt p[6];
-  for (std::size_t j = 0; j < f.size(); ++j) p[j] = {f[j], ps.point(f[j])};
-  p[f.size()] = {x, ps.point(x)};
-  return pred::orient_d(ps.dim, p);
+  pred::PointId id[8];
+  const double* p[8];
+  for (std::size_t j = 0; j < f.size(); ++j) id[j] = f[j], p[j] = ps.point(f[j]);
+  id[f.size()] = x, p[f.size()] = ps.point(x);
+  return pred::lambda_sign(ps.dim + 1, id, p, nullptr, pred::Mode::filtered);
 }
 
 // the definition: every point off a facet strictly inside it
@@ -184,4 +186,22 @@ TEST_CASE("hull_d certifier: each kind of wrong answer is rejected by its condit
     INFO(why);
     REQUIRE(!why.empty());
   }
+}
+
+// 6D and 7D (orientations of 7 and 8 points): against the definition and
+// certified; no triangulation there to compare with (RT+1 stops at 5D)
+TEST_CASE("hull_d: 6D and 7D sets against the definition, certified (shrinking)", "[hull_d]") {
+  for (int d : {6, 7})
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets: hull_d == the definition, certified", 64, [d] {
+      const PointSet ps = *test::degenerate_points_d(d, d + 1, d + 12, false);
+      bool spanning = true;
+      try {
+        const Facets f = cpu::hull_d(ps);
+        RC_ASSERT(definition_holds(ps, f));
+        RC_ASSERT(cpu::hull_d_problem(ps, f).empty());
+      } catch (const std::invalid_argument&) {
+        spanning = false;
+      }
+      RC_ASSERT(spanning == dimension_problem(ps).empty());
+    });
 }

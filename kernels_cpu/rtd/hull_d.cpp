@@ -11,6 +11,7 @@
 #include "predicates/predicates.hpp"
 #include "predicates/staged.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
+#include "reference/dimension.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
 namespace flipflop::cpu {
@@ -18,21 +19,31 @@ namespace flipflop::cpu {
 namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
+constexpr int kMaxHullDim = 7;  // orientations of up to 8 points (predicates.hpp: lambda_sign, k <= 8)
 
-// Determinant of an n x n double matrix (row-major, n <= 4) by Laplace along
-// the first row: floating point, for the furthest-point heuristic only.
+// Determinant of an n x n double matrix (row-major, n <= 6) by Gaussian
+// elimination with partial pivoting: floating point, for the furthest-point
+// heuristic only.
 double det_small(const double* m, int n) {
-  if (n == 1) return m[0];
-  double sub[16], s = 0.0;
+  double a[36];
+  for (int k = 0; k < n * n; ++k) a[k] = m[k];
+  double det = 1.0;
   for (int c = 0; c < n; ++c) {
-    int k = 0;
-    for (int r = 1; r < n; ++r)
-      for (int cc = 0; cc < n; ++cc)
-        if (cc != c) sub[k++] = m[r * n + cc];
-    const double t = m[c] * det_small(sub, n - 1);
-    s += c % 2 ? -t : t;
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::fabs(a[r * n + c]) > std::fabs(a[piv * n + c])) piv = r;
+    if (a[piv * n + c] == 0.0) return 0.0;
+    if (piv != c) {
+      for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[piv * n + k]);
+      det = -det;
+    }
+    det *= a[c * n + c];
+    for (int r = c + 1; r < n; ++r) {
+      const double f = a[r * n + c] / a[c * n + c];
+      for (int k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
+    }
   }
-  return s;
+  return det;
 }
 
 template <int D>
@@ -99,7 +110,7 @@ class HullBuilder {
     auto& h = nrm_[f];
     double c0 = 0.0;
     for (int k = 0; k < D; ++k) {
-      double sub[16];
+      double sub[36];
       int q = 0;
       for (int r = 0; r < D - 1; ++r)
         for (int c = 0; c < D; ++c)
@@ -359,16 +370,16 @@ struct Certifier {
   int d;
   pred::StaticFilter filter;
   int orient(const Index* t, Index x) const {
-    pred::PointId id[7];
-    const double* p[7];
+    pred::PointId id[kMaxHullDim + 1];
+    const double* p[kMaxHullDim + 1];
     for (int j = 0; j < d; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
     id[d] = x, p[d] = ps.point(x);
     return pred::lambda_sign(&filter, d + 1, id, p, nullptr);
   }
   // orient_{d-1} of the projections (the first d-1 coordinates) of t
   int orient_projected(const Index* t) const {
-    pred::PointId id[7];
-    const double* p[7];
+    pred::PointId id[kMaxHullDim + 1];
+    const double* p[kMaxHullDim + 1];
     for (int j = 0; j < d; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
     return pred::lambda_sign(d, id, p, nullptr, pred::Mode::filtered);
   }
@@ -389,7 +400,7 @@ std::string star_shaped(const Certifier& ck, const std::vector<std::vector<Index
   for (const auto& f : facets) {
     if (ck.orient(f.data(), v) >= 0)
       return "star-shaped: " + who + " is not strictly inside the facet " + tuple_str(f.data(), d);
-    Index t[6];
+    Index t[kMaxHullDim];
     for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
     const int o = ck.orient_projected(t);
     bool inside = true;
@@ -410,10 +421,19 @@ std::string star_shaped(const Certifier& ck, const std::vector<std::vector<Index
 }  // namespace
 
 std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
-  PointSet plain = ps;  // validate_rtd_input checks weights too: the hull has none
+  PointSet plain = ps;  // the checks below look at weights too: the hull has none
   plain.weighted = false;
   plain.weights = Values();
-  ref::validate_rtd_input(plain);
+  if (ps.dim <= 5) {
+    ref::validate_rtd_input(plain);  // RT+1's checks and messages (its boundary is the same hull)
+  } else {
+    if (ps.dim > kMaxHullDim)
+      throw std::invalid_argument("hull: points of dimension 2.." + std::to_string(kMaxHullDim) + ", got " +
+                                  std::to_string(ps.dim));
+    for (double c : ps.coords)
+      if (!std::isfinite(c)) throw std::invalid_argument("hull: a coordinate is not finite");
+    if (std::string why = dimension_problem(plain); !why.empty()) throw std::invalid_argument(why);
+  }
   HullDStats local;
   HullDStats& st = stats ? *stats : local;
   st = HullDStats{};
@@ -421,14 +441,16 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
     case 2: return HullBuilder<2>(plain, st).run();
     case 3: return HullBuilder<3>(plain, st).run();
     case 4: return HullBuilder<4>(plain, st).run();
-    default: return HullBuilder<5>(plain, st).run();
+    case 5: return HullBuilder<5>(plain, st).run();
+    case 6: return HullBuilder<6>(plain, st).run();
+    default: return HullBuilder<7>(plain, st).run();
   }
 }
 
 std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets) {
   const int d = ps.dim;
   const std::size_t n = ps.size();
-  if (d < 2 || d > 5) return "input-dimension: d must be 2..5";
+  if (d < 2 || d > kMaxHullDim) return "input-dimension: d must be 2.." + std::to_string(kMaxHullDim);
   if (facets.size() < static_cast<std::size_t>(d + 1))
     return "facet-indices: " + std::to_string(facets.size()) + " facets, a hull in R^" + std::to_string(d) +
            " has at least " + std::to_string(d + 1);
@@ -447,7 +469,7 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
   Certifier ck{ps, d, pred::StaticFilter::for_points(ps.coords.data(), n, d)};
   // ridges: each in exactly two facets, convex
   struct Ridge {
-    std::array<Index, 4> key;
+    std::array<Index, kMaxHullDim - 1> key;
     std::uint32_t f;
     int j;
   };
@@ -524,7 +546,7 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
   // start near their target)
   std::vector<std::pair<std::uint64_t, Index>> order;
   {
-    std::array<double, 5> lo, hi;
+    std::array<double, kMaxHullDim> lo, hi;
     lo.fill(HUGE_VAL), hi.fill(-HUGE_VAL);
     for (Index q = 0; q < n; ++q)
       for (int j = 0; j < d; ++j)
@@ -534,7 +556,7 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
     for (Index q = 0; q < n; ++q) {
       if (vertex[q] || q == v) continue;
       std::uint64_t key = 0;
-      std::uint32_t cell[5];
+      std::uint32_t cell[kMaxHullDim];
       for (int j = 0; j < d; ++j) {
         const double span = hi[static_cast<std::size_t>(j)] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5;
         double u = span > 0 ? (ps.point(q)[j] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5) / span : 0.0;
@@ -554,9 +576,9 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
     (void)key;
     long found = -1;
     for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
-      Index t[6];
+      Index t[kMaxHullDim];
       for (int j = 0; j < d; ++j) t[j] = facets[cur][static_cast<std::size_t>(j)];
-      int cand[6], nc = 0;
+      int cand[kMaxHullDim], nc = 0;
       for (int j = 0; j < d; ++j) {
         const Index keep = t[j];
         t[j] = v;
@@ -572,7 +594,7 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
     }
     if (found < 0) {  // the walk did not settle: the cone that holds q by a scan
       for (std::size_t k = 0; k < facets.size() && found < 0; ++k) {
-        Index t[6];
+        Index t[kMaxHullDim];
         for (int j = 0; j < d; ++j) t[j] = facets[k][static_cast<std::size_t>(j)];
         bool in = true;
         for (int j = 0; j < d && in; ++j) {

@@ -1,7 +1,7 @@
-// hull_d.hpp — the convex hull in R^d (d = 2..5) by beneath–beyond insertion
+// hull_d.hpp — the convex hull in R^d (d = 2..7) by beneath–beyond insertion
 // with outside sets (Quickhull's order), exact under flipflop's Simulation of
 // Simplicity, and its certifier in time linear in the output plus a walk per
-// point. The backend of Python's `ConvexHull` in 4D and 5D (one thread).
+// point. The backend of Python's `ConvexHull` in 4D..7D (one thread).
 //
 // The answer. Under SoS the points are in general position, their hull is
 // simplicial and unique: its facets are the d-subsets whose hyperplane has
@@ -46,11 +46,11 @@ struct HullDStats {
   std::uint64_t tests = 0;       // point-facet visibility tests
 };
 
-// The facets of the hull of ps (dim 2..5; weights ignored), each a d-tuple
+// The facets of the hull of ps (dim 2..7; weights ignored), each a d-tuple
 // of input indices oriented so that orient_d(facet, x) < 0 for every point x
-// inside (predicates.hpp's convention), in no particular order. Input the
-// reference rejects (not finite, not spanning R^d) is rejected with
-// ref::validate_rtd_input's std::invalid_argument.
+// inside (predicates.hpp's convention), in no particular order. Input that
+// is not finite or does not span R^d is rejected with std::invalid_argument
+// (d <= 5: ref::validate_rtd_input's, the same messages as RT+1).
 std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = nullptr);
 
 // Certifies `facets` (the convention above) as the canonical hull of ps:

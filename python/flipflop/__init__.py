@@ -51,7 +51,7 @@ gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 _GPU = ("cuda-omp", "cuda") if gpu_backends else ()
 # 4D, 5D hulls: the boundary of the Delaunay triangulation by that backend
 _HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU, 4: ("cpu", "reference"),
-                  5: ("cpu", "reference")}
+                  5: ("cpu", "reference"), 6: ("cpu",), 7: ("cpu",)}
 # per dimension, the default first: the multithreaded kernels exist for d = 2
 # and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the cavity-insertion kernel for
 # d = 4, 5 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2
@@ -347,12 +347,13 @@ class _QhullUser:
 
 
 class ConvexHull(_QhullUser):
-    """The convex hull of points in 2D..5D, exact and certified, with
+    """The convex hull of points in 2D..7D, exact and certified, with
     scipy.spatial.ConvexHull's constructor and attributes
-    (docs/scipy_porting.md lists every name and difference). 4D and 5D:
+    (docs/scipy_porting.md lists every name and difference). 4D..7D:
     the hull kernel's facets (beneath-beyond, exact, certified; backend
-    'cpu') or the boundary facets of the canonical Delaunay triangulation
-    (RT+1, certified; backend 'reference'), which are the
+    'cpu', the only one in 6D and 7D) or, in 4D and 5D, the boundary facets
+    of the canonical Delaunay triangulation (RT+1, certified; backend
+    'reference'), which are the
     canonical hull's facets (_hull_from_triangulation says why), with the
     attributes below computed in Python; facets outward (det[f1-f0, ...,
     x-f0] > 0 beyond), ascending but for a swap of the last two.
@@ -419,7 +420,7 @@ class ConvexHull(_QhullUser):
 
     def __init__(self, points, incremental: bool = False, qhull_options=None, *, strict: bool = False,
                  backend: Optional[str] = None, threads: int = 0):
-        a = _points(points, (2, 3, 4, 5), "ConvexHull", finite=False)
+        a = _points(points, (2, 3, 4, 5, 6, 7), "ConvexHull", finite=False)
         d = a.shape[1]
         self._options = _qhull_options(qhull_options, "ConvexHull", "Qx" if d > 4 else "")
         if strict and d != 3:
@@ -484,7 +485,7 @@ class ConvexHull(_QhullUser):
 
 
 def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
-    """The convex hull in 4D and 5D: backend 'cpu' the facets of the hull
+    """The convex hull in 4D..7D: backend 'cpu' the facets of the hull
     kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
     the boundary facets of the canonical Delaunay triangulation (RT+1,
     certified) — the same facets —, with the

@@ -301,7 +301,8 @@ std::vector<std::int64_t> facet_neighbors(std::size_t m, std::size_t k, std::siz
     case 4: return facet_neighbors_in<4, std::uint64_t>(m, buckets, vertex);
     case 5: return facet_neighbors_in<5, std::uint64_t>(m, buckets, vertex);
     case 6: return facet_neighbors_in<6, std::uint64_t>(m, buckets, vertex);
-    default: throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..6");
+    case 7: return facet_neighbors_in<7, std::uint64_t>(m, buckets, vertex);
+    default: throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..7");
   }
 }
 
@@ -699,14 +700,14 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
           list_array(redundant)};
 }
 
-// The facets of the convex hull in R^d, d = 2..5 (kernels_cpu/rtd/hull_d:
+// The facets of the convex hull in R^d, d = 2..7 (kernels_cpu/rtd/hull_d:
 // beneath-beyond in Quickhull's order, exact under SoS, one thread),
 // certified by cpu::hull_d_problem (closed convex surface star-shaped from a
 // point that is not a vertex, every other point inside by a walk): (m, d)
 // rows oriented so that orient_d(facet, x) < 0 for x inside.
 IndexArray hull_d(const Points& p) {
   const PointSet ps = point_set(p, std::nullopt);
-  if (ps.dim < 2 || ps.dim > 5) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..5");
+  if (ps.dim < 2 || ps.dim > 7) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..7");
   std::vector<std::vector<Index>> facets;
   {
     nb::gil_scoped_release nogil;
@@ -723,7 +724,7 @@ IndexArray hull_d(const Points& p) {
 // the point indices as buckets.
 IndexArray neighbors(const Cells& c) {
   const std::size_t m = c.shape(0), k = c.shape(1);
-  if (k < 2 || k > 6) throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..6");
+  if (k < 2 || k > 7) throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..7");
   std::vector<std::int64_t> nb;
   {
     nb::gil_scoped_release nogil;

@@ -16,6 +16,7 @@ and flipflop.Delaunay (issue 39; docs/scipy_porting.md).
 """
 import inspect
 from fractions import Fraction
+import math
 from itertools import combinations
 
 import numpy as np
@@ -750,3 +751,37 @@ def test_index_dtypes_are_scipys(d):
     if d > 2:
         v, w = flipflop.Voronoi(p), ss.Voronoi(p)
         assert v.ridge_points.dtype == w.ridge_points.dtype and v.point_region.dtype == w.point_region.dtype
+
+
+@pytest.mark.parametrize("d,n", [(6, 300), (7, 120)])
+def test_convex_hull_6d_7d_equals_scipy(d, n):
+    # 6D and 7D hulls (kernels_cpu/rtd/hull_d): scipy's facets, measures and
+    # equations on random input; the definition exactly on a lattice (every
+    # point on the inner side of every facet, Fraction arithmetic)
+    p = np.random.default_rng(d).standard_normal((n, d))
+    ours, theirs = flipflop.ConvexHull(p), ss.ConvexHull(p)
+    assert {tuple(sorted(x)) for x in ours.simplices.tolist()} == {tuple(sorted(x)) for x in theirs.simplices.tolist()}
+    assert ours.volume == pytest.approx(theirs.volume, rel=1e-12)
+    assert ours.area == pytest.approx(theirs.area, rel=1e-12)
+    assert sorted(ours.vertices.tolist()) == sorted(theirs.vertices.tolist())
+    order = np.lexsort(ours.equations.T[::-1])
+    order_s = np.lexsort(theirs.equations.T[::-1])
+    assert np.allclose(ours.equations[order], theirs.equations[order_s], atol=1e-12)
+    if d == 6:  # the 6-cube's corners: every facet's plane holds 32 points (exact ties)
+        g = np.array(np.meshgrid(*[np.arange(2.0)] * d)).reshape(d, -1).T
+        want_volume = 1.0
+    else:  # 7D: the cross-polytope and its centre (8-point orientations tie only at the centre's planes)
+        g = np.vstack([np.zeros(d), np.eye(d), -np.eye(d)])
+        want_volume = 2.0 ** d / math.factorial(d)
+    h = flipflop.ConvexHull(g)
+    assert h.volume == pytest.approx(want_volume, rel=1e-14)
+    F = Fraction
+    for f in h.simplices[:: max(1, len(h.simplices) // 40)]:
+        base = [F(x) for x in g[f[0]]]
+        rows = [[F(x) - b for x, b in zip(g[v], base)] for v in f[1:]]
+        for x in range(len(g)):
+            if x in f:
+                continue
+            m = rows + [[F(c) - b for c, b in zip(g[x], base)]]
+            assert fdet(m) <= 0  # outward facets: every point inside or on
+
