@@ -172,7 +172,6 @@ Report certify_witnessed(const PointSet& ps, const std::vector<Triangle>& tris, 
   const pred::StaticFilter filter = parallel_static_filter(ps, {});
   const Witnessed W{ps, w, filter, level == certify::Level::canonical, static_cast<std::uint32_t>(n), w.tv.size() / 3};
   const std::size_t slots = W.slots;
-  const std::uint32_t N = W.n;
 
   // witness-size, witness-points, triangle-indices (witnessed_output.hpp)
   if (auto bad = witness_problem<3>(ps, w.pts, w.at, w.tv, w.tn, kNo, "triangles", "triangle-indices",

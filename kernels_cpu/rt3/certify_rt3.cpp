@@ -169,7 +169,6 @@ Report certify_witnessed(const PointSet& ps, const Rt3Witness& w, const std::vec
   const bool canonical = level == certify::Level::canonical;
   const Witnessed W{w, filter, canonical, static_cast<std::uint32_t>(n), w.tv.size() / 4};
   const std::size_t slots = W.slots;
-  const std::uint32_t N = W.n;
 
   // witness-size, witness-points, simplex-indices (witnessed_output.hpp)
   if (auto bad = witness_problem<4>(ps, w.pts, w.at, w.tv, w.tn, kNo, "tetrahedra", "simplex-indices",
