@@ -52,13 +52,18 @@ struct Setting {
 };
 constexpr Setting kSettings[] = {{1, 1}, {64, 2}};
 
-std::string cavity_text(const PointSet& ps, bool furthest, const Setting& s, cpu::RtdCavityStats* st) {
+// the kernel's answer as text (or "error: " and the message); *out receives it
+std::string cavity_text(const PointSet& ps, bool furthest, const Setting& s, cpu::RtdCavityStats* st,
+                        ref::Rtd* out = nullptr) {
   cpu::RtdCavityOptions o;
   o.brio_min = s.brio;
   o.threads = s.threads;
   o.furthest = furthest;
   try {
-    return text_of(cpu::rtd_cavity(ps, st, o));
+    ref::Rtd r = cpu::rtd_cavity(ps, st, o);
+    std::string text = text_of(r);
+    if (out) *out = std::move(r);
+    return text;
   } catch (const std::invalid_argument& e) {
     return std::string("error: ") + e.what();
   }
@@ -74,10 +79,10 @@ void check(const PointSet& ps, bool furthest, const Assert& require) {
   const std::string expect = ref_text(ps, furthest);
   for (const Setting& s : kSettings) {
     cpu::RtdCavityStats st;
-    require(cavity_text(ps, furthest, s, &st) == expect);
+    ref::Rtd r;
+    require(cavity_text(ps, furthest, s, &st, &r) == expect);
     if (!is_error(expect)) {
       require(st.inserted + st.discarded == ps.size());
-      const ref::Rtd r = cpu::rtd_cavity(ps, nullptr, {s.brio, furthest, s.threads});
       require(st.discarded + st.removed == r.redundant.size());
       require(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest).ok);
     }

@@ -8,10 +8,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernels_cpu/brio.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/staged.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
 #include "reference/dimension.hpp"
+#include "reference/rtd/convex_surface.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
 namespace flipflop::cpu {
@@ -376,46 +378,12 @@ struct Certifier {
     id[d] = x, p[d] = ps.point(x);
     return pred::lambda_sign(&filter, d + 1, id, p, nullptr);
   }
-  // orient_{d-1} of the projections (the first d-1 coordinates) of t
-  int orient_projected(const Index* t) const {
-    pred::PointId id[kMaxHullDim + 1];
-    const double* p[kMaxHullDim + 1];
-    for (int j = 0; j < d; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
-    return pred::lambda_sign(d, id, p, nullptr, pred::Mode::filtered);
-  }
 };
 
 std::string tuple_str(const Index* t, int k) {
   std::string o = "(";
   for (int i = 0; i < k; ++i) o += (i ? "," : "") + std::to_string(t[i]);
   return o + ")";
-}
-
-// star-shaped (header): v strictly inside every facet, and the vertical ray
-// up from v crosses exactly one facet; "" or the violation.
-std::string star_shaped(const Certifier& ck, const std::vector<std::vector<Index>>& facets, Index v,
-                        const std::string& who) {
-  const int d = ck.d;
-  std::size_t crossed = 0;
-  for (const auto& f : facets) {
-    if (ck.orient(f.data(), v) >= 0)
-      return "star-shaped: " + who + " is not strictly inside the facet " + tuple_str(f.data(), d);
-    Index t[kMaxHullDim];
-    for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
-    const int o = ck.orient_projected(t);
-    bool inside = true;
-    for (int j = 0; j < d && inside; ++j) {
-      const Index keep = t[j];
-      t[j] = v;
-      inside = ck.orient_projected(t) == o;
-      t[j] = keep;
-    }
-    if (inside && ck.orient(t, v) == o) ++crossed;
-  }
-  if (crossed != 1)
-    return "star-shaped: the facets wind " + std::to_string(crossed) + " times around " + who +
-           " (the vertical ray up from it crosses " + std::to_string(crossed) + " of them)";
-  return {};
 }
 
 }  // namespace
@@ -466,79 +434,39 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
       vertex[f[a]] = 1;
     }
   }
-  Certifier ck{ps, d, pred::StaticFilter::for_points(ps.coords.data(), n, d)};
-  // ridges: each in exactly two facets, convex
-  struct Ridge {
-    std::array<Index, kMaxHullDim - 1> key;
-    std::uint32_t f;
-    int j;
-  };
-  std::vector<Ridge> ridges(facets.size() * static_cast<std::size_t>(d));
-  std::size_t nr = 0;
-  for (std::uint32_t k = 0; k < facets.size(); ++k)
-    for (int j = 0; j < d; ++j) {
-      Ridge& r = ridges[nr++];
-      r.f = k;
-      r.j = j;
-      r.key.fill(~Index{0});
-      int c = 0;
-      for (int q = 0; q < d; ++q)
-        if (q != j) r.key[static_cast<std::size_t>(c++)] = facets[k][static_cast<std::size_t>(q)];
-      std::sort(r.key.begin(), r.key.begin() + c);
-    }
-  std::sort(ridges.begin(), ridges.end(), [](const Ridge& a, const Ridge& b) {
-    return a.key != b.key ? a.key < b.key : a.f != b.f ? a.f < b.f : a.j < b.j;
-  });
-  // nb[k * d + j]: the facet across the ridge opposite vertex j of facet k
-  std::vector<std::uint32_t> nb(facets.size() * static_cast<std::size_t>(d));
-  for (std::size_t a = 0; a < ridges.size();) {
-    std::size_t b = a + 1;
-    while (b < ridges.size() && ridges[b].key == ridges[a].key) ++b;
-    if (b - a != 2)
-      return "closed-surface: the ridge " + tuple_str(ridges[a].key.data(), d - 1) + " lies in " +
-             std::to_string(b - a) + " facet" + (b - a == 1 ? "" : "s");
-    for (int side = 0; side < 2; ++side) {
-      const Ridge &f = ridges[a + static_cast<std::size_t>(side)], &g = ridges[a + 1 - static_cast<std::size_t>(side)];
-      const Index x = facets[g.f][static_cast<std::size_t>(g.j)];
-      if (ck.orient(facets[f.f].data(), x) >= 0)
-        return "convex: vertex " + std::to_string(x) + " of facet " + tuple_str(facets[g.f].data(), d) +
-               " is not strictly inside its neighbour " + tuple_str(facets[f.f].data(), d);
-      nb[f.f * static_cast<std::size_t>(d) + static_cast<std::size_t>(f.j)] = g.f;
-    }
-    a = b;
-  }
+  // closed, convex at every ridge, star-shaped from the smallest point that
+  // is not a vertex (or the auxiliary centre): convex_surface.hpp
   Index v = 0;
   while (v < n && vertex[v]) ++v;
-  if (v == n) {
-    // every point a vertex: the centre is an auxiliary point c (the average
-    // of the vertices, rounded to doubles) with the SoS index n, after every
-    // input (predicates.hpp, "Points that are not inputs"); when it is
-    // strictly inside every facet the conditions below hold with it as they
-    // do with an input point. Otherwise (a hull too thin for the rounded
-    // average) every vertex is tested against every facet.
-    PointSet ext;
-    ext.dim = d;
-    std::vector<double> c(ps.coords.begin(), ps.coords.end());
-    std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
-    for (Index x = 0; x < n; ++x)
-      for (int j = 0; j < d; ++j) centre[static_cast<std::size_t>(j)] += ps.point(x)[j] / static_cast<double>(n);
-    c.insert(c.end(), centre.begin(), centre.end());
-    ext.coords = Values(std::move(c));
-    const Certifier ce{ext, d, pred::StaticFilter::for_points(ext.coords.data(), n + 1, d)};
-    bool inside = true;
-    for (const auto& f : facets)
-      if (ce.orient(f.data(), static_cast<Index>(n)) >= 0) inside = false;
-    if (inside) return star_shaped(ce, facets, static_cast<Index>(n), "the vertices' average (auxiliary point " +
-                                                                          std::to_string(n) + ")");
-    for (const auto& f : facets)
-      for (Index x = 0; x < n; ++x)
-        if (std::find(f.begin(), f.end(), x) == f.end() && ck.orient(f.data(), x) >= 0)
-          return "points-inside: vertex " + std::to_string(x) + " is not strictly inside the facet " +
-                 tuple_str(f.data(), d);
-    return {};
+  std::vector<std::uint32_t> nb;  // nb[k * d + j]: the facet across the ridge opposite vertex j of facet k
+  const certify::SurfaceCheck r = certify::convex_surface(ps, facets, v < n ? v : certify::kAuxiliaryCentre, &nb);
+  const std::string who = r.auxiliary ? "the vertices' average (auxiliary point " + std::to_string(n) + ")"
+                                      : "point " + std::to_string(v) + " (not a vertex)";
+  const Certifier ck{ps, d, pred::StaticFilter::for_points(ps.coords.data(), n, d)};
+  switch (r.kind) {
+    case certify::SurfaceCheck::Kind::ok: break;
+    case certify::SurfaceCheck::Kind::not_closed:
+      return "closed-surface: the ridge " + tuple_str(r.ridge.data(), d - 1) + " lies in " + std::to_string(r.count) +
+             " facet" + (r.count == 1 ? "" : "s");
+    case certify::SurfaceCheck::Kind::not_convex:
+      return "convex: vertex " + std::to_string(r.point) + " of facet " + tuple_str(facets[r.other].data(), d) +
+             " is not strictly inside its neighbour " + tuple_str(facets[r.facet].data(), d);
+    case certify::SurfaceCheck::Kind::outside:
+      return "star-shaped: " + who + " is not strictly inside the facet " + tuple_str(facets[r.facet].data(), d);
+    case certify::SurfaceCheck::Kind::winds:
+      return "star-shaped: the facets wind " + std::to_string(r.count) + " times around " + who +
+             " (the vertical ray up from it crosses " + std::to_string(r.count) + " of them)";
+    case certify::SurfaceCheck::Kind::no_centre:
+      // every point a vertex and a hull too thin for the rounded average:
+      // every vertex against every facet
+      for (const auto& f : facets)
+        for (Index x = 0; x < n; ++x)
+          if (std::find(f.begin(), f.end(), x) == f.end() && ck.orient(f.data(), x) >= 0)
+            return "points-inside: vertex " + std::to_string(x) + " is not strictly inside the facet " +
+                   tuple_str(f.data(), d);
+      return {};
   }
-  if (std::string why = star_shaped(ck, facets, v, "point " + std::to_string(v) + " (not a vertex)"); !why.empty())
-    return why;
+  if (v == n) return {};  // every point a vertex
   // every other non-vertex point: a visibility walk in the cones (v, f). Side
   // j of cone (v, f) is the hyperplane of f with f_j replaced by v; f_j's
   // side is positive there (orient(f[j:=v], f_j) = -orient(f, v) > 0).
@@ -552,21 +480,8 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
       for (int j = 0; j < d; ++j)
         lo[static_cast<std::size_t>(j)] = std::min(lo[static_cast<std::size_t>(j)], ps.point(q)[j]),
         hi[static_cast<std::size_t>(j)] = std::max(hi[static_cast<std::size_t>(j)], ps.point(q)[j]);
-    const int bits = 60 / d;
-    for (Index q = 0; q < n; ++q) {
-      if (vertex[q] || q == v) continue;
-      std::uint64_t key = 0;
-      std::uint32_t cell[kMaxHullDim];
-      for (int j = 0; j < d; ++j) {
-        const double span = hi[static_cast<std::size_t>(j)] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5;
-        double u = span > 0 ? (ps.point(q)[j] * 0.5 - lo[static_cast<std::size_t>(j)] * 0.5) / span : 0.0;
-        if (!(u >= 0)) u = 0;
-        cell[j] = static_cast<std::uint32_t>(std::min(1.0, u) * static_cast<double>((1u << bits) - 1));
-      }
-      for (int b = bits - 1; b >= 0; --b)
-        for (int j = 0; j < d; ++j) key = (key << 1) | ((cell[j] >> b) & 1u);
-      order.emplace_back(key, q);
-    }
+    for (Index q = 0; q < n; ++q)
+      if (!vertex[q] && q != v) order.emplace_back(brio::morton(ps.point(q), lo.data(), hi.data(), d, 60), q);
     std::sort(order.begin(), order.end());
   }
   std::uint64_t rng = 0x9E3779B97F4A7C15ull;

@@ -61,7 +61,8 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = n
 //                   inside the other
 //   star-shaped     a point v that is not a vertex (the smallest) strictly
 //                   inside every facet, and the vertical ray up from v crosses
-//                   exactly one facet (certify_rtd.hpp, "The boundary in
+//                   exactly one facet (reference/rtd/convex_surface.hpp, shared
+//                   with certify::rtd; certify_rtd.hpp, "The boundary in
 //                   linear time": then the facets are those of a convex
 //                   polytope P star-shaped from v, and of conv(their vertices))
 //   points-inside   every other point that is not a vertex strictly inside P,

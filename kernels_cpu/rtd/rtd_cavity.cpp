@@ -61,18 +61,6 @@ namespace {
 
 constexpr std::uint32_t kDead = 0xffffffffu;
 
-// Morton index of the point's cell on the 2^(30/D) grid per axis (< 2^30).
-template <int D>
-std::uint32_t morton(const double* x, const std::array<double, 2 * D>& box) {
-  constexpr int kBits = 30 / D;
-  std::uint32_t cell[D];
-  for (int j = 0; j < D; ++j) cell[j] = brio::grid<kBits>(x[j], box[static_cast<std::size_t>(j)], box[static_cast<std::size_t>(j + D)]);
-  std::uint32_t key = 0;
-  for (int b = kBits - 1; b >= 0; --b)
-    for (int j = 0; j < D; ++j) key = (key << 1) | ((cell[j] >> b) & 1u);
-  return key;
-}
-
 template <int D>
 class Builder {
   static constexpr int W = D + 1;  // corners per simplex
@@ -102,9 +90,8 @@ class Builder {
     for (std::size_t k = W; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
   }
 
-  // The real simplices in canonical form (canonical_d.hpp's canonical_simplex
-  // on flat tuples: the volume convention, sorted, the last two swapped when
-  // the sort was odd), sorted; the redundant points.
+  // The real simplices in canonical form (canonical_d.hpp), sorted; the
+  // redundant points.
   ref::Rtd output(RtdCavityStats& st) const {
     ref::Rtd r;
     std::vector<char> vertex(n_, 0);
@@ -118,14 +105,7 @@ class Builder {
         t[j] = static_cast<Index>(ids_[v[j]]);
         vertex[v[j]] = 1;
       }
-      if (D % 2 == 1) std::swap(t[W - 1], t[W - 2]);  // orient_d -> volume convention (odd d)
-      bool odd = false;
-      for (int a = 1; a < W; ++a)  // insertion sort, counting swaps
-        for (int b = a; b > 0 && t[b] < t[b - 1]; --b) {
-          std::swap(t[b], t[b - 1]);
-          odd = !odd;
-        }
-      if (odd) std::swap(t[W - 1], t[W - 2]);
+      canonicalize(t, W, Orientation::orient_d);
       flat.insert(flat.end(), t, t + W);
     }
     const std::size_t m = flat.size() / W;
@@ -399,7 +379,12 @@ ref::Rtd run(const PointSet& ps, RtdCavityStats& st, const RtdCavityOptions& o) 
   std::vector<Index> order;
   with_threads(o.threads, [&] {
     const std::array<double, 2 * D> box = brio::bounding_box<D>(ps);
-    order = brio::order(ps.size(), o.brio_min, [&](std::size_t i) { return morton<D>(ps.point(i), box); }, nullptr);
+    // a Morton curve of the bounding box (keys below 2^30, as brio::order needs)
+    order = brio::order(ps.size(), o.brio_min,
+                        [&](std::size_t i) {
+                          return static_cast<std::uint32_t>(brio::morton(ps.point(i), box.data(), box.data() + D, D, 30));
+                        },
+                        nullptr);
   });
   Builder<D> b(ps, order, o.furthest);
   b.run(st);

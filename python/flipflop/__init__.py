@@ -354,7 +354,7 @@ class ConvexHull(_QhullUser):
     'cpu', the only one in 6D and 7D) or, in 4D and 5D, the boundary facets
     of the canonical Delaunay triangulation (RT+1, certified; backend
     'reference'), which are the
-    canonical hull's facets (_hull_from_triangulation says why), with the
+    canonical hull's facets (_hull_d says why), with the
     attributes below computed in Python; facets outward (det[f1-f0, ...,
     x-f0] > 0 beyond), ascending but for a swap of the last two.
 
@@ -454,7 +454,7 @@ class ConvexHull(_QhullUser):
             attributes = _native("ConvexHull", _flipflop.hull2, sub, _backend(self._backend, _HULL_BACKENDS[2],
                                                                                 "ConvexHull"), threads)
         elif d > 3:
-            attributes = _hull_from_triangulation(sub, _backend(self._backend, _HULL_BACKENDS[d], "ConvexHull"),
+            attributes = _hull_d(sub, _backend(self._backend, _HULL_BACKENDS[d], "ConvexHull"),
                                                   threads)
         elif self._strict:
             attributes, polys = _native("ConvexHull", _flipflop.hull3_strict, sub, threads)
@@ -484,7 +484,7 @@ class ConvexHull(_QhullUser):
         self.equations, self.volume, self.area, self.good, self.coplanar = equations, volume, area, good, _intc(coplanar)
 
 
-def _hull_from_triangulation(a: np.ndarray, backend: str, threads: int):
+def _hull_d(a: np.ndarray, backend: str, threads: int):
     """The convex hull in 4D..7D: backend 'cpu' the facets of the hull
     kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
     the boundary facets of the canonical Delaunay triangulation (RT+1,

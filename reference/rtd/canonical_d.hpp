@@ -79,13 +79,21 @@ inline void switch_orientation_convention(std::vector<Index>& t) {
 }
 
 // The canonical tuple (volume convention) of a positively oriented simplex
-// tuple given in convention `given`.
+// tuple t[0..k-1] given in convention `given`, in place (k >= 2; no
+// allocation: the kernels canonicalise millions of tuples).
+inline void canonicalize(Index* t, std::size_t k, Orientation given) {
+  if (given == Orientation::orient_d && (k - 1) % 2 == 1) std::swap(t[k - 1], t[k - 2]);
+  bool odd = false;
+  for (std::size_t a = 1; a < k; ++a)  // insertion sort, counting swaps
+    for (std::size_t b = a; b > 0 && t[b] < t[b - 1]; --b) {
+      std::swap(t[b], t[b - 1]);
+      odd = !odd;
+    }
+  if (odd) std::swap(t[k - 1], t[k - 2]);
+}
 inline std::vector<Index> canonical_simplex(const std::vector<Index>& positive, Orientation given) {
   std::vector<Index> c = positive;
-  if (given == Orientation::orient_d) switch_orientation_convention(c);
-  const bool odd = odd_sorting_parity(c);
-  std::sort(c.begin(), c.end());
-  if (odd && c.size() >= 2) std::swap(c[c.size() - 1], c[c.size() - 2]);
+  if (c.size() >= 2) canonicalize(c.data(), c.size(), given);
   return c;
 }
 

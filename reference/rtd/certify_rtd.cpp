@@ -12,6 +12,7 @@
 #include "predicates/lambda_filter.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/rtd/canonical_d.hpp"
+#include "reference/rtd/convex_surface.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 
 namespace flipflop::certify {
@@ -169,136 +170,62 @@ struct FacetForm {
 };
 
 // boundary-is-hull at the canonical level in time linear in the boundary
-// (certify_rtd.hpp, "The boundary in linear time"): the boundary facets pair
-// up at every ridge, convexly; an interior vertex v (not on the boundary)
-// lies strictly inside every boundary facet; the vertical ray up from v
-// crosses exactly one of them. Returns "" when all hold, the violation when
-// one fails, nothing when every vertex is a boundary vertex (the caller then
-// tests every boundary vertex against every boundary facet).
+// (certify_rtd.hpp, "The boundary in linear time"; convex_surface.hpp): the
+// boundary facets as d-tuples with the inside negative, from an interior
+// vertex (the smallest vertex not on the boundary) or, with none, the
+// auxiliary centre. Returns "" when the conditions hold, the violation when
+// one fails, nothing when the auxiliary centre is not inside (the caller
+// then tests every boundary vertex against every boundary facet).
 std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<std::vector<Index>>& S,
                                            const std::vector<std::pair<std::uint32_t, int>>& boundary,
                                            const std::vector<Index>& bverts) {
   const int d = ck.d;
-  auto facet_of = [&](std::size_t k) {
-    const auto& [s, i] = boundary[k];
-    std::vector<Index> f;
-    for (int j = 0; j <= d; ++j)
-      if (j != i) f.push_back(S[s][static_cast<std::size_t>(j)]);
-    return f;
-  };
-  auto outside = [&](std::size_t k, Index x, const std::string& who) {
-    return "boundary-is-hull: " + who + " " + std::to_string(x) + " is not strictly inside the boundary facet " +
-           simplex_str(facet_of(k)) + " of simplex " + simplex_str(S[boundary[k].first]);
-  };
-  // an interior vertex: the smallest vertex that is not a boundary vertex
+  // facet k: the simplex in the predicates' convention without vertex i,
+  // orient_d(facet, t_i) = (-1)^(d - i) orient_d(t) > 0: an even d - i swaps
+  // two of its vertices to make the inside negative
+  std::vector<std::vector<Index>> facets;
+  facets.reserve(boundary.size());
+  for (const auto& [s, i] : boundary) {
+    std::vector<Index> u = S[s];
+    int pos = i;
+    if (ck.swap_last_two()) {
+      std::swap(u[static_cast<std::size_t>(d - 1)], u[static_cast<std::size_t>(d)]);
+      if (pos >= d - 1) pos = 2 * d - 1 - pos;
+    }
+    u.erase(u.begin() + pos);
+    if ((d - pos) % 2 == 0) std::swap(u[0], u[1]);
+    facets.push_back(std::move(u));
+  }
   std::vector<char> is_vertex(ck.ps.size(), 0);
   for (const auto& t : S)
     for (Index x : t) is_vertex[x] = 1;
   for (Index x : bverts) is_vertex[x] = 0;
   Index v = 0;
   while (v < is_vertex.size() && !is_vertex[v]) ++v;
-  // none (every vertex on the boundary): an auxiliary point, the boundary
-  // vertices' average rounded to doubles, with the SoS index n after every
-  // input (predicates.hpp, "Points that are not inputs"), in a copy of the
-  // input; used when it is strictly inside every boundary facet (else the
-  // caller's quadratic test)
-  PointSet ext;
-  std::optional<Checker> aux;
-  const Checker* cp = &ck;
-  if (v == is_vertex.size()) {
-    const std::size_t n = ck.ps.size();
-    ext.dim = d;
-    std::vector<double> c(ck.ps.coords.begin(), ck.ps.coords.end());
-    std::vector<double> centre(static_cast<std::size_t>(d), 0.0);
-    for (Index x : bverts)
-      for (int j = 0; j < d; ++j)
-        centre[static_cast<std::size_t>(j)] += ck.ps.point(x)[j] / static_cast<double>(bverts.size());
-    c.insert(c.end(), centre.begin(), centre.end());
-    ext.coords = Values(std::move(c));
-    if (ck.ps.weighted) {
-      ext.weighted = true;
-      std::vector<double> w(ck.ps.weights.begin(), ck.ps.weights.end());
-      w.push_back(0.0);
-      ext.weights = Values(std::move(w));
-    }
-    aux.emplace(Checker{ext, d, ck.given, ck.exact, ck.furthest});
-    cp = &*aux;
-    for (const auto& [s, i] : boundary)
-      if (cp->orient_with(S[s], i, static_cast<Index>(n)) <= 0) return std::nullopt;
-    v = static_cast<Index>(n);
-  }
-  const Checker& cke = *cp;
-  const std::string vname = cp == &ck ? "interior vertex" : "auxiliary point (the boundary vertices' average)";
-  // the ridges of the boundary: each in exactly two boundary facets, the
-  // vertex of each not on the ridge strictly inside the other
-  struct Ridge {
-    FacetKey key;
-    std::uint32_t k;  // boundary facet
-    int j;            // position (in its simplex) of the facet's vertex off the ridge
-  };
-  std::vector<Ridge> ridges(boundary.size() * static_cast<std::size_t>(d));
-  std::size_t nr = 0;
-  for (std::uint32_t k = 0; k < boundary.size(); ++k) {
+  const SurfaceCheck r = convex_surface(ck.ps, facets, v < is_vertex.size() ? v : kAuxiliaryCentre);
+  const std::string who =
+      r.auxiliary ? "auxiliary point (the boundary vertices' average)" : "interior vertex";
+  auto outside = [&](std::size_t k, Index x, const std::string& what) {
     const auto& [s, i] = boundary[k];
-    for (int j = 0; j <= d; ++j) {
-      if (j == i) continue;
-      Ridge& r = ridges[nr++];
-      r.k = k;
-      r.j = j;
-      r.key.fill(~Index{0});
-      int c = 0;
-      for (int q = 0; q <= d; ++q)
-        if (q != i && q != j) r.key[static_cast<std::size_t>(c++)] = S[s][static_cast<std::size_t>(q)];
-      std::sort(r.key.begin(), r.key.begin() + c);
-    }
-  }
-  std::sort(ridges.begin(), ridges.end(), [](const Ridge& a, const Ridge& b) {
-    return a.key != b.key ? a.key < b.key : a.k != b.k ? a.k < b.k : a.j < b.j;
-  });
-  for (std::size_t a = 0; a < ridges.size();) {
-    std::size_t b = a + 1;
-    while (b < ridges.size() && ridges[b].key == ridges[a].key) ++b;
-    if (b - a != 2)
-      return "boundary-is-hull: the boundary facets do not form a closed surface: the ridge " +
-             simplex_str(std::vector<Index>(ridges[a].key.begin(), ridges[a].key.begin() + (d - 1))) + " lies in " +
-             std::to_string(b - a) + " boundary facet" + (b - a == 1 ? "" : "s");
-    for (int side = 0; side < 2; ++side) {
-      const Ridge &f = ridges[a + static_cast<std::size_t>(side)], &g = ridges[a + 1 - static_cast<std::size_t>(side)];
-      const Index x = S[boundary[g.k].first][static_cast<std::size_t>(g.j)];
-      if (ck.orient_with(S[boundary[f.k].first], boundary[f.k].second, x) <= 0)
-        return outside(f.k, x, "boundary vertex");
-    }
-    a = b;
-  }
-  // v strictly inside every boundary facet; the vertical ray up from v: a
-  // facet f is crossed when v's projection (the first d-1 coordinates) lies
-  // in f's projection and f passes above v — then (header) orient_d(f, v)
-  // has the sign of f's projected orientation
-  std::size_t crossed = 0;
-  for (std::size_t k = 0; k < boundary.size(); ++k) {
-    const auto& [s, i] = boundary[k];
-    if (cke.orient_with(S[s], i, v) <= 0) return outside(k, v, vname);
-    pred::Pt p[kMaxD + 1];
-    int c = 0;
+    std::vector<Index> f;
     for (int j = 0; j <= d; ++j)
-      if (j != i) p[c++] = cke.P(S[s][static_cast<std::size_t>(j)]);
-    const int o = pred::orient_d(d - 1, p);
-    bool inside = true;
-    for (int j = 0; j < d && inside; ++j) {
-      const pred::Pt keep = p[j];
-      p[j] = cke.P(v);
-      inside = pred::orient_d(d - 1, p) == o;
-      p[j] = keep;
-    }
-    if (!inside) continue;
-    p[d] = cke.P(v);
-    if (pred::orient_d(d, p) == o) ++crossed;
+      if (j != i) f.push_back(S[s][static_cast<std::size_t>(j)]);
+    return "boundary-is-hull: " + what + " " + std::to_string(x) + " is not strictly inside the boundary facet " +
+           simplex_str(f) + " of simplex " + simplex_str(S[s]);
+  };
+  switch (r.kind) {
+    case SurfaceCheck::Kind::ok: return std::string();
+    case SurfaceCheck::Kind::no_centre: return std::nullopt;
+    case SurfaceCheck::Kind::not_closed:
+      return "boundary-is-hull: the boundary facets do not form a closed surface: the ridge " + simplex_str(r.ridge) +
+             " lies in " + std::to_string(r.count) + " boundary facet" + (r.count == 1 ? "" : "s");
+    case SurfaceCheck::Kind::not_convex: return outside(r.facet, r.point, "boundary vertex");
+    case SurfaceCheck::Kind::outside: return outside(r.facet, r.point, who);
+    case SurfaceCheck::Kind::winds: break;
   }
-  if (crossed != 1)
-    return "boundary-is-hull: the boundary facets wind " + std::to_string(crossed) + " times around the " + vname +
-           " " + std::to_string(v) + " (the vertical ray up from it crosses " + std::to_string(crossed) +
-           " of them; a convex boundary: exactly one)";
-  return std::string();
+  return "boundary-is-hull: the boundary facets wind " + std::to_string(r.count) + " times around the " + who + " " +
+         std::to_string(r.point) + " (the vertical ray up from it crosses " + std::to_string(r.count) +
+         " of them; a convex boundary: exactly one)";
 }
 
 // Conditions simplex-orientation, facet-manifold, boundary-is-hull (header).

@@ -55,7 +55,7 @@
 //     lifted simplex containing it lies strictly above the lower hull (which
 //     is that convex function), so it is redundant: the triangulation is
 //     RT(S ⊕ W), the unique lower hull of all perturbed lifted points.
-// The boundary in linear time (Level::canonical, with a vertex v of the
+// The boundary in linear time (reference/rtd/convex_surface.hpp; Level::canonical, with a vertex v of the
 // simplices that is not a boundary vertex, or the auxiliary point below):
 // boundary-is-hull is then established
 // by three checks whose cost is linear in |B| instead of testing every

@@ -1,1 +1,1 @@
-flipflop_reference_part(flipflop_rtd SOURCES ${CMAKE_CURRENT_LIST_DIR}/triangulation_d.cpp ${CMAKE_CURRENT_LIST_DIR}/bistellar_flip.cpp ${CMAKE_CURRENT_LIST_DIR}/rt_incremental.cpp ${CMAKE_CURRENT_LIST_DIR}/certify_rtd.cpp ${CMAKE_CURRENT_LIST_DIR}/strict_rtd.cpp)
+flipflop_reference_part(flipflop_rtd SOURCES ${CMAKE_CURRENT_LIST_DIR}/triangulation_d.cpp ${CMAKE_CURRENT_LIST_DIR}/bistellar_flip.cpp ${CMAKE_CURRENT_LIST_DIR}/rt_incremental.cpp ${CMAKE_CURRENT_LIST_DIR}/certify_rtd.cpp ${CMAKE_CURRENT_LIST_DIR}/convex_surface.cpp ${CMAKE_CURRENT_LIST_DIR}/strict_rtd.cpp)

@@ -1,0 +1,139 @@
+// convex_surface.cpp — the linear-time convexity certificate of a closed
+// surface (convex_surface.hpp: the conditions and why they suffice).
+#include "reference/rtd/convex_surface.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
+
+namespace flipflop::certify {
+
+namespace {
+constexpr int kMaxD = 7;  // orientations of up to 8 points (lambda_sign)
+
+struct Orient {
+  const PointSet& ps;
+  int d;
+  pred::StaticFilter filter;
+  // orient_d of the first k of t (k = d + 1: facet and point; k = d: the
+  // projections of d points to the first d - 1 coordinates)
+  int operator()(const Index* t, int k) const {
+    pred::PointId id[kMaxD + 1];
+    const double* p[kMaxD + 1];
+    for (int j = 0; j < k; ++j) id[j] = t[j], p[j] = ps.point(t[j]);
+    return k == d + 1 ? pred::lambda_sign(&filter, k, id, p, nullptr) : pred::lambda_sign(k, id, p, nullptr, pred::Mode::filtered);
+  }
+  int facet_and(const std::vector<Index>& f, Index x) const {
+    Index t[kMaxD + 1];
+    for (int j = 0; j < d; ++j) t[j] = f[static_cast<std::size_t>(j)];
+    t[d] = x;
+    return (*this)(t, d + 1);
+  }
+};
+}  // namespace
+
+SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<Index>>& facets, Index centre,
+                            std::vector<std::uint32_t>* across) {
+  const int d = ps.dim;
+  SurfaceCheck out;
+  // (a) ridges: sorted d-1 vertices, the facet and its vertex off the ridge
+  struct Ridge {
+    std::array<Index, kMaxD - 1> key;
+    std::uint32_t f;
+    int j;
+  };
+  std::vector<Ridge> ridges(facets.size() * static_cast<std::size_t>(d));
+  std::size_t nr = 0;
+  for (std::uint32_t k = 0; k < facets.size(); ++k)
+    for (int j = 0; j < d; ++j) {
+      Ridge& r = ridges[nr++];
+      r.f = k;
+      r.j = j;
+      r.key.fill(~Index{0});
+      int c = 0;
+      for (int q = 0; q < d; ++q)
+        if (q != j) r.key[static_cast<std::size_t>(c++)] = facets[k][static_cast<std::size_t>(q)];
+      std::sort(r.key.begin(), r.key.begin() + c);
+    }
+  std::sort(ridges.begin(), ridges.end(), [](const Ridge& a, const Ridge& b) {
+    return a.key != b.key ? a.key < b.key : a.f != b.f ? a.f < b.f : a.j < b.j;
+  });
+  const Orient plain{ps, d, pred::StaticFilter::for_points(ps.coords.data(), ps.size(), d)};
+  if (across) across->assign(facets.size() * static_cast<std::size_t>(d), 0);
+  for (std::size_t a = 0; a < ridges.size();) {
+    std::size_t b = a + 1;
+    while (b < ridges.size() && ridges[b].key == ridges[a].key) ++b;
+    if (b - a != 2) {
+      out.kind = SurfaceCheck::Kind::not_closed;
+      out.count = b - a;
+      out.facet = ridges[a].f;
+      out.ridge.assign(ridges[a].key.begin(), ridges[a].key.begin() + (d - 1));
+      return out;
+    }
+    for (int side = 0; side < 2; ++side) {
+      const Ridge &f = ridges[a + static_cast<std::size_t>(side)], &g = ridges[a + 1 - static_cast<std::size_t>(side)];
+      const Index x = facets[g.f][static_cast<std::size_t>(g.j)];
+      if (plain.facet_and(facets[f.f], x) >= 0) {
+        out.kind = SurfaceCheck::Kind::not_convex;
+        out.facet = f.f, out.other = g.f, out.point = x;
+        return out;
+      }
+      if (across) (*across)[f.f * static_cast<std::size_t>(d) + static_cast<std::size_t>(f.j)] = g.f;
+    }
+    a = b;
+  }
+  // (b) the centre: the given point, or the auxiliary one in a copy of the input
+  PointSet ext;
+  const PointSet* cps = &ps;
+  Index c = centre;
+  if (centre == kAuxiliaryCentre) {
+    std::vector<char> on(ps.size(), 0);
+    std::size_t m = 0;
+    for (const auto& f : facets)
+      for (Index x : f)
+        if (!on[x]) on[x] = 1, ++m;
+    std::vector<double> coords(ps.coords.begin(), ps.coords.end()), avg(static_cast<std::size_t>(d), 0.0);
+    for (Index x = 0; x < ps.size(); ++x)
+      if (on[x])
+        for (int j = 0; j < d; ++j) avg[static_cast<std::size_t>(j)] += ps.point(x)[j] / static_cast<double>(m);
+    coords.insert(coords.end(), avg.begin(), avg.end());
+    ext.dim = d;
+    ext.coords = Values(std::move(coords));
+    cps = &ext;
+    c = static_cast<Index>(ps.size());
+    out.auxiliary = true;
+  }
+  const Orient o{*cps, d, out.auxiliary ? pred::StaticFilter::for_points(cps->coords.data(), cps->size(), d)
+                                        : plain.filter};
+  out.point = c;
+  std::size_t crossed = 0;
+  for (std::size_t k = 0; k < facets.size(); ++k) {
+    if (o.facet_and(facets[k], c) >= 0) {
+      out.kind = out.auxiliary ? SurfaceCheck::Kind::no_centre : SurfaceCheck::Kind::outside;
+      out.facet = k;
+      return out;
+    }
+    // (c) the vertical ray up from c
+    Index t[kMaxD + 1];
+    for (int j = 0; j < d; ++j) t[j] = facets[k][static_cast<std::size_t>(j)];
+    const int s = o(t, d);
+    bool inside = true;
+    for (int j = 0; j < d && inside; ++j) {
+      const Index keep = t[j];
+      t[j] = c;
+      inside = o(t, d) == s;
+      t[j] = keep;
+    }
+    t[d] = c;
+    if (inside && o(t, d + 1) == s) ++crossed;
+  }
+  if (crossed != 1) {
+    out.kind = SurfaceCheck::Kind::winds;
+    out.count = crossed;
+  }
+  return out;
+}
+
+}  // namespace flipflop::certify
