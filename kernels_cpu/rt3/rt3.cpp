@@ -107,19 +107,52 @@ std::uint32_t hilbert10(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // The BRIO order (kernels_cpu/brio.hpp) along the 3D Hilbert curve of the
 // bounding box; rounds_at receives the first position of each round, and n.
-std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vector<std::size_t>* rounds_at) {
+// keys (when asked for): each input point's Hilbert index.
+std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vector<std::size_t>* rounds_at,
+                              std::vector<std::uint32_t>* keys) {
   const std::array<double, 6> box = brio::bounding_box<3>(ps);
+  if (keys) keys->resize(ps.size());
   return brio::order(
       ps.size(), brio_min,
       [&](std::size_t i) {
         const double* p = ps.point(i);
-        return hilbert10(brio::grid<10>(p[0], box[0], box[3]), brio::grid<10>(p[1], box[1], box[4]),
-                         brio::grid<10>(p[2], box[2], box[5]));
+        const std::uint32_t h = hilbert10(brio::grid<10>(p[0], box[0], box[3]), brio::grid<10>(p[1], box[1], box[4]),
+                                          brio::grid<10>(p[2], box[2], box[5]));
+        if (keys) (*keys)[i] = h;
+        return h;
       },
       rounds_at);
 }
 
 // ---- stage 2: insertion -------------------------------------------------------------
+
+// The lock cells of the parallel rounds (Builder's claims): runs of about
+// n / 256 points, between 16 and 512 (fewer, larger cells: fewer cells per
+// insertion; more: fewer conflicts on small inputs), consecutive on the
+// Hilbert curve of brio_order, cut at
+// quantiles of a sample of the points' Hilbert indices (key, per input
+// point; a cell is a stretch of the curve: compact in space, and adapted to
+// the points' density). Returns each position's cell (order: position ->
+// input point); ncells: their number.
+std::vector<std::uint32_t> lock_cells(const std::vector<std::uint32_t>& key, const std::vector<Index>& order,
+                                      std::size_t& ncells) {
+  const std::size_t n = order.size();
+  const std::size_t cell_points = std::clamp<std::size_t>(n / 256, 16, 512);
+  constexpr std::size_t kSample = 16;  // every 16th position (the BRIO order is a spatially random one)
+  std::vector<std::uint32_t> sample;
+  for (std::size_t k = 0; k < n; k += kSample) sample.push_back(key[order[k]]);
+  std::sort(sample.begin(), sample.end());
+  std::vector<std::uint32_t> cut;
+  for (std::size_t i = cell_points / kSample; i < sample.size(); i += cell_points / kSample) cut.push_back(sample[i]);
+  cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+  ncells = cut.size() + 1;
+  std::vector<std::uint32_t> cell(n);
+  par_for(n, kChunk, [&](std::size_t a, std::size_t b) {
+    for (std::size_t k = a; k < b; ++k)
+      cell[k] = static_cast<std::uint32_t>(std::upper_bound(cut.begin(), cut.end(), key[order[k]]) - cut.begin());
+  });
+  return cell;
+}
 
 // Tetrahedron slots above this make a link 4t + i overflow 32 bits.
 constexpr std::size_t kMaxSlots = (std::size_t{1} << 30) - 1;
@@ -142,7 +175,7 @@ struct Horizon {
 // piece's in a parallel round (stage 2, parallel rounds: Builder::run).
 struct Worker {
   std::uint32_t me = 0;  // claim tag in a parallel round (piece + 1); 0: sequential, no claims
-  std::vector<std::uint32_t> cavity, claimed, fresh, free;
+  std::vector<std::uint32_t> cavity, held, fresh, free;  // held: lock cells (parallel rounds)
   std::vector<Horizon> horizon;
   std::vector<std::uint64_t> hkey;
   std::vector<std::uint32_t> hval;
@@ -163,10 +196,10 @@ class Builder {
  public:
   Builder(std::vector<Rt3Point> pts, const pred::StaticFilter& f)
       : P_(std::move(pts)), f_(f), V_(static_cast<std::uint32_t>(P_.size())), hint_(P_.size(), kDead) {
-    grow(7 * P_.size() + 64);  // about 6.7 tetrahedra per point on uniform input
-    vstamp_.assign(P_.size() + 1, 0);
-    vlocal_.assign(P_.size() + 1, 0);
-    pending_.assign(kMaxLocal * kMaxLocal, kDead);
+    // about 6.7 tetrahedra per point on uniform input; room for the parallel
+    // rounds' reservations (run) without growing the arrays
+    grow(8 * P_.size() + 64);
+    tables_.resize(static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency())));
   }
 
   // Inserts every point: sequentially up to position `parallel_from` (all
@@ -174,6 +207,14 @@ class Builder {
   // position of each round, and n) in parallel pieces.
   void run(bool parallel, std::size_t parallel_from, std::size_t min_piece, std::size_t fail_every,
            const std::vector<std::size_t>& rounds_at, Rt3Stats& st);
+
+  // The lock cell of each position (parallel rounds; see the claims below).
+  void set_cells(std::vector<std::uint32_t> cell, std::size_t ncells) {
+    cell_ = std::move(cell);
+    cell_.push_back(0);  // the virtual vertex: in no cell (never looked up)
+    lock_.reset(new std::atomic<std::uint32_t>[ncells]);
+    for (std::size_t c = 0; c < ncells; ++c) lock_[c].store(0, std::memory_order_relaxed);
+  }
 
   // Live real tetrahedra as canonical tuples of input indices, sorted.
   std::vector<Tet> output() const;
@@ -185,16 +226,28 @@ class Builder {
   std::vector<Rt3Point> P_;
   const pred::StaticFilter& f_;
   const std::uint32_t V_;  // the virtual vertex (position n)
-  // per slot: corners, links, BFS stamps, claims (parallel rounds); all of
-  // capacity cap_, grown between rounds only
+  // per slot: corners, links, BFS stamps; all of capacity cap_, grown
+  // between rounds only
   std::vector<std::uint32_t> tv_, tn_, mark_;
-  std::unique_ptr<std::atomic<std::uint32_t>[]> owner_;
+  // parallel rounds: per position its lock cell, per cell the tag of the
+  // worker holding it (0: free)
+  std::vector<std::uint32_t> cell_;
+  std::unique_ptr<std::atomic<std::uint32_t>[]> lock_;
   std::size_t cap_ = 0;
   std::atomic<std::size_t> slots_{0};  // slots ever used (a prefix of the capacity)
   std::vector<std::uint32_t> hint_;    // per position: the tetrahedron it was found redundant in
-  static constexpr std::uint32_t kMaxLocal = 64;  // link_cone's table: horizons of up to 64 vertices
-  std::vector<std::uint32_t> vstamp_, vlocal_, pending_;  // the sequential worker's edge table
-  std::uint32_t stamp_ = 0;
+  // link_cone's edge table, one per thread (a worker runs on one thread from
+  // its first insertion to its last, and the sequential one alone): the
+  // horizon's vertices numbered 0..L-1 through per-position tags
+  // (stamp << 8 | number; 24-bit stamps, the tags cleared when they wrap),
+  // then an L x L table of half-matched edges, for horizons of up to
+  // kMaxLocal vertices. Allocated on a thread's first use.
+  static constexpr std::uint32_t kMaxLocal = 64;
+  struct EdgeTable {
+    std::vector<std::uint32_t> tag, pending;
+    std::uint32_t stamp = 0;
+  };
+  std::vector<EdgeTable> tables_;
   std::atomic<std::uint32_t> stamps_{2};  // BFS stamps: 2 per insertion attempt (mark_ starts at 0)
   Worker seq_;  // the sequential insertion (also of the points parallel rounds defer)
 
@@ -226,47 +279,82 @@ class Builder {
     tv_.resize(4 * cap, kDead);
     tn_.resize(4 * cap, kDead);
     mark_.resize(cap, 0);
-    owner_.reset(new std::atomic<std::uint32_t>[cap]);
-    for (std::size_t t = 0; t < cap; ++t) owner_[t].store(0, std::memory_order_relaxed);
     cap_ = cap;
   }
 
   // ---- claims (parallel rounds) -------------------------------------------------
-  // A worker of a parallel round reads or writes a slot only while it holds
-  // the slot's claim (owner_ = its tag), taken by one compare-exchange and
-  // given up when its insertion ends; a claim held by another worker makes
-  // the insertion give up (nothing written yet) and defer the point. The
-  // sequential worker (me = 0) claims nothing.
-  bool claim(Worker& w, std::uint32_t t) {
-    if (w.me == 0) return true;
-    std::uint32_t cur = owner_[t].load(std::memory_order_relaxed);
-    if (cur == w.me) return true;
+  // The points are cut into lock cells: runs of up to 512 points
+  // consecutive on the Hilbert curve of stage 1 (lock_cells), each with a
+  // lock word. The rule: a worker of a parallel round reads or writes a
+  // tetrahedron only while it holds the cells of all its real corners
+  // (the virtual vertex has none). Two workers can then never both have a
+  // tetrahedron (every tetrahedron has a real corner, a cell has one
+  // holder); an insertion holds what it took until it ends, and a cell held
+  // by another worker makes it give up (nothing written yet) and defer the
+  // point. The sequential worker (me = 0) holds nothing.
+  //   Moving to a neighbour: a worker that has tetrahedron t reads the link
+  // 4u + j across t's facet i and then u's corners — safe before it holds
+  // u's cells, since every facet has at least two real corners, those of the
+  // shared facet are held, and anyone writing u (or freeing it, which
+  // rewrites t's link) must hold them; then it takes the cell of u's corner
+  // j, the one new corner (hold_across). Only walk_start reads a slot it
+  // does not have (a remembered one, possibly freed or reused since): its
+  // corners by atomic loads (corners are written by atomic stores,
+  // put_corners, for that reader), then the cells of the real ones taken,
+  // then the corners read again; the slot is kept when both reads agree. A
+  // worker W writing the slot meanwhile holds the cells of the real corners
+  // it writes, and the slot held before either kDead (freed) or a
+  // tetrahedron of W's cavity (real corners in W's cells): so a read whose
+  // real entries all lie in cells the reader holds has no entry of W's and
+  // no old entry of W's — it is the slot's settled content, and the reader
+  // has that tetrahedron. Compared with one claim per tetrahedron, an
+  // insertion takes about four cells (10^6 uniform points) instead of ~50
+  // compare-exchanges.
+  bool hold_cell(Worker& w, std::uint32_t c) {
+    for (std::uint32_t h : w.held)
+      if (h == c) return true;
     if (w.fail_every != 0 && ++w.claims % w.fail_every == 0) return false;  // as if another task held it
-    if (cur != 0 || !owner_[t].compare_exchange_strong(cur, w.me, std::memory_order_acquire,
-                                                       std::memory_order_relaxed))
+    std::uint32_t cur = 0;
+    if (!lock_[c].compare_exchange_strong(cur, w.me, std::memory_order_acquire, std::memory_order_relaxed))
       return false;
-    tsan::acquired(&owner_[t]);
-    w.claimed.push_back(t);
+    tsan::acquired(&lock_[c]);
+    w.held.push_back(c);
     return true;
   }
+  // Link l = 4u + j read from a tetrahedron w has: take u (its corner j's cell).
+  bool hold_across(Worker& w, std::uint32_t l) {
+    if (w.me == 0) return true;
+    const std::uint32_t x = tv_[l];  // corner j of u (l = 4u + j)
+    return x == V_ || hold_cell(w, cell_[x]);
+  }
   void release_all(Worker& w) {
-    for (std::uint32_t t : w.claimed) {
-      tsan::released(&owner_[t]);
-      owner_[t].store(0, std::memory_order_release);
+    for (std::uint32_t c : w.held) {
+      tsan::released(&lock_[c]);
+      lock_[c].store(0, std::memory_order_release);
     }
-    w.claimed.clear();
+    w.held.clear();
+  }
+  // Corners of slot s written for walk_start's atomic reads (relaxed
+  // atomic stores and loads on the plain array: C++17 has no atomic_ref; the
+  // builtins are what it compiles to, and ThreadSanitizer sees them).
+  void put_corners(std::uint32_t s, const std::uint32_t* v) {
+    for (std::size_t j = 0; j < 4; ++j) __atomic_store_n(&tv_[4 * static_cast<std::size_t>(s) + j], v[j], __ATOMIC_RELAXED);
+  }
+  std::uint32_t corner_atomic(std::uint32_t s, std::size_t j) const {
+    return __atomic_load_n(&tv_[4 * static_cast<std::size_t>(s) + j], __ATOMIC_RELAXED);
   }
 
   // A slot for a new tetrahedron: the worker's free list, else a never-used
   // one (sequential: growing the arrays; parallel: from the worker's range,
   // refilled from slots_ in blocks). kDead when none (parallel, capacity
-  // reached). Claimed by a parallel worker.
+  // reached). A free or never-used slot is no tetrahedron: no cell guards it
+  // (only stale walk starts read it, atomically; the worker's writes to it are
+  // put_corners' and the links of a tetrahedron it has until it releases).
   std::uint32_t take_slot(Worker& w) {
-    for (std::size_t tries = w.free.size(); tries > 0; --tries) {
+    if (!w.free.empty()) {
       const std::uint32_t s = w.free.back();
       w.free.pop_back();
-      if (claim(w, s)) return s;
-      w.free.insert(w.free.begin(), s);  // under inspection by a stale walk start: later
+      return s;
     }
     if (w.me == 0) {
       const std::size_t s = slots_.load(std::memory_order_relaxed);
@@ -281,8 +369,7 @@ class Builder {
       if (s + kBlock > cap_) return kDead;  // the round stops taking points (run: capacity)
       w.bump = s, w.bump_end = s + kBlock;
     }
-    const std::uint32_t s = static_cast<std::uint32_t>(w.bump++);
-    return claim(w, s) ? s : kDead;
+    return static_cast<std::uint32_t>(w.bump++);
   }
 
   void start();
@@ -328,10 +415,10 @@ void Builder::start() {
 // new tetrahedra across its other three facets — those contain the apex and
 // one edge of the horizon, shared by exactly two horizon ridges (the horizon
 // is a closed 2-manifold). The two are matched by that edge: for the
-// sequential worker, with the horizon's vertices numbered 0..L-1 (per-vertex
-// stamps), in an L x L table whose entry is set by the first half and
-// cleared by the second, so that it is empty again afterwards; above
-// kMaxLocal vertices and in parallel rounds, in a hash table. Returns false,
+// horizon's vertices numbered 0..L-1 (the thread's EdgeTable), in an L x L
+// table whose entry is set by the first half and cleared by the second, so
+// that it is empty again afterwards; above kMaxLocal vertices in a hash
+// table. Returns false,
 // having written nothing, when a parallel worker gets no slot.
 bool Builder::link_cone(Worker& w) {
   const std::size_t m = w.horizon.size();
@@ -344,21 +431,34 @@ bool Builder::link_cone(Worker& w) {
     }
     w.fresh.push_back(s);
   }
-  std::uint32_t L = 0;
-  if (w.me == 0) {
-    ++stamp_;
-    for (Horizon& h : w.horizon)
-      for (std::uint32_t q = 0; q < 4; ++q) {
-        const std::uint32_t x = h.v[q];
-        if (q == h.i) continue;
-        if (vstamp_[x] != stamp_) {
-          vstamp_[x] = stamp_;
-          vlocal_[x] = L++;
-        }
-        h.loc[q] = vlocal_[x];
-      }
+  EdgeTable& et = tables_[static_cast<std::size_t>(std::max(0, tbb::this_task_arena::current_thread_index())) %
+                          tables_.size()];
+  if (et.tag.empty()) {
+    et.tag.assign(V_ + 1, 0);
+    et.pending.assign(kMaxLocal * kMaxLocal, kDead);
   }
-  const bool small = w.me == 0 && L <= kMaxLocal;
+  if (++et.stamp == (1u << 24)) {
+    std::fill(et.tag.begin(), et.tag.end(), 0);
+    et.stamp = 1;
+  }
+  const std::uint32_t st = et.stamp << 8;
+  std::uint32_t L = 0;
+  for (Horizon& h : w.horizon) {
+    for (std::uint32_t q = 0; q < 4 && L <= kMaxLocal; ++q) {
+      if (q == h.i) continue;
+      std::uint32_t& tag = et.tag[h.v[q]];
+      if ((tag & ~0xFFu) != st) {
+        if (L == kMaxLocal) {
+          L = kMaxLocal + 1;  // too many: the hash table
+          break;
+        }
+        tag = st | L++;
+      }
+      h.loc[q] = tag & 0xFFu;
+    }
+    if (L > kMaxLocal) break;
+  }
+  const bool small = L <= kMaxLocal;
   std::uint64_t mask = 0;
   if (!small) {
     std::size_t cap = 16;
@@ -374,8 +474,8 @@ bool Builder::link_cone(Worker& w) {
   for (std::size_t k = 0; k < m; ++k) {
     const Horizon& h = w.horizon[k];
     const std::uint32_t s = k < w.cavity.size() ? w.cavity[k] : w.fresh[k - w.cavity.size()];
-    std::uint32_t* v = tv_.data() + 4 * static_cast<std::size_t>(s);
-    for (int j = 0; j < 4; ++j) v[j] = h.v[j];
+    put_corners(s, h.v);
+    const std::uint32_t* v = tet(s);
     tn_[4 * static_cast<std::size_t>(s) + h.i] = h.out;
     tn_[h.out] = 4 * s + h.i;
     for (std::uint32_t j = 0; j < 4; ++j) {
@@ -387,7 +487,7 @@ bool Builder::link_cone(Worker& w) {
       if (small) {
         std::uint32_t la = h.loc[qa], lb = h.loc[qb];
         if (la > lb) std::swap(la, lb);
-        std::uint32_t& e = pending_[la * kMaxLocal + lb];
+        std::uint32_t& e = et.pending[la * kMaxLocal + lb];
         other = e;
         e = other == kDead ? half : kDead;
       } else {
@@ -421,7 +521,8 @@ bool Builder::link_cone(Worker& w) {
   // cavity slots not reused (more visible tetrahedra than horizon ridges)
   for (std::size_t q = m; q < w.cavity.size(); ++q) {
     const std::uint32_t s = w.cavity[q];
-    for (int j = 0; j < 4; ++j) tv_[4 * static_cast<std::size_t>(s) + static_cast<std::size_t>(j)] = kDead;
+    const std::uint32_t dead[4] = {kDead, kDead, kDead, kDead};
+    put_corners(s, dead);
     w.free.push_back(s);
   }
   w.st.created_tets += m;
@@ -435,9 +536,9 @@ bool Builder::link_cone(Worker& w) {
 // triangulation the visibility walk terminates: Edelsbrunner's acyclicity
 // theorem, as reference/rtd's locate). Returns the real tetrahedron
 // containing p (SoS: strictly) or the first virtual tetrahedron reached —
-// one whose hull facet p sees. With a parallel worker w: t is claimed, each
-// next tetrahedron is claimed before it is read and the previous one given
-// up; kDead when a claim fails. (w null: read-only, after stage 2.)
+// one whose hull facet p sees. With a parallel worker w: w has t, and takes
+// each next tetrahedron (hold_across) before it reads it; kDead when a cell
+// is held by another worker. (w null: read-only, after stage 2.)
 std::uint32_t Builder::walk(Worker* w, std::uint32_t p, std::uint32_t t, std::uint64_t& rng,
                             std::uint64_t* steps) {
   std::uint32_t from = 4;  // the corner of t opposite the facet crossed into t
@@ -459,45 +560,47 @@ std::uint32_t Builder::walk(Worker* w, std::uint32_t p, std::uint32_t t, std::ui
     }
     if (next == kDead) return t;
     const std::uint32_t u = next >> 2;
-    if (w && w->me != 0) {
-      // hold only the tetrahedron being read
-      if (!claim(*w, u)) return kDead;
-      tsan::released(&owner_[t]);
-      owner_[t].store(0, std::memory_order_release);
-      w->claimed.erase(w->claimed.begin());
-    }
+    if (w && !hold_across(*w, next)) return kDead;
     t = u;
     from = next & 3u;
     if (is_virtual(t)) return t;
   }
 }
 
-// A live real tetrahedron (claimed by a parallel worker) to start a walk
-// from: the worker's last one, else a recent one, when it is still live (a
-// slot another worker freed is dead; one it reused is live elsewhere, which
-// only lengthens the walk); a virtual one leads to its real neighbour. kDead
-// when none is (the worker is lost: run defers the rest of its piece).
+// A live real tetrahedron for a parallel worker to start a walk from, which
+// it then has: the worker's last one, else a recent one, whatever the slot
+// holds now (another tetrahedron when it was freed and reused since; a
+// walk from anywhere ends): its corners are read atomically, their cells
+// taken, and the slot is the worker's when a second read gives the same
+// corners — a writer holds the cells of the corners it writes, so a torn
+// first read cannot be confirmed (claims, above); a virtual tetrahedron
+// leads across its hull facet to its real neighbour. kDead when none is
+// (the worker is lost: run defers the rest of its piece).
 std::uint32_t Builder::walk_start(Worker& w) {
-  std::uint32_t cand[9];
-  cand[0] = w.last;
-  for (unsigned q = 0; q < 8; ++q) cand[q + 1] = w.recent[(w.nrecent + 7 - q) & 7u];
-  for (std::uint32_t t : cand) {
+  for (unsigned q = 0; q < 8; ++q) {
+    const std::uint32_t t = w.recent[(w.nrecent + 7 - q) & 7u];  // the last remembered first
     if (t == kDead) continue;
-    // the start's claim is worth waiting for briefly (a walk passing through)
-    bool got = false;
-    for (int spin = 0; spin < 64 && !(got = claim(w, t)); ++spin) std::this_thread::yield();
-    if (!got) continue;
-    if (!live(t)) {
+    std::uint32_t c[4];
+    bool ok = true;
+    for (std::size_t j = 0; j < 4; ++j) ok = ok && (c[j] = corner_atomic(t, j)) <= V_;  // kDead: free
+    for (std::size_t j = 0; j < 4 && ok; ++j) {
+      if (c[j] == V_) continue;
+      // worth waiting for briefly (a neighbouring insertion ending)
+      ok = false;
+      for (int spin = 0; spin < 64 && !(ok = hold_cell(w, cell_[c[j]])); ++spin) std::this_thread::yield();
+    }
+    for (std::size_t j = 0; j < 4 && ok; ++j) ok = corner_atomic(t, j) == c[j];
+    ok = ok && (c[0] == V_) + (c[1] == V_) + (c[2] == V_) + (c[3] == V_) <= 1;  // (always, by the above)
+    if (!ok) {
       release_all(w);
       continue;
     }
-    if (!is_virtual(t)) return t;
-    const std::uint32_t* v = tet(t);
     int iv = 0;
-    while (v[iv] != V_) ++iv;
-    const std::uint32_t u = tn_[4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(iv)] >> 2;
+    while (iv < 4 && c[iv] != V_) ++iv;
+    if (iv == 4) return t;
+    const std::uint32_t l = tn_[4 * static_cast<std::size_t>(t) + static_cast<std::size_t>(iv)];
+    if (hold_across(w, l)) return l >> 2;  // real: across the hull facet
     release_all(w);
-    if (claim(w, u)) return u;  // real: across the hull facet
   }
   return kDead;
 }
@@ -542,7 +645,7 @@ Outcome Builder::insert(Worker& w, std::uint32_t p) {
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t l = tn_[4 * static_cast<std::size_t>(t) + i];
       const std::uint32_t u = l >> 2;
-      if (par && !claim(w, u)) return give_up();
+      if (par && !hold_across(w, l)) return give_up();
       if (mark_[u] == in) continue;
       if (mark_[u] != out) {
         if (visible(u, p)) {
@@ -658,19 +761,22 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
 // The canonical tuple (canonical_d.hpp) of an orient_d-positive tuple in 3D:
 // to the volume convention by swapping the last two entries (d odd), then
 // sorted, the last two swapped back when the sorting permutation is odd.
-Tet canonical_tet(Index a, Index b, Index c, Index d) {
-  Tet t = {a, b, d, c};
-  bool odd = false;
-  // a sorting network on four entries, counting exchanges
-  auto cs = [&](int i, int j) {
-    if (t[static_cast<std::size_t>(j)] < t[static_cast<std::size_t>(i)]) {
-      std::swap(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>(j)]);
-      odd = !odd;
-    }
+inline Tet canonical_tet(Index a, Index b, Index c, Index d) {
+  // branch-free (the comparisons of a tetrahedron's indices are
+  // unpredictable: the branching network cost the output stage about five
+  // mispredictions per tetrahedron, twice; and g++ turns std::min/std::max
+  // pairs back into branches): the parity of the sorting permutation is that
+  // of the number of inversions, the sort a compare-exchange network by masks
+  Index t0 = a, t1 = b, t2 = d, t3 = c;
+  const Index inv = Index{t0 > t1} + Index{t0 > t2} + Index{t0 > t3} + Index{t1 > t2} + Index{t1 > t3} +
+                    Index{t2 > t3};
+  auto cs = [](Index& x, Index& y) {
+    const Index e = (x ^ y) & (Index{0} - Index{y < x});
+    x ^= e, y ^= e;
   };
-  cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
-  if (odd) std::swap(t[2], t[3]);
-  return t;
+  cs(t0, t1), cs(t2, t3), cs(t0, t2), cs(t1, t3), cs(t1, t2);
+  const Index e = (t2 ^ t3) & (Index{0} - (inv & 1u));  // odd: the last two swapped back
+  return {t0, t1, t2 ^ e, t3 ^ e};
 }
 
 // The sort is a two-pass MSD radix sort on the smallest index, then a sort
@@ -736,11 +842,16 @@ std::vector<Tet> Builder::output() const {
       for (std::size_t i = 1; i < cnt.size(); ++i) cnt[i] += cnt[i - 1];
       tmp.resize(m);
       for (std::size_t q = 0; q < m; ++q) tmp[cnt[out[first + q][0] - base]++] = out[first + q];
-      // runs of one smallest index (about six tetrahedra): insertion sort
+      // runs of one smallest index (about six tetrahedra): insertion sort,
+      // the rest of the tuple compared as one 64-bit and one 32-bit key
+      auto before = [](const Tet& a, const Tet& b) {  // a < b when a[0] == b[0]
+        const std::uint64_t ka = std::uint64_t{a[1]} << 32 | a[2], kb = std::uint64_t{b[1]} << 32 | b[2];
+        return ka < kb || (ka == kb && a[3] < b[3]);
+      };
       for (std::size_t q = 1; q < m; ++q) {
         const Tet x = tmp[q];
         std::size_t r = q;
-        while (r > 0 && x < tmp[r - 1] && tmp[r - 1][0] == x[0]) tmp[r] = tmp[r - 1], --r;
+        while (r > 0 && tmp[r - 1][0] == x[0] && before(x, tmp[r - 1])) tmp[r] = tmp[r - 1], --r;
         tmp[r] = x;
       }
       std::copy(tmp.begin(), tmp.end(), out.begin() + static_cast<std::ptrdiff_t>(first));
@@ -844,8 +955,12 @@ Rt3Result rt3(const PointSet& ps, const Rt3Options& opt, Rt3Stats* stats, Rt3Wit
     if (bad.load() & 2) throw std::invalid_argument("rt3 (cpu): a weight is not finite");
     if (std::string why = dimension_problem(ps); !why.empty()) throw std::invalid_argument("rt3 (cpu): " + why);
     const pred::StaticFilter f = parallel_static_filter(ps, {});
+    const bool parallel = opt.insertion == Rt3Options::Insertion::parallel ||
+                          (opt.insertion == Rt3Options::Insertion::automatic &&
+                           tbb::this_task_arena::max_concurrency() > 1);
     std::vector<std::size_t> rounds_at;
-    const std::vector<Index> order = brio_order(ps, opt.brio_min, &rounds_at);
+    std::vector<std::uint32_t> keys;
+    const std::vector<Index> order = brio_order(ps, opt.brio_min, &rounds_at, parallel ? &keys : nullptr);
     std::vector<Rt3Point> pts(order.size());
     par_for(order.size(), kChunk, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t k = lo; k < hi; ++k) {
@@ -854,11 +969,12 @@ Rt3Result rt3(const PointSet& ps, const Rt3Options& opt, Rt3Stats* stats, Rt3Wit
         pts[k] = {{x[0], x[1], x[2]}, ps.weight(i), i};
       }
     });
+    std::size_t ncells = 0;
+    std::vector<std::uint32_t> cells;
+    if (parallel) cells = lock_cells(keys, order, ncells);
     clock.mark("sort");
     Builder B(std::move(pts), f);
-    const bool parallel = opt.insertion == Rt3Options::Insertion::parallel ||
-                          (opt.insertion == Rt3Options::Insertion::automatic &&
-                           tbb::this_task_arena::max_concurrency() > 1);
+    if (parallel) B.set_cells(std::move(cells), ncells);
     B.run(parallel, opt.parallel_from, opt.min_piece, opt.fail_claims_every, rounds_at, st);
     clock.mark("insert");
     res.tets = B.output();

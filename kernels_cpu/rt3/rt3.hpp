@@ -26,14 +26,16 @@
 //   2b.[insert]  (Insertion::parallel; automatic with more than one thread)
 //                the first parallel_from points as in 2, then each BRIO round
 //                cut into pieces along its Hilbert curve, the pieces inserted
-//                as in 2 by concurrent tasks. A task claims every
-//                tetrahedron before it reads it (one compare-exchange on a
-//                per-slot owner word) and gives its claims up when the
-//                insertion is done; an insertion that meets another task's
-//                claim gives up before writing anything and is deferred, and
-//                the deferred points are inserted as in 2 after the round
-//                (§3.3.1's conflict resolution on the induced subcomplex, with
-//                claims in place of priorities);
+//                as in 2 by concurrent tasks. The points are cut into lock
+//                cells (runs of up to 512 points along the Hilbert curve); a
+//                task reads a tetrahedron only while it holds the cells of
+//                all its real corners (one compare-exchange per cell, a few
+//                per insertion) and gives them up when the insertion is done;
+//                an insertion that meets a cell another task holds gives up
+//                before writing anything and is deferred, and the deferred
+//                points are inserted as in 2 after the round (§3.3.1's
+//                conflict resolution on the induced subcomplex, with claims
+//                in place of priorities; rt3.cpp argues the exclusion);
 //   3. [output]  the real tetrahedra in canonical form (DESIGN.md), mapped to
 //                input indices in parallel, sorted in parallel; the redundant
 //                points (input indices, ascending);
@@ -80,11 +82,11 @@ struct Rt3Options {
   // Stage 2: sequential: one point after the other; parallel: the first
   // parallel_from points one by one, then each BRIO round cut into pieces
   // along its Hilbert curve (at least min_piece points each, at most 8 per
-  // thread), the pieces inserted by concurrent tasks that claim every
-  // tetrahedron they read (an insertion that meets another task's claim is
-  // deferred and done one by one after the round); automatic: parallel when
-  // more than one thread runs. The tetrahedra do not depend on these
-  // settings; the witness's slots do.
+  // thread), the pieces inserted by concurrent tasks that claim the lock
+  // cells of every tetrahedron they read (an insertion that meets another
+  // task's claim is deferred and done one by one after the round);
+  // automatic: parallel when more than one thread runs. The tetrahedra do
+  // not depend on these settings; the witness's slots do.
   enum class Insertion { automatic, sequential, parallel };
   Insertion insertion = Insertion::automatic;
   std::size_t parallel_from = 4096;
