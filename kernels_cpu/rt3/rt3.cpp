@@ -210,6 +210,7 @@ class Builder {
 
   // The lock cell of each position (parallel rounds; see the claims below).
   void set_cells(std::vector<std::uint32_t> cell, std::size_t ncells) {
+    lock_count_ = ncells;
     cell_ = std::move(cell);
     cell_.push_back(0);  // the virtual vertex: in no cell (never looked up)
     lock_.reset(new std::atomic<std::uint32_t>[ncells]);
@@ -233,9 +234,13 @@ class Builder {
   // worker holding it (0: free)
   std::vector<std::uint32_t> cell_;
   std::unique_ptr<std::atomic<std::uint32_t>[]> lock_;
+  std::size_t lock_count_ = 0;
   std::size_t cap_ = 0;
   std::atomic<std::size_t> slots_{0};  // slots ever used (a prefix of the capacity)
-  std::vector<std::uint32_t> hint_;    // per position: the tetrahedron it was found redundant in
+  // per position: a tetrahedron near it — for a point found redundant, the
+  // one it was found in (the witness's walk starts there); for an inserted
+  // one, one of its new tetrahedra (a parallel round's pieces start there)
+  std::vector<std::uint32_t> hint_;
   // link_cone's edge table, one per thread (a worker runs on one thread from
   // its first insertion to its last, and the sequential one alone): the
   // horizon's vertices numbered 0..L-1 through per-position tags
@@ -665,6 +670,7 @@ Outcome Builder::insert(Worker& w, std::uint32_t p) {
     }
   }
   if (!link_cone(w)) return give_up();
+  hint_[p] = w.last;  // a real new tetrahedron (every cone has one: over the hull facet or real ones)
   if (is_virtual(root)) ++w.st.placed;
   ++w.st.inserted;
   w.st.cavity_tets += w.cavity.size();
@@ -707,12 +713,28 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
         grow(need);
       }
       const std::uint32_t anchor = live(seq_.last) && !is_virtual(seq_.last) ? seq_.last : any_real();
+      // each piece starts near its first point: at the tetrahedron noted for
+      // the last point inserted so far in the nearest lock cell along the
+      // curve (hint_) — one shared start would make the pieces wait for the
+      // first one there
+      std::vector<std::uint32_t> cellpos(lock_count_, kDead);
+      for (std::size_t j = 0; j < lo; ++j)
+        if (hint_[j] != kDead) cellpos[cell_[j]] = static_cast<std::uint32_t>(j);
       std::vector<Worker> ws(pieces);
       for (std::size_t q = 0; q < pieces; ++q) {
         ws[q].me = static_cast<std::uint32_t>(q + 1);
         ws[q].rng = brio::splitmix64(lo + q) | 1;
         ws[q].fail_every = fail_every;
         ws[q].remember(anchor);
+        const std::size_t c = cell_[lo + (hi - lo) * q / pieces];
+        for (std::size_t d = 0; d < lock_count_; ++d) {
+          const std::uint32_t j = c >= d && cellpos[c - d] != kDead ? cellpos[c - d]
+                                  : c + d < lock_count_         ? cellpos[c + d]
+                                                                : kDead;
+          if (j == kDead) continue;
+          if (live(hint_[j])) ws[q].remember(hint_[j]);
+          break;
+        }
         // the free slots so far, shared out
         const std::size_t f = seq_.free.size();
         ws[q].free.assign(seq_.free.begin() + static_cast<std::ptrdiff_t>(f * q / pieces),
@@ -723,11 +745,13 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
         for (std::size_t q = a; q < b; ++q) {
           Worker& w = ws[q];
           const std::size_t from = lo + (hi - lo) * q / pieces, to = lo + (hi - lo) * (q + 1) / pieces;
+          int lost = 0;  // consecutive insertions that found no start
           for (std::size_t p = from; p < to; ++p) {
             const Outcome o = insert(w, static_cast<std::uint32_t>(p));
-            if (o == Outcome::deferred) w.deferred.push_back(static_cast<std::uint32_t>(p));
-            if (o == Outcome::lost) {
-              for (; p < to; ++p) w.deferred.push_back(static_cast<std::uint32_t>(p));
+            if (o != Outcome::done) w.deferred.push_back(static_cast<std::uint32_t>(p));
+            lost = o == Outcome::lost ? lost + 1 : 0;
+            if (lost == 8) {  // no start for a while: the rest of the piece after the round
+              for (++p; p < to; ++p) w.deferred.push_back(static_cast<std::uint32_t>(p));
               break;
             }
           }
