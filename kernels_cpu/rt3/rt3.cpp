@@ -184,6 +184,7 @@ struct Worker {
   std::uint32_t recent[8] = {kDead, kDead, kDead, kDead, kDead, kDead, kDead, kDead};
   unsigned nrecent = 0;
   std::size_t bump = 0, bump_end = 0;  // private range of never-used slots (parallel rounds)
+  std::uint32_t stamp = 0, stamp_end = 0;  // private range of BFS stamps (insert)
   std::vector<std::uint32_t> deferred;
   std::size_t fail_every = 0, claims = 0;  // test hook (Rt3Options::fail_claims_every)
   Rt3Stats st;
@@ -208,10 +209,9 @@ class Builder {
            const std::vector<std::size_t>& rounds_at, Rt3Stats& st);
 
   // The lock cell of each position (parallel rounds; see the claims below).
-  void set_cells(std::vector<std::uint32_t> cell, std::size_t ncells) {
+  void set_cells(const std::vector<std::uint32_t>& cell, std::size_t ncells) {
     lock_count_ = ncells;
-    cell_ = std::move(cell);
-    cell_.push_back(0);  // the virtual vertex: in no cell (never looked up)
+    for (std::size_t k = 0; k < cell.size(); ++k) P_[k].cell = cell[k];
     lock_.reset(new std::atomic<std::uint32_t>[ncells]);
     for (std::size_t c = 0; c < ncells; ++c) lock_[c].store(0, std::memory_order_relaxed);
   }
@@ -229,9 +229,8 @@ class Builder {
   // per slot: corners, links, BFS stamps; all of capacity cap_, grown
   // between rounds only
   std::vector<std::uint32_t> tv_, tn_, mark_;
-  // parallel rounds: per position its lock cell, per cell the tag of the
-  // worker holding it (0: free)
-  std::vector<std::uint32_t> cell_;
+  // parallel rounds: per lock cell the tag of the worker holding it (0:
+  // free); each position's cell is P_[k].cell
   std::unique_ptr<std::atomic<std::uint32_t>[]> lock_;
   std::size_t lock_count_ = 0;
   std::size_t cap_ = 0;
@@ -252,7 +251,7 @@ class Builder {
     std::uint32_t stamp = 0;
   };
   std::vector<EdgeTable> tables_;
-  std::atomic<std::uint32_t> stamps_{2};  // BFS stamps: 2 per insertion attempt (mark_ starts at 0)
+  std::atomic<std::uint32_t> stamps_{2};  // BFS stamps: 2 per insertion attempt (mark_ starts at 0), in blocks
   Worker seq_;  // the sequential insertion (also of the points parallel rounds defer)
 
   pred::Pt pt(std::uint32_t k) const { return {P_[k].id, P_[k].xyz}; }
@@ -329,7 +328,7 @@ class Builder {
   bool hold_across(Worker& w, std::uint32_t l) {
     if (w.me == 0) return true;
     const std::uint32_t x = tv_[l];  // corner j of u (l = 4u + j)
-    return x == V_ || hold_cell(w, cell_[x]);
+    return x == V_ || hold_cell(w, P_[x].cell);
   }
   void release_all(Worker& w) {
     for (std::uint32_t c : w.held) {
@@ -347,6 +346,9 @@ class Builder {
   std::uint32_t corner_atomic(std::uint32_t s, std::size_t j) const {
     return __atomic_load_n(&tv_[4 * static_cast<std::size_t>(s) + j], __ATOMIC_RELAXED);
   }
+  // BFS stamps (insert), read before the tetrahedron is held: atomic too
+  std::uint32_t mark(std::uint32_t t) const { return __atomic_load_n(&mark_[t], __ATOMIC_RELAXED); }
+  void set_mark(std::uint32_t t, std::uint32_t v) { __atomic_store_n(&mark_[t], v, __ATOMIC_RELAXED); }
 
   // A slot for a new tetrahedron: the worker's free list, else a never-used
   // one (sequential: growing the arrays; parallel: from the worker's range,
@@ -591,7 +593,7 @@ std::uint32_t Builder::walk_start(Worker& w) {
       if (c[j] == V_) continue;
       // worth waiting for briefly (a neighbouring insertion ending)
       ok = false;
-      for (int spin = 0; spin < 64 && !(ok = hold_cell(w, cell_[c[j]])); ++spin) std::this_thread::yield();
+      for (int spin = 0; spin < 64 && !(ok = hold_cell(w, P_[c[j]].cell)); ++spin) std::this_thread::yield();
     }
     for (std::size_t j = 0; j < 4 && ok; ++j) ok = corner_atomic(t, j) == c[j];
     ok = ok && (c[0] == V_) + (c[1] == V_) + (c[2] == V_) + (c[3] == V_) <= 1;  // (always, by the above)
@@ -639,33 +641,45 @@ Outcome Builder::insert(Worker& w, std::uint32_t p) {
   }
   // breadth-first search of the visible tetrahedra (stamps of this attempt,
   // unique over all attempts and workers: in visible, out not)
-  const std::uint32_t in = stamps_.fetch_add(2, std::memory_order_relaxed), out = in + 1;
+  // (taken by the worker in blocks of 2^16 from the shared counter). A
+  // mark is read before the worker has the tetrahedron (atomically: its
+  // holder may be writing it): this attempt's stamps are written by this
+  // worker only, so a tetrahedron carrying one was had — and is still held —
+  // by it, and only an unmarked neighbour needs taking and testing.
+  if (w.stamp == w.stamp_end) {
+    w.stamp = stamps_.fetch_add(std::uint32_t{1} << 16, std::memory_order_relaxed);
+    w.stamp_end = w.stamp + (std::uint32_t{1} << 16);
+  }
+  const std::uint32_t in = w.stamp, out = in + 1;
+  w.stamp += 2;
   w.cavity.clear();
   w.horizon.clear();
   w.cavity.push_back(root);
-  mark_[root] = in;
+  set_mark(root, in);
   for (std::size_t q = 0; q < w.cavity.size(); ++q) {
     const std::uint32_t t = w.cavity[q];
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t l = tn_[4 * static_cast<std::size_t>(t) + i];
       const std::uint32_t u = l >> 2;
-      if (par && !hold_across(w, l)) return give_up();
-      if (mark_[u] == in) continue;
-      if (mark_[u] != out) {
+      const std::uint32_t mu = mark(u);
+      if (mu == in) continue;
+      if (mu != out) {
+        if (par && !hold_across(w, l)) return give_up();
         if (visible(u, p)) {
-          mark_[u] = in;
+          set_mark(u, in);
           w.cavity.push_back(u);
           continue;
         }
-        mark_[u] = out;
+        set_mark(u, out);
       }
-      Horizon h;
+      // built in place: a Horizon assembled on the stack and copied was
+      // read back as 16 bytes over a 4-byte store (h.v[i] = p) — a
+      // store-forwarding stall that took 9 % of the insertion's time
+      Horizon& h = w.horizon.emplace_back();
       const std::uint32_t* v = tet(t);
-      for (int j = 0; j < 4; ++j) h.v[j] = v[j];
-      h.v[i] = p;
+      for (std::uint32_t j = 0; j < 4; ++j) h.v[j] = j == i ? p : v[j];
       h.i = i;
       h.out = l;
-      w.horizon.push_back(h);
     }
   }
   if (!link_cone(w)) return give_up();
@@ -737,14 +751,14 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
       // first one there
       std::vector<std::uint32_t> cellpos(lock_count_, kDead);
       for (std::size_t j = 0; j < lo; ++j)
-        if (hint_[j] != kDead) cellpos[cell_[j]] = static_cast<std::uint32_t>(j);
+        if (hint_[j] != kDead) cellpos[P_[j].cell] = static_cast<std::uint32_t>(j);
       std::vector<Worker> ws(pieces);
       for (std::size_t q = 0; q < pieces; ++q) {
         ws[q].me = static_cast<std::uint32_t>(q + 1);
         ws[q].rng = brio::splitmix64(lo + q) | 1;
         ws[q].fail_every = fail_every;
         ws[q].remember(anchor);
-        const std::size_t c = cell_[lo + (hi - lo) * q / pieces];
+        const std::size_t c = P_[lo + (hi - lo) * q / pieces].cell;
         for (std::size_t d = 0; d < lock_count_; ++d) {
           const std::uint32_t j = c >= d && cellpos[c - d] != kDead ? cellpos[c - d]
                                   : c + d < lock_count_         ? cellpos[c + d]
@@ -1016,7 +1030,7 @@ Rt3Result rt3(const PointSet& ps, const Rt3Options& opt, Rt3Stats* stats, Rt3Wit
     if (parallel) cells = lock_cells(keys, order, ncells);
     clock.mark("sort");
     Builder B(std::move(pts), f);
-    if (parallel) B.set_cells(std::move(cells), ncells);
+    if (parallel) B.set_cells(cells, ncells);
     B.run(parallel, opt.parallel_from, opt.min_piece, opt.fail_claims_every, rounds_at, st);
     clock.mark("insert");
     res.tets = B.output();

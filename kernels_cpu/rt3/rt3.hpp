@@ -119,6 +119,9 @@ struct Rt3Point {
   double xyz[3];
   double w;
   Index id;
+  // the kernel's lock cell of the point (parallel rounds; rt3.cpp), kept in
+  // the record its predicates read anyway; not part of the certificate
+  std::uint32_t cell = 0;
 };
 
 // A tetrahedron of input indices (canonical in rt3()'s output: positively
