@@ -30,8 +30,10 @@
 //                         (lifted_adaptive), else the whole translated matrix;
 //   5. SoS                when the exact determinant is 0 and ids are given,
 //                         the perturbation terms on double minors first
-//                         (exact for small integers, else ErrDouble-filtered:
-//                         sos_sign_doubles), on expansions where undecided.
+//                         (exact for small integers; else exact zero tests —
+//                         zero or constant columns, equal rows — and the
+//                         ErrDouble filter), each undecided minor on
+//                         expansions (xp::sos_lazy).
 //
 // Stages 1-3 return a sign only when it is certain; 4-5 always decide. No
 // stage allocates memory or recurses. GMP (Mode::gmp in predicates.hpp) is the
@@ -134,6 +136,10 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     xp::IntLambda<K> L;
     if (xp::int_lambda<K>(p, w, L)) return lambda_int_sorted<K>(ids, L);
   }
+  // A constant coordinate column (points on a plane x_j = c): det Λ = 0
+  // exactly, which no filter decides; the exact stage goes to the
+  // perturbation at once (xp::lambda_exact tests it again).
+  if (xp::constant_column<K>(p, w ? K - 2 : K - 1)) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
   if constexpr (K >= 3 && K <= 5) {
     const int s = dd_filter_sign<K, Fma>(p, w, window);
     if (s == 1 || s == -1) return s;

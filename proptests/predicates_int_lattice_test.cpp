@@ -28,6 +28,17 @@
 //       most calls are exactly degenerate (det Λ = 0).
 // A sign flip planted in int_minor_sign (orders 3 and 4) was caught by (a),
 // (b) and (c); a weakened width test (int64 where __int128 is needed) by (a).
+//
+// The SoS stage on doubles with lazily built expansions (xp::sos_lazy) on
+// degenerate calls that are not lattices: millimetre coordinates (n / 1000,
+// not dyadic) on the floors and walls of a building (a constant coordinate),
+// on the plane z = x, duplicated points, weights 0 or millimetre values:
+//   (e) sos_lazy equals sos_expansions (the expansion search it replaces)
+//       and GMP's SoS sign wherever det Λ = 0, and the whole path after the
+//       filters equals GMP; not vacuous: most calls have det Λ = 0.
+// A planted error in its constant-column test (only the first two kept rows
+// compared) was caught by (e) and by (c) above (lambda_exact_sorted with
+// dd_ran skips the integer stage and reaches sos_lazy).
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -258,6 +269,85 @@ TEST_CASE("int lattice: minors, exact and SoS signs equal the expansion path and
   lattice_property<5>(true);
   lattice_property<6>(true);
   lattice_property<7>(true);
+}
+
+// ---- (e) sos_lazy on millimetre (non-dyadic) degenerate calls ----
+namespace {
+
+double gen_mm(int bound) { return *rc::gen::inRange(-bound, bound + 1) / 1000.0; }
+
+template <int K>
+void planes_call(bool lifted, long& calls, long& zero) {
+  const int d = lifted ? K - 2 : K - 1;
+  std::vector<double> x(static_cast<size_t>(K * d)), w(static_cast<size_t>(K), 0.0);
+  const int bound = *rc::gen::element(50, 5000, 50000);
+  for (double& v : x) v = gen_mm(bound);
+  const int shape = *rc::gen::inRange(0, 4);
+  if (shape == 0) {  // a floor or a wall: coordinate j = c for every point
+    const int j = *rc::gen::inRange(0, d);
+    const double c = *rc::gen::arbitrary<bool>() ? 0.0 : gen_mm(bound);
+    for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + j)] = c;
+  } else if (shape == 1 && d >= 2) {  // the plane x_last = x_0 (exact)
+    for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + d - 1)] = x[static_cast<size_t>(i * d)];
+  } else if (shape == 2) {  // duplicated points
+    const int a = *rc::gen::inRange(0, K), b = *rc::gen::inRange(0, K);
+    for (int j = 0; j < d; ++j) x[static_cast<size_t>(a * d + j)] = x[static_cast<size_t>(b * d + j)];
+  }
+  if (*rc::gen::arbitrary<bool>())
+    for (double& v : w) v = gen_mm(bound);
+  if (shape == 2 && lifted) w[0] = w[1];  // sometimes the duplicate's weight too
+  const std::vector<PointId> ids = gen_distinct_ids(K);
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = x.data() + i * d;
+  const double* wp = lifted ? w.data() : nullptr;
+  int order[K];
+  const int parity = pred::sort_rows_by_id(K, ids.data(), order);
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w[static_cast<size_t>(order[i])];
+  }
+  const double* swp = lifted ? sw : nullptr;
+  const int g = pred::stage::gmp_sos(K, ids.data(), p, wp);
+  ++calls;
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(ids.data(), p, wp)) == g);
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids.data(), p, wp)) == g);
+  if (xp::det_translated<xp::Dbl, K>(sp, swp) != 0) return;
+  ++zero;
+  xp::Range range;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < d; ++j) range.add(sp[i][j]);
+    if (lifted) range.add(sw[i]);
+  }
+  const int lazy = xp::sos_lazy<K>(sp, swp, range);
+  const int expansions = xp::sos_expansions<xp::Dbl, K>(sp, swp);
+  RC_LOG() << "k " << K << (lifted ? " lifted" : " plain") << " shape " << shape << ": sos_lazy " << lazy
+           << ", sos_expansions " << expansions << ", gmp " << g << " (parity " << parity << ")\n";
+  RC_ASSERT(lazy == expansions);
+  RC_ASSERT(parity * lazy == g);
+}
+
+template <int K>
+void planes_property(bool lifted) {
+  long calls = 0, zero = 0;
+  const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
+  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero); });
+  if (calls == 0) return;
+  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld\n", name.c_str(), calls, zero);
+  CHECK(zero * 2 > calls);
+}
+
+}  // namespace
+
+TEST_CASE("sos_lazy: millimetre floors, walls, planes and duplicates equal sos_expansions and GMP",
+          "[predicates][stages][int_lattice]") {
+  planes_property<3>(false);
+  planes_property<4>(false);
+  planes_property<5>(false);
+  planes_property<4>(true);
+  planes_property<5>(true);
+  planes_property<6>(true);
 }
 
 // Values the path must refuse: a decimal fraction (long mantissa), a spread
