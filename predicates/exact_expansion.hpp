@@ -816,6 +816,100 @@ FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<
   }
 }
 
+// The SoS sign of K points (rows sorted by index, det Λ = 0, inside the Dbl
+// window) with each minor decided by the cheapest exact means: on the double
+// Λ of lambda_doubles (coordinates, the 1-column, and a lifted column that is
+// exact in double, or its ErrDouble value |x|^2 - w where it is not) a minor
+// is 0 when a kept column is 0 on the kept rows, when the 1-column is kept
+// and another kept column is constant on them (points on a plane x_j = c:
+// that column minus c times the 1-column is 0), or when two kept rows are
+// equal on the kept columns (for an inexact lifted column: when the points'
+// coordinates and weights are all equal); else the ErrDouble minor's sign
+// where certain; else the exact expansion minor (MinorOf on Λ as
+// expansions, built once, on the first such minor). Every minor's sign is
+// exact, and sos_search asks for the same minors in the same order as
+// sos_sign_doubles then sos_expansions: the same answer, without the
+// expansion Λ where no minor needs it (sos_expansions built all of it, its
+// lifted entries the dearest part, and restarted the search) — the exactly
+// degenerate calls of points on planes (the floors and walls of buildings).
+// When doubles_exact_minors holds, every minor in plain doubles, as
+// sos_sign_doubles. Stack: the double, ErrDouble and expansion Λ, the memo
+// (K = 5: about 2.9 KB, against 2.6 KB in sos_expansions' frame before).
+template <int K>
+FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, const Range& range) {
+  double a[K][K];
+  const bool exact = lambda_doubles<K>(p, w, a);
+  if (exact && doubles_exact_minors<K>(a, w != nullptr, range, K - 1))
+    return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+      const double m = double_minor<K>(a, kr, kc);
+      return (m > 0.0) - (m < 0.0);
+    });
+  const int ncoord = w ? K - 2 : K - 1;
+  // exact: a as it stands. Else lambda_doubles stopped at a row whose lifted
+  // entry is not a double: every coordinate and 1-column entry is still
+  // exact; the lifted column is approximated (ErrDouble) and never compared
+  ErrDouble ap[K * K];
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) {
+      a[i][j] = p[i][j];
+      ap[i * K + j] = ErrDouble(p[i][j]);
+    }
+    a[i][K - 1] = 1.0;
+    ap[i * K + K - 1] = ErrDouble(1.0);
+    if (w) {
+      if (exact) {
+        ap[i * K + K - 2] = ErrDouble(a[i][K - 2]);
+      } else {
+        ErrDouble h = ErrDouble(-w[i]);
+        for (int j = 0; j < ncoord; ++j) h = h + ErrDouble(p[i][j]) * ErrDouble(p[i][j]);
+        ap[i * K + K - 2] = h;
+      }
+    }
+  }
+  const int hc = (w && !exact) ? K - 2 : K;  // the column that is not compared (none: K)
+  auto same_point = [&](int r0, int r1) {
+    for (int j = 0; j < ncoord; ++j)
+      if (p[r0][j] != p[r1][j]) return false;
+    return w[r0] == w[r1];
+  };
+  RawLambda<Dbl, K> L;
+  bool built = false;
+  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+    const Kept<K> kept(kr, kc);
+    const int* ri = kept.ri;
+    const int* ci = kept.ci;
+    const int r = kept.r;
+    if (r == 0) return 1;
+    const bool one = (kc >> (K - 1)) & 1u;
+    for (int t = 0; t < r; ++t) {
+      const int j = ci[t];
+      if (j == hc || j == K - 1) continue;
+      bool zero = true, constant = true;
+      for (int q = 0; q < r; ++q) {
+        zero = zero && a[ri[q]][j] == 0.0;
+        constant = constant && a[ri[q]][j] == a[ri[0]][j];
+      }
+      if (zero || (one && constant)) return 0;
+    }
+    for (int x = 1; x < r; ++x)
+      for (int y = 0; y < x; ++y) {
+        bool same = true;
+        for (int t = 0; t < r && same; ++t) {
+          const int j = ci[t];
+          same = j == hc ? same_point(ri[x], ri[y]) : a[ri[x]][j] == a[ri[y]][j];
+        }
+        if (same) return 0;
+      }
+    const int s = sign_if_certain(errdouble_minor<K>(ap, kr, kc));
+    if (s != 0) return s;
+    if (!built) {
+      build_lambda<Dbl, K>(p, w, L);
+      built = true;
+    }
+    return MinorOf<Dbl, K>::sign(L, kr, kc);
+  });
+}
+
 // The expansion stages' entry points, one function each, Dbl and XDbl apart.
 // On the device (FF_DEVICE_NOINLINE) each is a call with its own frame, so a
 // thread's stack is the deepest of them, not their sum: the device compiler
@@ -1040,6 +1134,20 @@ FF_HD inline int lifted_adaptive(const double* const* p, const double* w) {
   int alen = 1;
   acc[0] = 0.0;
   for (int i = 0; i < N; ++i) {
+    // C_i: the M x M determinant of the coordinates of the other rows (first:
+    // when it is 0, as for coplanar points, l_i is not needed)
+    double cof[24];
+    int clen = 0;
+    {
+      const double* r[3];
+      int n = 0;
+      for (int q = 0; q < N; ++q)
+        if (q != i) r[n++] = d[q];
+      if constexpr (M == 2) clen = det2_exact(r[0][0], r[0][1], r[1][0], r[1][1], cof);
+      else clen = det3_exact(r[0], r[1], r[2], cof);
+      clen = compress<Dbl>(clen, cof);
+    }
+    if (clen == 1 && cof[0] == 0.0) continue;
     // l_i = Σ_j d_ij^2 - (w_i - w_k), exactly
     double lift[2 * M + 2], ltmp[2 * M + 2];
     int llen = 0;
@@ -1058,19 +1166,6 @@ FF_HD inline int lifted_adaptive(const double* const* p, const double* w) {
       llen = compress<Dbl>(llen, lift);
     }
     if (llen == 1 && lift[0] == 0.0) continue;
-    // C_i: the M x M determinant of the coordinates of the other rows
-    double cof[24];
-    int clen = 0;
-    {
-      const double* r[3];
-      int n = 0;
-      for (int q = 0; q < N; ++q)
-        if (q != i) r[n++] = d[q];
-      if constexpr (M == 2) clen = det2_exact(r[0][0], r[0][1], r[1][0], r[1][1], cof);
-      else clen = det3_exact(r[0], r[1], r[2], cof);
-      clen = compress<Dbl>(clen, cof);
-    }
-    if (clen == 1 && cof[0] == 0.0) continue;
     const bool negative = ((i + M) & 1) != 0;
     for (int c = 0; c < llen; ++c) {
       if (lift[c] == 0.0) continue;
@@ -1159,15 +1254,235 @@ FF_HD inline int lattice_sign(const double (&a)[K][K], bool sos) {
   return sos_search<K>(true, sign_of);
 }
 
+// ---- Integer lattices: det Λ and the SoS minors in integer arithmetic --------
+// lattice_doubles needs the whole K x K determinant exact in doubles, which a
+// lifted Λ of small integers exceeds quickly (K = 5, coordinates below 2^6:
+// log2(5!) + 3 x 6 + 13 + 1 > 53 bits in the worst case of its global bound).
+// Integers have no rounding: when every value of the call is an integer
+// multiple of a common power of two, Λ is scaled column by column to an
+// integer matrix and every minor is evaluated exactly in int64 or __int128.
+//
+// Scaling. Let 2^gc be the lowest set bit over the nonzero coordinates and
+// every coordinate |x| < 2^hc (gc = hc = 0 when all are 0): X = x 2^-gc is an
+// integer, |X| < 2^mc, mc = hc - gc. Lifted, with 2^gw the lowest set bit and
+// 2^hw the bound of the nonzero weights, gl = min(2 gc, gw) (2 gc without
+// weights): the height column becomes H = (|x|^2 - w) 2^-gl =
+// (Σ_j X_j^2) 2^(2 gc - gl) - w 2^-gl, an integer. Each column of Λ is thus
+// multiplied by a positive power of two (2^-gc, 2^-gl; the 1-column by 1), so
+// every minor is multiplied by a positive number: the sign of det Λ and of
+// every minor of the perturbation is unchanged, and the SoS search on the
+// integer matrix (the same sos_search, the same minors) returns the same sign
+// as every other exact stage.
+// Entry bounds (int64): |X| < 2^mc with mc <= 62 unlifted; lifted mc <= 29,
+// so Σ_j X_j^2 < (K - 2) 2^(2 mc) <= 2^(2 mc + 3) (K - 2 <= 6), shifted by
+// s = 2 gc - gl with 2 mc + 3 + s <= 61, and |w 2^-gl| < 2^(hw - gl) with
+// hw - gl <= 61: |H| < 2^61 + 2^61 = 2^62. Every entry is below 2^62. The
+// scaled values are computed as v 2^-gc (and w 2^-gl) in double, the power of
+// two normal (-1022 <= -gc, -gl <= 1023, else the path is not taken): exact,
+// the result being an integer below 2^62 with the 53-bit mantissa of v, and
+// so is its conversion to int64.
+// Minor bound: let b_j be the bit length of the largest |entry| of column j
+// (0 for a zero column; 1 for the 1-column), B = Σ_j b_j, lf(K) =
+// ceil(log2 K!). An r x r minor on columns S is a sum of r! products of one
+// entry per column of S, so |minor| <= r! Π_{j in S} 2^(b_j) <= K! 2^B <=
+// 2^(lf(K) + B). The Laplace expansion (det_by_minors: d[S] = Σ_j ± t[j]
+// d[S \ j] along row |S| - 1) forms only such minors, products t[j] d[S \ j]
+// — a sum of (|S| - 1)! of those products — and partial sums of the terms of
+// d[S] — a sum of at most |S|! of them — all bounded the same way. So with
+// lf(K) + B <= 63 every value is below 2^63 (int64), with lf(K) + B <= 127
+// below 2^127 (__int128, where the compiler has it): no operation overflows,
+// every value is exact, and the computed sign is the sign of the minor.
+// For the motivating 3D Delaunay grid (coordinates 0..46, K = 5): b = 6, 6,
+// 6, 13, 1, B = 32, lf(5) = 7: int64. K <= 7 (det_by_minors' orders).
+#if defined(__SIZEOF_INT128__)
+#define FLIPFLOP_INT128 1
+__extension__ typedef __int128 int128_t;  // __extension__: no -Wpedantic warning
+#endif
+
 template <int K>
-FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos) {
+struct IntLambda {
+  long long a[K][K];
+  bool wide = false;  // __int128 needed (lf(K) + B > 63)
+};
+
+// Lowest set bit 2^low and bound |v| < 2^hi of a finite nonzero double
+// (as Range::add); false for inf and NaN.
+FF_HD FF_FORCEINLINE bool bit_span(double v, int& low, int& hi) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased == 0x7ff) return false;
+  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+  if (biased == 0) {  // subnormal: mant 2^-1074
+    hi = 64 - clz64(mant) - 1074;
+    low = ctz64(mant) - 1074;
+  } else {
+    mant |= std::uint64_t{1} << 52;
+    hi = biased - 1022;
+    low = biased - 1075 + ctz64(mant);
+  }
+  return true;
+}
+
+// 2^e as a double, -1022 <= e <= 1023.
+FF_HD FF_FORCEINLINE double pow2_normal(int e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double v = 0.0;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
+FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
+
+// Λ of the call as integers (see above); false when a value is not finite or
+// a bound fails (the other stages decide). A value whose own mantissa spans
+// more than the bound (a decimal fraction, a random double) fails at once.
+template <int K>
+FF_HD inline bool int_lambda(const double* const* p, const double* w, IntLambda<K>& L) {
+  if constexpr (K > 7) {
+    (void)p, (void)w, (void)L;
+    return false;
+  } else {
+    const int ncoord = w ? K - 2 : K - 1;
+    const int max_mc = w ? 29 : 62;
+    int gc = 100000, hc = -100000;
+    for (int i = 0; i < K; ++i)
+      for (int j = 0; j < ncoord; ++j) {
+        const double v = p[i][j];
+        if (v == 0.0) continue;
+        int low = 0, hi = 0;
+        if (!bit_span(v, low, hi) || hi - low > max_mc) return false;
+        gc = low < gc ? low : gc;
+        hc = hi > hc ? hi : hc;
+      }
+    if (hc < gc) gc = hc = 0;  // every coordinate is 0
+    const int mc = hc - gc;
+    if (mc > max_mc || gc < -1023 || gc > 1022) return false;
+    const double cscale = pow2_normal(-gc);  // v 2^-gc: an integer below 2^mc, exactly
+    for (int i = 0; i < K; ++i)
+      for (int j = 0; j < ncoord; ++j) L.a[i][j] = static_cast<long long>(p[i][j] * cscale);
+    if (w) {
+      int gw = 100000, hw = -100000;
+      for (int i = 0; i < K; ++i) {
+        const double v = w[i];
+        if (v == 0.0) continue;
+        int low = 0, hi = 0;
+        if (!bit_span(v, low, hi)) return false;
+        gw = low < gw ? low : gw;
+        hw = hi > hw ? hi : hw;
+      }
+      const int gl = gw < 2 * gc ? gw : 2 * gc;
+      const int s = 2 * gc - gl;
+      if (2 * mc + 3 + s > 61 || gl < -1023 || gl > 1022) return false;
+      if (hw > -100000 && hw - gl > 61) return false;
+      const double wscale = pow2_normal(-gl);
+      for (int i = 0; i < K; ++i) {
+        long long sq = 0;
+        for (int j = 0; j < ncoord; ++j) sq += L.a[i][j] * L.a[i][j];
+        L.a[i][K - 2] = static_cast<long long>(static_cast<unsigned long long>(sq) << s) -
+                        static_cast<long long>(w[i] * wscale);
+      }
+    }
+    constexpr int kLogFact[8] = {0, 0, 1, 3, 5, 7, 10, 13};
+    int bits = kLogFact[K] + 1;  // the 1-column
+    for (int j = 0; j < K - 1; ++j) {
+      unsigned long long any = 0;  // the OR of the magnitudes: the bit length of their maximum
+      for (int i = 0; i < K; ++i) {
+        const long long v = L.a[i][j];
+        any |= v < 0 ? 0ull - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
+      }
+      bits += bit_length(any);
+    }
+    for (int i = 0; i < K; ++i) L.a[i][K - 1] = 1;
+#if defined(FLIPFLOP_INT128)
+    if (bits > 127) return false;
+#else
+    if (bits > 63) return false;
+#endif
+    L.wide = bits > 63;
+    return true;
+  }
+}
+
+// det_by_minors<N, I>(t) for the run-time order r, N <= r <= K (only orders
+// that fit t, K x K entries, are instantiated).
+template <int N, int K, class I>
+FF_HD inline I int_det_of_order(const I* t, int r) {
+  if constexpr (N > K) {
+    (void)t, (void)r;
+    return I(0);  // unreachable: r <= K
+  } else {
+    if (r == N) return det_by_minors<N, I>(t);
+    return int_det_of_order<N + 1, K, I>(t, r);
+  }
+}
+
+// Sign of the minor of the integer Λ on the kept rows / columns.
+template <class I, int K>
+FF_HD inline int int_minor_sign(const IntLambda<K>& L, unsigned rows, unsigned cols) {
+  const Kept<K> kept(rows, cols);
+  if (kept.r == 0) return 1;
+  I t[K * K];
+  kept.gather(t, [&](int i, int j) { return static_cast<I>(L.a[i][j]); });
+  const I m = int_det_of_order<1, K, I>(t, kept.r);
+  return (m > 0) - (m < 0);
+}
+
+// The exact (sos: SoS) sign of det Λ on the integer matrix; rows sorted by
+// index for sos, as lattice_sign.
+template <class I, int K>
+FF_HD inline int int_lattice_sign_as(const IntLambda<K>& L, bool sos) {
+  auto sign_of = [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); };
+  constexpr unsigned kAll = (1u << K) - 1u;
+  const int s = sign_of(kAll, kAll);
+  if (s != 0 || !sos) return s;
+  return sos_search<K>(true, sign_of);
+}
+template <int K>
+FF_HD inline int int_lattice_sign(const IntLambda<K>& L, bool sos) {
+#if defined(FLIPFLOP_INT128)
+  if (L.wide) return int_lattice_sign_as<int128_t, K>(L, sos);
+#endif
+  return int_lattice_sign_as<long long, K>(L, sos);
+}
+
+// Is one of the first m columns of the K rows constant (equal values)?
+template <int K>
+FF_HD inline bool constant_column(const double* const* p, int m) {
+  for (int j = 0; j < m; ++j) {
+    bool same = true;
+    for (int i = 1; i < K; ++i) same = same && p[i][j] == p[0][j];
+    if (same) return true;
+  }
+  return false;
+}
+
+// `dd_ran`: the caller has tried the integer path (int_lambda) and its
+// double-double filter (dd_filter.hpp: the same
+// double-double values, an a-priori bound of the same order u^2 times the
+// permanent as lambda_sign_dd's running one) has run on these points and not
+// decided; both are skipped here. Such calls are (near-)zero determinants
+// — on degenerate input exactly zero ones, which no filter decides — and the
+// exact stages below decide every call, so only time changes, no sign.
+template <int K>
+FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos, bool dd_ran = false) {
   const Range range = call_range<K>(p, w);
   if (!range.finite) return non_finite_input();
   const int degree = w ? K : K - 1;
+  // det Λ = 0 at once when a coordinate column is constant (points on a plane
+  // x_j = c, e.g. the floors and walls of a building: the column minus c
+  // times the 1-column is 0); the perturbation decides.
+  const bool flat = constant_column<K>(p, w ? K - 2 : K - 1);
   if (range.fits(degree)) {
     double a[K][K];
+    if constexpr (K <= 7) {
+      if (!dd_ran) {  // (lambda_sign_after_filters tries it before the filters)
+        IntLambda<K> L;
+        if (int_lambda<K>(p, w, L)) return int_lattice_sign<K>(L, sos);
+      }
+    }
     if (lattice_doubles<K>(p, w, range, a)) return lattice_sign<K>(a, sos);
-    int s = lambda_sign_dd<K>(p, w);
+    int s = flat ? 0 : dd_ran ? 2 : lambda_sign_dd<K>(p, w);
     if constexpr (K == 3 || K == 4)
       if (!w && s == 2) s = orient_adaptive<K>(p);
     if constexpr (K == 4 || K == 5)
@@ -1175,12 +1490,10 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos)
     if (s == 2) s = det_translated<Dbl, K>(p, w);
     if (s != 0 || !sos) return s;
     // det Λ = 0: the perturbation's minors on doubles first, expansions
-    // only when one of them is undecided there
-    s = sos_sign_doubles<K>(p, w, range);
-    if (s != 2) return s;
-    return sos_expansions<Dbl, K>(p, w);
+    // only for those undecided there
+    return sos_lazy<K>(p, w, range);
   }
-  const int s = det_translated<XDbl, K>(p, w);
+  const int s = flat ? 0 : det_translated<XDbl, K>(p, w);
   if (s != 0 || !sos) return s;
   return sos_expansions<XDbl, K>(p, w);
 }

@@ -8,6 +8,11 @@
 //                         (static_filter.hpp); for orient2d/3d with a
 //                         static filter, the permanent bound of
 //                         plain_filters instead (Shewchuk's errbound A);
+//      integer lattice   (k <= 7) when every value of the call is an
+//                         integer multiple of a common power of two within
+//                         the bounds of xp::int_lambda: det Λ and the SoS
+//                         minors exactly in int64 / __int128 (exact, so it
+//                         decides — also 0 — and ends the path);
 //   3. double-double filter (k <= 5) a priori bounded (dd_filter.hpp):
 //                         decides near-degenerate calls; where it ran and
 //                         failed the next stage is 4;
@@ -17,6 +22,7 @@
 //                         xp::lambda_sign_dd, inside the exact stage's double
 //                         window): decides near-degenerate calls, whose
 //                         determinant is of order u times its terms;
+//                         skipped where stage 3 ran and failed (dd_ran);
 //      exact              expansion arithmetic (exact_expansion.hpp), rows
 //                         sorted by point index: Shewchuk's adaptive stages
 //                         for orient2d/3d, the exact stage B of power2d/3d
@@ -24,8 +30,10 @@
 //                         (lifted_adaptive), else the whole translated matrix;
 //   5. SoS                when the exact determinant is 0 and ids are given,
 //                         the perturbation terms on double minors first
-//                         (exact for small integers, else ErrDouble-filtered:
-//                         sos_sign_doubles), on expansions where undecided.
+//                         (exact for small integers; else exact zero tests —
+//                         zero or constant columns, equal rows — and the
+//                         ErrDouble filter), each undecided minor on
+//                         expansions (xp::sos_lazy).
 //
 // Stages 1-3 return a sign only when it is certain; 4-5 always decide. No
 // stage allocates memory or recurses. GMP (Mode::gmp in predicates.hpp) is the
@@ -74,9 +82,11 @@ FF_HD inline bool repeated_id(int k, const Id* ids) {
 // Stages 4-5: exact sign (sos = false, may be 0) or SoS sign of det Λ with the
 // rows in the given order (the rows are sorted by id internally). Called, not
 // inlined, on the device (FF_DEVICE_NOINLINE).
+// `dd_ran`: the double-double filter has run on these points and failed
+// (xp::lambda_exact then skips its own double-double stage).
 template <int K, class Id>
 FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
-                                     bool sos) {
+                                     bool sos, bool dd_ran = false) {
   int order[K];
   const int parity = sort_rows_by_id(K, sos ? ids : static_cast<const Id*>(nullptr), order);
   if (parity == 0) return 0;
@@ -86,7 +96,25 @@ FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* co
     sp[i] = p[order[i]];
     sw[i] = w ? w[order[i]] : 0.0;
   }
-  return parity * xp::lambda_exact<K>(sp, w ? sw : nullptr, sos);
+  return parity * xp::lambda_exact<K>(sp, w ? sw : nullptr, sos, dd_ran);
+}
+
+// The exact (SoS with ids) sign on the integer Λ of xp::int_lambda, rows
+// sorted by id as lambda_exact_sorted sorts them. A call of its own on the
+// device (FF_DEVICE_NOINLINE): its minors' buffers and the SoS memo stay out
+// of the caller's frame (ptx_stack.py, predicates_cuda.cu, K = 5: the
+// deepest chain 35.9 KB before the integer stage, 37.7 KB with it inlined,
+// 36.4 KB with this call).
+template <int K, class Id>
+FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambda<K>& L) {
+  int order[K];
+  const int parity = sort_rows_by_id(K, ids, order);
+  if (parity == 0) return 0;
+  xp::IntLambda<K> S;
+  S.wide = L.wide;
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) S.a[i][j] = L.a[order[i]][j];
+  return parity * xp::int_lattice_sign<K>(S, ids != nullptr);
 }
 
 // The default path after the static and semi-static filters (fast.hpp calls
@@ -103,10 +131,23 @@ template <int K, class Id, bool Fma = false>
 FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w,
                                                    bool window = false) {
   if (repeated_id(K, ids)) return 0;
+  if constexpr (K <= 7) {
+    // Integer lattices (small integers, dyadic grids: the exactly degenerate
+    // inputs): det Λ and the perturbation's minors exactly in int64 /
+    // __int128 (xp::int_lambda), cheaper than the filters below, which
+    // cannot decide a zero determinant. Other inputs fail its test at the
+    // first value whose mantissa is longer than the bound.
+    xp::IntLambda<K> L;
+    if (xp::int_lambda<K>(p, w, L)) return lambda_int_sorted<K>(ids, L);
+  }
+  // A constant coordinate column (points on a plane x_j = c): det Λ = 0
+  // exactly, which no filter decides; the exact stage goes to the
+  // perturbation at once (xp::lambda_exact tests it again).
+  if (xp::constant_column<K>(p, w ? K - 2 : K - 1)) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
   if constexpr (K >= 3 && K <= 5) {
     const int s = dd_filter_sign<K, Fma>(p, w, window);
     if (s == 1 || s == -1) return s;
-    if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
+    if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
   }
   if constexpr (K >= 6) {
     // 5D and 6D orientations, 4D and 5D power tests: on lattice input (small

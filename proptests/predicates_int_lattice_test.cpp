@@ -1,0 +1,378 @@
+// predicates_int_lattice_test.cpp — the integer-lattice stage of the default
+// predicate path (xp::int_lambda, xp::int_lattice_sign, staged.hpp's
+// lambda_int_sorted) against the expansion path it short-cuts, and GMP.
+//
+// Inputs: k = 3..7 points, plain (k - 1 coordinates) and lifted (k - 2
+// coordinates and a weight), every coordinate a small integer (bound 1, 3, 46,
+// 1000, 2^20, 2^28 or 2^40: int64 and __int128 minors both occur, and
+// lifted calls the path refuses) times a common
+// power of two 2^e, e in [-60, 60] (weights: integers times 2^(2e), or
+// 2^(2e - t) — a finer weight grid —, or 0); exactly degenerate by
+// construction where the shape asks for it: duplicated points (same
+// coordinates and weight, different ids), points on an integer hyperplane
+// (coplanar), on a lattice sphere (x^2 + y^2 [+ z^2] = r^2 with equal weights:
+// cospherical), on a line, or all weights w = |x|^2 + affine (the lifted
+// points on a hyperplane). Ids distinct, in arbitrary order.
+//
+// Properties:
+//   (a) where int_lambda accepts the call, the sign of every minor of the
+//       integer Λ (int_minor_sign, on the full matrix and random row/column
+//       subsets) equals the sign of the same minor of Λ as expansions
+//       (MinorLaplace<Dbl> on build_lambda) — the column scaling keeps signs;
+//   (b) int_lattice_sign (exact and SoS, rows sorted by id) equals the
+//       expansion path: det_translated<Dbl> for the exact sign, then
+//       sos_expansions<Dbl> where it is 0, and GMP's SoS sign;
+//   (c) the whole staged path (lambda_sign_after_filters, plain and FMA
+//       instantiations, ids in arbitrary order) equals GMP's SoS sign;
+//   (d) not vacuous: int_lambda accepts most calls, both widths occur, and
+//       most calls are exactly degenerate (det Λ = 0).
+// A sign flip planted in int_minor_sign (orders 3 and 4) was caught by (a),
+// (b) and (c); a weakened width test (int64 where __int128 is needed) by (a).
+//
+// The SoS stage on doubles with lazily built expansions (xp::sos_lazy) on
+// degenerate calls that are not lattices: millimetre coordinates (n / 1000,
+// not dyadic) on the floors and walls of a building (a constant coordinate),
+// on the plane z = x, duplicated points, weights 0 or millimetre values:
+//   (e) sos_lazy equals sos_expansions (the expansion search it replaces)
+//       and GMP's SoS sign wherever det Λ = 0, and the whole path after the
+//       filters equals GMP; not vacuous: most calls have det Λ = 0.
+// A planted error in its constant-column test (only the first two kept rows
+// compared) was caught by (e) and by (c) above (lambda_exact_sorted with
+// dd_ran skips the integer stage and reaches sos_lazy).
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#include "predicates/exact_expansion.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/staged.hpp"
+#include "proptests/support/predicate_inputs.hpp"
+
+namespace {
+
+using namespace flipflop;
+using namespace flipflop::test;
+namespace xp = flipflop::pred::xp;
+using pred::PointId;
+
+struct LatticeCall {
+  int k = 0;
+  bool lifted = false;
+  std::vector<double> x;  // k rows of dim coordinates
+  std::vector<double> w;
+  std::vector<PointId> ids;
+  int dim() const { return lifted ? k - 2 : k - 1; }
+};
+
+enum class Shape { random, duplicates, coplanar, cospherical, collinear, lifted_plane };
+
+LatticeCall gen_lattice_call(int k, bool lifted) {
+  LatticeCall c;
+  c.k = k;
+  c.lifted = lifted;
+  const int d = c.dim();
+  const std::int64_t bounds[] = {1, 3, 46, 1000, std::int64_t(1) << 20, std::int64_t(1) << 28, std::int64_t(1) << 40};
+  const std::int64_t R = bounds[*rc::gen::inRange(0, 7)];
+  const int e = *rc::gen::inRange(-60, 61);
+  const Shape shape = static_cast<Shape>(*rc::gen::inRange(0, 6));
+  auto coord = [&] { return *rc::gen::inRange<std::int64_t>(-R, R + 1); };
+  std::vector<std::int64_t> X(static_cast<size_t>(k * d));
+  std::vector<std::int64_t> W(static_cast<size_t>(k), 0);
+  for (auto& v : X) v = coord();
+  const int wmode = *rc::gen::inRange(0, 3);  // 0: zero weights, 1: integers, 2: |x|^2 + affine
+  const std::int64_t WR = R > (std::int64_t(1) << 20) ? R : R * R;
+  if (wmode == 1)
+    for (auto& v : W) v = *rc::gen::inRange<std::int64_t>(-WR, WR + 1);
+  switch (shape) {
+    case Shape::random: break;
+    case Shape::duplicates: {
+      const int n = *rc::gen::inRange(1, k);
+      for (int t = 0; t < n; ++t) {
+        const int a = *rc::gen::inRange(0, k), b = *rc::gen::inRange(0, k);
+        for (int j = 0; j < d; ++j) X[static_cast<size_t>(a * d + j)] = X[static_cast<size_t>(b * d + j)];
+        W[static_cast<size_t>(a)] = W[static_cast<size_t>(b)];
+      }
+      break;
+    }
+    case Shape::coplanar: {
+      // last coordinate = Σ c_j x_j + c0 with small integer c (a hyperplane)
+      if (d < 2) break;
+      std::vector<std::int64_t> cf(static_cast<size_t>(d));
+      for (auto& v : cf) v = *rc::gen::inRange<std::int64_t>(-2, 3);
+      for (int i = 0; i < k; ++i) {
+        std::int64_t s = cf[static_cast<size_t>(d - 1)];
+        for (int j = 0; j + 1 < d; ++j) s += cf[static_cast<size_t>(j)] * X[static_cast<size_t>(i * d + j)];
+        X[static_cast<size_t>(i * d + d - 1)] = s;
+      }
+      break;
+    }
+    case Shape::cospherical: {
+      // lattice points of x^2 + y^2 [+ z^2] = r2 (predicate_inputs' spheres), equal weights
+      if (d < 2 || d > 3) break;
+      const auto& pts = lattice_sphere(d, d == 2 ? 25 : 9);
+      const std::int64_t m = R < 5 ? 1 : R / 5;
+      for (int i = 0; i < k; ++i) {
+        const auto& q = pts[static_cast<size_t>(*rc::gen::inRange<size_t>(0, pts.size()))];
+        for (int j = 0; j < d; ++j) X[static_cast<size_t>(i * d + j)] = m * q[static_cast<size_t>(j)];
+        W[static_cast<size_t>(i)] = W[0];
+      }
+      break;
+    }
+    case Shape::collinear: {
+      std::vector<std::int64_t> o(static_cast<size_t>(d)), v(static_cast<size_t>(d));
+      for (int j = 0; j < d; ++j) {
+        o[static_cast<size_t>(j)] = coord() / 2;
+        v[static_cast<size_t>(j)] = *rc::gen::inRange<std::int64_t>(-3, 4);
+      }
+      for (int i = 0; i < k; ++i) {
+        const std::int64_t t = *rc::gen::inRange<std::int64_t>(-4, 5);
+        for (int j = 0; j < d; ++j)
+          X[static_cast<size_t>(i * d + j)] = o[static_cast<size_t>(j)] + t * v[static_cast<size_t>(j)];
+      }
+      break;
+    }
+    case Shape::lifted_plane: break;  // wmode 2 below does it
+  }
+  if (wmode == 2 || shape == Shape::lifted_plane) {
+    // w = |x|^2 - (a.x + b): the lifted points |x|^2 - w = a.x + b on a hyperplane
+    const std::int64_t a = *rc::gen::inRange<std::int64_t>(-3, 4), b = *rc::gen::inRange<std::int64_t>(-5, 6);
+    for (int i = 0; i < k; ++i) {
+      std::int64_t s = -b;
+      for (int j = 0; j < d; ++j) {
+        const std::int64_t xv = X[static_cast<size_t>(i * d + j)];
+        s += xv * xv - a * xv;
+      }
+      W[static_cast<size_t>(i)] = s;
+    }
+  }
+  // weights on the grid 2^(2e), or a finer one 2^(2e - t)
+  const int t = *rc::gen::inRange(0, 4) == 0 ? *rc::gen::inRange(1, 8) : 0;
+  c.x.resize(X.size());
+  for (size_t i = 0; i < X.size(); ++i) c.x[i] = std::ldexp(static_cast<double>(X[i]), e);
+  c.w.resize(static_cast<size_t>(k));
+  for (int i = 0; i < k; ++i) {
+    std::int64_t wi = W[static_cast<size_t>(i)];
+    if (t > 0) wi = wi * (std::int64_t(1) << t) + *rc::gen::inRange<std::int64_t>(-1, 2);
+    c.w[static_cast<size_t>(i)] = std::ldexp(static_cast<double>(wi), 2 * e - t);
+  }
+  c.ids = gen_distinct_ids(k);
+  return c;
+}
+
+struct Tally {
+  long calls = 0, accepted = 0, wide = 0, zero_det = 0, minors = 0;
+};
+
+template <int K>
+void check_call(const LatticeCall& c, Tally& t) {
+  ++t.calls;
+  const int d = c.dim();
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = c.x.data() + i * d;
+  const double* w = c.lifted ? c.w.data() : nullptr;
+  const PointId* ids = c.ids.data();
+
+  // the expansion path: rows sorted by id, det_translated, sos_expansions
+  int order[K];
+  const int parity = pred::sort_rows_by_id(K, ids, order);
+  RC_ASSERT(parity != 0);
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w ? w[order[i]] : 0.0;
+  }
+  const double* swp = w ? sw : nullptr;
+  const int det_x = xp::det_translated<xp::Dbl, K>(sp, swp);
+  const int sos_x = det_x != 0 ? parity * det_x : parity * xp::sos_expansions<xp::Dbl, K>(sp, swp);
+  const int sos_g = pred::stage::gmp_sos(K, ids, p, w);
+  RC_LOG() << "k " << K << (w ? " lifted" : " plain") << ": det " << det_x << ", sos expansions " << sos_x
+           << ", gmp " << sos_g << "\n";
+  RC_ASSERT(sos_x == sos_g);
+  t.zero_det += det_x == 0;
+
+  xp::IntLambda<K> L;
+  if (xp::int_lambda<K>(p, w, L)) {
+    ++t.accepted;
+    t.wide += L.wide;
+    // (a) minors: the full one and random subsets, against the expansion Λ
+    xp::RawLambda<xp::Dbl, K> E;
+    xp::build_lambda<xp::Dbl, K>(p, w, E);
+    constexpr unsigned kAll = (1u << K) - 1u;
+    for (int rep = 0; rep < 6; ++rep) {
+      unsigned rows = kAll, cols = kAll;
+      if (rep > 0) {
+        const int r = *rc::gen::inRange(1, K + 1);
+        const std::vector<int> pr = gen_permutation(K), pc = gen_permutation(K);
+        rows = cols = 0;
+        for (int i = 0; i < r; ++i) {
+          rows |= 1u << pr[static_cast<size_t>(i)];
+          cols |= 1u << pc[static_cast<size_t>(i)];
+        }
+      }
+      int si = 0;
+#if defined(FLIPFLOP_INT128)
+      si = L.wide ? xp::int_minor_sign<xp::int128_t, K>(L, rows, cols) : xp::int_minor_sign<long long, K>(L, rows, cols);
+#else
+      si = xp::int_minor_sign<long long, K>(L, rows, cols);
+#endif
+      const int se = xp::MinorLaplace<xp::Dbl, K>::sign(E, rows, cols);
+      RC_LOG() << "minor rows " << rows << " cols " << cols << ": int " << si << ", expansions " << se << "\n";
+      RC_ASSERT(si == se);
+      ++t.minors;
+    }
+    // (b) the exact and the SoS sign on the integer Λ, rows sorted
+    RC_ASSERT(xp::int_lattice_sign<K>(L, false) == parity * det_x);
+    xp::IntLambda<K> S;
+    RC_ASSERT(xp::int_lambda<K>(sp, swp, S));
+    RC_ASSERT(parity * xp::int_lattice_sign<K>(S, true) == sos_g);
+    RC_ASSERT(pred::lambda_int_sorted<K>(ids, L) == sos_g);
+  }
+  // (c) the whole path after the filters, both instantiations, and the exact stage
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids, p, w)) == sos_g);
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(ids, p, w)) == sos_g);
+  RC_ASSERT(parity * xp::lambda_exact<K>(sp, swp, true) == sos_g);
+  RC_ASSERT(pred::lambda_exact_sorted<K>(ids, p, w, true, true) == sos_g);
+}
+
+template <int K>
+void lattice_property(bool lifted) {
+  Tally t;
+  const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
+  rc::prop(name, [&] {
+    const LatticeCall c = gen_lattice_call(K, lifted);
+    check_call<K>(c, t);
+  });
+  if (t.calls == 0) return;  // Catch ran another section this time
+  std::printf("int lattice %-14s calls %6ld accepted %6ld (__int128 %5ld) det 0 %6ld minors %6ld\n",
+              name.c_str(), t.calls, t.accepted, t.wide, t.zero_det, t.minors);
+  CHECK(t.accepted * 2 > t.calls);
+  CHECK(t.zero_det * 4 > t.calls);
+  CHECK(t.wide > 0);
+}
+
+}  // namespace
+
+TEST_CASE("int lattice: minors, exact and SoS signs equal the expansion path and GMP",
+          "[predicates][stages][int_lattice]") {
+  lattice_property<3>(false);
+  lattice_property<4>(false);
+  lattice_property<5>(false);
+  lattice_property<6>(false);
+  lattice_property<7>(false);
+  lattice_property<3>(true);
+  lattice_property<4>(true);
+  lattice_property<5>(true);
+  lattice_property<6>(true);
+  lattice_property<7>(true);
+}
+
+// ---- (e) sos_lazy on millimetre (non-dyadic) degenerate calls ----
+namespace {
+
+double gen_mm(int bound) { return *rc::gen::inRange(-bound, bound + 1) / 1000.0; }
+
+template <int K>
+void planes_call(bool lifted, long& calls, long& zero) {
+  const int d = lifted ? K - 2 : K - 1;
+  std::vector<double> x(static_cast<size_t>(K * d)), w(static_cast<size_t>(K), 0.0);
+  const int bound = *rc::gen::element(50, 5000, 50000);
+  for (double& v : x) v = gen_mm(bound);
+  const int shape = *rc::gen::inRange(0, 4);
+  if (shape == 0) {  // a floor or a wall: coordinate j = c for every point
+    const int j = *rc::gen::inRange(0, d);
+    const double c = *rc::gen::arbitrary<bool>() ? 0.0 : gen_mm(bound);
+    for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + j)] = c;
+  } else if (shape == 1 && d >= 2) {  // the plane x_last = x_0 (exact)
+    for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + d - 1)] = x[static_cast<size_t>(i * d)];
+  } else if (shape == 2) {  // duplicated points
+    const int a = *rc::gen::inRange(0, K), b = *rc::gen::inRange(0, K);
+    for (int j = 0; j < d; ++j) x[static_cast<size_t>(a * d + j)] = x[static_cast<size_t>(b * d + j)];
+  }
+  if (*rc::gen::arbitrary<bool>())
+    for (double& v : w) v = gen_mm(bound);
+  if (shape == 2 && lifted) w[0] = w[1];  // sometimes the duplicate's weight too
+  const std::vector<PointId> ids = gen_distinct_ids(K);
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = x.data() + i * d;
+  const double* wp = lifted ? w.data() : nullptr;
+  int order[K];
+  const int parity = pred::sort_rows_by_id(K, ids.data(), order);
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w[static_cast<size_t>(order[i])];
+  }
+  const double* swp = lifted ? sw : nullptr;
+  const int g = pred::stage::gmp_sos(K, ids.data(), p, wp);
+  ++calls;
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(ids.data(), p, wp)) == g);
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids.data(), p, wp)) == g);
+  if (xp::det_translated<xp::Dbl, K>(sp, swp) != 0) return;
+  ++zero;
+  xp::Range range;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < d; ++j) range.add(sp[i][j]);
+    if (lifted) range.add(sw[i]);
+  }
+  const int lazy = xp::sos_lazy<K>(sp, swp, range);
+  const int expansions = xp::sos_expansions<xp::Dbl, K>(sp, swp);
+  RC_LOG() << "k " << K << (lifted ? " lifted" : " plain") << " shape " << shape << ": sos_lazy " << lazy
+           << ", sos_expansions " << expansions << ", gmp " << g << " (parity " << parity << ")\n";
+  RC_ASSERT(lazy == expansions);
+  RC_ASSERT(parity * lazy == g);
+}
+
+template <int K>
+void planes_property(bool lifted) {
+  long calls = 0, zero = 0;
+  const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
+  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero); });
+  if (calls == 0) return;
+  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld\n", name.c_str(), calls, zero);
+  CHECK(zero * 2 > calls);
+}
+
+}  // namespace
+
+TEST_CASE("sos_lazy: millimetre floors, walls, planes and duplicates equal sos_expansions and GMP",
+          "[predicates][stages][int_lattice]") {
+  planes_property<3>(false);
+  planes_property<4>(false);
+  planes_property<5>(false);
+  planes_property<4>(true);
+  planes_property<5>(true);
+  planes_property<6>(true);
+}
+
+// Values the path must refuse: a decimal fraction (long mantissa), a spread
+// beyond the int64 entry bounds, non-finite values; and a value it must take
+// (the 3D Delaunay grid's cell).
+TEST_CASE("int lattice: acceptance", "[predicates][stages][int_lattice]") {
+  const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1}, e[3] = {1, 1, 1};
+  const double* p[5] = {a, b, c, d, e};
+  const double w0[5] = {0, 0, 0, 0, 0};
+  xp::IntLambda<5> L;
+  REQUIRE(xp::int_lambda<5>(p, w0, L));
+  CHECK(!L.wide);
+  CHECK(xp::int_lattice_sign<5>(L, false) == 0);  // the cube's vertices are cospherical
+  const double f[3] = {8.732, 0, 0};
+  const double* q[5] = {a, b, c, d, f};
+  CHECK(!xp::int_lambda<5>(q, w0, L));
+  const double g[3] = {std::ldexp(1.0, 40), 0, 0};
+  const double* r[5] = {a, b, c, d, g};
+  CHECK(!xp::int_lambda<5>(r, w0, L));  // 2^40: lifted entries beyond int64
+  xp::IntLambda<4> L4;
+  const double* r4[4] = {a, b, c, g};
+  CHECK(xp::int_lambda<4>(r4, nullptr, L4));  // plain: 2^40 is fine
+  const double h[3] = {HUGE_VAL, 0, 0};
+  const double* s[4] = {a, b, c, h};
+  CHECK(!xp::int_lambda<4>(s, nullptr, L4));
+  const double wsub[5] = {0, 0, 0, 0, 4.9e-324};
+  CHECK(!xp::int_lambda<5>(p, wsub, L));
+}
