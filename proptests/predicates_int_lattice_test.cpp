@@ -140,13 +140,17 @@ LatticeCall gen_lattice_call(int k, bool lifted) {
   if (wmode == 2 || shape == Shape::lifted_plane) {
     // w = |x|^2 - (a.x + b): the lifted points |x|^2 - w = a.x + b on a hyperplane
     const std::int64_t a = *rc::gen::inRange<std::int64_t>(-3, 4), b = *rc::gen::inRange<std::int64_t>(-5, 6);
+    // in 128 bits (coordinates reach 2^40: their squares overflow int64);
+    // a value beyond int64 leaves that weight 0 (still a valid call, only
+    // off the hyperplane)
     for (int i = 0; i < k; ++i) {
-      std::int64_t s = -b;
+      __int128 s = -b;
       for (int j = 0; j < d; ++j) {
-        const std::int64_t xv = X[static_cast<size_t>(i * d + j)];
+        const __int128 xv = X[static_cast<size_t>(i * d + j)];
         s += xv * xv - a * xv;
       }
-      W[static_cast<size_t>(i)] = s;
+      const __int128 lim = static_cast<__int128>(1) << 62;
+      W[static_cast<size_t>(i)] = s > -lim && s < lim ? static_cast<std::int64_t>(s) : 0;
     }
   }
   // weights on the grid 2^(2e), or a finer one 2^(2e - t)
@@ -156,7 +160,9 @@ LatticeCall gen_lattice_call(int k, bool lifted) {
   c.w.resize(static_cast<size_t>(k));
   for (int i = 0; i < k; ++i) {
     std::int64_t wi = W[static_cast<size_t>(i)];
-    if (t > 0) wi = wi * (std::int64_t(1) << t) + *rc::gen::inRange<std::int64_t>(-1, 2);
+    // (only where the finer value fits in int64)
+    if (t > 0 && wi > -(std::int64_t(1) << 54) && wi < (std::int64_t(1) << 54))
+      wi = wi * (std::int64_t(1) << t) + *rc::gen::inRange<std::int64_t>(-1, 2);
     c.w[static_cast<size_t>(i)] = std::ldexp(static_cast<double>(wi), 2 * e - t);
   }
   c.ids = gen_distinct_ids(k);
