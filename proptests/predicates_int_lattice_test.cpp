@@ -45,6 +45,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <random>
 #include <vector>
 
 #include "predicates/exact_expansion.hpp"
@@ -245,11 +246,36 @@ void check_call(const LatticeCall& c, Tally& t) {
   RC_ASSERT(pred::lambda_exact_sorted<K>(ids, p, w, true, true) == sos_g);
 }
 
+// A call that needs __int128 for sure (fixed seed): integer coordinates of
+// up to 2^b, weights 0, b the largest for which int_lambda's bound (log2 k!,
+// the 1-column and each column's bit length; the lifted column about 2b + 3
+// bits) stays within 127 bits with a margin — above 63 for every k. RapidCheck's
+// ranges grow with its size parameter, so its own calls reach the largest
+// bounds rarely (k = 3 plain: in 0-6 of 100 calls), and the tally's `wide`
+// check would otherwise depend on the seed.
+LatticeCall wide_call(int k, bool lifted) {
+  LatticeCall c;
+  c.k = k;
+  c.lifted = lifted;
+  std::mt19937_64 g(static_cast<std::uint64_t>(k) * 2 + lifted);
+  constexpr int kLogFact[8] = {0, 0, 1, 3, 5, 7, 10, 13};
+  int b = lifted ? 27 : 52;
+  auto estimate = [&](int bb) { return kLogFact[k] + 1 + c.dim() * (bb + 1) + (lifted ? 2 * bb + 5 : 0); };
+  while (estimate(b) > 124) --b;
+  const std::int64_t R = std::int64_t(1) << b;
+  std::uniform_int_distribution<std::int64_t> u(-R, R);
+  for (int i = 0; i < k * c.dim(); ++i) c.x.push_back(static_cast<double>(u(g)));
+  c.w.assign(static_cast<size_t>(k), 0.0);
+  for (int i = 0; i < k; ++i) c.ids.push_back(static_cast<PointId>(1000 - 7 * i));
+  return c;
+}
+
 template <int K>
 void lattice_property(bool lifted) {
   Tally t;
   const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
   rc::prop(name, [&] {
+    if (t.calls == 0) check_call<K>(wide_call(K, lifted), t);
     const LatticeCall c = gen_lattice_call(K, lifted);
     check_call<K>(c, t);
   });
