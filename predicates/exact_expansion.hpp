@@ -129,6 +129,25 @@ FF_HD inline int popcount32(unsigned x) {
 #endif
 }
 
+// Lowest set bit 2^low and bound |v| < 2^hi of a finite nonzero double
+// (Range::add, int_lambda); false for inf and NaN.
+FF_HD FF_FORCEINLINE bool bit_span(double v, int& low, int& hi) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased == 0x7ff) return false;
+  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+  if (biased == 0) {  // subnormal: mant 2^-1074
+    hi = 64 - clz64(mant) - 1074;
+    low = ctz64(mant) - 1074;
+  } else {
+    mant |= std::uint64_t{1} << 52;
+    hi = biased - 1022;
+    low = biased - 1075 + ctz64(mant);
+  }
+  return true;
+}
+
 // Exponent range of the values of one call (see the window above).
 struct Range {
   int ehi = -100000;  // |v| < 2^ehi for every v
@@ -136,22 +155,10 @@ struct Range {
   bool finite = true;
   FF_HD void add(double v) {
     if (v == 0.0) return;
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &v, sizeof bits);
-    const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-    if (biased == 0x7ff) {  // inf or NaN: no exact sign
+    int e = 0, low = 0;
+    if (!bit_span(v, low, e)) {  // inf or NaN: no exact sign
       finite = false;
       return;
-    }
-    std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
-    int e = 0, low = 0;
-    if (biased == 0) {  // subnormal: mant 2^-1074
-      e = 64 - clz64(mant) - 1074;
-      low = ctz64(mant) - 1074;
-    } else {
-      mant |= std::uint64_t{1} << 52;
-      e = biased - 1022;
-      low = biased - 1075 + ctz64(mant);
     }
     if (e > ehi) ehi = e;
     if (low < llo) llo = low;
@@ -1305,33 +1312,6 @@ struct IntLambda {
   bool wide = false;  // __int128 needed (lf(K) + B > 63)
 };
 
-// Lowest set bit 2^low and bound |v| < 2^hi of a finite nonzero double
-// (as Range::add); false for inf and NaN.
-FF_HD FF_FORCEINLINE bool bit_span(double v, int& low, int& hi) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &v, sizeof bits);
-  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  if (biased == 0x7ff) return false;
-  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
-  if (biased == 0) {  // subnormal: mant 2^-1074
-    hi = 64 - clz64(mant) - 1074;
-    low = ctz64(mant) - 1074;
-  } else {
-    mant |= std::uint64_t{1} << 52;
-    hi = biased - 1022;
-    low = biased - 1075 + ctz64(mant);
-  }
-  return true;
-}
-
-// 2^e as a double, -1022 <= e <= 1023.
-FF_HD FF_FORCEINLINE double pow2_normal(int e) {
-  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
-  double v = 0.0;
-  std::memcpy(&v, &bits, sizeof v);
-  return v;
-}
-
 FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
 
 // Λ of the call as integers (see above); false when a value is not finite or
@@ -1358,7 +1338,7 @@ FF_HD inline bool int_lambda(const double* const* p, const double* w, IntLambda<
     if (hc < gc) gc = hc = 0;  // every coordinate is 0
     const int mc = hc - gc;
     if (mc > max_mc || gc < -1023 || gc > 1022) return false;
-    const double cscale = pow2_normal(-gc);  // v 2^-gc: an integer below 2^mc, exactly
+    const double cscale = XDbl::pow2(-gc);  // v 2^-gc: an integer below 2^mc, exactly
     for (int i = 0; i < K; ++i)
       for (int j = 0; j < ncoord; ++j) L.a[i][j] = static_cast<long long>(p[i][j] * cscale);
     if (w) {
@@ -1375,7 +1355,7 @@ FF_HD inline bool int_lambda(const double* const* p, const double* w, IntLambda<
       const int s = 2 * gc - gl;
       if (2 * mc + 3 + s > 61 || gl < -1023 || gl > 1022) return false;
       if (hw > -100000 && hw - gl > 61) return false;
-      const double wscale = pow2_normal(-gl);
+      const double wscale = XDbl::pow2(-gl);
       for (int i = 0; i < K; ++i) {
         long long sq = 0;
         for (int j = 0; j < ncoord; ++j) sq += L.a[i][j] * L.a[i][j];
