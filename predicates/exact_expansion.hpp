@@ -1314,73 +1314,118 @@ struct IntLambda {
 
 FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
 
+// int_lambda's first half: the coordinates' exponent span (gc, hc). Unlifted,
+// it also knows the bound B exactly (`bits`, see below), hence whether the
+// call needs __int128 (`wide`) before any entry is built.
+struct IntScan {
+  int gc = 100000, hc = -100000;
+  int bits = 0;      // unlifted: lf(K) + 1 + B, exact; lifted: unknown (0)
+  bool wide = false; // unlifted: bits > 63
+};
+
+#if defined(FLIPFLOP_INT128)
+inline constexpr int kIntLambdaMaxBits = 127;
+#else
+inline constexpr int kIntLambdaMaxBits = 63;
+#endif
+inline constexpr int kIntLambdaLogFact[8] = {0, 0, 1, 3, 5, 7, 10, 13};
+
+// False when a value is not finite or a bound fails. Random doubles fail
+// within the first row: lifted, a value whose own mantissa spans more than 29
+// bits; unlifted, once the columns' spans read so far exceed the bound — a
+// nonzero v with |v| < 2^hi has |v| >= 2^(hi-1) (normal or subnormal), so
+// column j's bound b_j below is exactly max_i hi_ij - gc, and gc only falls
+// as more values are read: the sum so far is a lower bound of the final B.
+template <int K>
+FF_HD inline bool int_lambda_scan(const double* const* p, const double* w, IntScan& S) {
+  const int ncoord = w ? K - 2 : K - 1;
+  const int max_mc = w ? 29 : 62;
+  int colhi[K > 2 ? K - 1 : 1];
+  for (int j = 0; j < ncoord; ++j) colhi[j] = -100000;
+  int gc = 100000, hc = -100000, lower = 0;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) {
+      const double v = p[i][j];
+      if (v == 0.0) continue;
+      int low = 0, hi = 0;
+      if (!bit_span(v, low, hi) || hi - low > max_mc) return false;
+      gc = low < gc ? low : gc;
+      hc = hi > hc ? hi : hc;
+      colhi[j] = hi > colhi[j] ? hi : colhi[j];
+    }
+    if (!w) {
+      lower = kIntLambdaLogFact[K] + 1;  // the 1-column
+      for (int j = 0; j < ncoord; ++j)
+        if (colhi[j] > -100000) lower += colhi[j] - gc;
+      if (lower > kIntLambdaMaxBits) return false;
+    }
+  }
+  if (hc < gc) gc = hc = 0;  // every coordinate is 0
+  if (hc - gc > max_mc || gc < -1023 || gc > 1022) return false;
+  S.gc = gc;
+  S.hc = hc;
+  S.bits = w ? 0 : lower;
+  S.wide = !w && lower > 63;
+  return true;
+}
+
+// int_lambda's second half: the entries, after int_lambda_scan(p, w, S).
+template <int K>
+FF_HD inline bool int_lambda_build(const double* const* p, const double* w, const IntScan& S, IntLambda<K>& L) {
+  const int ncoord = w ? K - 2 : K - 1;
+  const int gc = S.gc, mc = S.hc - S.gc;
+  const double cscale = XDbl::pow2(-gc);  // v 2^-gc: an integer below 2^mc, exactly
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < ncoord; ++j) L.a[i][j] = static_cast<long long>(p[i][j] * cscale);
+  for (int i = 0; i < K; ++i) L.a[i][K - 1] = 1;
+  if (!w) {  // B is known from the scan
+    L.wide = S.wide;
+    return true;
+  }
+  int gw = 100000, hw = -100000;
+  for (int i = 0; i < K; ++i) {
+    const double v = w[i];
+    if (v == 0.0) continue;
+    int low = 0, hi = 0;
+    if (!bit_span(v, low, hi)) return false;
+    gw = low < gw ? low : gw;
+    hw = hi > hw ? hi : hw;
+  }
+  const int gl = gw < 2 * gc ? gw : 2 * gc;
+  const int s = 2 * gc - gl;
+  if (2 * mc + 3 + s > 61 || gl < -1023 || gl > 1022) return false;
+  if (hw > -100000 && hw - gl > 61) return false;
+  const double wscale = XDbl::pow2(-gl);
+  for (int i = 0; i < K; ++i) {
+    long long sq = 0;
+    for (int j = 0; j < ncoord; ++j) sq += L.a[i][j] * L.a[i][j];
+    L.a[i][K - 2] = static_cast<long long>(static_cast<unsigned long long>(sq) << s) -
+                    static_cast<long long>(w[i] * wscale);
+  }
+  int bits = kIntLambdaLogFact[K] + 1;  // the 1-column
+  for (int j = 0; j < K - 1; ++j) {
+    unsigned long long any = 0;  // the OR of the magnitudes: the bit length of their maximum
+    for (int i = 0; i < K; ++i) {
+      const long long v = L.a[i][j];
+      any |= v < 0 ? 0ull - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
+    }
+    bits += bit_length(any);
+  }
+  if (bits > kIntLambdaMaxBits) return false;
+  L.wide = bits > 63;
+  return true;
+}
+
 // Λ of the call as integers (see above); false when a value is not finite or
-// a bound fails (the other stages decide). A value whose own mantissa spans
-// more than the bound (a decimal fraction, a random double) fails at once.
+// a bound fails (the other stages decide).
 template <int K>
 FF_HD inline bool int_lambda(const double* const* p, const double* w, IntLambda<K>& L) {
   if constexpr (K > 7) {
     (void)p, (void)w, (void)L;
     return false;
   } else {
-    const int ncoord = w ? K - 2 : K - 1;
-    const int max_mc = w ? 29 : 62;
-    int gc = 100000, hc = -100000;
-    for (int i = 0; i < K; ++i)
-      for (int j = 0; j < ncoord; ++j) {
-        const double v = p[i][j];
-        if (v == 0.0) continue;
-        int low = 0, hi = 0;
-        if (!bit_span(v, low, hi) || hi - low > max_mc) return false;
-        gc = low < gc ? low : gc;
-        hc = hi > hc ? hi : hc;
-      }
-    if (hc < gc) gc = hc = 0;  // every coordinate is 0
-    const int mc = hc - gc;
-    if (mc > max_mc || gc < -1023 || gc > 1022) return false;
-    const double cscale = XDbl::pow2(-gc);  // v 2^-gc: an integer below 2^mc, exactly
-    for (int i = 0; i < K; ++i)
-      for (int j = 0; j < ncoord; ++j) L.a[i][j] = static_cast<long long>(p[i][j] * cscale);
-    if (w) {
-      int gw = 100000, hw = -100000;
-      for (int i = 0; i < K; ++i) {
-        const double v = w[i];
-        if (v == 0.0) continue;
-        int low = 0, hi = 0;
-        if (!bit_span(v, low, hi)) return false;
-        gw = low < gw ? low : gw;
-        hw = hi > hw ? hi : hw;
-      }
-      const int gl = gw < 2 * gc ? gw : 2 * gc;
-      const int s = 2 * gc - gl;
-      if (2 * mc + 3 + s > 61 || gl < -1023 || gl > 1022) return false;
-      if (hw > -100000 && hw - gl > 61) return false;
-      const double wscale = XDbl::pow2(-gl);
-      for (int i = 0; i < K; ++i) {
-        long long sq = 0;
-        for (int j = 0; j < ncoord; ++j) sq += L.a[i][j] * L.a[i][j];
-        L.a[i][K - 2] = static_cast<long long>(static_cast<unsigned long long>(sq) << s) -
-                        static_cast<long long>(w[i] * wscale);
-      }
-    }
-    constexpr int kLogFact[8] = {0, 0, 1, 3, 5, 7, 10, 13};
-    int bits = kLogFact[K] + 1;  // the 1-column
-    for (int j = 0; j < K - 1; ++j) {
-      unsigned long long any = 0;  // the OR of the magnitudes: the bit length of their maximum
-      for (int i = 0; i < K; ++i) {
-        const long long v = L.a[i][j];
-        any |= v < 0 ? 0ull - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
-      }
-      bits += bit_length(any);
-    }
-    for (int i = 0; i < K; ++i) L.a[i][K - 1] = 1;
-#if defined(FLIPFLOP_INT128)
-    if (bits > 127) return false;
-#else
-    if (bits > 63) return false;
-#endif
-    L.wide = bits > 63;
-    return true;
+    IntScan S;
+    return int_lambda_scan<K>(p, w, S) && int_lambda_build<K>(p, w, S, L);
   }
 }
 

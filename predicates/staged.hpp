@@ -135,10 +135,25 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     // Integer lattices (small integers, dyadic grids: the exactly degenerate
     // inputs): det Λ and the perturbation's minors exactly in int64 /
     // __int128 (xp::int_lambda), cheaper than the filters below, which
-    // cannot decide a zero determinant. Other inputs fail its test at the
-    // first value whose mantissa is longer than the bound.
-    xp::IntLambda<K> L;
-    if (xp::int_lambda<K>(p, w, L)) return lambda_int_sorted<K>(ids, L);
+    // cannot decide a zero determinant. Other inputs fail its test within
+    // the first row (random doubles: full mantissas). A call that needs
+    // __int128 (full-mantissa doubles that happen to fit, e.g. orient2d of
+    // points in [0, 1)) is near-degenerate rather than on a lattice more
+    // often than not: the double-double filter, cheaper than 128-bit
+    // minors, is tried first there and the integer matrix kept for what it
+    // leaves.
+    xp::IntScan S;
+    if (xp::int_lambda_scan<K>(p, w, S)) {
+      if constexpr (K >= 3 && K <= 5) {
+        if (S.wide) {
+          const int s = dd_filter_sign<K, Fma>(p, w, window);
+          if (s == 1 || s == -1) return s;
+        }
+      }
+      xp::IntLambda<K> L;
+      if (xp::int_lambda_build<K>(p, w, S, L))
+        return lambda_int_sorted<K>(ids, L);
+    }
   }
   // A constant coordinate column (points on a plane x_j = c): det Λ = 0
   // exactly, which no filter decides; the exact stage goes to the
