@@ -1328,7 +1328,11 @@ inline constexpr int kIntLambdaMaxBits = 127;
 #else
 inline constexpr int kIntLambdaMaxBits = 63;
 #endif
-inline constexpr int kIntLambdaLogFact[8] = {0, 0, 1, 3, 5, 7, 10, 13};
+// ceil(log2 K!) for K <= 7 (a function: a namespace-scope array is not
+// readable in device code)
+FF_HD constexpr int int_lambda_log_fact(int k) {
+  return k <= 1 ? 0 : k == 2 ? 1 : k == 3 ? 3 : k == 4 ? 5 : k == 5 ? 7 : k == 6 ? 10 : 13;
+}
 
 // False when a value is not finite or a bound fails. Random doubles fail
 // within the first row: lifted, a value whose own mantissa spans more than 29
@@ -1354,7 +1358,7 @@ FF_HD inline bool int_lambda_scan(const double* const* p, const double* w, IntSc
       colhi[j] = hi > colhi[j] ? hi : colhi[j];
     }
     if (!w) {
-      lower = kIntLambdaLogFact[K] + 1;  // the 1-column
+      lower = int_lambda_log_fact(K) + 1;  // the 1-column
       for (int j = 0; j < ncoord; ++j)
         if (colhi[j] > -100000) lower += colhi[j] - gc;
       if (lower > kIntLambdaMaxBits) return false;
@@ -1402,7 +1406,7 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
     L.a[i][K - 2] = static_cast<long long>(static_cast<unsigned long long>(sq) << s) -
                     static_cast<long long>(w[i] * wscale);
   }
-  int bits = kIntLambdaLogFact[K] + 1;  // the 1-column
+  int bits = int_lambda_log_fact(K) + 1;  // the 1-column
   for (int j = 0; j < K - 1; ++j) {
     unsigned long long any = 0;  // the OR of the magnitudes: the bit length of their maximum
     for (int i = 0; i < K; ++i) {
