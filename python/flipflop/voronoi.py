@@ -87,7 +87,13 @@ class Voronoi(_QhullUser):
     lies on that edge. A ridge is unbounded iff some exact hull facet holds i
     and j; its vertices are the centres of the cells holding both.
 
-    furthest_site=True is not available (ValueError). qhull_options accepts
+    furthest_site=True: the furthest-site Voronoi diagram, whose cell of
+    point p is where p is the furthest point (no weights): the dual of the
+    furthest-site Delaunay triangulation (flipflop.Delaunay(furthest_site=
+    True), the upper hull of the lifted points), by the same rules with the
+    upper hull in place of the lower one. Only the vertices of the convex hull
+    have cells (every one unbounded: its region holds -1); the other points'
+    regions are empty, as Qhull's. qhull_options accepts
     Qhull's 'Qbb Qc Qz Qx QJ Qt Q12', which change nothing here; any other
     option raises ValueError.
 
@@ -102,15 +108,17 @@ class Voronoi(_QhullUser):
 
     def __init__(self, points, furthest_site: bool = False, incremental: bool = False, qhull_options=None, *,
                  weights=None, threads: int = 0):
-        if furthest_site:
-            raise ValueError("Voronoi: furthest_site=True is not available yet in flipflop (the furthest-site "
-                             "diagram needs the upper hull of the lifted points); use scipy.spatial.Voronoi")
+        if not isinstance(furthest_site, (bool, np.bool_)) and not (
+                isinstance(furthest_site, (int, np.integer)) and furthest_site in (0, 1)):
+            raise ValueError("Voronoi: furthest_site must be a bool (weights are keyword-only: weights=...)")
+        if furthest_site and weights is not None:
+            raise ValueError("Voronoi: furthest_site=True takes no weights")
         # scipy's default "Qbb Qc Qz"; QGn / QG-n select facets and
         # simplices, which a diagram has not
         if _qhull_options(qhull_options, "Voronoi", "Qbb Qc Qz").good is not None:
             raise QhullOptionError("Voronoi: qhull options QGn and QG-n apply to ConvexHull and Delaunay")
         self._threads = _threads(threads, "Voronoi")
-        self.furthest_site = False
+        self.furthest_site = bool(furthest_site)
         self._incremental = bool(incremental)
         self._closed = False
         a = _points(points, tuple(_BACKENDS), "Voronoi")
@@ -121,7 +129,9 @@ class Voronoi(_QhullUser):
         if n < d + 1:
             raise ValueError(f"Voronoi: {n} points, at least {d + 1} needed in {d}D")
         try:
-            simplices, _redundant = _flipflop.triangulate(a, w, _BACKENDS[d], False, self._threads)
+            # furthest site: the 'cpu' backend in every d (Delaunay's choice)
+            backend = "cpu" if self.furthest_site else _BACKENDS[d]
+            simplices, _redundant = _flipflop.triangulate(a, w, backend, False, self._threads, self.furthest_site)
             (vertices, simplex_vertex, ridge_points, r_off, r_val, g_off,
              g_val) = _flipflop.voronoi(a, w, simplices, self._threads)
         except ValueError as e:

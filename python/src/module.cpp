@@ -1028,7 +1028,11 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
 //   the zero-volume simplices lying in that hyperplane next to them, which
 //   hold the points of the hull facet that the perturbation moved inwards).
 // * Regions and ridges (5 and 6 in voronoi_core): Q is the lower hull of the
-//   lifted points with its vertical rays. Point i has a cell with interior
+//   lifted points with its vertical rays (the furthest-site diagram passes
+//   the furthest-site triangulation, the upper hull's: everything below
+//   holds with "upper" for "lower" — the arguments are combinatorial on the
+//   cells, the hull facets and the exact centres, none of which tells the
+//   two apart). Point i has a cell with interior
 //   iff P_i is a vertex of Q (no third point lies in every cell and hull
 //   facet around it); (i, j) is a ridge iff P_i, P_j are vertices of Q, some
 //   cell holds both, and no third VERTEX of Q lies in every cell and hull

@@ -60,8 +60,8 @@ def match_vertices(ours, theirs):
     return {i: int(j) for i, j in enumerate(idx)}, float(rel.max()) if len(rel) else 0.0
 
 
-def compare_with_scipy(p):
-    ours, qh = Voronoi(p), sp.Voronoi(p)
+def compare_with_scipy(p, furthest=False):
+    ours, qh = Voronoi(p, furthest_site=furthest), sp.Voronoi(p, furthest_site=furthest)
     d = p.shape[1]
     assert len(ours.vertices) == len(qh.vertices)
     m, dist = match_vertices(ours, qh)
@@ -72,9 +72,11 @@ def compare_with_scipy(p):
     # Qhull reports a ridge only when it has at least d vertices (the vertex at
     # infinity counted once): the exact diagram's unbounded ridges with one
     # finite vertex in 3D (V_i ∩ V_j = a vertex plus the cone of two hull
-    # normals: 2-dimensional) are missing there. Everything else is equal.
+    # normals: 2-dimensional; likewise in 4D) are missing there (the linear
+    # programs of test_ridges_against_linear_programs confirm them).
+    # Everything else is equal.
     short = {e for e, v in mine.items() if len(v) < d}
-    assert all(-1 in mine[e] and len(mine[e]) == 2 for e in short)
+    assert all(-1 in mine[e] and len(mine[e]) >= 2 for e in short)
     if d == 2:
         assert not short
     assert set(mine) - short == set(theirs)
@@ -369,14 +371,16 @@ def area(poly):
                for k in range(len(poly))) / 2 if len(poly) >= 3 else Fraction(0)
 
 
-def power_cell(i, others, P, W, box):
-    """box ∩ {x : |x - p_i|^2 - w_i <= |x - p_j|^2 - w_j for j in others}."""
+def power_cell(i, others, P, W, box, furthest=False):
+    """box ∩ {x : |x - p_i|^2 - w_i <= |x - p_j|^2 - w_j for j in others}
+    (furthest: >=, the furthest-site cell)."""
     poly = box
+    sg = -1 if furthest else 1
     for j in others:
         a = 2 * (P[j][0] - P[i][0])
         b = 2 * (P[j][1] - P[i][1])
         c = P[j][0] ** 2 + P[j][1] ** 2 - W[j] - P[i][0] ** 2 - P[i][1] ** 2 + W[i]
-        poly = clip(poly, a, b, c)
+        poly = clip(poly, sg * a, sg * b, sg * c)
         if not poly:
             break
     return poly
@@ -463,14 +467,14 @@ def centres_box(P, W, d):
     return Fraction(math.ceil(B)) + 1
 
 
-def check_power_diagram_2d(p, w):
+def check_power_diagram_2d(p, w, furthest=False):
     """Everything of a 2D power diagram against half-plane intersection in
     Fractions: which points have a cell of positive area, their cells'
     vertices and whether unbounded, which pairs share an edge of positive
     length (all of them, none else) and that edge's vertices. Exact duplicates
     (equal point and weight): one of them, chosen by the perturbation, has the
-    cell, the others nothing."""
-    vor = Voronoi(p, weights=w)
+    cell, the others nothing. furthest: the furthest-site diagram (w all 0)."""
+    vor = Voronoi(p, furthest_site=True) if furthest else Voronoi(p, weights=w)
     n = len(p)
     P = [(Fraction(float(x)), Fraction(float(y))) for x, y in p]
     W = [Fraction(float(x)) for x in w]
@@ -486,7 +490,7 @@ def check_power_diagram_2d(p, w):
         assert len(keep) <= 1, cls
         gone |= set(cls) - set(keep[:1])
     live = [i for i in range(n) if i not in gone]
-    cell = {i: power_cell(i, [j for j in live if j != i], P, W, box) for i in live}
+    cell = {i: power_cell(i, [j for j in live if j != i], P, W, box, furthest) for i in live}
     full = {i for i in live if area(cell[i]) > 0}
 
     def vertex_ids(poly):
@@ -709,6 +713,98 @@ def test_3d_weight_tie_cases_exercise_the_ties():
 
 # ---- API: scipy's behaviour on bad input, incremental mode, plotting, flipflop.spatial ----------
 
+# ---- the furthest-site diagram ---------------------------------------------------------------
+
+@pytest.mark.parametrize("d,n,seed", [(2, 60, 1), (2, 400, 2), (3, 80, 3), (3, 300, 4), (4, 40, 5)])
+def test_furthest_site_equal_to_scipy_on_random_input(d, n, seed):
+    p = np.random.default_rng(seed).random((n, d))
+    ours = compare_with_scipy(p, furthest=True)
+    assert ours.furthest_site is True
+    # only the hull's vertices have cells, each unbounded (scipy's hull: Qhull)
+    hull = set(sp.ConvexHull(p).vertices.tolist())
+    for i in range(n):
+        r = ours.regions[ours.point_region[i]]
+        assert (len(r) > 0) == (i in hull), i
+        assert not r or -1 in r, i
+
+
+@pytest.mark.parametrize("case,seed", [("grid", 0)] + [("cocircular", s) for s in range(3)] +
+                         [("small-integers", s) for s in range(25)])
+def test_oracle_furthest_site_by_half_planes(case, seed):
+    # degenerate input against the exact furthest-site cells (half-planes in
+    # Fractions): grids (four cocircular corners, points on hull edges),
+    # cocircular sets with points inside, duplicates
+    rng = np.random.default_rng(300 + seed)
+    if case == "grid":
+        p = np.array([[i, j] for i in range(5) for j in range(5)], float)
+    elif case == "cocircular":
+        pts = sorted({(x, y) for x in range(-5, 6) for y in range(-5, 6) if x * x + y * y == 25})
+        extra = rng.integers(-3, 4, size=(4, 2)).tolist()
+        p = np.array(pts + [tuple(e) for e in extra] + [pts[int(rng.integers(len(pts)))]], float)
+    else:
+        while True:
+            n = int(rng.integers(6, 25))
+            p = rng.integers(0, 6, size=(n, 2)).astype(float)
+            if np.linalg.matrix_rank(p[1:] - p[0]) == 2:
+                break
+    vor, full = check_power_diagram_2d(p, np.zeros(len(p)), furthest=True)
+    if case == "grid":  # the four corners, one vertex at the centre
+        assert full == {0, 4, 20, 24} and vor.vertices.tolist() == [[2.0, 2.0]]
+
+
+@pytest.mark.parametrize("d,n,furthest,seed", [(3, 30, True, 1), (4, 25, True, 2), (5, 18, True, 3),
+                                               (4, 25, False, 4), (5, 18, False, 5)])
+def test_ridges_against_linear_programs(d, n, furthest, seed):
+    # an oracle that shares nothing with the triangulation: (i, j) is a ridge
+    # iff some x on the bisector of p_i, p_j has every other point strictly
+    # nearer (furthest site: strictly further) than p_i — a linear program
+    # (scipy's HiGHS) maximising the margin t inside a box; on random input
+    # the margin is either clearly positive or 0
+    from scipy.optimize import linprog
+    p = np.random.default_rng(600 + seed).random((n, d))
+    vor = Voronoi(p, furthest_site=furthest)
+    got = {tuple(sorted(map(int, e))) for e in vor.ridge_points.tolist()}
+    sg = 1 if furthest else -1
+    H = (p * p).sum(axis=1)
+    for i, j in itertools.combinations(range(n), 2):
+        others = [k for k in range(n) if k not in (i, j)]
+        # sg (|x - p_i|^2 - |x - p_k|^2) >= t  <=>  2 sg x.(p_i - p_k) + t <= sg (|p_i|^2 - |p_k|^2)
+        A = np.c_[2 * sg * (p[i] - p[others]), np.ones(len(others))]
+        b = sg * (H[i] - H[others])
+        r = linprog(np.r_[np.zeros(d), -1.0], A_ub=A, b_ub=b, A_eq=[np.r_[2 * (p[i] - p[j]), 0.0]],
+                    b_eq=[H[i] - H[j]], bounds=[(-1e3, 1e3)] * d + [(None, 1.0)], method="highs")
+        assert r.status == 0
+        assert (-r.fun > 1e-7) == ((i, j) in got), (i, j, -r.fun)
+
+
+def test_furthest_site_3d_cube_and_duplicates():
+    # the cube's 8 corners (cospherical) plus its centre and a copy of a
+    # corner: one vertex (the centre), a cell for each corner (one copy's)
+    c = [[x, y, z] for x in (0, 2) for y in (0, 2) for z in (0, 2)]
+    p = np.array(c + [[1, 1, 1], c[3]], float)
+    vor = Voronoi(p, furthest_site=True)
+    assert vor.vertices.tolist() == [[1.0, 1.0, 1.0]]
+    cells = [i for i in range(len(p)) if vor.regions[vor.point_region[i]]]
+    assert len(cells) == 8 and 8 not in cells and (3 in cells) != (9 in cells)
+    for i in cells:
+        assert sorted(vor.regions[vor.point_region[i]]) == [-1, 0]
+    # corners sharing a cube edge share a ridge (2-dimensional: the cone of
+    # the two faces' normals at the centre), diagonal ones do not
+    corner = {i: (i if i != 9 else 3) for i in cells}
+    got = {tuple(sorted((corner[a], corner[b]))) for a, b in vor.ridge_points.tolist()}
+    want = {(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1}
+    assert got == want
+
+
+def test_furthest_site_incremental():
+    p = np.random.default_rng(9).random((80, 2))
+    v = Voronoi(p[:40], furthest_site=True, incremental=True)
+    v.add_points(p[40:])
+    full = Voronoi(p, furthest_site=True)
+    assert np.array_equal(v.vertices, full.vertices) and v.regions == full.regions
+    assert np.array_equal(v.ridge_points, full.ridge_points)
+
+
 def test_bad_input():
     p = np.random.default_rng(1).random((10, 2))
     q = p.copy()
@@ -728,7 +824,9 @@ def test_bad_input():
     with pytest.raises(ValueError, match="Qfoo"):
         Voronoi(p, qhull_options="Qbb Qfoo")
     with pytest.raises(ValueError, match="furthest_site"):
-        Voronoi(p, furthest_site=True)
+        Voronoi(p, furthest_site=True, weights=np.zeros(10))
+    with pytest.raises(ValueError, match="furthest_site"):
+        Voronoi(p, furthest_site=np.ones(10))  # weights passed by position
     with pytest.raises(ValueError):
         Voronoi(p, weights=np.ones(3))
     with pytest.raises(ValueError):
