@@ -147,6 +147,16 @@ int run(int argc, char** argv) {
   }
   try {
     Args a = parse(argc, argv);
+    if (a.csv) {
+      // What a second machine needs to compare the figures (issue 40): the
+      // command and the machine (CPU model, logical processors, cache sizes,
+      // load average at the start), as comment lines before the CSV header;
+      // the peers' times are rows of the same run
+      std::string cmd = "flipflop bench";
+      for (int i = 1; i < argc; ++i) cmd += std::string(" ") + argv[i];
+      std::printf("# %s\n# machine: %s\n", cmd.c_str(), detail::machine_line().c_str());
+      std::fflush(stdout);
+    }
     if (a.experiment == "predicates") return detail::bench_predicates(a);
     if (a.experiment == "instant-flip") return detail::bench_instant_flip(a);
     if (a.stages) return detail::bench_stages(a);
