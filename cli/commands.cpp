@@ -248,7 +248,7 @@ int run_compute(const ComputeArgs& a) {
   std::vector<Triangle> tris;
   cpu::Hull3Witness hull3_witness;  // filled by the cpu hull3 kernel for its certifier
   std::string counts;
-  std::string handed_back;  // the GPU hull3's hand-backs to the reference (--stats)
+  std::string exact_kernel;  // the GPU hull3's runs with the exact kernel point (--stats)
   std::optional<cpu::Rt2Witness> rt2_witness;  // the cpu rt2 kernel's certificate
   cpu::StageTimes gpu_times;                   // the GPU backends' stages (--stats)
   if (a.kind == "hull2" && algo != "brute") {
@@ -313,8 +313,8 @@ int run_compute(const ComputeArgs& a) {
     ref::Hull3Stats st;
     tris = kernels::hull3_gpu(backend, ps, &st, &gpu_times);
     counts = hull3_counts(st);
-    handed_back = "handed back: " + std::to_string(st.handed_back) +
-                  " (runs given to the exact reference on the host: an almost flat initial tetrahedron)";
+    exact_kernel = "exact kernel point: " + std::to_string(st.exact_kernel_point) +
+                   " (an almost flat initial tetrahedron: the exact centroid's side tests on the device)";
 #endif
   } else if (a.kind == "hull3" && backend == "cpu") {
     // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference,
@@ -394,7 +394,7 @@ int run_compute(const ComputeArgs& a) {
               << (a.kind == "hull2" ? " vertices" : " triangles") << "; compute " << t_compute << " s, certify "
               << t_certify << " s (canonical); read " << t_read << " s, write " << t_write << " s\n";
     if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
-    if (!handed_back.empty()) std::cerr << a.kind << ": " << handed_back << "\n";
+    if (!exact_kernel.empty()) std::cerr << a.kind << ": " << exact_kernel << "\n";
     if (!gpu_times.stages.empty()) {
       // the GPU kernels' stages (kernels_cuda/: upload and download timed
       // apart from the device work)

@@ -48,6 +48,33 @@ FF_HD inline int power2d(const StaticFilter* f, const PointId* ids, const double
   return lambda<4>(f, ids, p, w);
 }
 
+// orient3d(a, b, c, s) under SoS, s the centroid of the four input points
+// src[0..11] (row-major) with SoS index `is` (after every input: the exact
+// kernel point of ffHull, reference/hull3/rational_kernel.hpp, whose side()
+// this is): pred::mixed_sign's filter-free path — rows sorted by index, the
+// centroid's row taken as (Σ src, 4), a positive multiple of (s, 1), on the
+// exact expansion stage (xp::lambda_exact_mixed) — so the same sign as the
+// reference's, with no GMP. The caller filters first (RationalKernel's
+// per-input bound).
+FF_HD inline int orient3d_centroid(PointId ia, const double* a, PointId ib, const double* b, PointId ic,
+                                   const double* c, PointId is, const double* src) {
+  const PointId ids[4] = {ia, ib, ic, is};
+  int order[4];
+  const int parity = pred::sort_rows_by_id(4, ids, order);
+  if (parity == 0) return 0;
+  const double* x[4] = {a, b, c, nullptr};
+  pred::xp::MixedRowX rows[4];
+  for (int i = 0; i < 4; ++i) {
+    if (order[i] == 3) {
+      rows[i].src = src;
+      rows[i].count = 4;
+    } else {
+      rows[i].x = x[order[i]];
+    }
+  }
+  return parity * pred::xp::lambda_exact_mixed<4>(rows, true);
+}
+
 // compare_sos(a, b, coord): the sign of a[coord] - b[coord] under the
 // perturbation (never 0 for distinct ids).
 FF_HD inline int compare_sos(PointId ia, const double* a, PointId ib, const double* b, int coord) {

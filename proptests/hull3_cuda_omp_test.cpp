@@ -20,6 +20,9 @@
 #ifdef FLIPFLOP_HAVE_KERNELS_OMP
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
 #include <iostream>
 #include <set>
 #include <stdexcept>
@@ -99,7 +102,7 @@ TEST_CASE("hull3 cuda-omp: every generator family up to 3000 points equals the r
 }
 
 TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[hull3_cuda_omp][long]") {
-  std::size_t cases = 0, rejected = 0;
+  std::size_t cases = 0, rejected = 0, exact_kernel = 0;
   const std::vector<std::string> fams = test::families(3);
   test::for_each_family_input(3, {4, 7, 30, 200, 2000, 10000}, 2,
                               [&](const std::string& fam, std::size_t n, std::uint64_t seed, const PointSet& ps) {
@@ -109,13 +112,11 @@ TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[h
                                 REQUIRE(omp_text(ps, &st) == expect);
                                 if (!is_error(expect))
                                   REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
-                                // no family hands its run to the reference: the
-                                // kernel is what is compared with it (issue 38)
-                                REQUIRE(st.handed_back == 0);
+                                exact_kernel += st.exact_kernel_point;
                                 ++cases;
                               });
   std::cout << "hull3 kernels_omp sweep: " << cases << " runs identical to the reference (" << rejected
-            << " inputs rejected as flat by both)\n";
+            << " inputs rejected as flat by both, " << exact_kernel << " with the exact kernel point)\n";
   REQUIRE(cases == fams.size() * 6 * 2);
   REQUIRE(fams.size() >= 13);
 }
@@ -163,7 +164,9 @@ TEST_CASE("hull3 cuda-omp: 16 OpenMP threads give the reference's output", "[hul
 
 // An almost flat initial tetrahedron: the fourth point 2^-1074 above the
 // plane z = 0, so the rounded centroid (z = 2^-1076 -> 0) lies on the face
-// plane, not strictly inside — the exact-kernel path (hull3.cuh, line 4).
+// plane, not strictly inside — the exact kernel point (hull3.cuh, line 4),
+// whose side tests the kernel decides itself (issue 38: no hand-back to the
+// reference; the stages are the kernel's own).
 TEST_CASE("hull3 cuda-omp: an almost flat tetrahedron takes the exact kernel point", "[hull3_cuda_omp]") {
   PointSet ps;
   ps.dim = 3;
@@ -173,9 +176,45 @@ TEST_CASE("hull3 cuda-omp: an almost flat tetrahedron takes the exact kernel poi
   ref::Hull3Stats st;
   REQUIRE(omp_text(ps, &st, &times) == ref_text(ps));
   REQUIRE(!is_error(ref_text(ps)));
-  REQUIRE(has_stage(times, "reference (exact kernel point, host)"));
-  REQUIRE(st.handed_back == 1);  // this case compares the reference with itself, and says so
+  REQUIRE(st.exact_kernel_point == 1);
+  for (const char* stage : {"upload", "tetrahedron", "construction", "flip-flop", "output", "download"})
+    REQUIRE(has_stage(times, stage));
   REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+}
+
+// Larger almost flat inputs on the exact kernel point: points of [0, 1]^2 at
+// two heights one ulp apart (z = 1 or 1 + 2^-52: the centroid's z, 1 + 2^-54
+// or 1 + 2^-53, rounds onto a face plane) or 0 and 2^-1074, many of them
+// coplanar (the SoS decides the faces), thinned and whole. Every run must
+// take the exact kernel point (else this test would not test it) and equal
+// the reference byte for byte.
+TEST_CASE("hull3 cuda-omp: almost flat slabs on the exact kernel point equal the reference",
+          "[hull3_cuda_omp]") {
+  std::size_t runs = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+    for (const bool subnormal : {false, true}) {
+      std::mt19937_64 rng(seed);
+      std::uniform_real_distribution<double> unit(0.0, 1.0);
+      std::uniform_int_distribution<int> level(0, 1);
+      PointSet ps;
+      ps.dim = 3;
+      const std::size_t n = seed <= 3 ? 40 : 2000;
+      for (std::size_t i = 0; i < n; ++i) {
+        const int l = level(rng);
+        const double z = subnormal ? l * 4.9406564584124654e-324 : (l ? std::nextafter(1.0, 2.0) : 1.0);
+        ps.coords.insert(ps.coords.end(), {std::round(unit(rng) * 64) / 64, std::round(unit(rng) * 64) / 64, z});
+      }
+      const std::string expect = ref_text(ps);
+      INFO("seed " << seed << " subnormal " << subnormal << ": " << expect.substr(0, 80));
+      if (is_error(expect)) continue;  // all points on one plane: rejected by both
+      ref::Hull3Stats st;
+      REQUIRE(omp_text(ps, &st) == expect);
+      if (st.exact_kernel_point == 0) continue;  // the extreme points' tetrahedron was not flat enough
+      REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+      ++runs;
+    }
+  std::cout << "hull3 kernels_omp almost flat slabs: " << runs << " runs on the exact kernel point\n";
+  REQUIRE(runs >= 10);
 }
 
 TEST_CASE("hull3 cuda-omp: input that does not span R^3 is rejected like the reference", "[hull3_cuda_omp]") {

@@ -27,9 +27,11 @@
 //  * line 4: the kernel point s, the centroid rounded to doubles, SoS index n
 //    (after all inputs), used when it is strictly inside the tetrahedron
 //    exactly (four exact orient3d on the host). Otherwise — an almost flat
-//    tetrahedron, §6.4.2's trap — the exact dyadic centroid would be needed,
-//    whose predicates (pred::mixed_sign, GMP) do not run on the device: that
-//    rare case runs the exact reference ref::hull3_ffhull on the host.
+//    tetrahedron, §6.4.2's trap — the exact dyadic centroid, as the
+//    reference's (ref::centroid_kernel): its side tests are filtered by the
+//    reference's per-input bound (which covers the rounding of s) and decided
+//    on the device by the exact expansion stage on the row (Σ q_i, 4)
+//    (dev::orient3d_centroid), so the kernel keeps the run.
 //  * lines 5-14 in rounds (§6.4.1, "four major GPU kernels"): round 0
 //    associates every point with a face of the tetrahedron; every round takes
 //    per triangle the furthest point — the largest rounded orient(p, t),
@@ -105,6 +107,7 @@
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 #include "reference/hull3/ffhull.hpp"
+#include "reference/hull3/rational_kernel.hpp"
 
 namespace flipflop::FF_KERNELS_NS {
 
@@ -318,8 +321,15 @@ FF_HD inline uint32_t prev3(uint32_t k) { return k == 0 ? 2 : k - 1; }
 struct Geo {
   const double* xyz;        // 3 per point
   pred::StaticFilter filter;  // per input, the kernel point's coordinates included
-  double s[3];              // the kernel point (double)
+  double s[3];              // the kernel point (double; exact_s: the rounded exact centroid)
   uint32_t n;               // its SoS index: after every input
+  // exact_s: s stands for the exact centroid of the tetrahedron's four points
+  // src[0..11] (§6.4.2); side() is then filtered by s_bound
+  // (ref::RationalKernel's per-input bound, which covers s's rounding) and
+  // decided by dev::orient3d_centroid
+  bool exact_s;
+  double s_bound;
+  double src[12];
 
   FF_HD const double* P(Index i) const { return xyz + 3 * static_cast<std::size_t>(i); }
   // orient3d(a, b, c, d) under SoS: > 0 when d is on the inner side of
@@ -334,8 +344,19 @@ struct Geo {
   // KernelPoint::side(a, b, c) = orient3d(a, b, c, s) (kernel_point.hpp)
   FF_HD int side(Index a, Index b, Index c) const {
     const double* p[4] = {P(a), P(b), P(c), s};
+    if (exact_s) {
+      if (const int r = exact_s_filter(p)) return r;
+      return dev::orient3d_centroid(a, p[0], b, p[1], c, p[2], n, src);
+    }
     if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
     return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], n, s);
+  }
+  // RationalKernel::side's filter: the plain determinant on the rounded s
+  // against s_bound (0: undecided)
+  FF_HD int exact_s_filter(const double* const* p) const {
+    double t[9];
+    pred::filter_detail::differences<4, false>(p, nullptr, t, nullptr);
+    return pred::filter_detail::sign_beyond(pred::filter_detail::det_plain<3>(t), s_bound);
   }
 };
 
@@ -352,7 +373,7 @@ struct FastSigns : dev::Undecided {
   }
   FF_HD int side(Index a, Index b, Index c) {
     const double* p[4] = {g.P(a), g.P(b), g.P(c), g.s};
-    return certain(pred::static_sign<4>(g.filter, p, nullptr));
+    return certain(g.exact_s ? g.exact_s_filter(p) : pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
 // The second pass's: Geo's (every one certain).
@@ -1224,8 +1245,9 @@ class Hull3 {
  public:
   // xyz: the coordinates where the steps read them (backend::to_device)
   // steps: null, or the clock that times every step (see step())
+  // exact: the exact kernel point (s is then its rounded coordinates), or null
   Hull3(const PointSet& ps, const double* xyz, const std::array<Index, 4>& tet, const std::array<double, 3>& s,
-        Buffers& B, ref::Hull3Stats& st, cpu::StageClock* steps)
+        const ref::RationalKernel* exact, Buffers& B, ref::Hull3Stats& st, cpu::StageClock* steps)
       : n_(ps.size()), tet_(tet), B_(B), st_(st), steps_(steps) {
     g_.xyz = xyz;
     // the per-input filter over the coordinates where they are (one reduction)
@@ -1233,6 +1255,9 @@ class Hull3 {
     g_.filter = filter::static_filter<kParallelFrom>(xyz, 3 * n_, nullptr, 0, s.data(), 3);
     for (int j = 0; j < 3; ++j) g_.s[j] = s[j];
     g_.n = static_cast<uint32_t>(n_);
+    g_.exact_s = exact != nullptr;
+    g_.s_bound = exact ? exact->static_bound() : 0.0;
+    for (int j = 0; j < 12; ++j) g_.src[j] = exact ? exact->point().src[j] : 0.0;
   }
 
   void construct() {
@@ -1474,20 +1499,18 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
   });
   clock.mark("upload");
   const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(B->temp, ps, xyz); });  // line 1
-  // line 4: the rounded centroid, when strictly inside the tetrahedron exactly
+  // line 4: the rounded centroid, when strictly inside the tetrahedron exactly;
+  // else (§6.4.2) the exact centroid, as the reference's (its four points are
+  // exactly independent: initial_tetrahedron)
   std::array<double, 3> s{};
+  std::unique_ptr<ref::RationalKernel> exact;
   if (!cpu::rounded_centroid(ps, tet, s)) {
-    // §6.4.2: the exact centroid's predicates (GMP) run on the host only, so
-    // does this rare case: the exact reference, whose answer is the one
-    B.reset();
-    clock.mark("tetrahedron");
-    std::vector<Triangle> out = ref::hull3_ffhull(ps, &st);
-    st.handed_back = 1;  // counted: --stats prints it, the tests read it
-    clock.mark("reference (exact kernel point, host)");
-    return out;
+    exact = std::make_unique<ref::RationalKernel>(ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]));
+    for (int j = 0; j < 3; ++j) s[j] = exact->point().approx[j].v;
+    ++st.exact_kernel_point;
   }
   return on_device(n, [&] {
-    Hull3 h(ps, xyz, tet, s, *B, st, by_step ? &clock : nullptr);
+    Hull3 h(ps, xyz, tet, s, exact.get(), *B, st, by_step ? &clock : nullptr);
     clock.mark("tetrahedron");
     h.construct();  // lines 2-14
     if (!by_step) clock.mark("construction");

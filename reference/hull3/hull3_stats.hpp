@@ -24,10 +24,10 @@ struct Hull3Stats {
   std::uint64_t twists = 0;           // twisting stage
   std::uint64_t fold_flips = 0;       // flipping stage (2-2 flips of folds)
   std::uint64_t rounds = 0;           // queue passes / rounds where the algorithm has them
-  // the GPU ffHull (kernels_cuda/hull3): runs handed to the exact reference on
-  // the host (an initial tetrahedron whose rounded centroid is not strictly
-  // inside: the exact kernel point's predicates do not run on the device)
-  std::uint64_t handed_back = 0;
+  // the GPU ffHull (kernels_cuda/hull3): runs whose kernel point is the exact
+  // centroid (an initial tetrahedron whose rounded centroid is not strictly
+  // inside, §6.4.2), decided on the device by the exact expansion stage
+  std::uint64_t exact_kernel_point = 0;
 };
 
 }  // namespace flipflop::ref
