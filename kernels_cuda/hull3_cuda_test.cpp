@@ -5,6 +5,8 @@
 // several sizes, on large ball and sphere inputs, and rejects input that does
 // not span R^3 with the reference's message. Without a usable CUDA device it
 // prints "no CUDA device: skipped" and exits with 77 (ctest: skipped).
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -66,6 +68,29 @@ int main() {
     gen::Options o;
     o.seed = 11;
     ok = check(std::string(fam) + " (large)", gen::generate(fam, 1000000, o)) && ok;
+  }
+  // almost flat slabs (heights one ulp apart): the exact kernel point's side
+  // tests on the device (dev::orient3d_centroid); the run must take that path
+  for (std::uint64_t seed : {1, 2, 3}) {
+    PointSet slab;
+    slab.dim = 3;
+    std::uint64_t x = seed * 0x9e3779b97f4a7c15ull;
+    for (int i = 0; i < 5000; ++i) {
+      double c[3];
+      for (int j = 0; j < 2; ++j) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;  // xorshift64
+        c[j] = static_cast<double>(x % 65) / 64;
+      }
+      x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+      c[2] = (x & 1) ? std::nextafter(1.0, 2.0) : 1.0;
+      slab.coords.insert(slab.coords.end(), c, c + 3);
+    }
+    ref::Hull3Stats st;
+    (void)kernels_cuda::hull3_ffhull(slab, &st);
+    const bool exact = st.exact_kernel_point == 1;
+    if (!exact) std::printf("FAIL almost flat slab seed %llu: not on the exact kernel point\n",
+                            static_cast<unsigned long long>(seed));
+    ok = check("almost flat slab seed " + std::to_string(seed), slab) && exact && ok;
   }
   PointSet flat;
   flat.dim = 3;
