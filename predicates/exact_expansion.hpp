@@ -1315,12 +1315,11 @@ struct IntLambda {
 FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
 
 // int_lambda's first half: the coordinates' exponent span (gc, hc). Unlifted,
-// it also knows the bound B exactly (`bits`, see below), hence whether the
-// call needs __int128 (`wide`) before any entry is built.
+// it also knows the bound lf(K) + 1 + B exactly (see below), hence whether
+// the call needs __int128 (`wide`) before any entry is built.
 struct IntScan {
   int gc = 100000, hc = -100000;
-  int bits = 0;      // unlifted: lf(K) + 1 + B, exact; lifted: unknown (0)
-  bool wide = false; // unlifted: bits > 63
+  bool wide = false;  // unlifted: lf(K) + 1 + B > 63 (lifted: decided by int_lambda_build)
 };
 
 #if defined(FLIPFLOP_INT128)
@@ -1368,7 +1367,6 @@ FF_HD inline bool int_lambda_scan(const double* const* p, const double* w, IntSc
   if (hc - gc > max_mc || gc < -1023 || gc > 1022) return false;
   S.gc = gc;
   S.hc = hc;
-  S.bits = w ? 0 : lower;
   S.wide = !w && lower > 63;
   return true;
 }

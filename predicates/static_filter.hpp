@@ -392,14 +392,23 @@ class StaticFilter {
   bool dd_window_ = false;
 };
 
+// The plain determinant of det Λ's differences T against a bound derived
+// for it: +1/-1 when |det T| exceeds `bound`, 0 otherwise (static_sign, and
+// the exact kernel point's per-input bound, ref::RationalKernel::side and the
+// GPU hull's Geo::side).
+template <int K>
+FF_HD inline int sign_beyond_bound(const double* const* p, const double* w, double bound) {
+  constexpr int N = K - 1;
+  double t[N * N];
+  filter_detail::differences<K, false>(p, w, t, nullptr);
+  return filter_detail::sign_beyond(filter_detail::det_plain<N>(t), bound);
+}
+
 // Static filter sign of det Λ of K points: +1/-1 when |det| exceeds the
 // per-input bound, 0 otherwise.
 template <int K>
 FF_HD inline int static_sign(const StaticFilter& f, const double* const* p, const double* w) {
-  constexpr int N = K - 1;
-  double t[N * N];
-  filter_detail::differences<K, false>(p, w, t, nullptr);
-  return filter_detail::sign_beyond(filter_detail::det_plain<N>(t), f.bound(K, w != nullptr));
+  return sign_beyond_bound<K>(p, w, f.bound(K, w != nullptr));
 }
 
 // ============================================================================

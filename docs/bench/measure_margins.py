@@ -61,14 +61,8 @@ with tempfile.TemporaryDirectory() as tmp:
             tq.append(time.perf_counter() - t0)
     ratio_row("whole process hull3 ball.xyz vs qhull Qt i", statistics.median(tf), statistics.median(tq), 2.0)
 
-out = subprocess.run([FLIPFLOP, "bench", "instant-flip", "--dim", "3", "--n", "100000", "--step", "0.01",
-                      "--reps", R, "--csv", "--run", "flipflop:instant-flip,cgal"],
-                     check=True, capture_output=True, text=True).stdout
-t = {}
-for line in out.splitlines():
-    parts = line.split(",")
-    if len(parts) >= 2 and parts[0] in ("flipflop:instant-flip", "cgal:regular_triangulation"):
-        t[parts[0]] = float(parts[1])
+out = runner.bench("instant-flip", ["--dim", "3", "--n", "100000", "--step", "0.01"], "flipflop:instant-flip,cgal")
+t = {r["name"]: float(r["median_s"]) for r in out}
 ratio_row("bench instant-flip --dim 3 10^5 step 0.01 vs fresh CGAL", t["flipflop:instant-flip"],
           t["cgal:regular_triangulation"], 5.0)
 

@@ -344,19 +344,12 @@ struct Geo {
   // KernelPoint::side(a, b, c) = orient3d(a, b, c, s) (kernel_point.hpp)
   FF_HD int side(Index a, Index b, Index c) const {
     const double* p[4] = {P(a), P(b), P(c), s};
-    if (exact_s) {
-      if (const int r = exact_s_filter(p)) return r;
+    if (exact_s) {  // RationalKernel::side: its bound, then the exact stage
+      if (const int r = pred::sign_beyond_bound<4>(p, nullptr, s_bound)) return r;
       return dev::orient3d_centroid(a, p[0], b, p[1], c, p[2], n, src);
     }
     if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
     return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], n, s);
-  }
-  // RationalKernel::side's filter: the plain determinant on the rounded s
-  // against s_bound (0: undecided)
-  FF_HD int exact_s_filter(const double* const* p) const {
-    double t[9];
-    pred::filter_detail::differences<4, false>(p, nullptr, t, nullptr);
-    return pred::filter_detail::sign_beyond(pred::filter_detail::det_plain<3>(t), s_bound);
   }
 };
 
@@ -373,7 +366,8 @@ struct FastSigns : dev::Undecided {
   }
   FF_HD int side(Index a, Index b, Index c) {
     const double* p[4] = {g.P(a), g.P(b), g.P(c), g.s};
-    return certain(g.exact_s ? g.exact_s_filter(p) : pred::static_sign<4>(g.filter, p, nullptr));
+    return certain(g.exact_s ? pred::sign_beyond_bound<4>(p, nullptr, g.s_bound)
+                             : pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
 // The second pass's: Geo's (every one certain).

@@ -92,6 +92,16 @@ def _weights(weights, n: int, what: str) -> Optional[np.ndarray]:
     return w
 
 
+def _furthest_site(value, what: str) -> bool:
+    """scipy's furthest_site argument as a bool; anything else (old code passing
+    weights positionally) is a ValueError naming weights=."""
+    if not isinstance(value, (bool, np.bool_)) and not (
+            isinstance(value, (int, np.integer)) and value in (0, 1)):
+        raise ValueError(f"{what}: furthest_site must be a bool (weights are keyword-only: "
+                         f"{what}(points, weights=w))")
+    return bool(value)
+
+
 def _threads(threads, what: str) -> int:
     """0: the runtime's default (oneTBB: every core the process may use)."""
     t = int(threads)
@@ -783,11 +793,7 @@ class Delaunay(_QhullUser):
 
     def __init__(self, points, furthest_site=False, incremental: bool = False, qhull_options=None, *,
                  weights=None, strict: bool = False, backend: Optional[str] = None, threads: int = 0):
-        if not isinstance(furthest_site, (bool, np.bool_)) and not (
-                isinstance(furthest_site, (int, np.integer)) and furthest_site in (0, 1)):
-            raise ValueError("Delaunay: furthest_site must be a bool (weights are keyword-only: "
-                             "Delaunay(points, weights=w))")
-        self.furthest_site = bool(furthest_site)
+        self.furthest_site = _furthest_site(furthest_site, "Delaunay")
         if self.furthest_site and strict:
             raise ValueError("Delaunay: furthest_site=True has no strict view (strict=True)")
         if self.furthest_site and weights is not None:

@@ -14,8 +14,8 @@ from typing import Optional
 
 import numpy as np
 
-from . import (QhullOptionError, _QhullUser, _flipflop, _new_points, _points, _qhull_options, _threads,
-               _weights)
+from . import (QhullOptionError, _QhullUser, _flipflop, _furthest_site, _new_points, _points, _qhull_options,
+               _threads, _weights)
 
 __all__ = ["Voronoi"]
 
@@ -108,9 +108,7 @@ class Voronoi(_QhullUser):
 
     def __init__(self, points, furthest_site: bool = False, incremental: bool = False, qhull_options=None, *,
                  weights=None, threads: int = 0):
-        if not isinstance(furthest_site, (bool, np.bool_)) and not (
-                isinstance(furthest_site, (int, np.integer)) and furthest_site in (0, 1)):
-            raise ValueError("Voronoi: furthest_site must be a bool (weights are keyword-only: weights=...)")
+        furthest_site = _furthest_site(furthest_site, "Voronoi")
         if furthest_site and weights is not None:
             raise ValueError("Voronoi: furthest_site=True takes no weights")
         # scipy's default "Qbb Qc Qz"; QGn / QG-n select facets and
@@ -118,7 +116,7 @@ class Voronoi(_QhullUser):
         if _qhull_options(qhull_options, "Voronoi", "Qbb Qc Qz").good is not None:
             raise QhullOptionError("Voronoi: qhull options QGn and QG-n apply to ConvexHull and Delaunay")
         self._threads = _threads(threads, "Voronoi")
-        self.furthest_site = bool(furthest_site)
+        self.furthest_site = furthest_site
         self._incremental = bool(incremental)
         self._closed = False
         a = _points(points, tuple(_BACKENDS), "Voronoi")

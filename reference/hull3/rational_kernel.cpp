@@ -49,9 +49,7 @@ int RationalKernel::side(Index a, Index b, Index c) const {
   // det Λ of the rows a, b, c, s: orient3d(a, b, c, s), perturbed (s last in
   // the perturbation order, predicates.hpp).
   const double* p[4] = {ps_->point(a), ps_->point(b), ps_->point(c), q_};
-  double t[9];
-  pred::filter_detail::differences<4, false>(p, nullptr, t, nullptr);
-  if (const int s = pred::filter_detail::sign_beyond(pred::filter_detail::det_plain<3>(t), static_bound_)) return s;
+  if (const int s = pred::sign_beyond_bound<4>(p, nullptr, static_bound_)) return s;
   const pred::MixedRow rows[4] = {{a, ps_->point(a), nullptr},
                                   {b, ps_->point(b), nullptr},
                                   {c, ps_->point(c), nullptr},
