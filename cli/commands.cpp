@@ -415,7 +415,7 @@ int certify_rtd_file(const CertifyArgs& a) {
   const bool three = a.kind == "rt3" || a.kind == "dt3";
   if (three && a.dim != 0 && a.dim != 3) throw UsageError("certify " + a.kind + " is 3D (--dim 3 or none)");
   const int dim = three ? 3 : a.dim;
-  if (dim < 2 || dim > 5) throw UsageError("certify rtd needs --dim d (2 to 5)");
+  if (dim < 2 || dim > 9) throw UsageError("certify rtd needs --dim d (2 to 9)");
   const PointSet ps = io::read_points(a.points, dim, a.kind != "dt3");
   // input that does not span R^d has no triangulation to certify: a usage
   // error (one line, exit 2) whatever the output holds

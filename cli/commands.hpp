@@ -45,7 +45,7 @@ struct ComputeArgs {
 struct CertifyArgs {
   std::string kind, points, output;
   bool canonical = false;
-  int dim = 0;      // rtd: the dimension d (2..5); rt3|dt3 (certify rtd --dim 3): 0 or 3
+  int dim = 0;      // rtd: the dimension d (2..9); rt3|dt3 (certify rtd --dim 3): 0 or 3
   int threads = 0;  // hull2, hull3: worker threads of the parallel checks (0: all cores)
   bool strict = false;       // the strict views (hull3 --strict polygons, rt2/dt2 --strict triangles)
   bool triangulate = false;  // hull3 --strict --triangulate (fan triangles)

@@ -34,14 +34,16 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void check_dim(int d) {
-  if (d < 2 || d > 5) throw UsageError("--dim " + std::to_string(d) + " is not supported (2..5)");
+// rtd: 2..9 (ref::rtd::kMaxDim); the instant flip: 2..5 (its moving model)
+void check_dim(int d, int max) {
+  if (d < 2 || d > max)
+    throw UsageError("--dim " + std::to_string(d) + " is not supported (2.." + std::to_string(max) + ")");
 }
 
 
 PointSet read_d(const std::string& path, int d, bool weighted) {
   try {
-    // io/read_points: .xyz in d = 2..5, .off/.ply in 2 and 3 dimensions
+    // io/read_points: .xyz in d = 2..9, .off/.ply in 2 and 3 dimensions
     return io::read_points(path, d, weighted);
   } catch (const io::InputError& e) {
     throw UsageError(e.what());
@@ -96,7 +98,7 @@ void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
 }
 
 int run_rtd(const RtdArgs& a) {
-  check_dim(a.dim);
+  check_dim(a.dim, ref::rtd::kMaxDim);
   // the backend: cpu — kernels_cpu/rt3 for d = 3 (multithreaded), the cavity
   // kernel kernels_cpu/rtd for d = 2, 4, 5 (sequential insertion); both
   // return the reference's answer byte for byte and are the default for
@@ -166,7 +168,7 @@ int run_rtd(const RtdArgs& a) {
 }
 
 int run_instant_flip(const InstantFlipArgs& a) {
-  check_dim(a.dim);
+  check_dim(a.dim, 5);
   const io::Format fmt = output_format_of(a.out);
   if (a.from.empty() || a.to.empty()) throw UsageError("instant-flip needs --from W.xyz and --to U.xyz");
   const PointSet pts = read_d(a.points, a.dim, false);

@@ -38,7 +38,7 @@ namespace flipflop::cli {
 
 struct RtdArgs {
   std::string in, out;
-  int dim = 0;  // 2..5
+  int dim = 0;  // 2..9
   bool stats = false;
   bool strict = false;  // the strict view (reference/rtd/strict_rtd.hpp)
   bool ascii = false;  // .ply/.stl output in ASCII

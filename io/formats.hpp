@@ -10,7 +10,7 @@
 namespace flipflop::io::detail {
 
 // .xyz holds up to kMaxXyzColumns columns: d <= 5 coordinates and a weight.
-inline constexpr int kMaxXyzColumns = 6;
+inline constexpr int kMaxXyzColumns = 10;  // 9 coordinates and a weight
 
 PointSet read_xyz(const std::string& path, int dim, bool weighted);
 
@@ -29,7 +29,7 @@ PointSet read_ply(const std::string& path, int dim, bool weighted);
 PointSet read_npy(const std::string& path, int dim, bool weighted);
 
 // Name of coordinate column c of a dim-dimensional point ("x", "y", "z"; for
-// dim > 3 "x1".."x5"), or "w" for the weight column (c == dim).
+// dim > 3 "x1".."x9"), or "w" for the weight column (c == dim).
 const char* column_name(int c, int dim);
 
 // Throws InputError(path, line, ...) when ps holds no points or fewer than

@@ -14,7 +14,7 @@ namespace flipflop::io {
 namespace detail {
 const char* column_name(int c, int dim) {
   static const char* xyz[] = {"x", "y", "z"};
-  static const char* xd[] = {"x1", "x2", "x3", "x4", "x5"};
+  static const char* xd[] = {"x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9"};
   if (c >= dim) return "w";
   return dim <= 3 ? xyz[c] : xd[c];
 }

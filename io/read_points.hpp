@@ -28,7 +28,7 @@
 
 namespace flipflop::io {
 
-// dim is 2 to 5 (.off and .ply: 2 or 3). The result has dim, weighted, coords
+// dim is 2 to 9 (.off and .ply: 2 or 3). The result has dim, weighted, coords
 // (and weights) set.
 PointSet read_points(const std::string& path, int dim, bool weighted);
 

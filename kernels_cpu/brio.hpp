@@ -52,7 +52,7 @@ std::uint32_t grid(double x, double lo, double hi) {
 // (kernels_cpu/rtd) and their certifiers' walk order.
 inline std::uint64_t morton(const double* x, const double* lo, const double* hi, int d, int total) {
   const int bits = total / d;
-  std::uint32_t cell[8];
+  std::uint32_t cell[16];  // d <= 16
   for (int j = 0; j < d; ++j) cell[j] = grid_cell(x[j], lo[j], hi[j], bits);
   std::uint64_t key = 0;
   for (int b = bits - 1; b >= 0; --b)

@@ -12,6 +12,13 @@
 //   * a * b:  v = fl(a.v * b.v)
 //             |AB - a.v b.v| <= |a.v| b.e + |b.v| a.e + a.e b.e
 //             plus the rounding u|v| of the product.
+//   * a / b:  only when |b.v| > b.e (then B != 0, of b.v's sign); else
+//             e = inf (undecided). v = fl(a.v / b.v) and
+//             |A/B - a.v/b.v| = |(A - a.v) b.v - a.v (B - b.v)| / |B b.v|
+//                             <= (a.e + |a.v / b.v| b.e) / (|b.v| - b.e),
+//             with |a.v / b.v| taken as |v| (one more rounding of the bound),
+//             plus the rounding u|v| of the quotient. Gaussian elimination
+//             in ErrDouble (lambda_filter.hpp, det_gauss_rt) uses it.
 //   * underflow: a result in the subnormal range may be off by up to eta/2 in
 //     absolute terms, where the relative bound u|v| does not hold; every
 //     operation therefore adds 4*eta (also covering underflow inside the bound
@@ -88,6 +95,14 @@ FF_HD inline ErrDouble operator-(ErrDouble a) { return {-a.v, a.e}; }
 FF_HD inline ErrDouble operator*(ErrDouble a, ErrDouble b) {
   double v = a.v * b.v;
   double e = std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e;
+  return {v, e + std::fabs(v) * ErrDouble::kU + ErrDouble::kEta4};
+}
+
+FF_HD inline ErrDouble operator/(ErrDouble a, ErrDouble b) {
+  const double v = a.v / b.v;
+  const double den = std::fabs(b.v) - b.e;
+  if (!(den > 0.0)) return {v, HUGE_VAL};  // B may be 0 (or NaN): undecided
+  const double e = (a.e + std::fabs(v) * b.e) / den;
   return {v, e + std::fabs(v) * ErrDouble::kU + ErrDouble::kEta4};
 }
 

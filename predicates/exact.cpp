@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace flipflop::pred::exact {
 
@@ -106,19 +107,25 @@ IntLambda build_lambda_dyadic(int k, const std::vector<Dyadic>& entries) {
   return m;
 }
 
+namespace {
+// The positions of the set bits of `mask` below k, ascending; their count.
+int positions(std::uint32_t mask, int k, int* out) {
+  int n = 0;
+  for (int i = 0; i < k; ++i)
+    if (mask & (1u << i)) out[n++] = i;
+  return n;
+}
+}  // namespace
+
 int minor_sign(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
-  int ri[8], ci[8];
-  int n = 0, nc = 0;
-  for (int r = 0; r < m.k; ++r)
-    if (rows & (1u << r)) ri[n++] = r;
-  for (int c = 0; c < m.k; ++c)
-    if (cols & (1u << c)) ci[nc++] = c;
+  int ri[kMaxLambdaK], ci[kMaxLambdaK];
+  const int n = positions(rows, m.k, ri), nc = positions(cols, m.k, ci);
   if (n != nc) throw std::logic_error("minor_sign: non-square minor");
   if (n == 0) return 1;
   // Bareiss fraction-free elimination with row pivoting, on raw mpz_t (only
   // the n x n entries in use are initialised: this is the hot path of the
   // exact stage).
-  mpz_t a[8][8];
+  mpz_t a[kMaxLambdaK][kMaxLambdaK];
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) mpz_init_set(a[i][j], m.at(ri[i], ci[j]).get_mpz_t());
   mpz_t prev, tmp;
@@ -156,6 +163,37 @@ int minor_sign(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
 }
 
 namespace {
+// Do rows `rows` of m, restricted to columns `cols` (at least as many), have
+// full row rank? Fraction-free elimination (Bareiss) on that submatrix, with
+// column pivoting; false as soon as a row reduces to zero.
+bool full_row_rank(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
+  int ri[kMaxLambdaK], ci[kMaxLambdaK];
+  const int nr = positions(rows, m.k, ri), nc = positions(cols, m.k, ci);
+  if (nr > nc) return false;
+  std::vector<mpz_class> a(static_cast<size_t>(nr * nc));
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nc; ++j) a[static_cast<size_t>(i * nc + j)] = m.at(ri[i], ci[j]);
+  mpz_class prev = 1, tmp;
+  for (int p = 0; p < nr; ++p) {
+    int pc = -1;  // a non-zero entry of row p among the columns p..nc-1
+    for (int j = p; j < nc && pc < 0; ++j)
+      if (sgn(a[static_cast<size_t>(p * nc + j)]) != 0) pc = j;
+    if (pc < 0) return false;
+    if (pc != p)
+      for (int i = 0; i < nr; ++i) swap(a[static_cast<size_t>(i * nc + p)], a[static_cast<size_t>(i * nc + pc)]);
+    const mpz_class& piv = a[static_cast<size_t>(p * nc + p)];
+    for (int i = p + 1; i < nr; ++i) {
+      for (int j = p + 1; j < nc; ++j) {
+        mpz_class& x = a[static_cast<size_t>(i * nc + j)];
+        tmp = x * piv - a[static_cast<size_t>(i * nc + p)] * a[static_cast<size_t>(p * nc + j)];
+        mpz_divexact(x.get_mpz_t(), tmp.get_mpz_t(), prev.get_mpz_t());
+      }
+    }
+    prev = piv;
+  }
+  return true;
+}
+
 // Depth-first search over matchings in the dominance order of predicates.hpp:
 // rows from the largest index (last row) to the smallest; on each row first
 // "not perturbed", then the coordinate columns from the last (j = m) to the
@@ -164,13 +202,25 @@ namespace {
 struct SosSearch {
   const IntLambda& m;
   const IntLambda* q = nullptr;  // pulled: the unweighted Λ (exact_expansion.hpp sos_search, Pulled)
-  // memo of minor signs: index = (rows << k) | cols, value 2 = unknown
+  // memo of minor signs: index = (rows << k) | cols, value 2 = unknown; a
+  // table of 2^(2k) bytes for k <= 8, a hash map beyond (k = 11: 4 MB as a
+  // table, of which a search touches a few entries)
   std::vector<signed char> memo;
+  std::unordered_map<std::uint32_t, signed char> sparse;
 
-  explicit SosSearch(const IntLambda& mat) : m(mat), memo(static_cast<size_t>(1) << (2 * mat.k), 2) {}
+  explicit SosSearch(const IntLambda& mat)
+      : m(mat), memo(mat.k <= 8 ? static_cast<size_t>(1) << (2 * mat.k) : 0, 2) {}
 
   int cached_minor(std::uint32_t rows, std::uint32_t cols) {
-    signed char& slot = memo[(rows << m.k) | cols];
+    const std::uint32_t key = (rows << m.k) | cols;
+    if (m.k > 8) {
+      const auto it = sparse.find(key);
+      if (it != sparse.end()) return it->second;
+      const int s = minor_sign(m, rows, cols);
+      sparse.emplace(key, static_cast<signed char>(s));
+      return s;
+    }
+    signed char& slot = memo[key];
     if (slot == 2) slot = static_cast<signed char>(minor_sign(m, rows, cols));
     return slot;
   }
@@ -181,7 +231,19 @@ struct SosSearch {
 
   // r: row to decide; kept rows/cols: not yet deleted; sgn: product of the
   // Laplace signs of the deletions made so far.
+  //
+  // Pruning (plain perturbation only): the rows above r that are kept (F)
+  // belong to every leaf of this subtree, whose columns are subsets of
+  // kept_cols. When F has not full row rank on kept_cols, every such minor is
+  // 0, so no leaf decides and the subtree is skipped — the order of the leaves
+  // visited is unchanged. On heavily degenerate rows (all points equal: no
+  // minor of two rows is non-zero) it turns an exponential walk over the
+  // matchings into a few rank tests (k = 11: seconds to milliseconds).
   int dfs(int r, std::uint32_t kept_rows, std::uint32_t kept_cols, int sgn) {
+    if (!q && r >= 0) {
+      const std::uint32_t fixed = kept_rows & ~((2u << r) - 1u);
+      if (__builtin_popcount(fixed) >= 2 && !full_row_rank(m, fixed, kept_cols)) return 0;
+    }
     if (r < 0) {
       if (const int s = cached_minor(kept_rows, kept_cols)) return sgn * s;
       if (!q) return 0;
@@ -209,7 +271,7 @@ struct SosSearch {
 }  // namespace
 
 int sos_sign(const IntLambda& m, const IntLambda* unweighted) {
-  if (m.k < 1 || m.k > 8) throw std::logic_error("sos_sign: k must be in 1..8");
+  if (m.k < 1 || m.k > kMaxLambdaK) throw std::logic_error("sos_sign: k must be in 1..11");
   if (unweighted && (m.k < 3 || unweighted->k != m.k))
     throw std::logic_error("sos_sign: the pulled perturbation needs two lifted matrices of one size");
   SosSearch search(m);

@@ -11,6 +11,8 @@
 
 #include <gmpxx.h>
 
+#include "predicates/predicates.hpp"
+
 #include <cstdint>
 #include <vector>
 

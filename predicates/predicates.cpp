@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -30,11 +31,11 @@ int exact_stage(const exact::IntLambda& mat, int parity, bool sos) {
 
 int gmp_sign(int k, const PointId* ids, const double* const* coords, const double* weights,
              bool sos) {
-  int order[8];
+  int order[kMaxLambdaK];
   const int parity = sort_rows_by_id(k, sos ? ids : static_cast<const PointId*>(nullptr), order);
   if (parity == 0) return 0;
-  const double* sorted_c[8];
-  double sorted_w[8];
+  const double* sorted_c[kMaxLambdaK];
+  double sorted_w[kMaxLambdaK];
   for (int i = 0; i < k; ++i) {
     sorted_c[i] = coords[order[i]];
     if (weights) sorted_w[i] = weights[order[i]];
@@ -42,20 +43,58 @@ int gmp_sign(int k, const PointId* ids, const double* const* coords, const doubl
   return exact_stage(exact::build_lambda(k, sorted_c, weights ? sorted_w : nullptr), parity, sos);
 }
 
-void check_k(int k, const double* weights) {
-  if (k < 2 || k > 8) throw std::invalid_argument("lambda_sign: k must be in 2..8");
+// kmax: kMaxStagedK for the single stages (their templates), kMaxLambdaK
+// for the whole path
+void check_k(int k, const double* weights, int kmax = kMaxStagedK) {
+  if (k < 2 || k > kmax)
+    throw std::invalid_argument("lambda_sign: k must be in 2.." + std::to_string(kmax));
   if (weights && k < 3) throw std::invalid_argument("lambda_sign: a lifted matrix needs k >= 3");
+}
+
+// The dynamic filter for k = 9..11 rows: det T (the k-1 translated rows,
+// lambda_filter.hpp's matrix) in ErrDouble by Gaussian elimination
+// (lambda_filter.hpp, det_gauss_rt), with a running error bound per value
+// (err_double.hpp), so a sign it returns is certain.
+int lambda_sign_filter_high(int k, const double* const* p, const double* w) {
+  const int n = k - 1;
+  ErrDouble t[(kMaxLambdaK - 1) * (kMaxLambdaK - 1)];
+  const double* base = p[k - 1];
+  if (w == nullptr) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) t[i * n + j] = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+  } else {
+    const int m = n - 1;
+    for (int i = 0; i < n; ++i) {
+      ErrDouble lift(0.0);
+      for (int j = 0; j < m; ++j) {
+        const ErrDouble diff = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+        t[i * n + j] = diff;
+        lift = (j == 0) ? diff * diff : lift + diff * diff;
+      }
+      t[i * n + m] = lift - (ErrDouble(w[i]) - ErrDouble(w[k - 1]));
+    }
+  }
+  return sign_if_certain(det_gauss_rt(t, n));
 }
 
 }  // namespace
 
+int lambda_sign_high(const StaticFilter*, int k, const PointId* ids, const double* const* coords,
+                     const double* weights) {
+  check_k(k, weights, kMaxLambdaK);
+  if (repeated_id(k, ids)) return 0;
+  if (const int s = lambda_sign_filter_high(k, coords, weights)) return s;
+  return gmp_sign(k, ids, coords, weights, ids != nullptr);
+}
+
 int lambda_sign(const StaticFilter* f, int k, const PointId* ids, const double* const* coords,
                 const double* weights, Mode m) {
-  check_k(k, weights);
+  check_k(k, weights, kMaxLambdaK);
   if (m == Mode::gmp) {
     if (repeated_id(k, ids)) return 0;
     return gmp_sign(k, ids, coords, weights, ids != nullptr);
   }
+  if (k > kMaxStagedK) return lambda_sign_high(f, k, ids, coords, weights);
   return with_k(k, [&](auto K) { return lambda_sign_staged<decltype(K)::value>(f, ids, coords, weights); });
 }
 
@@ -89,11 +128,11 @@ int expansion_sos(int k, const PointId* ids, const double* const* p, const doubl
   });
 }
 int gmp(int k, const double* const* p, const double* w) {
-  check_k(k, w);
+  check_k(k, w, kMaxLambdaK);
   return gmp_sign(k, nullptr, p, w, false);
 }
 int gmp_sos(int k, const PointId* ids, const double* const* p, const double* w) {
-  check_k(k, w);
+  check_k(k, w, kMaxLambdaK);
   if (repeated_id(k, ids)) return 0;
   return gmp_sign(k, ids, p, w, ids != nullptr);
 }
@@ -237,11 +276,11 @@ int power3d_exact(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m) {
   return lambda_sign(5, nullptr, p, w, m);
 }
 int orient_d_exact(int d, const double* const* p, Mode m) {
-  if (d < 1 || d > 6) throw std::invalid_argument("orient_d: d must be in 1..6");
+  if (d < 1 || d > kMaxLambdaK - 1) throw std::invalid_argument("orient_d: d must be in 1..10");
   return lambda_sign(d + 1, nullptr, p, nullptr, m);
 }
 int power_d_exact(int d, const double* const* p, const double* w, Mode m) {
-  if (d < 1 || d > 5) throw std::invalid_argument("power_d: d must be in 1..5");
+  if (d < 1 || d > kMaxLambdaK - 2) throw std::invalid_argument("power_d: d must be in 1..9");
   return lambda_sign(d + 2, nullptr, p, w, m);
 }
 
@@ -274,9 +313,9 @@ int compare_sos(Pt a, Pt b, int coord, Mode m) {
   return lambda_sign(2, id, p, nullptr, m);
 }
 int orient_d(int d, const Pt* pts, Mode m) {
-  if (d < 1 || d > 6) throw std::invalid_argument("orient_d: d must be in 1..6");
-  PointId id[8];
-  const double* p[8];
+  if (d < 1 || d > kMaxLambdaK - 1) throw std::invalid_argument("orient_d: d must be in 1..10");
+  PointId id[kMaxLambdaK];
+  const double* p[kMaxLambdaK];
   for (int i = 0; i <= d; ++i) {
     id[i] = pts[i].id;
     p[i] = pts[i].x;
@@ -284,10 +323,10 @@ int orient_d(int d, const Pt* pts, Mode m) {
   return lambda_sign(d + 1, id, p, nullptr, m);
 }
 int power_d(int d, const WPt* pts, Mode m) {
-  if (d < 1 || d > 5) throw std::invalid_argument("power_d: d must be in 1..5");
-  PointId id[8];
-  const double* p[8];
-  double w[8];
+  if (d < 1 || d > kMaxLambdaK - 2) throw std::invalid_argument("power_d: d must be in 1..9");
+  PointId id[kMaxLambdaK];
+  const double* p[kMaxLambdaK];
+  double w[kMaxLambdaK];
   for (int i = 0; i < d + 2; ++i) {
     id[i] = pts[i].id;
     p[i] = pts[i].x;

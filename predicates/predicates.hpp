@@ -93,8 +93,13 @@
 //                         > 0 iff d is inside the circumcircle (Shewchuk's
 //                         incircle).
 //   power3d(a,b,c,d,e) = 4D analogue: orient4d of lifted points.
-//   orient_d(d, p[0..d]) = sign det Λ of d+1 points in R^d (d <= 6).
-//   power_d(d, p[0..d+1], w) = orient_{d+1} of the lifted points (d <= 5).
+//   orient_d(d, p[0..d]) = sign det Λ of d+1 points in R^d (d <= 10).
+//   power_d(d, p[0..d+1], w) = orient_{d+1} of the lifted points (d <= 9).
+//
+// Sizes: k = 2..8 rows take every stage below; k = 9..11 (orientations in
+// 8D..10D, power tests in 7D..9D: the d-dimensional hulls and triangulations
+// beyond 7D / 6D) are host-only and take the dynamic filter (ErrDouble over
+// column subsets, evaluated at run time) and then GMP (lambda_sign_high).
 #pragma once
 
 #include <cstdint>
@@ -102,6 +107,12 @@
 namespace flipflop::pred {
 
 using PointId = std::uint64_t;
+
+// The largest Λ-matrix any predicate takes: 11 rows (power_d in 9D).
+inline constexpr int kMaxLambdaK = 11;
+// The largest Λ-matrix of the staged (device-usable) path; larger ones go to
+// lambda_sign_high.
+inline constexpr int kMaxStagedK = 8;
 
 enum class Mode { filtered, gmp };
 
@@ -132,9 +143,9 @@ int orient3d_exact(const double* a, const double* b, const double* c, const doub
                    Mode m = Mode::filtered);
 int power2d_exact(WPt a, WPt b, WPt c, WPt d, Mode m = Mode::filtered);
 int power3d_exact(WPt a, WPt b, WPt c, WPt d, WPt e, Mode m = Mode::filtered);
-// d+1 points in R^d, 1 <= d <= 6
+// d+1 points in R^d, 1 <= d <= 10
 int orient_d_exact(int d, const double* const* p, Mode m = Mode::filtered);
-// d+2 weighted points in R^d, 1 <= d <= 5 (lifted to R^(d+1))
+// d+2 weighted points in R^d, 1 <= d <= 9 (lifted to R^(d+1))
 int power_d_exact(int d, const double* const* p, const double* w, Mode m = Mode::filtered);
 
 // ---- Signs under Simulation of Simplicity (never 0 for distinct ids) --------
@@ -182,7 +193,7 @@ int dot2d_exact(const double* a, const double* b, const double* c);
 // components, which are these projected signed areas (times 2), does.
 bool collinear3_exact(const double* a, const double* b, const double* c);
 
-// The general entry point: sign of det Λ for k = dim+1 points (k <= 8).
+// The general entry point: sign of det Λ for k = dim+1 points (k <= 11).
 // `coords[i]` points to the coordinates of point i; if `weights` is non-null
 // the last column is the lifted height of the first dim-1 coordinates
 // (|x|^2 - w). `ids` may be null (no perturbation: exact sign, may be 0).
@@ -211,6 +222,15 @@ int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window);
 int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window);
 int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window);
 }  // namespace after_filters
+
+// Host-only path for k = 9..11 rows (kMaxStagedK < k <= kMaxLambdaK): a
+// repeated id gives 0; then the dynamic filter (ErrDouble minors over column
+// subsets), then the exact sign and, when it is 0 and ids are given, the
+// Simulation of Simplicity, both on GMP integers (exact.hpp). The static
+// filter `f` is accepted for a uniform call and not used (its bounds are
+// derived for k <= 8). lambda_sign_staged<K> calls it for K > 8.
+int lambda_sign_high(const StaticFilter* f, int k, const PointId* ids, const double* const* coords,
+                     const double* weights);
 
 // Whether after_filters uses the FMA instantiation on this host.
 bool host_fma();

@@ -45,6 +45,7 @@
 #include "predicates/dd_filter.hpp"
 #include "predicates/exact_expansion.hpp"
 #include "predicates/lambda_filter.hpp"
+#include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
 
 namespace flipflop::pred {
@@ -183,19 +184,28 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
 template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p,
                                     const double* w) {
-  if (repeated_id(K, ids)) return 0;
-  if constexpr (K == 3 || K == 4) {
-    // orient2d, orient3d: the static and the permanent filter in one
-    // evaluation (static_filter.hpp, plain_filters)
-    if (f && !w) {
-      if (const int s = plain_filters<K>(*f, p)) return s;
-      return lambda_sign_after_filters<K>(ids, p, w, f->dd_window());
+  if constexpr (K > kMaxStagedK) {
+    // 9..11 rows (hulls beyond 7D, triangulations beyond 6D): host only
+    static_assert(K <= kMaxLambdaK, "lambda_sign_staged: at most kMaxLambdaK rows");
+    if (!ids) return lambda_sign_high(f, K, nullptr, p, w);
+    PointId id[K];
+    for (int i = 0; i < K; ++i) id[i] = static_cast<PointId>(ids[i]);
+    return lambda_sign_high(f, K, id, p, w);
+  } else {
+    if (repeated_id(K, ids)) return 0;
+    if constexpr (K == 3 || K == 4) {
+      // orient2d, orient3d: the static and the permanent filter in one
+      // evaluation (static_filter.hpp, plain_filters)
+      if (f && !w) {
+        if (const int s = plain_filters<K>(*f, p)) return s;
+        return lambda_sign_after_filters<K>(ids, p, w, f->dd_window());
+      }
     }
+    if (f)
+      if (const int s = static_sign<K>(*f, p, w)) return s;
+    if (const int s = semi_static_sign<K>(p, w)) return s;
+    return lambda_sign_after_filters<K>(ids, p, w, f && f->dd_window());
   }
-  if (f)
-    if (const int s = static_sign<K>(*f, p, w)) return s;
-  if (const int s = semi_static_sign<K>(p, w)) return s;
-  return lambda_sign_after_filters<K>(ids, p, w, f && f->dd_window());
 }
 
 // Calls f(std::integral_constant<int, K>{}) for the run-time k, 2 <= k <= 8

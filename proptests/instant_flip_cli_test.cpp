@@ -79,11 +79,11 @@ PointSet read_back(const std::string& path, int d) { return io::read_points(path
 
 }  // namespace
 
-TEST_CASE("cli rtd: certified canonical output in d = 2..5", "[instant_flip][cli]") {
+TEST_CASE("cli rtd: certified canonical output in d = 2..9", "[instant_flip][cli]") {
   TempDir tmp;
-  for (int d = 2; d <= 5; ++d) {
+  for (int d = 2; d <= 9; ++d) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(d));
-    const std::size_t n = d == 2 ? 60 : (d == 3 ? 40 : 20);
+    const std::size_t n = d == 2 ? 60 : (d == 3 ? 40 : d <= 5 ? 20 : d <= 7 ? 16 : 13);
     const PointSet pts = random_points(d, n, rng);
     const std::vector<double> w = random_weights(n, 0.02, rng);
     const std::string in = tmp.path("in" + std::to_string(d) + ".xyz"), out = tmp.path("out.txt");
@@ -153,7 +153,7 @@ TEST_CASE("cli rtd / instant-flip: bad input is one UsageError", "[instant_flip]
   const auto iflip = [](const cli::InstantFlipArgs& a) { return cli::run_instant_flip(a); };
 
   cli::RtdArgs r{fw, out, 3, false};
-  expect_usage(rtd, cli::RtdArgs{fw, out, 6, false}, "--dim 6");
+  expect_usage(rtd, cli::RtdArgs{fw, out, 10, false}, "--dim 10");
   expect_usage(rtd, cli::RtdArgs{tmp.path("missing.xyz"), out, 3, false}, "missing.xyz");
   expect_usage(rtd, cli::RtdArgs{p, out, 3, false}, "columns");  // no weight column
   expect_usage(rtd, cli::RtdArgs{fw, out, 4, false}, "columns");  // 4 columns read as 4D + weight
@@ -189,6 +189,7 @@ TEST_CASE("cli rtd / instant-flip: bad input is one UsageError", "[instant_flip]
   write_xyz(tmp.path("fewer.xyz"), fewer, &u_fewer);
   expect_usage(iflip, cli::InstantFlipArgs{p, fw, tmp.path("fewer.xyz"), out, 3, false, false}, "19 points");
   expect_usage(iflip, cli::InstantFlipArgs{p, "", fu, out, 3, false, false}, "--from");
+  expect_usage(iflip, cli::InstantFlipArgs{p, fw, fu, out, 6, false, false}, "--dim 6");  // the moving model: 2..5
   REQUIRE(cli::run_instant_flip(cli::InstantFlipArgs{p, fw, fu, out, 3, false, false}) == 0);
 }
 

@@ -11,10 +11,10 @@
 //               from the smallest index, one vertex per line
 //        hull3  3 columns; prints the canonical facets "i j k" (ccw seen
 //               from outside, smallest first, lines sorted)
-//        dt     d = 2..5 columns; the Delaunay triangulation (weights 0)
-//        rt     d + 1 columns, the last one the weight (d = 2..5); the
+//        dt     d = 2..9 columns; the Delaunay triangulation (weights 0)
+//        rt     d + 1 columns, the last one the weight (d = 2..9); the
 //               regular triangulation (lifted height |x|^2 - w)
-//        dt-furthest  d = 2..5 columns; the furthest-site Delaunay
+//        dt-furthest  d = 2..9 columns; the furthest-site Delaunay
 //               triangulation (the upper hull of the same lifted points)
 //        dt, dt-furthest and rt print the canonical simplices (positively oriented,
 //        smallest first, lines sorted), then one line "redundant:" followed
@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   sb::Input in;
   in.d = weighted ? cols - 1 : cols;
   const int want_lo = kind == "hull2" ? 2 : kind == "hull3" ? 3 : 2;
-  const int want_hi = kind == "hull2" ? 2 : kind == "hull3" ? 3 : 5;
+  const int want_hi = kind == "hull2" ? 2 : kind == "hull3" ? 3 : 9;  // power tests of up to 11 rows (sos_oracle)
   if (in.d < want_lo || in.d > want_hi)
     return usage(kind + ": " + std::to_string(in.d) + " coordinate columns (" + std::to_string(want_lo) + ".." +
                  std::to_string(want_hi) + " needed)");

@@ -3,7 +3,7 @@
 // perturbed determinant expanded term by term, GMP minors, exponents compared
 // exactly; no code of predicates/), on every path the API offers:
 //   Mode::filtered and Mode::gmp of orient2d/3d, power2d/3d, orient_d (d = 2..6),
-//   power_d (d = 2..5), power_d_pulled (d = 2..5), lambda_sign (k = 2..8),
+//   power_d (d = 2..5), power_d_pulled (d = 2..5), lambda_sign (k = 2..11),
 //   compare_sos, mixed_sign (an exact centroid row); the default arguments; the
 //   per-input static filter overloads, fast::, after_filters; the stages
 //   stage::expansion_sos and stage::gmp_sos.
@@ -417,15 +417,17 @@ TEST_CASE("oracle: every SoS predicate and path equals the oracle (long degenera
   degenerate_sweep(38001, 8 * release_scale());
 }
 
-// ---- lambda_sign for k = 2..8 and compare_sos -----------------------------------------------
-TEST_CASE("oracle: lambda_sign k = 2..8 and compare_sos equal the oracle") {
+// ---- lambda_sign for k = 2..11 and compare_sos ----------------------------------------------
+// k = 9..11 (orient_d in 8D..10D, power_d in 7D..9D) take lambda_sign_high:
+// the filters at run time, then GMP; the oracle checks both modes there too.
+TEST_CASE("oracle: lambda_sign k = 2..11 and compare_sos equal the oracle") {
   Det g(38);
-  for (int k = 2; k <= 8; ++k)
+  for (int k = 2; k <= pred::kMaxLambdaK; ++k)
     for (bool lifted : {false, true}) {
       if (lifted && k < 3) continue;
       const int d = lifted ? k - 2 : k - 1;
       const Spec s{lifted ? Kind::power_d : Kind::orient_d, d};
-      const int reps = std::max(2, static_cast<int>((k == 8 ? 4 : 12) * release_scale()));
+      const int reps = std::max(2, static_cast<int>((k >= 9 ? 2 : k == 8 ? 4 : 12) * release_scale()));
       for (int fam = 0; fam < 6; ++fam)
         for (int rep = 0; rep < reps; ++rep) {
           const Instance in = det_instance(s, g, fam, rep % 2 == 1);

@@ -37,6 +37,19 @@ namespace {
 
 bool is_sign(int s) { return s == -1 || s == 0 || s == 1; }
 
+// (a) on one instance: the filtered path's exact and SoS signs are GMP's;
+// returns GMP's SoS sign
+int check_filtered_equals_gmp(const Spec& s, const Instance& in) {
+  int gmp = 0;
+  for (bool sos : {false, true}) {
+    const int filtered = eval(s, in, sos, Mode::filtered);
+    gmp = eval(s, in, sos, Mode::gmp);
+    RC_ASSERT(is_sign(gmp));
+    RC_ASSERT(filtered == gmp);
+  }
+  return gmp;
+}
+
 }  // namespace
 
 // ---- (a) filtered == GMP ---------------------------------------------------------
@@ -46,12 +59,31 @@ TEST_CASE("predicates: filtered equals GMP on every family (exact and SoS)") {
       rc::prop(s.name() + ", " + family_name(f), [s, f] {
         const Instance in = gen_instance(s, f);
         RC_LOG() << describe(s, in);
-        for (bool sos : {false, true}) {
-          const int filtered = eval(s, in, sos, Mode::filtered);
-          const int gmp = eval(s, in, sos, Mode::gmp);
-          RC_ASSERT(is_sign(gmp));
-          RC_ASSERT(filtered == gmp);
-        }
+        check_filtered_equals_gmp(s, in);
+      });
+    }
+  }
+}
+
+// The same, and (b)-(d) below, for 8..11 rows (orient_d in 7D..10D, power_d
+// in 6D..9D: the d-dimensional hulls and triangulations up to 9D): the run-
+// time filters (Gaussian elimination in ErrDouble) against GMP. A tenth of
+// the configured cases: a GMP 11 x 11 determinant and its SoS search are the
+// slow part.
+TEST_CASE("predicates: 8..11 rows: filtered equals GMP, permutations, SoS refines the exact sign") {
+  for (const Spec& s : high_specs()) {
+    for (Family f : kFamilies) {
+      prop_scaled(s.name() + ", " + family_name(f), 10, [s, f] {
+        const Instance in = gen_instance(s, f);
+        RC_LOG() << describe(s, in);
+        const int sos = check_filtered_equals_gmp(s, in);
+        RC_ASSERT(sos != 0);
+        const int exact = eval(s, in, false, Mode::gmp);
+        if (exact != 0) RC_ASSERT(sos == exact);
+        const std::vector<int> perm = gen_permutation(in.k);
+        const Instance out = permuted(in, perm);
+        for (bool sos : {false, true})
+          RC_ASSERT(eval(s, out, sos, Mode::filtered) == permutation_sign(perm) * eval(s, in, sos, Mode::filtered));
       });
     }
   }

@@ -106,6 +106,20 @@ TEST_CASE("rtd cavity: degenerate and random sets in 2D..5D equal the reference,
                         });
 }
 
+// 6D..9D (power tests of 8..11 points: the predicates' host-only path from 9
+// rows on): small degenerate sets, a fraction of the cases (RT+1's flips and
+// the GMP stage are slow there)
+TEST_CASE("rtd cavity: degenerate sets in 6D..9D equal the reference, certified (shrinking)", "[rtd_cavity]") {
+  for (int d = 6; d <= 9; ++d)
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets of " + std::to_string(d + 1) + ".." +
+                          std::to_string(d + 5) + " points, weighted: cavity kernel == RT+1 byte for byte, certified",
+                      d <= 7 ? 20 : d == 8 ? 50 : 100, [d] {
+                        const PointSet ps = *test::degenerate_points_d(d, d + 1, d + 5, true);
+                        check(ps, false, [](bool ok) { RC_ASSERT(ok); });
+                        check(ps, true, [](bool ok) { RC_ASSERT(ok); });
+                      });
+}
+
 TEST_CASE("rtd cavity: furthest-site triangulations in 2D..5D equal the reference (shrinking)", "[rtd_cavity]") {
   for (int d = 2; d <= 5; ++d)
     test::prop_scaled("degenerate " + std::to_string(d) + "D sets, furthest site: cavity kernel == RT+1 with every "

@@ -153,10 +153,10 @@ TEST_CASE("rtd certify: rejects bad indices and wrong dimension and a triangulat
   REQUIRE(!rep.ok);
   INFO(rep.message());
   REQUIRE((rep.condition == "missing-point-redundant" || rep.condition == "boundary-is-hull"));
-  PointSet six;
-  six.dim = 6;
-  six.coords.assign(60, 0.5);
-  REQUIRE(certify::rtd(six, r.simplices).condition == "input-dimension");
+  PointSet ten;  // d = 2..9 (ref::rtd::kMaxDim)
+  ten.dim = 10;
+  ten.coords.assign(120, 0.5);
+  REQUIRE(certify::rtd(ten, r.simplices).condition == "input-dimension");
 }
 
 TEST_CASE("rtd certify exact level: accepts any correct triangulation (CGAL on degenerate input) and rejects broken ones") {

@@ -58,8 +58,8 @@ std::set<std::vector<Index>> triangulation_boundary(const PointSet& ps) {
 }
 
 int orient(const PointSet& ps, const std::vector<Index>& f, Index x) {
-  pred::PointId id[8];
-  const double* p[8];
+  pred::PointId id[pred::kMaxLambdaK];
+  const double* p[pred::kMaxLambdaK];
   for (std::size_t j = 0; j < f.size(); ++j) id[j] = f[j], p[j] = ps.point(f[j]);
   id[f.size()] = x, p[f.size()] = ps.point(x);
   return pred::lambda_sign(ps.dim + 1, id, p, nullptr, pred::Mode::filtered);
@@ -188,12 +188,13 @@ TEST_CASE("hull_d certifier: each kind of wrong answer is rejected by its condit
   }
 }
 
-// 6D and 7D (orientations of 7 and 8 points): against the definition and
-// certified; no triangulation there to compare with (RT+1 stops at 5D)
-TEST_CASE("hull_d: 6D and 7D sets against the definition, certified (shrinking)", "[hull_d]") {
-  for (int d : {6, 7})
-    test::prop_scaled("degenerate " + std::to_string(d) + "D sets: hull_d == the definition, certified", 64, [d] {
-      const PointSet ps = *test::degenerate_points_d(d, d + 1, d + 12, false);
+// 6D..9D (orientations of 7..10 points; 9 and 10: the predicates' host-only
+// path): against the definition and certified
+TEST_CASE("hull_d: 6D..9D sets against the definition, certified (shrinking)", "[hull_d]") {
+  for (int d : {6, 7, 8, 9})
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets: hull_d == the definition, certified",
+                      d <= 7 ? 64 : 32, [d] {
+      const PointSet ps = *test::degenerate_points_d(d, d + 1, d + (d <= 7 ? 12 : 6), false);
       bool spanning = true;
       try {
         const Facets f = cpu::hull_d(ps);

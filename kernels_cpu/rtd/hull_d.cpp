@@ -21,13 +21,13 @@ namespace flipflop::cpu {
 namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
-constexpr int kMaxHullDim = 7;  // orientations of up to 8 points (predicates.hpp: lambda_sign, k <= 8)
+constexpr int kMaxHullDim = 9;  // orientations of up to 10 points (predicates.hpp: lambda_sign; k > 8 host-only)
 
-// Determinant of an n x n double matrix (row-major, n <= 6) by Gaussian
-// elimination with partial pivoting: floating point, for the furthest-point
-// heuristic only.
+// Determinant of an n x n double matrix (row-major, n < kMaxHullDim) by
+// Gaussian elimination with partial pivoting: floating point, for the
+// furthest-point heuristic only.
 double det_small(const double* m, int n) {
-  double a[36];
+  double a[kMaxHullDim * kMaxHullDim];
   for (int k = 0; k < n * n; ++k) a[k] = m[k];
   double det = 1.0;
   for (int c = 0; c < n; ++c) {
@@ -112,7 +112,7 @@ class HullBuilder {
     auto& h = nrm_[f];
     double c0 = 0.0;
     for (int k = 0; k < D; ++k) {
-      double sub[36];
+      double sub[(D - 1) * (D - 1) + 1];
       int q = 0;
       for (int r = 0; r < D - 1; ++r)
         for (int c = 0; c < D; ++c)
@@ -411,7 +411,9 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
     case 4: return HullBuilder<4>(plain, st).run();
     case 5: return HullBuilder<5>(plain, st).run();
     case 6: return HullBuilder<6>(plain, st).run();
-    default: return HullBuilder<7>(plain, st).run();
+    case 7: return HullBuilder<7>(plain, st).run();
+    case 8: return HullBuilder<8>(plain, st).run();
+    default: return HullBuilder<9>(plain, st).run();
   }
 }
 

@@ -1,4 +1,4 @@
-// hull_d.hpp — the convex hull in R^d (d = 2..7) by beneath–beyond insertion
+// hull_d.hpp — the convex hull in R^d (d = 2..9) by beneath–beyond insertion
 // with outside sets (Quickhull's order), exact under flipflop's Simulation of
 // Simplicity, and its certifier in time linear in the output plus a walk per
 // point. The backend of Python's `ConvexHull` in 4D..7D (one thread).
@@ -46,7 +46,7 @@ struct HullDStats {
   std::uint64_t tests = 0;       // point-facet visibility tests
 };
 
-// The facets of the hull of ps (dim 2..7; weights ignored), each a d-tuple
+// The facets of the hull of ps (dim 2..9; weights ignored), each a d-tuple
 // of input indices oriented so that orient_d(facet, x) < 0 for every point x
 // inside (predicates.hpp's convention), in no particular order. Input that
 // is not finite or does not span R^d is rejected with std::invalid_argument

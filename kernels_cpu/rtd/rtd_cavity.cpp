@@ -404,7 +404,11 @@ ref::Rtd rtd_cavity(const PointSet& ps, RtdCavityStats* stats, const RtdCavityOp
     case 2: return run<2>(ps, st, options);
     case 3: return run<3>(ps, st, options);
     case 4: return run<4>(ps, st, options);
-    default: return run<5>(ps, st, options);
+    case 5: return run<5>(ps, st, options);
+    case 6: return run<6>(ps, st, options);
+    case 7: return run<7>(ps, st, options);
+    case 8: return run<8>(ps, st, options);
+    default: return run<9>(ps, st, options);
   }
 }
 

@@ -58,7 +58,7 @@ struct RtdCavityStats {
   std::uint64_t walk_steps = 0;  // simplices visited by the walks
 };
 
-// RT(S ⊕ W) of ps (dim 2..5; unweighted: Delaunay), as ref::rtd_incremental
+// RT(S ⊕ W) of ps (dim 2..9; unweighted: Delaunay), as ref::rtd_incremental
 // returns it (canonical simplices, sorted redundant points). Input that the
 // reference rejects is rejected with the reference's std::invalid_argument
 // (ref::validate_rtd_input); more than 2^29 points: std::length_error.

@@ -435,7 +435,7 @@ inline rc::Gen<PointSet> hyperplane_plus_one(int dim, int nmin, int nmax, bool w
 
 // The integer points of the sphere |x|^2 = 9 in R^d (cached per d).
 inline const std::vector<std::vector<double>>& sphere9_points(int dim) {
-  static std::vector<std::vector<double>> cache[8];
+  static std::vector<std::vector<double>> cache[16];  // dim <= 15
   auto& pts = cache[dim];
   if (pts.empty()) {
     std::vector<int> x(static_cast<std::size_t>(dim), -3);

@@ -53,6 +53,16 @@ inline std::vector<Spec> all_specs() {
   return s;
 }
 
+// The host-only sizes, 9..11 rows (predicates.hpp, lambda_sign_high):
+// orient_d in 8D..10D, power_d in 7D..9D (7D orient_d and 6D power_d, 8 rows,
+// take the staged path like all_specs()).
+inline std::vector<Spec> high_specs() {
+  std::vector<Spec> s;
+  for (int d = 7; d <= 10; ++d) s.push_back({Kind::orient_d, d});
+  for (int d = 6; d <= 9; ++d) s.push_back({Kind::power_d, d});
+  return s;
+}
+
 struct Instance {
   int d = 0;                // coordinates per point
   int k = 0;                // number of points

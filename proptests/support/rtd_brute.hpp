@@ -25,12 +25,12 @@ inline std::vector<std::vector<Index>> brute_rtd(const PointSet& ps) {
   for (int i = 0; i <= d; ++i) t[static_cast<std::size_t>(i)] = static_cast<Index>(i);
   if (n < static_cast<Index>(d + 1)) return out;
   for (;;) {
-    pred::Pt p[8];
+    pred::Pt p[pred::kMaxLambdaK];
     for (int i = 0; i <= d; ++i) p[i] = {t[static_cast<std::size_t>(i)], ps.point(t[static_cast<std::size_t>(i)])};
     std::vector<Index> pos = t;
     if (pred::orient_d(d, p) < 0) std::swap(pos[0], pos[1]);
     bool lower = true;
-    pred::WPt w[8];
+    pred::WPt w[pred::kMaxLambdaK];
     for (int i = 0; i <= d; ++i) w[i] = {pos[static_cast<std::size_t>(i)], ps.point(pos[static_cast<std::size_t>(i)]), ps.weight(pos[static_cast<std::size_t>(i)])};
     for (Index x = 0; x < n && lower; ++x) {
       bool in = false;

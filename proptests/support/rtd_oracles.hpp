@@ -54,14 +54,14 @@ inline int squared_extent_exponent(const PointSet& ps) {
 
 // Exact (unperturbed) orientation and lifted power test of the points t.
 inline int orient_exact(const PointSet& ps, const std::vector<Index>& t) {
-  const double* x[8];
+  const double* x[pred::kMaxLambdaK];
   for (std::size_t i = 0; i < t.size(); ++i) x[i] = ps.point(t[i]);
   return pred::orient_d_exact(ps.dim, x);
 }
 
 inline int power_exact(const PointSet& ps, const std::vector<Index>& t) {
-  const double* x[8];
-  double w[8];
+  const double* x[pred::kMaxLambdaK];
+  double w[pred::kMaxLambdaK];
   for (std::size_t i = 0; i < t.size(); ++i) x[i] = ps.point(t[i]), w[i] = ps.weight(t[i]);
   return pred::power_d_exact(ps.dim, x, w);
 }

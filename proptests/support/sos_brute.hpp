@@ -11,7 +11,7 @@
 //          smallest index;
 //   hull3: {a, b, c} is a hull facet iff every other point is strictly on one
 //          side; it is written counter-clockwise seen from outside;
-//   rt (d = 2..5, weights 0 for Delaunay): the projection of the lower hull of
+//   rt (d = 2..9, weights 0 for Delaunay): the projection of the lower hull of
 //          the lifted points (x, |x|² - w), the height perturbed as an
 //          independent coordinate: a (d+1)-subset is a simplex iff every
 //          other lifted point is strictly above its hyperplane; only finite
@@ -206,7 +206,7 @@ inline std::vector<Tuple> hull3(const Input& in) {
   return out;
 }
 
-// ---- regular triangulation, d = 2..5 ------------------------------------------------------
+// ---- regular triangulation, d = 2..9 ------------------------------------------------------
 struct Rt {
   std::vector<Tuple> simplices;  // canonical
   Tuple redundant;               // sorted

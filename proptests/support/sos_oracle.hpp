@@ -276,7 +276,7 @@ inline bool repeated(const std::vector<QRow>& rows, const std::vector<Id>& ids) 
 inline Result sos_sign(const std::vector<QRow>& rows, const std::vector<Id>& ids) {
   using namespace detail;
   const int k = static_cast<int>(rows.size());
-  if (k < 1 || k > 10 || ids.size() != rows.size()) throw std::invalid_argument("sos_oracle: bad size");
+  if (k < 1 || k > 11 || ids.size() != rows.size()) throw std::invalid_argument("sos_oracle: bad size");
   const int m = k - 1;
   for (const QRow& r : rows)
     if (static_cast<int>(r.size()) != m) throw std::invalid_argument("sos_oracle: rows need k-1 entries");
@@ -309,7 +309,7 @@ inline Result pulled_sign(const std::vector<QRow>& coords, const std::vector<mpq
   using namespace detail;
   const int k = static_cast<int>(coords.size());
   const int d = k - 2;
-  if (k < 3 || k > 10 || h.size() != coords.size() || q.size() != coords.size() || ids.size() != coords.size())
+  if (k < 3 || k > 11 || h.size() != coords.size() || q.size() != coords.size() || ids.size() != coords.size())
     throw std::invalid_argument("sos_oracle: bad size");
   std::vector<QRow> rh = coords, rq = coords;
   for (int r = 0; r < k; ++r) {

@@ -49,15 +49,19 @@ __all__ = ["ConvexHull", "Delaunay", "Voronoi", "QhullOptionError", "Certificate
 gpu_backends: tuple = tuple(_flipflop.gpu_backends())
 
 _GPU = ("cuda-omp", "cuda") if gpu_backends else ()
-# 4D, 5D hulls: the boundary of the Delaunay triangulation by that backend
-_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU, 4: ("cpu", "reference"),
-                  5: ("cpu", "reference"), 6: ("cpu",), 7: ("cpu",)}
+# 4D..9D: the hull kernel (kernels_cpu/rtd/hull_d) or, 'reference', the
+# boundary of the Delaunay triangulation by RT+1
+_HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU,
+                  **{d: ("cpu", "reference") for d in range(4, 10)}}
 # per dimension, the default first: the multithreaded kernels exist for d = 2
 # and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the cavity-insertion kernel for
-# d = 4, 5 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2
+# d = 4..9 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2
 # (kernels_cuda/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"), 4: ("cpu", "reference"),
-                      5: ("cpu", "reference")}
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"),
+                      **{d: ("cpu", "reference") for d in range(4, 10)}}
+# the dimensions of Delaunay, Voronoi and ConvexHull (predicates of up to 11
+# rows: power tests in 9D)
+_DIMS = tuple(range(2, 10))
 
 
 def _points(points, dims: Sequence[int], what: str, finite: bool = True) -> np.ndarray:
@@ -357,11 +361,11 @@ class _QhullUser:
 
 
 class ConvexHull(_QhullUser):
-    """The convex hull of points in 2D..7D, exact and certified, with
+    """The convex hull of points in 2D..9D, exact and certified, with
     scipy.spatial.ConvexHull's constructor and attributes
-    (docs/scipy_porting.md lists every name and difference). 4D..7D:
+    (docs/scipy_porting.md lists every name and difference). 4D..9D:
     the hull kernel's facets (beneath-beyond, exact, certified; backend
-    'cpu', the only one in 6D and 7D) or, in 4D and 5D, the boundary facets
+    'cpu') or the boundary facets
     of the canonical Delaunay triangulation (RT+1, certified; backend
     'reference'), which are the
     canonical hull's facets (_hull_d says why), with the
@@ -375,14 +379,14 @@ class ConvexHull(_QhullUser):
       points     (n, d) float64, the input
       simplices  3D: (m, 3) triangles, counter-clockwise seen from outside;
                  2D: (k, 2) edges (i, next) of the counter-clockwise hull;
-                 4D, 5D: (m, d) outward (above)
+                 4D..9D: (m, d) outward (above)
       neighbors  (m, d) the facet opposite each vertex of each simplex
       vertices   2D: the hull vertices counter-clockwise from the smallest
-                 index; 3D..5D: sorted
+                 index; 3D..9D: sorted
       equations  (m, d+1) [unit outward normal, offset]: normal.x + offset
                  <= 0 inside (floating point, from the exact facets; NaN
                  normals for the zero-area facets of degenerate input)
-      volume, area  (2D: area and perimeter; 3D..5D: volume and surface
+      volume, area  (2D: area and perimeter; 3D..9D: volume and surface
                  area; inf or 0 only where the true value is not a double)
       coplanar   (k, 3) intc [point, facet, vertex], filled only when
                  qhull_options holds Qc (else shape (0, 3)): the points
@@ -417,7 +421,7 @@ class ConvexHull(_QhullUser):
     and a RuntimeError). str or bytes.
 
     backend: 'cpu' (the default: the multithreaded kernels in 2D and 3D,
-    the d-dimensional hull kernel in 4D and 5D, one thread),
+    the d-dimensional hull kernel in 4D..9D, one thread),
     'reference' (the exact sequential reference)
     or one of `gpu_backends` ('cuda-omp': the GPU kernels on thrust's OpenMP
     backend); every backend returns the same answer. strict=True (3D only)
@@ -430,7 +434,7 @@ class ConvexHull(_QhullUser):
 
     def __init__(self, points, incremental: bool = False, qhull_options=None, *, strict: bool = False,
                  backend: Optional[str] = None, threads: int = 0):
-        a = _points(points, (2, 3, 4, 5, 6, 7), "ConvexHull", finite=False)
+        a = _points(points, _DIMS, "ConvexHull", finite=False)
         d = a.shape[1]
         self._options = _qhull_options(qhull_options, "ConvexHull", "Qx" if d > 4 else "")
         if strict and d != 3:
@@ -495,7 +499,7 @@ class ConvexHull(_QhullUser):
 
 
 def _hull_d(a: np.ndarray, backend: str, threads: int):
-    """The convex hull in 4D..7D: backend 'cpu' the facets of the hull
+    """The convex hull in 4D..9D: backend 'cpu' the facets of the hull
     kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
     the boundary facets of the canonical Delaunay triangulation (RT+1,
     certified) — the same facets —, with the
@@ -568,7 +572,7 @@ def _hull_sides(points: np.ndarray, facets: np.ndarray, queries: np.ndarray, pai
     point is strictly outside the facet's hyperplane (the side its outward
     normal points to), -1 strictly inside, 0 on it; exact. The facets are
     flipflop's: 3D triangles counter-clockwise seen from outside (outward =
-    +det[b-a, c-a, x-a]; 4D, 5D: +det[f1-f0, ..., x-f0] likewise), 2D edges of
+    +det[b-a, c-a, x-a]; 4D..9D: +det[f1-f0, ..., x-f0] likewise), 2D edges of
     the counter-clockwise cycle (outward = -det[b-a, x-a])."""
     d = points.shape[1]
     f = facets[pairs_f]
@@ -691,11 +695,11 @@ def _insphere_sign(d: int) -> int:
     return _exact_sign(rows)
 
 
-_INSPHERE = {d: _insphere_sign(d) for d in (2, 3, 4, 5)}
+_INSPHERE = {d: _insphere_sign(d) for d in _DIMS}
 
 
 class Delaunay(_QhullUser):
-    """The regular (weighted Delaunay) triangulation of points in 2D..5D,
+    """The regular (weighted Delaunay) triangulation of points in 2D..9D,
     exact and certified; with weights=None the Delaunay triangulation. The
     constructor and attributes are scipy.spatial.Delaunay's
     (docs/scipy_porting.md lists every name and difference):
@@ -754,7 +758,7 @@ class Delaunay(_QhullUser):
     `rtd --strict` on the command line).
 
     furthest_site=True: the furthest-site Delaunay triangulation (every
-    dimension 2..5, unweighted, the 'cpu' backend — the cavity-insertion
+    dimension 2..9, unweighted, the 'cpu' backend — the cavity-insertion
     kernel, every dimension — or 'reference'; no strict view):
     the upper hull of the lifted points projected, its vertices those of
     the convex hull (the other points are in `redundant`; `coplanar` is
@@ -779,8 +783,8 @@ class Delaunay(_QhullUser):
     backend: 'cpu' (the default: the multithreaded kernels of kernels_cpu/rt2
     and kernels_cpu/rt3, certified from their witnesses, in 2D and 3D; the
     cavity-insertion kernel of kernels_cpu/rtd, one thread, certified by the
-    d-dimensional certifier, in 4D and 5D), 'reference' (the exact
-    sequential reference: ffRT in 2D, RT+1 in 3D..5D) or, in 2D, one of
+    d-dimensional certifier, in 4D..9D), 'reference' (the exact
+    sequential reference: ffRT in 2D, RT+1 in 3D..9D) or, in 2D, one of
     `gpu_backends` ('cuda-omp':
     the GPU ffRT on thrust's OpenMP backend); every backend returns the same
     simplices. strict=True derives the strict view from the backend's
@@ -801,8 +805,10 @@ class Delaunay(_QhullUser):
         if self.furthest_site and backend not in (None, "cpu", "reference"):
             raise ValueError(f"Delaunay: furthest_site=True is computed by the 'cpu' or the 'reference' backend, "
                              f"got {backend!r}")
-        a = _points(points, (2, 3, 4, 5), "Delaunay", finite=False)
+        a = _points(points, _DIMS, "Delaunay", finite=False)
         d = a.shape[1]
+        if strict and d > 5:
+            raise ValueError(f"Delaunay: strict=True is defined for 2D..5D (its second perturbation), got {d}D")
         self._options = _qhull_options(qhull_options, "Delaunay", "Qbb Qc Qz Qx Q12" if d > 4 else "Qbb Qc Qz Q12")
         self._strict, self._threads = bool(strict), _threads(threads, "Delaunay")
         self._backend = ((backend or "cpu") if self.furthest_site
@@ -1104,7 +1110,7 @@ def certify(kind: str, points, simplices, weights=None, canonical: bool = False,
     answer in canonical form. orient=True first orients every triangle outward /
     simplex positively, exactly (scipy does not orient its hull facets).
     """
-    dims = {"hull2": (2,), "hull3": (3,), "delaunay": (2, 3, 4, 5)}
+    dims = {"hull2": (2,), "hull3": (3,), "delaunay": _DIMS}
     if kind not in dims:
         raise ValueError(f"certify: kind must be one of {tuple(dims)}, got {kind!r}")
     a = _points(points, dims[kind], "certify")

@@ -1,5 +1,5 @@
 """flipflop.Voronoi: the exact Voronoi diagram (with weights, the power or
-Laguerre diagram) of points in 2D..5D, with scipy.spatial.Voronoi's
+Laguerre diagram) of points in 2D..9D, with scipy.spatial.Voronoi's
 attributes; the dual of flipflop's certified (canonical) regular
 triangulation.
 
@@ -19,9 +19,10 @@ from . import (QhullOptionError, _QhullUser, _flipflop, _furthest_site, _new_poi
 
 __all__ = ["Voronoi"]
 
-# the backends of `_flipflop.triangulate` per dimension, the default first:
-# the multithreaded kernels in 2D and 3D, the exact reference in 4D and 5D
-_BACKENDS = {2: "cpu", 3: "cpu", 4: "reference", 5: "reference"}
+# the backend of `_flipflop.triangulate` per dimension: the multithreaded
+# kernels in 2D and 3D, the cavity-insertion kernel in 4D..9D (every backend
+# returns the same certified triangulation)
+_BACKENDS = {d: "cpu" for d in range(2, 10)}
 
 
 def _lists(offsets: np.ndarray, values: np.ndarray) -> list:
@@ -34,7 +35,7 @@ class Voronoi(_QhullUser):
     """Voronoi(points, furthest_site=False, incremental=False,
     qhull_options=None, *, weights=None, threads=0)
 
-    The exact Voronoi diagram of points in 2D..5D; with `weights` the power
+    The exact Voronoi diagram of points in 2D..9D; with `weights` the power
     (Laguerre) diagram, whose cell of point p is where |x - p|^2 - w_p is
     least. It is the dual of flipflop's certified regular triangulation
     (flipflop.Delaunay), with the exact diagram's topology on any input.
@@ -50,7 +51,7 @@ class Voronoi(_QhullUser):
       ridge_vertices  list of R lists: the Voronoi vertices of each ridge, -1
                       for the vertex at infinity (unbounded ridges); 2D:
                       [a, b] ([-1, b] when unbounded); 3D: in cyclic order
-                      around the ridge; 4D, 5D: sorted
+                      around the ridge; 4D..9D: sorted
       regions         list of n lists: the Voronoi vertices of each point's
                       cell, -1 when the cell is unbounded (2D: in cyclic order)
       point_region    (n,) int: the region of each point (here the identity:

@@ -79,6 +79,11 @@ using namespace flipflop;
 
 namespace {
 
+// The largest dimension of every class (ref::rtd::kMaxDim: Delaunay, Voronoi
+// and ConvexHull in 2D..9D); the fixed-size buffers below hold d + 1 rows.
+constexpr int kMaxD = 9;
+static_assert(kMaxD == ref::rtd::kMaxDim, "module.cpp buffers: the reference's largest dimension");
+
 using Points = nb::ndarray<const double, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
 using Vector = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using Cells = nb::ndarray<const std::int64_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
@@ -302,7 +307,10 @@ std::vector<std::int64_t> facet_neighbors(std::size_t m, std::size_t k, std::siz
     case 5: return facet_neighbors_in<5, std::uint64_t>(m, buckets, vertex);
     case 6: return facet_neighbors_in<6, std::uint64_t>(m, buckets, vertex);
     case 7: return facet_neighbors_in<7, std::uint64_t>(m, buckets, vertex);
-    default: throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..7");
+    case 8: return facet_neighbors_in<8, std::uint64_t>(m, buckets, vertex);
+    case 9: return facet_neighbors_in<9, std::uint64_t>(m, buckets, vertex);
+    case 10: return facet_neighbors_in<10, std::uint64_t>(m, buckets, vertex);
+    default: throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..10");
   }
 }
 
@@ -612,7 +620,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
                                               bool furthest) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
-  if (d < 2 || d > 5) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..5");
+  if (d < 2 || d > ref::rtd::kMaxDim) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..9");
   if (furthest && (strict || (backend != "reference" && backend != "cpu")))
     throw std::invalid_argument("the furthest-site triangulation is computed by the 'cpu' or the 'reference' "
                                 "backend, without strict");
@@ -700,14 +708,14 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
           list_array(redundant)};
 }
 
-// The facets of the convex hull in R^d, d = 2..7 (kernels_cpu/rtd/hull_d:
+// The facets of the convex hull in R^d, d = 2..9 (kernels_cpu/rtd/hull_d:
 // beneath-beyond in Quickhull's order, exact under SoS, one thread),
 // certified by cpu::hull_d_problem (closed convex surface star-shaped from a
 // point that is not a vertex, every other point inside by a walk): (m, d)
 // rows oriented so that orient_d(facet, x) < 0 for x inside.
 IndexArray hull_d(const Points& p) {
   const PointSet ps = point_set(p, std::nullopt);
-  if (ps.dim < 2 || ps.dim > 7) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..7");
+  if (ps.dim < 2 || ps.dim > 9) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..9");
   std::vector<std::vector<Index>> facets;
   {
     nb::gil_scoped_release nogil;
@@ -723,7 +731,7 @@ IndexArray hull_d(const Points& p) {
 // the point indices as buckets.
 IndexArray neighbors(const Cells& c) {
   const std::size_t m = c.shape(0), k = c.shape(1);
-  if (k < 2 || k > 7) throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..7");
+  if (k < 2 || k > 10) throw std::invalid_argument("neighbors expects simplices of shape (m, k) with k = 2..10");
   std::vector<std::int64_t> nb;
   {
     nb::gil_scoped_release nogil;
@@ -750,7 +758,7 @@ std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
   if (n < 2) return order;
   const unsigned bits = static_cast<unsigned>(63 / d);
-  double lo[6], hi[6];
+  double lo[kMaxD], hi[kMaxD];
   for (std::size_t j = 0; j < d; ++j) lo[j] = hi[j] = q[j];
   for (std::size_t i = 1; i < n; ++i)
     for (std::size_t j = 0; j < d; ++j) {
@@ -817,7 +825,7 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
     auto vtx = [&](std::size_t s, std::size_t j) { return ps.point(static_cast<std::size_t>(c.data()[s * k + j])); };
     // sign of det[[v_i 1]] with vertex j replaced by x (-1 for x = null: the simplex itself)
     auto orient = [&](std::size_t s, long j, const double* x) {
-      const double* rows[6];
+      const double* rows[kMaxD + 1];
       for (std::size_t l = 0; l < k; ++l) rows[l] = static_cast<long>(l) == j ? x : vtx(s, l);
       return pred::orient_d_exact(static_cast<int>(d), rows);
     };
@@ -943,7 +951,7 @@ IndexArray orient_cells(const std::string& kind, const Points& p, const Cells& c
         // outward (certify_hull3.cpp: orient3d(a, b, c, interior) > 0)
       } else if (kind == "delaunay") {
         if (t.size() != static_cast<std::size_t>(ps.dim + 1)) throw std::invalid_argument("simplices need d+1 indices");
-        const double* rows[6];
+        const double* rows[kMaxD + 1];
         for (std::size_t l = 0; l < t.size(); ++l) rows[l] = ps.point(t[l]);
         s = pred::orient_d_exact(ps.dim, rows) * (ps.dim % 2 == 0 ? 1 : -1);  // volume convention (canonical_d.hpp)
       } else {
@@ -1110,10 +1118,10 @@ inline void split_double(double x, std::int64_t& mant, long& ex) {
 // determinant by fraction-free (Bareiss) elimination, exact.
 struct CentreSolver {
   int d = 2;
-  Mpz P[6][5], W[6], A[5][5], B[5], M[5], Dn, t, q, r, tmp;
+  Mpz P[kMaxD + 1][kMaxD], W[kMaxD + 1], A[kMaxD][kMaxD], B[kMaxD], M[kMaxD], Dn, t, q, r, tmp;
   long E = 0;
 
-  Mpz X[5][5];
+  Mpz X[kMaxD][kMaxD];
   long det(int skip_col_for_b, mpz_t out) {  // det of A with column skip replaced by B (skip < 0: none) into out
     for (int i = 0; i < d; ++i)
       for (int j = 0; j < d; ++j) mpz_set(X[i][j].v, j == skip_col_for_b ? B[i].v : A[i][j].v);
@@ -1309,7 +1317,7 @@ bool centre_filtered(int d, const double* const* p, const double* w, double* out
 // An exact centre kept for comparison: c_l = M[l] / D * 2^E.
 struct ExactCentre {
   int d = 0;
-  Mpz M[5], D;
+  Mpz M[kMaxD], D;
   long E = 0;
   void take(CentreSolver& s) {
     d = s.d;
@@ -1374,8 +1382,8 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
       CentreSolver cs;
       cs.d = d;
-      const double* p[6];
-      double w[6];
+      const double* p[kMaxD + 1];
+      double w[kMaxD + 1];
       for (std::size_t s = rg.begin(); s != rg.end(); ++s) {
         for (std::size_t j = 0; j < k; ++j) {
           p[j] = pt(S[s * k + j]);
@@ -1417,8 +1425,8 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   {
     CentreSolver cs;
     cs.d = d;
-    const double* p[6];
-    double w[6];
+    const double* p[kMaxD + 1];
+    double w[kMaxD + 1];
     std::size_t a = 0;
     while (a < order.size()) {
       std::size_t b = a + 1;
@@ -1499,7 +1507,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     for (std::size_t x = 0; x < m * k; ++x)
       if (nbr[x] < 0) bf.push_back(static_cast<std::int64_t>(x));
     const std::size_t nb_ = bf.size();
-    auto fvert = [&](std::size_t b, std::array<std::int64_t, 5>& f) {
+    auto fvert = [&](std::size_t b, std::array<std::int64_t, kMaxD>& f) {
       const std::size_t s = static_cast<std::size_t>(bf[b]) / k, j = static_cast<std::size_t>(bf[b]) % k;
       std::size_t c = 0;
       for (std::size_t l = 0; l < k; ++l)
@@ -1508,12 +1516,12 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     };
     // ridges of boundary facets: (sorted d-1 vertices, boundary facet)
     struct RidgeRec {
-      std::array<std::int64_t, 4> v;
+      std::array<std::int64_t, kMaxD - 1> v;  // d - 1 vertices, -1 after them
       std::uint32_t b;
     };
     std::vector<RidgeRec> rr;
     rr.reserve(nb_ * d);
-    std::array<std::int64_t, 5> f;
+    std::array<std::int64_t, kMaxD> f;
     for (std::size_t b = 0; b < nb_; ++b) {
       fvert(b, f);
       for (int drop = 0; drop < d; ++drop) {
@@ -1545,8 +1553,8 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
       const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
       if (!flat[s]) return true;
       fvert(b, f);
-      double proj[5][5];
-      const double* rows[6];
+      double proj[kMaxD][kMaxD];
+      const double* rows[kMaxD + 1];
       for (int axis = 0; axis < d; ++axis) {
         for (int r = 0; r < d; ++r) {
           const double* x = pt(f[r]);
@@ -1563,11 +1571,15 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     for (std::size_t b0 = 0; b0 < nb_; ++b0) {
       if (bgroup[b0] >= 0 || !nondegenerate(b0)) continue;
       const std::int64_t h = static_cast<std::int64_t>(hull_facets.size());
-      std::array<std::int64_t, 5> base;
+      std::array<std::int64_t, kMaxD> base;
       fvert(b0, base);
-      const double* rows[6];
+      const double* rows[kMaxD + 1];
       for (int r = 0; r < d; ++r) rows[r] = pt(base[r]);
       auto on_plane = [&](std::int64_t v) {
+        // a vertex of the base facet is on its plane: no determinant with a
+        // repeated row (exactly 0, which only the exact stage can tell: the
+        // neighbouring facets share d - 1 vertices with it)
+        if (std::find(base.begin(), base.begin() + d, v) != base.begin() + d) return true;
         rows[d] = pt(v);
         return pred::orient_d_exact(d, rows) == 0;
       };
@@ -1594,7 +1606,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         }
         const std::size_t b = queue.back();
         queue.pop_back();
-        std::array<std::int64_t, 5> fb;
+        std::array<std::int64_t, kMaxD> fb;
         fvert(b, fb);
         for (int l = 0; l < d; ++l) pts_on.push_back(fb[l]);
         if (bgroup[b] < 0 && nondegenerate(b)) bgroup[b] = h;
@@ -1609,7 +1621,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         }
         for (std::uint32_t b2 : adj[b]) {
           if (bstamp[b2] == h) continue;
-          std::array<std::int64_t, 5> f2;
+          std::array<std::int64_t, kMaxD> f2;
           fvert(b2, f2);
           bool all = true;
           for (int l = 0; l < d && all; ++l) all = on_plane(f2[l]);
@@ -2089,7 +2101,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
 nb::tuple voronoi(const Points& p, const std::optional<Vector>& w, const Cells& c, int threads) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
-  if (d < 2 || d > 5) throw std::invalid_argument("Voronoi expects points of shape (n, d) with d = 2..5");
+  if (d < 2 || d > ref::rtd::kMaxDim) throw std::invalid_argument("Voronoi expects points of shape (n, d) with d = 2..9");
   if (c.shape(1) != static_cast<std::size_t>(d + 1)) throw std::invalid_argument("simplices must have d + 1 columns");
   const std::size_t m = c.shape(0), n = ps.size();
   if (n >= (std::size_t(1) << 31) || m >= (std::size_t(1) << 32)) throw std::invalid_argument("too many points");

@@ -19,7 +19,7 @@ Compared, with the canonical form of DESIGN.md "Canonical output" that both
 sides claim: ConvexHull 2D (vertices: the counter-clockwise cycle from the
 smallest index; simplices: its edges (i, next)), ConvexHull 3D (simplices:
 ccw seen from outside, smallest first, rows sorted; vertices), Delaunay
-d = 2..5 unweighted and weighted (simplices: positively oriented, smallest
+d = 2..9 unweighted and weighted (6D..9D: five small sets, weighted in 6D) (simplices: positively oriented, smallest
 first, the rest ascending with the last two swapped for an odd permutation,
 rows sorted; redundant), byte for byte (the same integer arrays), for every
 backend the bindings offer in that dimension ('cpu', 'reference', and the
@@ -227,6 +227,27 @@ CASES45 = list(_cases(SETS4, 12)) + [(n, p, w) for n, p, w in _cases(SETS5, 13) 
                                      or "lattice weights 0" in n]
 
 
+def _corners_and_centre(d, twice):
+    """The standard simplex's corners, its centre (twice: a duplicate), a
+    corner of the unit cube: cospherical subsets and a point on a face."""
+    centre = [[0.5] * d] * (2 if twice else 1)
+    return np.concatenate([np.zeros((1, d)), np.eye(d), centre, [[1.0, 1.0] + [0.0] * (d - 2)]])
+
+
+# 6D..9D (predicates of 8..11 rows: the run-time filters and GMP beyond 8):
+# kept small, the brute force's term-by-term oracle is slow on 10 and 11
+# degenerate rows (the 8D set with a duplicated centre took 20 s)
+SETS6789 = {
+    "cross-polytope 6D and centre": np.concatenate([_cross_polytope(6), np.zeros((1, 6))]),
+    "simplex corners 7D, centre twice, cube corner": _corners_and_centre(7, True),
+    "simplex corners 8D, centre, cube corner": _corners_and_centre(8, False),
+    "simplex corners 9D, centre, cube corner": _corners_and_centre(9, False),
+    "9D: unit vectors and three opposites": np.concatenate([np.eye(9), -np.eye(9)[:3]]),
+}
+CASES6789 = [(n, p, w) for n, p, w in _cases(SETS6789, 14)
+             if w is None or ("6D" in n and ("equal" in n or "lattice weights 0" in n))]
+
+
 def _available(backends):
     # the CPU ones, and the GPU ones this build has (flipflop.gpu_backends)
     return [b for b in backends if b in ("cpu", "reference") or b in flipflop.gpu_backends]
@@ -260,7 +281,8 @@ def test_convex_hull_3d_equals_brute_force(name, points):
         _assert_same(f"{name}, {backend}", hull3_differences(flipflop.ConvexHull(points, backend=backend), facets))
 
 
-@pytest.mark.parametrize("name,points,weights", CASES2 + CASES3 + CASES45, ids=_ids(CASES2 + CASES3 + CASES45))
+@pytest.mark.parametrize("name,points,weights", CASES2 + CASES3 + CASES45 + CASES6789,
+                         ids=_ids(CASES2 + CASES3 + CASES45 + CASES6789))
 def test_delaunay_equals_brute_force(name, points, weights):
     d = points.shape[1]
     answer = brute("dt" if weights is None else "rt", points, weights)

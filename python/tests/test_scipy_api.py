@@ -753,9 +753,10 @@ def test_index_dtypes_are_scipys(d):
         assert v.ridge_points.dtype == w.ridge_points.dtype and v.point_region.dtype == w.point_region.dtype
 
 
-@pytest.mark.parametrize("d,n", [(6, 300), (7, 120)])
-def test_convex_hull_6d_7d_equals_scipy(d, n):
-    # 6D and 7D hulls (kernels_cpu/rtd/hull_d): scipy's facets, measures and
+@pytest.mark.parametrize("d,n", [(6, 300), (7, 120), (8, 50), (9, 35)])
+def test_convex_hull_6d_to_9d_equals_scipy(d, n):
+    # 6D..9D hulls (kernels_cpu/rtd/hull_d; 8D, 9D: orientations of 9 and 10
+    # rows, the predicates' run-time filters and GMP): scipy's facets, measures and
     # equations on random input; the definition exactly on a lattice (every
     # point on the inner side of every facet, Fraction arithmetic)
     p = np.random.default_rng(d).standard_normal((n, d))
@@ -785,3 +786,75 @@ def test_convex_hull_6d_7d_equals_scipy(d, n):
             m = rows + [[F(c) - b for c, b in zip(g[x], base)]]
             assert fdet(m) <= 0  # outward facets: every point inside or on
 
+
+
+# ---- Delaunay in 6D..9D (the cavity kernel; power tests of 8..11 rows) -------------------------
+
+@pytest.mark.parametrize("d,n", [(6, 120), (7, 60), (8, 35), (9, 25)])
+def test_delaunay_6d_to_9d_equals_scipy(d, n):
+    """scipy's simplices, neighbours (after the map between the simplices),
+    barycentric coordinates from `transform`, find_simplex and the convex
+    hull's facets on random input; the 'reference' backend (RT+1) gives the
+    same bytes; a strict view is refused there."""
+    rng = np.random.default_rng(900 + d)
+    p = rng.random((n, d))
+    t, s = flipflop.Delaunay(p), ss.Delaunay(p)
+    assert sets(t.simplices) == sets(s.simplices)
+    r = flipflop.Delaunay(p, backend="reference")
+    assert np.array_equal(r.simplices, t.simplices)
+    where = index_of(s.simplices)
+    k = [where[frozenset(x)] for x in t.simplices.tolist()]
+    for i, x in enumerate(t.simplices.tolist()):
+        for j in range(d + 1):
+            a = t.neighbors[i, j]
+            b = s.neighbors[k[i], list(s.simplices[k[i]]).index(x[j])]
+            assert (a == -1 and b == -1) or k[a] == b
+    x = rng.random(d)
+    for i in range(0, len(t.simplices), max(1, len(t.simplices) // 50)):
+        def bary(T, simp):
+            c = T[:d] @ (x - T[d])
+            return dict(zip(simp.tolist(), np.append(c, 1 - c.sum())))
+        ours, theirs = bary(t.transform[i], t.simplices[i]), bary(s.transform[k[i]], s.simplices[k[i]])
+        for v in ours:
+            assert ours[v] == pytest.approx(theirs[v], rel=1e-8, abs=1e-8)
+    q = rng.random((400, d))
+    fs, gs = t.find_simplex(q), s.find_simplex(q)
+    assert np.array_equal(fs >= 0, gs >= 0)
+    inside = fs >= 0
+    assert all(k[a] == b or frozenset(t.simplices[a]) == frozenset(s.simplices[b])
+               for a, b in zip(fs[inside], gs[inside]))
+    assert sets(t.convex_hull) == sets(s.convex_hull)
+    with pytest.raises(ValueError, match="strict"):
+        flipflop.Delaunay(p, strict=True)
+
+
+@pytest.mark.parametrize("d", [6, 7, 8, 9])
+def test_delaunay_6d_to_9d_is_delaunay_by_definition_on_degenerate_input(d):
+    """The canonical answer on a degenerate set (the cross-polytope, its
+    centre, a duplicate of a corner): every simplex has non-negative volume
+    and no point strictly inside its circumsphere, exactly in Fractions; the
+    simplices cover the hull's volume; every point is a vertex or redundant
+    (the perturbation separates the two copies, so both may be vertices of
+    zero-volume simplices: the canonical answer's)."""
+    p = np.vstack([np.eye(d), -np.eye(d), np.zeros((1, d)), np.eye(d)[:1]])
+    t = flipflop.Delaunay(p)
+    assert sorted(set(t.simplices.ravel().tolist()) | set(t.redundant.tolist())) == list(range(len(p)))
+    F = Fraction
+    P = [[F(c) for c in row] for row in p.tolist()]
+    total = F(0)
+    for simp in t.simplices.tolist():
+        base = P[simp[0]]
+        rows = [[a - b for a, b in zip(P[v], base)] for v in simp[1:]]
+        vol = fdet(rows)
+        assert vol >= 0
+        total += vol
+        if vol == 0:
+            continue
+        for x in range(len(p)):
+            if x in simp:
+                continue
+            # in-sphere: det of (v - x, |v - x|^2) rows, of the sign _INSPHERE[d] when x is inside
+            m = [[a - b for a, b in zip(P[v], P[x])] for v in simp]
+            m = [r + [sum(c * c for c in r)] for r in m]
+            assert fdet(m) * flipflop._INSPHERE[d] <= 0, (simp, x)
+    assert total == F(2 ** d)  # d! times the cross-polytope's volume 2^d / d!

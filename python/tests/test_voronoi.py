@@ -89,7 +89,8 @@ def compare_with_scipy(p, furthest=False):
 
 # ---- agreement with Qhull on general-position input ------------------------------------------
 
-@pytest.mark.parametrize("d,n,seed", [(2, 400, 1), (2, 1000, 2), (3, 300, 3), (3, 600, 4)])
+@pytest.mark.parametrize("d,n,seed", [(2, 400, 1), (2, 1000, 2), (3, 300, 3), (3, 600, 4), (6, 40, 5), (7, 22, 6),
+                                      (8, 16, 7), (9, 14, 8)])
 def test_equal_to_scipy_on_random_input(d, n, seed):
     p = np.random.default_rng(seed).random((n, d))
     compare_with_scipy(p)
@@ -753,7 +754,8 @@ def test_oracle_furthest_site_by_half_planes(case, seed):
 
 
 @pytest.mark.parametrize("d,n,furthest,seed", [(3, 30, True, 1), (4, 25, True, 2), (5, 18, True, 3),
-                                               (4, 25, False, 4), (5, 18, False, 5)])
+                                               (4, 25, False, 4), (5, 18, False, 5), (6, 16, False, 6),
+                                               (7, 14, True, 7), (9, 13, False, 8)])
 def test_ridges_against_linear_programs(d, n, furthest, seed):
     # an oracle that shares nothing with the triangulation: (i, j) is a ridge
     # iff some x on the bisector of p_i, p_j has every other point strictly
@@ -816,7 +818,7 @@ def test_bad_input():
     with pytest.raises(ValueError):
         Voronoi(p[:, 0])
     with pytest.raises(ValueError):
-        Voronoi(np.random.rand(10, 6))
+        Voronoi(np.random.rand(12, 10))  # 2D..9D
     with pytest.raises(ValueError):
         Voronoi(np.random.rand(10, 1))
     with pytest.raises(ValueError):

@@ -19,7 +19,7 @@ namespace flipflop::certify {
 
 namespace {
 
-constexpr int kMaxD = 5;
+constexpr int kMaxD = ref::rtd::kMaxDim;
 using FacetKey = std::array<Index, kMaxD>;  // sorted facet vertices, unused = ~0
 using ErrDoubleRow = std::array<pred::ErrDouble, kMaxD + 1>;
 
@@ -158,7 +158,8 @@ struct FacetForm {
       case 2: return pred::det_by_minors<2>(m);
       case 3: return pred::det_by_minors<3>(m);
       case 4: return pred::det_by_minors<4>(m);
-      default: return pred::det_by_minors<5>(m);
+      case 5: return pred::det_by_minors<5>(m);
+      default: return pred::det_gauss_rt(m, n);
     }
   }
   // +1 / -1 when certain, 0 when undecided
@@ -401,7 +402,7 @@ Report fail_from(const std::string& why) {
 
 namespace rtd_detail {
 std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices) {
-  if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2..5";
+  if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2.." + std::to_string(kMaxD);
   if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
   Checker ck{ps, ps.dim, Orientation::orient_d};
   Facets F;
@@ -412,7 +413,7 @@ std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Ind
 Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest) {
   const int d = ps.dim;
   const bool exact = level == Level::exact;
-  if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2..5");
+  if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2.." + std::to_string(kMaxD));
   const std::size_t n = ps.size();
   if (n < static_cast<std::size_t>(d) + 1)
     return Report::fail("input-dimension", std::to_string(n) + " points, at least " + std::to_string(d + 1) +

@@ -4,7 +4,7 @@
 // in canonical form (canonical_d.hpp)? Accepts any program's output.
 //
 // Conditions, in order (the first violated one is reported):
-//   input-dimension          ps.dim in 2..5 and the points span R^d
+//   input-dimension          ps.dim in 2..9 and the points span R^d
 //   simplex-indices          d+1 distinct in-range indices per simplex, at
 //                            least one simplex
 //   canonical-form           every tuple canonical, the list sorted, no repeats

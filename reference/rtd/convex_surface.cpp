@@ -11,7 +11,7 @@
 namespace flipflop::certify {
 
 namespace {
-constexpr int kMaxD = 7;  // orientations of up to 8 points (lambda_sign)
+constexpr int kMaxD = 9;  // orientations of up to 10 points (lambda_sign)
 
 struct Orient {
   const PointSet& ps;

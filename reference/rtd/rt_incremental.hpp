@@ -13,7 +13,7 @@
 // byte. Points that are not vertices are redundant (their lifted point lies
 // strictly above the lower hull) and are listed, sorted.
 //
-// Inputs: ps.dim in 2..5, weighted or not (weights 0). Input that does not
+// Inputs: ps.dim in 2..9, weighted or not (weights 0). Input that does not
 // span R^d (fewer than d+1 points, all in a hyperplane) throws
 // std::invalid_argument carrying dimension_problem(ps). The algorithm
 // verifies its final state (every ridge locally regular, Theorem 2.2) and
@@ -29,7 +29,7 @@
 namespace flipflop::ref {
 
 struct RtdStats {
-  std::uint64_t flips[7] = {};  // flips[k] = number of k-(d+2-k) flips (k = 2..d+1 by
+  std::uint64_t flips[rtd::kMaxDim + 2] = {};  // flips[k] = number of k-(d+2-k) flips (k = 2..d+1 by
                                 // ridges; flips[1] = 1-(d+1) insertions into a simplex)
   std::uint64_t insertions = 0;     // points made vertices (placing included)
   std::uint64_t placed = 0;         // of those: outside the current hull (placing, below)

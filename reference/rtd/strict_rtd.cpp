@@ -15,7 +15,7 @@ namespace flipflop::ref {
 
 std::vector<std::vector<Index>> strict_rtd(const PointSet& ps, const std::vector<std::vector<Index>>& canonical) {
   const int d = ps.dim;
-  if (d < 2 || d > rtd::kMaxDim) throw std::invalid_argument("strict view: the dimension must be 2 to 5");
+  if (d < 2 || d > 5) throw std::invalid_argument("strict view: the dimension must be 2 to 5");  // power_d_pulled: d <= 5
   std::vector<Index> V;
   for (const auto& t : canonical) {
     if (t.size() != static_cast<std::size_t>(d + 1))

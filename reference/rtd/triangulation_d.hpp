@@ -87,7 +87,7 @@
 
 namespace flipflop::ref::rtd {
 
-inline constexpr int kMaxDim = 5;        // d = 2..5 (power_d needs d <= 5)
+inline constexpr int kMaxDim = 9;        // d = 2..9 (power_d: d + 2 <= pred::kMaxLambdaK rows)
 inline constexpr std::int32_t kNone = -1;
 inline constexpr Index kNoVertex = static_cast<Index>(-1);
 
@@ -97,7 +97,7 @@ using PointTuple = std::array<Index, kMaxDim + 2>;
 
 struct TriangulationD {
   const PointSet* ps = nullptr;
-  int d = 0;                             // dimension, 2..5
+  int d = 0;                             // dimension, 2..kMaxDim
   Index n = 0;                           // input points; vertex n is v
   std::vector<Index> verts;              // (d+1) per slot
   std::vector<std::int32_t> nbrs;        // (d+1) per slot: across the facet opposite verts[.]
@@ -192,7 +192,7 @@ bool contains(const TriangulationD& T, std::int32_t s, Index p);
 
 // ---- construction / output ----------------------------------------------------
 // One real simplex on the d+1 given input points (reordered to be positive
-// under SoS) and its d+1 virtual simplices. ps.dim must be 2..5.
+// under SoS) and its d+1 virtual simplices. ps.dim must be 2..kMaxDim.
 TriangulationD make_simplex(const PointSet& ps, const Index* pts);
 // The extended triangulation of a triangulation of the convex hull of its
 // vertices (simplices of input indices, any orientation: each is reordered to
