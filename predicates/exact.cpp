@@ -62,7 +62,86 @@ Dyadic mul(const Dyadic& a, const Dyadic& b) {
 }
 int sign(const Dyadic& a) { return sgn(a.m); }
 
+namespace {
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef __int128 i128;
+
+// x = m 2^e, m odd (x != 0, finite): e, the exponent of x's lowest set bit.
+int low_exponent(double x) {
+  int e = 0;
+  const double f = std::frexp(x, &e);  // x = f 2^e, 1/2 <= |f| < 1
+  const auto m = static_cast<std::int64_t>(std::ldexp(f, 53));
+  return e - 53 + __builtin_ctzll(static_cast<unsigned long long>(m < 0 ? -m : m));
+}
+
+// The fast path of build_lambda: each coordinate column in units of its
+// lowest set bit, the lifted column in units of 2^uh with uh = min(2 min_c
+// unit_c, the weights' lowest bit) — a positive power-of-two factor per
+// column, which keeps the sign of every minor, like build_lambda_dyadic's
+// scaling — when every entry is then an integer below 2^61 (coordinates
+// below 2^30 when lifted). False otherwise (the general path takes over).
+bool build_small(int k, const double* const* coords, const double* weights, IntLambda& out) {
+  const int ncoord = k - 1, nreal = weights ? ncoord - 1 : ncoord;
+  const double cap = weights ? 0x1p30 : 0x1p61;
+  int unit[kMaxLambdaK];
+  for (int c = 0; c < nreal; ++c) {
+    unit[c] = 1 << 20;
+    for (int r = 0; r < k; ++r) {
+      const double x = coords[r][c];
+      if (!std::isfinite(x)) return false;
+      if (x != 0.0) unit[c] = std::min(unit[c], low_exponent(x));
+    }
+    if (unit[c] == 1 << 20) unit[c] = 0;  // a zero column
+  }
+  out.k = k;
+  out.s.assign(static_cast<size_t>(k * k), 0);
+  for (int r = 0; r < k; ++r) {
+    for (int c = 0; c < nreal; ++c) {
+      const double v = std::ldexp(coords[r][c], -unit[c]);  // an integer, exactly
+      if (!(std::fabs(v) < cap)) return false;
+      out.s[static_cast<size_t>(r * k + c)] = static_cast<long>(v);
+    }
+    out.s[static_cast<size_t>(r * k + k - 1)] = 1;
+  }
+  if (weights) {
+    int uh = 1 << 20;
+    for (int c = 0; c < nreal; ++c) uh = std::min(uh, 2 * unit[c]);
+    for (int r = 0; r < k; ++r) {
+      if (!std::isfinite(weights[r])) return false;
+      if (weights[r] != 0.0) uh = std::min(uh, low_exponent(weights[r]));
+    }
+    for (int r = 0; r < k; ++r) {
+      i128 h = 0;
+      for (int c = 0; c < nreal; ++c) {
+        const int shift = 2 * unit[c] - uh;
+        if (shift > 60) return false;
+        const i128 v = out.s[static_cast<size_t>(r * k + c)];
+        h += (v * v) << shift;  // below 2^120
+      }
+      if (weights[r] != 0.0) {
+        const int low = low_exponent(weights[r]);  // w = m 2^low, m odd, low >= uh
+        const auto m = static_cast<std::int64_t>(std::ldexp(weights[r], -low));  // |m| < 2^53
+        const int shift = low - uh;
+        if (shift > 60) return false;
+        h -= static_cast<i128>(m) << shift;
+      }
+      const i128 lim = static_cast<i128>(1) << 61;
+      if (h >= lim || h <= -lim) return false;
+      out.s[static_cast<size_t>(r * k + nreal)] = static_cast<long>(h);
+    }
+  }
+  return true;
+}
+#endif
+}  // namespace
+
 IntLambda build_lambda(int k, const double* const* coords, const double* weights) {
+#if defined(__SIZEOF_INT128__)
+  {
+    IntLambda small;
+    if (build_small(k, coords, weights, small)) return small;
+  }
+#endif
   const int ncoord = k - 1;                              // columns before the 1-column
   const int nreal = weights ? ncoord - 1 : ncoord;       // real coordinates per point
   std::vector<Dyadic> entries(static_cast<size_t>(k * ncoord));
@@ -115,19 +194,88 @@ int positions(std::uint32_t mask, int k, int* out) {
     if (mask & (1u << i)) out[n++] = i;
   return n;
 }
+
+#if defined(__SIZEOF_INT128__)
+// The rows ri x columns ci of m as __int128 when every entry is below 2^62 in
+// magnitude and the Hadamard bound Π_i max(1, |row_i|_2) is below 2^62 (with
+// a margin for its rounding): every minor of the submatrix, hence every value
+// of a fraction-free elimination on it, is then below 2^62, and every
+// product of two below 2^124.
+bool load_small(const IntLambda& m, const int* ri, int nr, const int* ci, int nc, i128* a) {
+  double bound = 1.0;
+  for (int i = 0; i < nr; ++i) {
+    double norm2 = 0.0;
+    for (int j = 0; j < nc; ++j) {
+      long v = 0;
+      if (!m.s.empty()) {
+        v = m.s[static_cast<size_t>(ri[i] * m.k + ci[j])];  // below 2^61 (build_small)
+      } else {
+        const mpz_class& x = m.at(ri[i], ci[j]);
+        if (mpz_sizeinbase(x.get_mpz_t(), 2) > 61) return false;  // |x| < 2^61
+        v = x.get_si();
+      }
+      a[i * nc + j] = v;
+      norm2 += static_cast<double>(v) * static_cast<double>(v);
+    }
+    bound *= std::max(1.0, std::sqrt(norm2));
+  }
+  return bound * (1.0 + 0x1p-30) < 0x1p62;
+}
+
+// Fraction-free elimination (Bareiss) with column pivoting on an nr x nc
+// matrix (nr <= nc) of small values (load_small): false when the rows are
+// dependent; else `sign` = the sign of the determinant of the columns chosen
+// as pivots (for nr == nc: of the matrix). A column swap is a permutation of
+// the columns made up front (rows above p no longer read them), so every
+// division stays exact.
+bool bareiss_small(i128* a, int nr, int nc, int* sign) {
+  i128 prev = 1;
+  int s = 1;
+  for (int p = 0; p < nr; ++p) {
+    int pc = p;
+    while (pc < nc && a[p * nc + pc] == 0) ++pc;
+    if (pc == nc) return false;
+    if (pc != p) {
+      for (int i = 0; i < nr; ++i) std::swap(a[i * nc + p], a[i * nc + pc]);
+      s = -s;
+    }
+    const i128 piv = a[p * nc + p];
+    for (int i = p + 1; i < nr; ++i)
+      for (int j = p + 1; j < nc; ++j)
+        a[i * nc + j] = (a[i * nc + j] * piv - a[i * nc + p] * a[p * nc + j]) / prev;
+    prev = piv;
+  }
+  *sign = prev > 0 ? s : -s;
+  return true;
+}
+#endif
 }  // namespace
 
 int minor_sign(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
-  int ri[kMaxLambdaK], ci[kMaxLambdaK];
+  int ri[kMaxLambdaK] = {}, ci[kMaxLambdaK] = {};
   const int n = positions(rows, m.k, ri), nc = positions(cols, m.k, ci);
   if (n != nc) throw std::logic_error("minor_sign: non-square minor");
   if (n == 0) return 1;
+#if defined(__SIZEOF_INT128__)
+  {
+    // small integers (lattice input, the degenerate calls that reach GMP):
+    // the same elimination in __int128, no allocation
+    i128 a[kMaxLambdaK * kMaxLambdaK];
+    int sign = 0;
+    if (load_small(m, ri, n, ci, n, a)) return bareiss_small(a, n, n, &sign) ? sign : 0;
+  }
+#endif
   // Bareiss fraction-free elimination with row pivoting, on raw mpz_t (only
   // the n x n entries in use are initialised: this is the hot path of the
   // exact stage).
   mpz_t a[kMaxLambdaK][kMaxLambdaK];
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) mpz_init_set(a[i][j], m.at(ri[i], ci[j]).get_mpz_t());
+    for (int j = 0; j < n; ++j) {
+      if (m.s.empty())
+        mpz_init_set(a[i][j], m.at(ri[i], ci[j]).get_mpz_t());
+      else
+        mpz_init_set_si(a[i][j], m.s[static_cast<size_t>(ri[i] * m.k + ci[j])]);
+    }
   mpz_t prev, tmp;
   mpz_init_set_ui(prev, 1);
   mpz_init(tmp);
@@ -167,12 +315,21 @@ namespace {
 // full row rank? Fraction-free elimination (Bareiss) on that submatrix, with
 // column pivoting; false as soon as a row reduces to zero.
 bool full_row_rank(const IntLambda& m, std::uint32_t rows, std::uint32_t cols) {
-  int ri[kMaxLambdaK], ci[kMaxLambdaK];
+  int ri[kMaxLambdaK] = {}, ci[kMaxLambdaK] = {};
   const int nr = positions(rows, m.k, ri), nc = positions(cols, m.k, ci);
   if (nr > nc) return false;
+#if defined(__SIZEOF_INT128__)
+  {
+    i128 small[kMaxLambdaK * kMaxLambdaK];
+    int sign = 0;
+    if (load_small(m, ri, nr, ci, nc, small)) return bareiss_small(small, nr, nc, &sign);
+  }
+#endif
   std::vector<mpz_class> a(static_cast<size_t>(nr * nc));
   for (int i = 0; i < nr; ++i)
-    for (int j = 0; j < nc; ++j) a[static_cast<size_t>(i * nc + j)] = m.at(ri[i], ci[j]);
+    for (int j = 0; j < nc; ++j)
+      a[static_cast<size_t>(i * nc + j)] =
+          m.s.empty() ? m.at(ri[i], ci[j]) : mpz_class(m.s[static_cast<size_t>(ri[i] * m.k + ci[j])]);
   mpz_class prev = 1, tmp;
   for (int p = 0; p < nr; ++p) {
     int pc = -1;  // a non-zero entry of row p among the columns p..nc-1

@@ -32,9 +32,13 @@ int sign(const Dyadic& a);
 
 // A k x k integer matrix, row-major, whose last column is all ones: the exact
 // Λ-matrix of k points (see lambda_filter.hpp), each column scaled to integers.
+// Either `a` holds the entries, or — build_lambda's fast path, where every
+// entry is an integer below 2^61 in magnitude (lattices: the degenerate calls
+// that reach this stage) — `s` does and `a` is empty; exact.cpp reads both.
 struct IntLambda {
   int k = 0;
-  std::vector<mpz_class> a;  // k*k entries
+  std::vector<mpz_class> a;  // k*k entries (empty when s holds them)
+  std::vector<long> s;       // k*k small entries, or empty
   const mpz_class& at(int r, int c) const { return a[static_cast<size_t>(r * k + c)]; }
 };
 
