@@ -123,7 +123,7 @@ bool build_small(int k, const double* const* coords, const double* weights, IntL
         const auto m = static_cast<std::int64_t>(std::ldexp(weights[r], -low));  // |m| < 2^53
         const int shift = low - uh;
         if (shift > 60) return false;
-        h -= static_cast<i128>(m) << shift;
+        h -= static_cast<i128>(m) * (static_cast<i128>(1) << shift);  // m may be negative: no shift of it
       }
       const i128 lim = static_cast<i128>(1) << 61;
       if (h >= lim || h <= -lim) return false;
