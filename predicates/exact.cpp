@@ -1,6 +1,8 @@
 // exact.cpp — dyadic arithmetic, integer Λ-matrices and Bareiss determinants.
 #include "exact.hpp"
 
+#include "predicates/exact_expansion.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -66,12 +68,12 @@ namespace {
 #if defined(__SIZEOF_INT128__)
 __extension__ typedef __int128 i128;
 
-// x = m 2^e, m odd (x != 0, finite): e, the exponent of x's lowest set bit.
+// x = m 2^e, m odd (x != 0, finite): e, the exponent of x's lowest set bit
+// (xp::bit_span's).
 int low_exponent(double x) {
-  int e = 0;
-  const double f = std::frexp(x, &e);  // x = f 2^e, 1/2 <= |f| < 1
-  const auto m = static_cast<std::int64_t>(std::ldexp(f, 53));
-  return e - 53 + __builtin_ctzll(static_cast<unsigned long long>(m < 0 ? -m : m));
+  int low = 0, hi = 0;
+  xp::bit_span(x, low, hi);
+  return low;
 }
 
 // The fast path of build_lambda: each coordinate column in units of its
