@@ -14,6 +14,8 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -22,6 +24,7 @@
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/rc_scaled.hpp"
+#include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -90,6 +93,52 @@ void check(const PointSet& ps, bool furthest, const Assert& require) {
 }
 
 int nmax_of(int d) { return d <= 3 ? 60 : d == 4 ? 36 : 24; }
+
+// The first n points of ps (and their weights).
+PointSet prefix(const PointSet& ps, std::size_t n) {
+  PointSet p;
+  p.dim = ps.dim;
+  p.weighted = ps.weighted;
+  p.coords = Values(std::vector<double>(ps.coords.begin(), ps.coords.begin() + static_cast<std::ptrdiff_t>(n * ps.dim)));
+  if (ps.weighted)
+    p.weights = Values(std::vector<double>(ps.weights.begin(), ps.weights.begin() + static_cast<std::ptrdiff_t>(n)));
+  return p;
+}
+
+// In-place insertion in batches: built from the shortest spanning prefix or a
+// longer one, then the rest in `cuts` batches; after every batch the
+// answer equals the one-shot kernel on the points so far, and at the end the
+// reference on all of them, certified; the counters add up.
+template <class Assert>
+void check_batches(const PointSet& ps, bool furthest, const std::vector<std::size_t>& cuts, std::size_t start_extra,
+                   const Assert& require) {
+  std::size_t k = static_cast<std::size_t>(ps.dim) + 1;
+  while (k <= ps.size() && !dimension_problem(prefix(ps, k)).empty()) ++k;
+  if (k > ps.size()) return;  // lower-dimensional: the one-shot test covers the rejection
+  k = std::min(ps.size(), k + start_extra);
+  cpu::RtdCavityOptions o;
+  o.furthest = furthest;
+  o.threads = 1;
+  cpu::RtdCavityIncremental inc(prefix(ps, k), o);
+  require(text_of(inc.result()) == text_of(cpu::rtd_cavity(prefix(ps, k), nullptr, o)));
+  std::vector<std::size_t> at;
+  for (std::size_t c : cuts)
+    if (c > k && c < ps.size()) at.push_back(c);
+  std::sort(at.begin(), at.end());
+  at.push_back(ps.size());
+  for (std::size_t n : at) {
+    if (n == inc.size()) continue;
+    const PointSet p = prefix(ps, n);
+    inc.add(p);
+    require(inc.size() == n);
+    require(text_of(inc.result()) == text_of(cpu::rtd_cavity(p, nullptr, o)));
+  }
+  const ref::Rtd r = inc.result();
+  require(text_of(r) == ref_text(ps, furthest));
+  require(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest).ok);
+  const cpu::RtdCavityStats st = inc.stats();
+  require(st.inserted + st.discarded == ps.size());
+}
 
 }  // namespace
 
@@ -176,6 +225,47 @@ TEST_CASE("rtd cavity: the 3^5 grid and 3000 random 4D points equal the referenc
   }
   r4.coords = Values(std::move(x));
   check(r4, false, [](bool ok) { REQUIRE(ok); });
+}
+
+TEST_CASE("rtd cavity: in-place insertion in batches equals the one-shot kernel and the reference (shrinking)",
+          "[rtd_cavity]") {
+  for (int d = 2; d <= 6; ++d)
+    for (bool furthest : {false, true})
+      test::prop_scaled("degenerate " + std::to_string(d) + "D sets" + (furthest ? ", furthest site" : "") +
+                            ", added in random batches: every intermediate answer == the one-shot kernel, the last "
+                            "== RT+1, certified",
+                        d <= 3 ? 8 : d <= 5 ? 16 : 40, [d, furthest] {
+                          const int nmax = d == 6 ? 14 : nmax_of(d);
+                          const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax, !furthest);
+                          const auto cuts = *rc::gen::container<std::vector<std::size_t>>(
+                              *rc::gen::inRange(0, 6), rc::gen::inRange<std::size_t>(0, ps.size() + 1));
+                          const std::size_t extra = *rc::gen::inRange<std::size_t>(0, 4);
+                          check_batches(ps, furthest, cuts, extra, [](bool ok) { RC_ASSERT(ok); });
+                        });
+}
+
+// Bad added points change nothing; a point set that is not the old one
+// extended is refused.
+TEST_CASE("rtd cavity: in-place insertion rejects bad points and keeps its state", "[rtd_cavity]") {
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = Values(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1, 0.5, 0.5, 0.5});
+  cpu::RtdCavityIncremental inc(prefix(ps, 5));
+  const std::string before = text_of(inc.result());
+  PointSet bad = ps;
+  std::vector<double> v(ps.coords.begin(), ps.coords.end());
+  v.back() = std::nan("");
+  bad.coords = Values(std::move(v));
+  REQUIRE_THROWS_AS(inc.add(bad), std::invalid_argument);
+  REQUIRE(text_of(inc.result()) == before);
+  REQUIRE(inc.size() == 5);
+  REQUIRE_THROWS_AS(inc.add(prefix(ps, 4)), std::invalid_argument);  // fewer points than given
+  PointSet other = ps;
+  other.dim = 2;
+  REQUIRE_THROWS_AS(inc.add(other), std::invalid_argument);
+  inc.add(ps);
+  REQUIRE(text_of(inc.result()) == ref_text(ps, false));
+  REQUIRE_THROWS_AS(cpu::RtdCavityIncremental(prefix(ps, 3)), std::invalid_argument);  // too few to span
 }
 
 TEST_CASE("rtd cavity: bad input is rejected as the reference rejects it", "[rtd_cavity]") {

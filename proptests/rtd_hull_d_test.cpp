@@ -13,6 +13,7 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
@@ -84,7 +85,67 @@ bool spans(const PointSet& ps) {
 
 int nmax_of(int d) { return d <= 3 ? 60 : d == 4 ? 36 : 24; }
 
+PointSet prefix(const PointSet& ps, std::size_t n) {
+  PointSet p;
+  p.dim = ps.dim;
+  p.coords = Values(std::vector<double>(ps.coords.begin(), ps.coords.begin() + static_cast<std::ptrdiff_t>(n * ps.dim)));
+  return p;
+}
+
 }  // namespace
+
+TEST_CASE("hull_d: in-place insertion in batches equals the one-shot hull and the definition (shrinking)",
+          "[hull_d]") {
+  for (int d = 2; d <= 6; ++d)
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets added in random batches: after every batch the "
+                                                          "facets == the one-shot hull_d's and the definition's, "
+                                                          "certified",
+                      d <= 3 ? 8 : d <= 5 ? 16 : 40, [d] {
+                        const int nmax = d == 6 ? 16 : nmax_of(d);
+                        const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax, false);
+                        std::size_t k = static_cast<std::size_t>(d) + 1;
+                        while (k <= ps.size() && !spans(prefix(ps, k))) ++k;
+                        if (k > ps.size()) return;  // never spanning: the one-shot property covers the rejection
+                        k = std::min(ps.size(), k + *rc::gen::inRange<std::size_t>(0, 4));
+                        const auto cuts = *rc::gen::container<std::vector<std::size_t>>(
+                            *rc::gen::inRange(0, 6), rc::gen::inRange<std::size_t>(0, ps.size() + 1));
+                        std::vector<std::size_t> at;
+                        for (std::size_t c : cuts)
+                          if (c > k && c < ps.size()) at.push_back(c);
+                        std::sort(at.begin(), at.end());
+                        at.push_back(ps.size());
+                        cpu::HullDIncremental inc(prefix(ps, k));
+                        for (std::size_t n : at) {
+                          const PointSet p = prefix(ps, n);
+                          if (n != inc.size()) inc.add(p);
+                          RC_ASSERT(inc.size() == n);
+                          const Facets f = inc.facets();
+                          RC_ASSERT(definition_holds(p, f));
+                          RC_ASSERT(as_sets(f) == as_sets(cpu::hull_d(p)));
+                          RC_ASSERT(cpu::hull_d_problem(p, f).empty());
+                        }
+                      });
+}
+
+TEST_CASE("hull_d: in-place insertion rejects bad points and keeps its state", "[hull_d]") {
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = Values(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 2, 2, 2, 0.25, 0.25, 0.25});
+  cpu::HullDIncremental inc(prefix(ps, 4));
+  const auto before = as_sets(inc.facets());
+  std::vector<double> v(ps.coords.begin(), ps.coords.end());
+  v[13] = std::nan("");
+  PointSet bad = ps;
+  bad.coords = Values(std::move(v));
+  REQUIRE_THROWS_AS(inc.add(bad), std::invalid_argument);
+  REQUIRE(as_sets(inc.facets()) == before);
+  REQUIRE(inc.size() == 4);
+  REQUIRE_THROWS_AS(inc.add(prefix(ps, 3)), std::invalid_argument);
+  inc.add(ps);
+  REQUIRE(as_sets(inc.facets()) == as_sets(cpu::hull_d(ps)));
+  REQUIRE(as_sets(inc.facets()).size() == 6);  // (2,2,2) sees the facet x+y+z=1; the centre is inside
+  REQUIRE_THROWS_AS(cpu::HullDIncremental(prefix(ps, 3)), std::invalid_argument);
+}
 
 TEST_CASE("hull_d: the facets are the definition's and the Delaunay boundary's, certified (shrinking)", "[hull_d]") {
   for (int d = 2; d <= 5; ++d)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "kernels_cpu/brio.hpp"
@@ -51,18 +52,35 @@ double det_small(const double* m, int n) {
 template <int D>
 class HullBuilder {
  public:
-  HullBuilder(const PointSet& ps, HullDStats& st) : ps_(ps), st_(st), n_(ps.size()) {
+  HullBuilder(const PointSet& ps, HullDStats& st) : ps_(&ps), st_(&st), n_(ps.size()) {
     f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D);
   }
 
-  std::vector<std::vector<Index>> run() {
+  void run() {
     start();
-    while (!work_.empty()) {
-      const std::uint32_t f = work_.back();
-      work_.pop_back();
-      if (!alive(f) || out_[f].empty()) continue;
-      insert(f);
-    }
+    grow();
+  }
+
+  // In-place insertion (HullDIncremental::add): ps holds the points given
+  // so far followed by new ones (the builder keeps only indices, so it reads
+  // coordinates from ps during this call only). Each new point is assigned
+  // to the first live facet it sees, or discarded as inside (a point inside
+  // stays inside: the hull only grows); then the outside sets are emptied as
+  // in run() (a point outside a convex polytope sees one of its facets).
+  void add(const PointSet& ps, HullDStats& st) {
+    ps_ = &ps;
+    st_ = &st;
+    const std::size_t first = n_;
+    n_ = ps.size();
+    f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D);
+    std::vector<std::uint32_t> live;
+    for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
+      if (alive(f)) live.push_back(f);
+    for (Index q = static_cast<Index>(first); q < n_; ++q) assign(q, live);
+    grow();
+  }
+
+  std::vector<std::vector<Index>> facets() const {
     std::vector<std::vector<Index>> out;
     for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
       if (alive(f)) out.emplace_back(fv_.begin() + static_cast<std::ptrdiff_t>(f) * D,
@@ -71,8 +89,8 @@ class HullBuilder {
   }
 
  private:
-  const PointSet& ps_;
-  HullDStats& st_;
+  const PointSet* ps_;  // the points of the current call (run or add)
+  HullDStats* st_;
   std::size_t n_;
   pred::StaticFilter f_;
   std::vector<Index> fv_;                      // D vertices per facet slot (kNone: dead)
@@ -85,17 +103,28 @@ class HullBuilder {
 
   bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
 
+  // Quickhull's loop: while some facet has an outside set, insert its
+  // furthest point.
+  void grow() {
+    while (!work_.empty()) {
+      const std::uint32_t f = work_.back();
+      work_.pop_back();
+      if (!alive(f) || out_[f].empty()) continue;
+      insert(f);
+    }
+  }
+
   // orient_d(t, q) of a d-tuple and a point (SoS, never 0 for distinct ids)
   int orient_of(const Index* t, Index q) {
-    ++st_.tests;
+    ++st_->tests;
     pred::PointId id[D + 1];
     const double* p[D + 1];
     for (int j = 0; j < D; ++j) {
       id[j] = t[j];
-      p[j] = ps_.point(t[j]);
+      p[j] = ps_->point(t[j]);
     }
     id[D] = q;
-    p[D] = ps_.point(q);
+    p[D] = ps_->point(q);
     return pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr));
   }
   // q strictly beyond facet f
@@ -103,10 +132,10 @@ class HullBuilder {
 
   // the floating-point hyperplane n . x + c of facet f (heuristic only)
   void plane(std::uint32_t f) {
-    const double* a = ps_.point(fv_[static_cast<std::size_t>(f) * D]);
+    const double* a = ps_->point(fv_[static_cast<std::size_t>(f) * D]);
     double m[(D - 1) * D];
     for (int r = 1; r < D; ++r) {
-      const double* b = ps_.point(fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(r)]);
+      const double* b = ps_->point(fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(r)]);
       for (int c = 0; c < D; ++c) m[(r - 1) * D + c] = b[c] - a[c];
     }
     auto& h = nrm_[f];
@@ -124,7 +153,7 @@ class HullBuilder {
   }
   double height(std::uint32_t f, Index q) const {
     const auto& h = nrm_[f];
-    const double* x = ps_.point(q);
+    const double* x = ps_->point(q);
     double s = h[D];
     for (int k = 0; k < D; ++k) s += h[static_cast<std::size_t>(k)] * x[k];
     return std::fabs(s);
@@ -199,17 +228,17 @@ class HullBuilder {
     std::vector<Index> s;
     Index lo = 0;
     for (Index i = 1; i < n_; ++i)
-      if (ps_.point(i)[0] < ps_.point(lo)[0]) lo = i;
+      if (ps_->point(i)[0] < ps_->point(lo)[0]) lo = i;
     s.push_back(lo);
     std::vector<std::array<double, D>> basis;
     for (int k = 1; k <= D; ++k) {
       double best = -1.0;
       Index arg = kNone;
-      const double* o = ps_.point(s[0]);
+      const double* o = ps_->point(s[0]);
       for (Index i = 0; i < n_; ++i) {
         if (std::find(s.begin(), s.end(), i) != s.end()) continue;
         std::array<double, D> v;
-        for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] = ps_.point(i)[c] - o[c];
+        for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] = ps_->point(i)[c] - o[c];
         for (const auto& b : basis) {
           double dot = 0.0;
           for (int c = 0; c < D; ++c) dot += v[static_cast<std::size_t>(c)] * b[static_cast<std::size_t>(c)];
@@ -226,7 +255,7 @@ class HullBuilder {
       std::array<double, D> v;
       double len = 0.0;
       for (int c = 0; c < D; ++c) {
-        v[static_cast<std::size_t>(c)] = ps_.point(arg)[c] - o[c];
+        v[static_cast<std::size_t>(c)] = ps_->point(arg)[c] - o[c];
       }
       for (const auto& b : basis) {
         double dot = 0.0;
@@ -242,7 +271,7 @@ class HullBuilder {
     {
       pred::PointId id[D + 1];
       const double* p[D + 1];
-      for (int j = 0; j <= D; ++j) id[j] = s[static_cast<std::size_t>(j)], p[j] = ps_.point(s[static_cast<std::size_t>(j)]);
+      for (int j = 0; j <= D; ++j) id[j] = s[static_cast<std::size_t>(j)], p[j] = ps_->point(s[static_cast<std::size_t>(j)]);
       if (pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr)) < 0) std::swap(s[0], s[1]);
     }
     std::vector<std::uint32_t> fs;
@@ -275,7 +304,7 @@ class HullBuilder {
       if (h > hb || !(hb >= 0)) hb = h, best = k;
     }
     const Index p = pts[best];
-    ++st_.apexes;
+    ++st_->apexes;
     // the facets p sees: breadth-first from f0 (marks: in = stamp, out = stamp + 1)
     stamp_ += 2;
     if (stamp_ < 2) {  // wrapped: clear the stamps
@@ -306,7 +335,7 @@ class HullBuilder {
       fresh.push_back(u);
       skip.push_back(h.i);
     }
-    st_.created += fresh.size();
+    st_->created += fresh.size();
     match(fresh, skip);
     // the points of the visible facets (p aside): each inside the grown hull
     // or beyond one of the new facets (header)
@@ -319,7 +348,7 @@ class HullBuilder {
       out_[f].shrink_to_fit();
       free_.push_back(f);
     }
-    st_.removed += vis.size();
+    st_->removed += vis.size();
   }
 
   // q lay beyond the visible facet f. The grown hull adds to the old one the
@@ -388,12 +417,17 @@ std::string tuple_str(const Index* t, int k) {
 
 }  // namespace
 
-std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
-  PointSet plain = ps;  // the checks below look at weights too: the hull has none
+namespace {
+
+// ps without its weights (the hull has none), validated: d <= 5 by
+// ref::validate_rtd_input (RT+1's checks and messages: its boundary is the
+// same hull), beyond by the same checks here.
+PointSet hull_input(const PointSet& ps) {
+  PointSet plain = ps;
   plain.weighted = false;
   plain.weights = Values();
   if (ps.dim <= 5) {
-    ref::validate_rtd_input(plain);  // RT+1's checks and messages (its boundary is the same hull)
+    ref::validate_rtd_input(plain);
   } else {
     if (ps.dim > kMaxHullDim)
       throw std::invalid_argument("hull: points of dimension 2.." + std::to_string(kMaxHullDim) + ", got " +
@@ -402,20 +436,97 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
       if (!std::isfinite(c)) throw std::invalid_argument("hull: a coordinate is not finite");
     if (std::string why = dimension_problem(plain); !why.empty()) throw std::invalid_argument(why);
   }
+  return plain;
+}
+
+// A HullBuilder<D> behind HullDIncremental's dimension-free interface.
+struct AnyHull {
+  virtual ~AnyHull() = default;
+  virtual void add(const PointSet& ps, HullDStats& st) = 0;
+  virtual std::vector<std::vector<Index>> facets() const = 0;
+};
+
+template <int D>
+struct HullOf final : AnyHull {
+  HullBuilder<D> b;
+  HullOf(const PointSet& ps, HullDStats& st) : b(ps, st) { b.run(); }
+  void add(const PointSet& ps, HullDStats& st) override { b.add(ps, st); }
+  std::vector<std::vector<Index>> facets() const override { return b.facets(); }
+};
+
+std::unique_ptr<AnyHull> build_hull(const PointSet& plain, HullDStats& st) {
+  switch (plain.dim) {
+    case 2: return std::make_unique<HullOf<2>>(plain, st);
+    case 3: return std::make_unique<HullOf<3>>(plain, st);
+    case 4: return std::make_unique<HullOf<4>>(plain, st);
+    case 5: return std::make_unique<HullOf<5>>(plain, st);
+    case 6: return std::make_unique<HullOf<6>>(plain, st);
+    case 7: return std::make_unique<HullOf<7>>(plain, st);
+    case 8: return std::make_unique<HullOf<8>>(plain, st);
+    default: return std::make_unique<HullOf<9>>(plain, st);
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats) {
+  const PointSet plain = hull_input(ps);
   HullDStats local;
   HullDStats& st = stats ? *stats : local;
   st = HullDStats{};
-  switch (ps.dim) {
-    case 2: return HullBuilder<2>(plain, st).run();
-    case 3: return HullBuilder<3>(plain, st).run();
-    case 4: return HullBuilder<4>(plain, st).run();
-    case 5: return HullBuilder<5>(plain, st).run();
-    case 6: return HullBuilder<6>(plain, st).run();
-    case 7: return HullBuilder<7>(plain, st).run();
-    case 8: return HullBuilder<8>(plain, st).run();
-    default: return HullBuilder<9>(plain, st).run();
-  }
+  return build_hull(plain, st)->facets();
 }
+
+struct HullDIncremental::Impl {
+  std::unique_ptr<AnyHull> hull;
+  HullDStats stats;
+  std::size_t size = 0;
+  int dim = 0;
+  bool broken = false;  // an insertion threw: the state is not a hull any more
+};
+
+HullDIncremental::HullDIncremental(const PointSet& ps) : impl_(std::make_unique<Impl>()) {
+  const PointSet plain = hull_input(ps);
+  impl_->hull = build_hull(plain, impl_->stats);
+  impl_->size = ps.size();
+  impl_->dim = ps.dim;
+}
+
+HullDIncremental::~HullDIncremental() = default;
+HullDIncremental::HullDIncremental(HullDIncremental&&) noexcept = default;
+HullDIncremental& HullDIncremental::operator=(HullDIncremental&&) noexcept = default;
+
+void HullDIncremental::add(const PointSet& all) {
+  Impl& m = *impl_;
+  if (m.broken) throw std::logic_error("hull (cpu): an earlier insertion failed; the hull must be rebuilt");
+  if (all.dim != m.dim) throw std::invalid_argument("hull (cpu): the added points' dimension differs from the hull's");
+  if (all.size() < m.size)
+    throw std::invalid_argument("hull (cpu): add() needs the points given so far followed by the new ones");
+  if (all.size() == m.size) return;
+  // the points given before were validated (and span R^d): only the new
+  // ones are read here, so that an add costs O(new points + hull)
+  for (std::size_t i = m.size * static_cast<std::size_t>(m.dim); i < all.coords.size(); ++i)
+    if (!std::isfinite(all.coords[i])) throw std::invalid_argument("hull: a coordinate is not finite");
+  PointSet plain = all;
+  plain.weighted = false;
+  plain.weights = Values();
+  try {
+    m.hull->add(plain, m.stats);
+  } catch (...) {
+    m.broken = true;
+    throw;
+  }
+  m.size = all.size();
+}
+
+std::vector<std::vector<Index>> HullDIncremental::facets() const {
+  if (impl_->broken) throw std::logic_error("hull (cpu): an earlier insertion failed; the hull must be rebuilt");
+  return impl_->hull->facets();
+}
+
+std::size_t HullDIncremental::size() const { return impl_->size; }
+
+HullDStats HullDIncremental::stats() const { return impl_->stats; }
 
 std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets) {
   const int d = ps.dim;

@@ -32,6 +32,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,35 @@ struct HullDStats {
 // is not finite or does not span R^d is rejected with std::invalid_argument
 // (d <= 5: ref::validate_rtd_input's, the same messages as RT+1).
 std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = nullptr);
+
+// The same kernel kept between calls, for in-place insertion (Python's
+// ConvexHull(..., incremental=True).add_points): the facets, their links and
+// the hull's vertices stay; add() assigns each new point to a facet it sees
+// (a scan of the live facets) or discards it as inside, then inserts as
+// hull_d does. facets() is the canonical hull of all the points given so far
+// (the same set as hull_d's: the hull under SoS is unique; SoS indices are
+// the input indices, so appending keeps every earlier point's). The caller
+// certifies each result.
+class HullDIncremental {
+ public:
+  explicit HullDIncremental(const PointSet& ps);  // as hull_d(ps), kept
+  ~HullDIncremental();
+  HullDIncremental(HullDIncremental&&) noexcept;
+  HullDIncremental& operator=(HullDIncremental&&) noexcept;
+
+  // `all`: the size() points given so far, unchanged and in the same order,
+  // followed by the new ones; validated as hull_d's input before anything
+  // changes (std::invalid_argument, nothing changed). An exception during
+  // the insertion itself leaves the object unusable (std::logic_error after).
+  void add(const PointSet& all);
+  std::vector<std::vector<Index>> facets() const;  // hull_d's convention, in no particular order
+  std::size_t size() const;                        // points given so far
+  HullDStats stats() const;                        // summed over the construction and every add
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // Certifies `facets` (the convention above) as the canonical hull of ps:
 // returns "" or the first violated condition and what is wrong:

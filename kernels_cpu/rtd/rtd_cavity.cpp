@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,22 +68,12 @@ class Builder {
   static constexpr int kKey = D - 1;  // vertices of a cone facet's key (its ridge minus one corner)
 
  public:
-  Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest)
-      : n_(order.size()), V_(static_cast<std::uint32_t>(order.size())), furthest_(furthest) {
-    xs_.resize(n_ * D);
-    ws_.resize(n_);
-    ids_.resize(n_);
-    for (std::size_t k = 0; k < n_; ++k) {
-      const double* x = ps.point(order[k]);
-      for (int j = 0; j < D; ++j) xs_[k * D + static_cast<std::size_t>(j)] = x[j];
-      ws_[k] = ps.weight(order[k]);
-      ids_[k] = order[k];
-    }
-    f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D, ps.weighted ? ps.weights.data() : nullptr);
-    const std::size_t guess = 8 * n_ * static_cast<std::size_t>(D) + 64;
+  Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest) : furthest_(furthest) {
+    const std::size_t guess = 8 * order.size() * static_cast<std::size_t>(D) + 64;
     tv_.reserve(guess * W);
     tn_.reserve(guess * W);
     mark_.reserve(guess);
+    take(ps, order);
   }
 
   void run(RtdCavityStats& st) {
@@ -90,9 +81,20 @@ class Builder {
     for (std::size_t k = W; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
   }
 
+  // In-place insertion of more points (RtdCavityIncremental::add): ps holds
+  // the points given so far followed by the new ones, `order` the new ones'
+  // input indices in insertion order. The static filter is recomputed over
+  // all points (its bound may grow); the simplices, links and redundant
+  // points stay (a redundant point stays redundant: Q only grows).
+  void append(const PointSet& ps, const std::vector<Index>& order, RtdCavityStats& st) {
+    const std::size_t first = n_;
+    take(ps, order);
+    for (std::size_t k = first; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
+  }
+
   // The real simplices in canonical form (canonical_d.hpp), sorted; the
   // redundant points.
-  ref::Rtd output(RtdCavityStats& st) const {
+  ref::Rtd output() const {
     ref::Rtd r;
     std::vector<char> vertex(n_, 0);
     std::vector<Index> flat;
@@ -125,13 +127,14 @@ class Builder {
     for (std::size_t k = 0; k < n_; ++k)
       if (!vertex[k]) r.redundant.push_back(static_cast<Index>(ids_[k]));
     std::sort(r.redundant.begin(), r.redundant.end());
-    st.removed = r.redundant.size() - st.discarded;
     return r;
   }
 
  private:
-  std::size_t n_;
-  std::uint32_t V_;  // the virtual vertex (position n)
+  std::size_t n_ = 0;  // positions taken (points given so far)
+  // the virtual vertex: a fixed value no position reaches (positions < 2^29),
+  // so that in-place insertion can append positions
+  static constexpr std::uint32_t V_ = kDead - 1;
   bool furthest_;
   std::vector<double> xs_, ws_;
   std::vector<pred::PointId> ids_;
@@ -155,6 +158,24 @@ class Builder {
   };
   std::vector<Half> table_;
   std::vector<std::uint32_t> used_;  // table_ slots filled by this link_cone
+
+  // Appends the points `order` (input indices of ps) as positions n_..; the
+  // static filter over all of ps.
+  void take(const PointSet& ps, const std::vector<Index>& order) {
+    const std::size_t n = n_ + order.size();
+    xs_.resize(n * D);
+    ws_.resize(n);
+    ids_.resize(n);
+    for (std::size_t k = n_; k < n; ++k) {
+      const Index i = order[k - n_];
+      const double* x = ps.point(i);
+      for (int j = 0; j < D; ++j) xs_[k * D + static_cast<std::size_t>(j)] = x[j];
+      ws_[k] = ps.weight(i);
+      ids_[k] = i;
+    }
+    n_ = n;
+    f_ = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), D, ps.weighted ? ps.weights.data() : nullptr);
+  }
 
   const std::uint32_t* simplex(std::uint32_t t) const { return tv_.data() + static_cast<std::size_t>(t) * W; }
   bool is_virtual(std::uint32_t t) const {
@@ -374,42 +395,129 @@ class Builder {
   }
 };
 
+// The insertion order of ps's points first.. (BRIO rounds, a Morton curve of
+// the bounding box of all of ps: keys below 2^30, as brio::order needs).
 template <int D>
-ref::Rtd run(const PointSet& ps, RtdCavityStats& st, const RtdCavityOptions& o) {
+std::vector<Index> insertion_order(const PointSet& ps, std::size_t first, const RtdCavityOptions& o) {
   std::vector<Index> order;
   with_threads(o.threads, [&] {
     const std::array<double, 2 * D> box = brio::bounding_box<D>(ps);
-    // a Morton curve of the bounding box (keys below 2^30, as brio::order needs)
-    order = brio::order(ps.size(), o.brio_min,
+    order = brio::order(ps.size() - first, o.brio_min,
                         [&](std::size_t i) {
-                          return static_cast<std::uint32_t>(brio::morton(ps.point(i), box.data(), box.data() + D, D, 30));
+                          return static_cast<std::uint32_t>(
+                              brio::morton(ps.point(first + i), box.data(), box.data() + D, D, 30));
                         },
                         nullptr);
   });
-  Builder<D> b(ps, order, o.furthest);
-  b.run(st);
-  return b.output(st);
+  if (first != 0)
+    for (Index& i : order) i += static_cast<Index>(first);
+  return order;
+}
+
+// A Builder<D> behind the dimension-free interface of RtdCavityIncremental.
+struct AnyBuilder {
+  virtual ~AnyBuilder() = default;
+  virtual void append(const PointSet& ps, std::size_t first, const RtdCavityOptions& o, RtdCavityStats& st) = 0;
+  virtual ref::Rtd output() const = 0;
+};
+
+template <int D>
+struct BuilderOf final : AnyBuilder {
+  Builder<D> b;
+  BuilderOf(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st)
+      : b(ps, insertion_order<D>(ps, 0, o), o.furthest) {
+    b.run(st);
+  }
+  void append(const PointSet& ps, std::size_t first, const RtdCavityOptions& o, RtdCavityStats& st) override {
+    b.append(ps, insertion_order<D>(ps, first, o), st);
+  }
+  ref::Rtd output() const override { return b.output(); }
+};
+
+std::unique_ptr<AnyBuilder> build(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st) {
+  switch (ps.dim) {
+    case 2: return std::make_unique<BuilderOf<2>>(ps, o, st);
+    case 3: return std::make_unique<BuilderOf<3>>(ps, o, st);
+    case 4: return std::make_unique<BuilderOf<4>>(ps, o, st);
+    case 5: return std::make_unique<BuilderOf<5>>(ps, o, st);
+    case 6: return std::make_unique<BuilderOf<6>>(ps, o, st);
+    case 7: return std::make_unique<BuilderOf<7>>(ps, o, st);
+    case 8: return std::make_unique<BuilderOf<8>>(ps, o, st);
+    default: return std::make_unique<BuilderOf<9>>(ps, o, st);
+  }
+}
+
+void check_size(const PointSet& ps) {
+  if (ps.size() >= (std::size_t{1} << brio::kIndexBits))
+    throw std::length_error("rtd (cpu): more than 2^29 points");
 }
 
 }  // namespace
 
 ref::Rtd rtd_cavity(const PointSet& ps, RtdCavityStats* stats, const RtdCavityOptions& options) {
   ref::validate_rtd_input(ps);
-  if (ps.size() >= (std::size_t{1} << brio::kIndexBits))
-    throw std::length_error("rtd (cpu): more than 2^29 points");
+  check_size(ps);
   RtdCavityStats local;
   RtdCavityStats& st = stats ? *stats : local;
   st = RtdCavityStats{};
-  switch (ps.dim) {
-    case 2: return run<2>(ps, st, options);
-    case 3: return run<3>(ps, st, options);
-    case 4: return run<4>(ps, st, options);
-    case 5: return run<5>(ps, st, options);
-    case 6: return run<6>(ps, st, options);
-    case 7: return run<7>(ps, st, options);
-    case 8: return run<8>(ps, st, options);
-    default: return run<9>(ps, st, options);
-  }
+  ref::Rtd r = build(ps, options, st)->output();
+  st.removed = r.redundant.size() - st.discarded;
+  return r;
 }
+
+// ---- in-place insertion ------------------------------------------------------------
+
+struct RtdCavityIncremental::Impl {
+  RtdCavityOptions options;
+  RtdCavityStats stats;
+  std::unique_ptr<AnyBuilder> builder;
+  std::size_t size = 0;
+  int dim = 0;
+  bool weighted = false;
+  bool broken = false;  // an insertion threw: the state is not a triangulation any more
+};
+
+RtdCavityIncremental::RtdCavityIncremental(const PointSet& ps, const RtdCavityOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  ref::validate_rtd_input(ps);
+  check_size(ps);
+  impl_->options = options;
+  impl_->builder = build(ps, options, impl_->stats);
+  impl_->size = ps.size();
+  impl_->dim = ps.dim;
+  impl_->weighted = ps.weighted;
+}
+
+RtdCavityIncremental::~RtdCavityIncremental() = default;
+RtdCavityIncremental::RtdCavityIncremental(RtdCavityIncremental&&) noexcept = default;
+RtdCavityIncremental& RtdCavityIncremental::operator=(RtdCavityIncremental&&) noexcept = default;
+
+void RtdCavityIncremental::add(const PointSet& all) {
+  Impl& m = *impl_;
+  if (m.broken) throw std::logic_error("rtd (cpu): an earlier insertion failed; the triangulation must be rebuilt");
+  if (all.dim != m.dim || all.weighted != m.weighted)
+    throw std::invalid_argument("rtd (cpu): the added points' dimension or weights differ from the triangulation's");
+  if (all.size() < m.size)
+    throw std::invalid_argument("rtd (cpu): add() needs the points given so far followed by the new ones");
+  if (all.size() == m.size) return;
+  ref::validate_rtd_input(all);
+  check_size(all);
+  try {
+    m.builder->append(all, m.size, m.options, m.stats);
+  } catch (...) {
+    m.broken = true;
+    throw;
+  }
+  m.size = all.size();
+}
+
+ref::Rtd RtdCavityIncremental::result() const {
+  if (impl_->broken) throw std::logic_error("rtd (cpu): an earlier insertion failed; the triangulation must be rebuilt");
+  return impl_->builder->output();
+}
+
+std::size_t RtdCavityIncremental::size() const { return impl_->size; }
+
+RtdCavityStats RtdCavityIncremental::stats() const { return impl_->stats; }
 
 }  // namespace flipflop::cpu

@@ -36,6 +36,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "reference/point_set.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -63,5 +64,38 @@ struct RtdCavityStats {
 // reference rejects is rejected with the reference's std::invalid_argument
 // (ref::validate_rtd_input); more than 2^29 points: std::length_error.
 ref::Rtd rtd_cavity(const PointSet& ps, RtdCavityStats* stats = nullptr, const RtdCavityOptions& options = {});
+
+// The same kernel kept between calls, for in-place insertion (Python's
+// Delaunay(..., incremental=True).add_points): the extended triangulation,
+// its links and the points' positions stay; add() inserts only the new
+// points (BRIO order among themselves, walks from the last simplex), so a
+// batch costs about what those insertions cost, not a rebuild. result() is
+// rtd_cavity of all the points given so far, byte for byte (the regular
+// triangulation under SoS is unique whatever the insertion order; SoS
+// indices are the input indices, so appending keeps every earlier point's).
+// The caller certifies each result.
+class RtdCavityIncremental {
+ public:
+  // As rtd_cavity(ps, ..., options), kept.
+  explicit RtdCavityIncremental(const PointSet& ps, const RtdCavityOptions& options = {});
+  ~RtdCavityIncremental();
+  RtdCavityIncremental(RtdCavityIncremental&&) noexcept;
+  RtdCavityIncremental& operator=(RtdCavityIncremental&&) noexcept;
+
+  // `all`: the size() points given so far, unchanged and in the same order,
+  // followed by the new ones (same dimension, weighted alike). Validated as
+  // rtd_cavity's input before anything changes (std::invalid_argument,
+  // nothing changed). An exception during the insertion itself (more
+  // simplices than 32-bit links hold) leaves the object unusable: every later
+  // call throws std::logic_error.
+  void add(const PointSet& all);
+  ref::Rtd result() const;      // canonical simplices, sorted redundant points
+  std::size_t size() const;     // points given so far
+  RtdCavityStats stats() const; // summed over the construction and every add (removed: not kept)
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace flipflop::cpu

@@ -336,8 +336,10 @@ class _QhullUser:
 
     def close(self) -> None:
         """As scipy: ends incremental mode (add_points raises RuntimeError
-        afterwards). flipflop holds no Qhull resources; the attributes stay."""
+        afterwards) and frees the kernel kept for in-place insertion;
+        flipflop holds no Qhull resources; the attributes stay."""
         self._closed = True
+        self._inc = None
 
     def _check_incremental(self):
         if not self._incremental or self._closed:
@@ -410,10 +412,15 @@ class ConvexHull(_QhullUser):
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
 
-    incremental=True allows add_points(points, restart=False); it
-    recomputes the hull of all points (the canonical answer does not depend
-    on the insertion order, so it is the answer an in-place insertion would
-    give); in-place insertion is still open. close() ends incremental mode.
+    incremental=True allows add_points(points, restart=False). With the
+    'cpu' backend (and no strict view) the hull is then built, in every
+    dimension, by the d-dimensional hull kernel (kernels_cpu/rtd/hull_d),
+    which is kept: add_points inserts only the new points into it, in
+    place, and certifies the result in the canonical form of the one-shot
+    call — the same answer byte for byte (the canonical hull does not depend
+    on the insertion order; restart changes nothing). With another backend
+    or strict=True add_points recomputes. close() ends incremental mode and
+    frees the kept kernel.
 
     qhull_options: Qc and QGn / QG-n are applied; Qbb QbB Qz Qx QJ Qt Q12 Pp
     are accepted and ignored (they steer Qhull's floating point; flipflop's
@@ -447,11 +454,13 @@ class ConvexHull(_QhullUser):
 
     def add_points(self, points, restart: bool = False) -> None:
         """As scipy's: adds points (shape (k, ndim)); needs incremental=True
-        and no close() before (RuntimeError otherwise, as scipy). Recomputes;
-        in-place insertion is still open: the hull of all points is computed
-        again (restart is accepted and changes nothing: the canonical answer
-        does not depend on the insertion order). On bad input (ValueError)
-        the hull is left as it was."""
+        and no close() before (RuntimeError otherwise, as scipy). With the
+        'cpu' backend the points are inserted in place into the kept hull
+        (see the class docstring); otherwise the hull of all points is
+        computed again. Either way the answer is the one-shot answer (restart
+        is accepted and changes nothing: the canonical answer does not depend
+        on the insertion order). On bad input (ValueError) the hull is left
+        as it was."""
         self._check_incremental()
         new = _new_points(points, self.ndim, "ConvexHull.add_points")
         self._update(np.ascontiguousarray(np.concatenate([self.points, new])))
@@ -464,7 +473,10 @@ class ConvexHull(_QhullUser):
         polygons = None
         # every attribute comes from the compiled call, computed there in one
         # pass over the certified facets (python/src/module.cpp: HullMeasures)
-        if d == 2:
+        if self._incremental and not self._strict and (self._backend or "cpu") == "cpu":
+            inc = _kept(self, "ConvexHull", lambda: _flipflop.IncrementalHull(sub, threads), lambda k: k.add(sub))
+            attributes = inc.attributes() if d <= 3 else _hull_d(sub, "cpu", threads, facets=inc.facets())
+        elif d == 2:
             attributes = _native("ConvexHull", _flipflop.hull2, sub, _backend(self._backend, _HULL_BACKENDS[2],
                                                                                 "ConvexHull"), threads)
         elif d > 3:
@@ -498,7 +510,7 @@ class ConvexHull(_QhullUser):
         self.equations, self.volume, self.area, self.good, self.coplanar = equations, volume, area, good, _intc(coplanar)
 
 
-def _hull_d(a: np.ndarray, backend: str, threads: int):
+def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarray] = None):
     """The convex hull in 4D..9D: backend 'cpu' the facets of the hull
     kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
     the boundary facets of the canonical Delaunay triangulation (RT+1,
@@ -517,14 +529,17 @@ def _hull_d(a: np.ndarray, backend: str, threads: int):
 
     Facets: outward, det[f1-f0, ..., f_{d-1}-f0, x-f0] > 0 for x beyond
     (the 3D hull's counter-clockwise rule), vertices ascending but for a
-    swap of the last two where the orientation needs it; rows sorted."""
+    swap of the last two where the orientation needs it; rows sorted.
+    facets: the hull kernel's certified facets when already computed (the
+    kept kernel of an incremental hull), backend 'cpu'."""
     d = a.shape[1]
     if backend == "cpu":
         # the hull kernel's facets (kernels_cpu/rtd/hull_d, certified there):
         # orient_d(facet, x) < 0 inside, and orient_d = (-1)^d det[f1-f0, ...,
         # x-f0] (the 1-column of the predicates' matrix last): outward in the
         # det convention after a swap in odd d
-        facets = _native("ConvexHull", _flipflop.hull_d, a)
+        if facets is None:
+            facets = _native("ConvexHull", _flipflop.hull_d, a)
         if d % 2 == 1:
             facets[:, -2:] = facets[:, -1:-3:-1]
     else:
@@ -698,6 +713,39 @@ def _insphere_sign(d: int) -> int:
 _INSPHERE = {d: _insphere_sign(d) for d in _DIMS}
 
 
+def _kept(owner, what: str, create, add):
+    """The compiled kernel kept in owner._inc for in-place insertion
+    (_flipflop.IncrementalTriangulation or IncrementalHull): create() it on
+    the first call, later add(kept) the points after those it holds (the
+    caller's array extends the points given before: add_points appends, and
+    QGn's kept set only grows at its end). Bad input is refused before
+    anything changes (ValueError: the kept kernel stays); any other failure
+    drops it, so that the next add_points rebuilds."""
+    inc = getattr(owner, "_inc", None)
+    try:
+        if inc is None:
+            inc = _native(what, create)
+        else:
+            _native(what + ".add_points", add, inc)
+    except ValueError:
+        raise
+    except BaseException:
+        owner._inc = None
+        raise
+    owner._inc = inc
+    return inc
+
+
+def _kept_triangulation(owner, what: str, sub: np.ndarray, sw: Optional[np.ndarray], strict: bool, threads: int,
+                        furthest: bool):
+    """(simplices, redundant) of the points sub (weights sw) for an
+    incremental Delaunay or Voronoi: the cavity-insertion kernel kept in
+    owner._inc (_flipflop.IncrementalTriangulation, certified after every
+    call; _kept)."""
+    return _kept(owner, what, lambda: _flipflop.IncrementalTriangulation(sub, sw, strict, threads, furthest),
+                 lambda k: k.add(sub, sw)).result()
+
+
 class Delaunay(_QhullUser):
     """The regular (weighted Delaunay) triangulation of points in 2D..9D,
     exact and certified; with weights=None the Delaunay triangulation. The
@@ -769,10 +817,14 @@ class Delaunay(_QhullUser):
     upper hull, as scipy's), and QGn / QG-n's `good` marks the simplices
     whose circumsphere point n lies strictly outside of / not.
     incremental=True allows add_points(points,
-    restart=False, *, weights=None); it recomputes the triangulation of all
-    points (the canonical answer does not depend on the insertion order, so
-    it is the answer an in-place insertion would give); in-place insertion
-    is still open. close() ends incremental mode.
+    restart=False, *, weights=None). With the 'cpu' backend the
+    triangulation is then built, in every dimension, by the
+    cavity-insertion kernel (kernels_cpu/rtd), which is kept: add_points
+    inserts only the new points into it, in place, and certifies the result;
+    the answer is the one-shot answer for all the points, byte for byte (the
+    canonical answer does not depend on the insertion order; restart changes
+    nothing). With backend='reference' add_points recomputes. close() ends
+    incremental mode and frees the kept kernel.
 
     qhull_options: Qc and QGn / QG-n are applied; Qbb QbB Qz Qx QJ Qt Q12 Pp
     are accepted and ignored (they steer Qhull's floating point; flipflop's
@@ -820,10 +872,12 @@ class Delaunay(_QhullUser):
         """As scipy's: adds points (shape (k, ndim)); needs incremental=True
         and no close() before (RuntimeError otherwise, as scipy). A weighted
         triangulation needs their weights (shape (k,)), an unweighted one
-        none. Recomputes; in-place insertion is still open: the
-        triangulation of all points is computed again (restart is accepted
-        and changes nothing: the canonical answer does not depend on the
-        insertion order). On bad input (ValueError) nothing changes."""
+        none. With the 'cpu' backend the points are inserted in place into
+        the kept triangulation (see the class docstring); with 'reference'
+        all points are triangulated again. Either way the answer is the
+        one-shot answer for all the points (restart is accepted and changes
+        nothing: the canonical answer does not depend on the insertion
+        order). On bad input (ValueError) nothing changes."""
         self._check_incremental()
         new = _new_points(points, self.ndim, "Delaunay.add_points")
         w = None
@@ -841,8 +895,12 @@ class Delaunay(_QhullUser):
         if keep is not None:
             sub = np.ascontiguousarray(a[keep])
             sw = None if w is None else np.ascontiguousarray(w[keep])
-        simplices, redundant = _native("Delaunay", _flipflop.triangulate, sub, sw, self._backend, self._strict,
-                                       self._threads, self.furthest_site)
+        if self._incremental and self._backend == "cpu":
+            simplices, redundant = _kept_triangulation(self, "Delaunay", sub, sw, self._strict, self._threads,
+                                                       self.furthest_site)
+        else:
+            simplices, redundant = _native("Delaunay", _flipflop.triangulate, sub, sw, self._backend, self._strict,
+                                           self._threads, self.furthest_site)
         if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
             simplices, redundant = keep[simplices], keep[redundant]
         d = a.shape[1]

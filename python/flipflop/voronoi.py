@@ -14,8 +14,8 @@ from typing import Optional
 
 import numpy as np
 
-from . import (QhullOptionError, _QhullUser, _flipflop, _furthest_site, _new_points, _points, _qhull_options,
-               _threads, _weights)
+from . import (QhullOptionError, _QhullUser, _flipflop, _furthest_site, _kept_triangulation, _new_points, _points,
+               _qhull_options, _threads, _weights)
 
 __all__ = ["Voronoi"]
 
@@ -98,9 +98,12 @@ class Voronoi(_QhullUser):
     Qhull's 'Qbb Qc Qz Qx QJ Qt Q12', which change nothing here; any other
     option raises ValueError.
 
-    incremental=True allows add_points(points, restart=False), which
-    recomputes the diagram from all the points so far (the exact answer does
-    not depend on the order of insertion); close() ends it.
+    incremental=True allows add_points(points, restart=False): the
+    triangulation is then built by the cavity-insertion kernel, which is
+    kept, and add_points inserts the new points into it in place; the
+    diagram is derived again from its certified result (the exact answer
+    does not depend on the order of insertion); close() ends it and frees
+    the kept kernel.
 
     threads: worker threads (0: all cores) of the triangulation, of its
     certifier and of the centres; the answer is the same at any count. The
@@ -130,7 +133,12 @@ class Voronoi(_QhullUser):
         try:
             # furthest site: the 'cpu' backend in every d (Delaunay's choice)
             backend = "cpu" if self.furthest_site else _BACKENDS[d]
-            simplices, _redundant = _flipflop.triangulate(a, w, backend, False, self._threads, self.furthest_site)
+            if self._incremental:  # the kernel kept for in-place insertion (add_points)
+                simplices, _redundant = _kept_triangulation(self, "Voronoi", a, w, False, self._threads,
+                                                            self.furthest_site)
+            else:
+                simplices, _redundant = _flipflop.triangulate(a, w, backend, False, self._threads,
+                                                              self.furthest_site)
             (vertices, simplex_vertex, ridge_points, r_off, r_val, g_off,
              g_val) = _flipflop.voronoi(a, w, simplices, self._threads)
         except ValueError as e:
@@ -152,10 +160,12 @@ class Voronoi(_QhullUser):
         return {(int(p[0]), int(p[1])): v for p, v in zip(self.ridge_points, self.ridge_vertices)}
 
     def add_points(self, points, restart: bool = False, *, weights=None) -> None:
-        """Adds points (incremental=True only). The diagram is recomputed
-        from all the points (the exact answer does not depend on the order of
-        insertion, so restart changes nothing). A weighted diagram needs the
-        new points' weights."""
+        """Adds points (incremental=True only): they are inserted in place
+        into the kept triangulation (the cavity-insertion kernel, as
+        Delaunay's add_points), whose certified result the diagram is then
+        derived from again; the answer is the one-shot diagram of all the
+        points (it does not depend on the order of insertion, so restart
+        changes nothing). A weighted diagram needs the new points' weights."""
         self._check_incremental()
         b = _new_points(points, self.ndim, "Voronoi.add_points")
         if not np.isfinite(b).all():

@@ -56,6 +56,7 @@
 #include "kernels_cuda/gpu.hpp"
 #endif
 #include "predicates/predicates.hpp"
+#include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/hull2/hull2.hpp"
@@ -489,12 +490,35 @@ using HullTuple = std::tuple<IndexArray, IndexArray, IndexArray, DoubleArray, do
 
 // ---- hulls -------------------------------------------------------------------
 
+// The attributes of a certified 2D hull cycle (inside the GIL's release):
+// edge i = (cycle[i], cycle[i + 1]); across its vertex 0 lies edge i + 1,
+// across its vertex 1 edge i - 1.
+struct Hull2Attributes {
+  std::vector<std::int64_t> edges, nbr;
+  HullMeasures measures;
+  Hull2Attributes(const PointSet& ps, const std::vector<Index>& cycle) : measures(hull2_measures(ps, cycle)) {
+    const std::size_t k = cycle.size();
+    edges.resize(2 * k);
+    nbr.resize(2 * k);
+    for (std::size_t i = 0; i < k; ++i) {
+      edges[2 * i] = cycle[i], edges[2 * i + 1] = cycle[(i + 1) % k];
+      nbr[2 * i] = static_cast<std::int64_t>((i + 1) % k), nbr[2 * i + 1] = static_cast<std::int64_t>((i + k - 1) % k);
+    }
+  }
+  Hull2Attributes() = default;
+};
+
+HullTuple hull2_tuple(const std::vector<Index>& cycle, Hull2Attributes& a) {
+  const std::size_t k = cycle.size();
+  return {index_array(std::move(a.edges), k, 2), list_array(cycle), index_array(std::move(a.nbr), k, 2),
+          double_array(std::move(a.measures.equations), k, 3), a.measures.volume, a.measures.area};
+}
+
 HullTuple hull2(const Points& p, const std::string& backend, int threads) {
   const PointSet ps = point_set(p, std::nullopt);
   if (ps.dim != 2) throw std::invalid_argument("hull2 expects points of shape (n, 2)");
   std::vector<Index> cycle;
-  std::vector<std::int64_t> edges, nbr;
-  HullMeasures ms;
+  Hull2Attributes attributes;
   {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
@@ -514,20 +538,9 @@ HullTuple hull2(const Points& p, const std::string& backend, int threads) {
     } else {
       throw std::invalid_argument("hull2 backends: " + backend_list("'cpu', 'reference'") + "; got '" + backend + "'");
     }
-    // edge i = (cycle[i], cycle[i + 1]); across its vertex 0 lies edge i + 1,
-    // across its vertex 1 edge i - 1
-    const std::size_t k = cycle.size();
-    edges.resize(2 * k);
-    nbr.resize(2 * k);
-    for (std::size_t i = 0; i < k; ++i) {
-      edges[2 * i] = cycle[i], edges[2 * i + 1] = cycle[(i + 1) % k];
-      nbr[2 * i] = static_cast<std::int64_t>((i + 1) % k), nbr[2 * i + 1] = static_cast<std::int64_t>((i + k - 1) % k);
-    }
-    ms = hull2_measures(ps, cycle);
+    attributes = Hull2Attributes(ps, cycle);
   }
-  const std::size_t k = cycle.size();
-  return {index_array(std::move(edges), k, 2), list_array(cycle), index_array(std::move(nbr), k, 2),
-          double_array(std::move(ms.equations), k, 3), ms.volume, ms.area};
+  return hull2_tuple(cycle, attributes);
 }
 
 // The attributes of a certified 3D hull `tris` (inside the GIL's release).
@@ -604,6 +617,23 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 
 // ---- triangulations ------------------------------------------------------------
 
+// The canonical RT(S ⊕ W) r (any d; furthest: the furthest-site one)
+// certified by certify::rtd (throws if it fails), then, with strict, its
+// strict view (`rtd --strict`: certified at the exact level, no zero-volume
+// simplex), into (simplices, redundant).
+void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest,
+                   std::vector<std::vector<Index>>& simplices, std::vector<Index>& redundant) {
+  check_certified(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest),
+                  furthest ? "furthest-site Delaunay" : "Delaunay");
+  simplices = std::move(r.simplices);
+  redundant = std::move(r.redundant);
+  if (strict) {
+    simplices = ref::strict_rtd(ps, simplices);
+    check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
+    redundant = non_vertices(ps.size(), simplices);
+  }
+}
+
 // (simplices, redundant) of RT(S ⊕ W) (W = 0 without weights): d = 2 by the
 // cpu backend (kernels_cpu/rt2) or ffRT (the 2D reference), d = 3 by the cpu
 // backend (kernels_cpu/rt3, certified from its witness by cpu::certify_rt3,
@@ -640,11 +670,8 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       cpu::RtdCavityOptions o;
       o.furthest = true;
       o.threads = threads;
-      ref::Rtd r = backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps, nullptr, true);
-      check_certified(certify::rtd(ps, r.simplices, certify::Level::canonical, /*furthest=*/true),
-                      "furthest-site Delaunay");
-      simplices = std::move(r.simplices);
-      redundant = std::move(r.redundant);
+      certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps, nullptr, true),
+                    false, true, simplices, redundant);
     } else if (d == 2) {
       cpu::Rt2Options o;
       o.threads = threads;
@@ -691,15 +718,8 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
     } else {
       cpu::RtdCavityOptions o;
       o.threads = threads;
-      ref::Rtd r = backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps);
-      check_certified(certify::rtd(ps, r.simplices), "Delaunay");
-      simplices = std::move(r.simplices);
-      redundant = std::move(r.redundant);
-      if (strict) {  // `rtd --strict`: certified at the exact level (no zero-volume simplex)
-        simplices = ref::strict_rtd(ps, simplices);
-        check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
-        redundant = non_vertices(ps.size(), simplices);
-      }
+      certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps), strict, false,
+                    simplices, redundant);
     }
   }
   return {d == 2 && !furthest ? cells_array(tris, 3)
@@ -707,6 +727,53 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
                       : cells_array(simplices, static_cast<std::size_t>(d + 1)),
           list_array(redundant)};
 }
+
+// In-place insertion for Delaunay(..., incremental=True).add_points: the
+// cavity-insertion kernel (kernels_cpu/rtd, every d = 2..9) kept between
+// calls (cpu::RtdCavityIncremental); add() inserts only the new points into
+// the kept triangulation. Every result is certified by certify::rtd (and
+// with strict its strict view derived), as `triangulate`'s; it is
+// triangulate's answer for all the points given so far, byte for byte (the
+// canonical answer does not depend on the insertion order).
+class IncrementalTriangulation {
+ public:
+  IncrementalTriangulation(const Points& p, const std::optional<Vector>& w, bool strict, int threads, bool furthest)
+      : strict_(strict), furthest_(furthest) {
+    const PointSet ps = point_set(p, w);
+    if (ps.dim < 2 || ps.dim > ref::rtd::kMaxDim)
+      throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..9");
+    if (furthest && strict) throw std::invalid_argument("the furthest-site triangulation has no strict view");
+    cpu::RtdCavityOptions o;
+    o.threads = threads;
+    o.furthest = furthest;
+    nb::gil_scoped_release nogil;
+    require_spanning(ps);
+    kernel_ = std::make_unique<cpu::RtdCavityIncremental>(ps, o);
+    finish(ps);
+  }
+
+  // p (and w): the points given so far, unchanged, followed by the new ones.
+  void add(const Points& p, const std::optional<Vector>& w) {
+    const PointSet ps = point_set(p, w);
+    nb::gil_scoped_release nogil;
+    kernel_->add(ps);
+    finish(ps);
+  }
+
+  std::pair<IndexArray, IndexArray> result() const {
+    return {cells_array(simplices_, simplices_.empty() ? 0 : simplices_[0].size()), list_array(redundant_)};
+  }
+
+  std::size_t size() const { return kernel_->size(); }
+
+ private:
+  void finish(const PointSet& ps) { certified_rtd(ps, kernel_->result(), strict_, furthest_, simplices_, redundant_); }
+
+  bool strict_, furthest_;
+  std::unique_ptr<cpu::RtdCavityIncremental> kernel_;
+  std::vector<std::vector<Index>> simplices_;
+  std::vector<Index> redundant_;
+};
 
 // The facets of the convex hull in R^d, d = 2..9 (kernels_cpu/rtd/hull_d:
 // beneath-beyond in Quickhull's order, exact under SoS, one thread),
@@ -725,6 +792,141 @@ IndexArray hull_d(const Points& p) {
   }
   return cells_array(facets, static_cast<std::size_t>(ps.dim));
 }
+
+// In-place insertion for ConvexHull(..., incremental=True).add_points: the
+// hull kernel (kernels_cpu/rtd/hull_d, every d = 2..9) kept between calls
+// (cpu::HullDIncremental); add() inserts only the new points. Each result is
+// put in the canonical form of the one-shot call and certified as it is:
+// 2D the counter-clockwise cycle from its smallest index (cpu::certify_hull2),
+// 3D the canonical counter-clockwise triangles (cpu::certify_hull3), then
+// the same attributes as hull2 / hull3; 4D..9D the facets in hull_d's
+// convention, certified by hull_d_problem, for Python's _hull_d to finish.
+//
+// What is certified after an add: the hull of S' = (the vertices of the last
+// certified hull) ∪ (the new points), on S' alone, so that an add costs
+// O(hull + new points), not O(all points). Sound: the last certificate
+// showed every earlier point a vertex of, or (under SoS) strictly inside,
+// conv(old vertices), so conv(all points) = conv(S'), and a point strictly
+// inside stays strictly inside a larger hull, never a vertex; the canonical
+// hull of all the points is then the canonical hull of S'. S' keeps the
+// input order (a monotone renumbering), under which every SoS sign is the
+// same (the perturbation depends on the order of the indices only:
+// predicates.hpp), and so is the canonical form (smallest index first,
+// sorted). The construction certifies on all its points.
+class IncrementalHull {
+ public:
+  IncrementalHull(const Points& p, int threads) : threads_(threads) {
+    const PointSet ps = point_set(p, std::nullopt);
+    if (ps.dim < 2 || ps.dim > 9) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..9");
+    nb::gil_scoped_release nogil;
+    require_spanning(ps);
+    kernel_ = std::make_unique<cpu::HullDIncremental>(ps);
+    finish(ps);
+  }
+
+  // p: the points given so far, unchanged, followed by the new ones.
+  void add(const Points& p) {
+    const PointSet ps = point_set(p, std::nullopt);
+    nb::gil_scoped_release nogil;
+    const std::size_t first = kernel_->size();
+    kernel_->add(ps);
+    finish(ps, first);
+  }
+
+  // 2D and 3D: hull2's / hull3's attribute tuple
+  HullTuple attributes() {
+    if (!facets_.empty()) throw std::logic_error("ConvexHull: attributes() is for 2D and 3D hulls");
+    if (!cycle_.empty()) {
+      Hull2Attributes a = a2_;
+      return hull2_tuple(cycle_, a);
+    }
+    Hull3Attributes a = a3_;
+    return hull3_tuple(tris_, a);
+  }
+  // 4D..9D: the certified facets
+  IndexArray facets() const {
+    if (facets_.empty()) throw std::logic_error("ConvexHull: facets() is for hulls in 4D..9D");
+    return cells_array(facets_, facets_[0].size());
+  }
+  std::size_t size() const { return kernel_->size(); }
+
+ private:
+  // first: the points certified before (0 at construction: all of ps)
+  void finish(const PointSet& ps, std::size_t first = 0) {
+    std::vector<std::vector<Index>> f = kernel_->facets();
+    // S' (above): sub[j] the input index of position j, ascending; pos the inverse
+    std::vector<Index> sub;
+    if (first != 0) {
+      sub = vertices_;
+      for (std::size_t i = first; i < ps.size(); ++i) sub.push_back(static_cast<Index>(i));
+    }
+    PointSet part;
+    if (first != 0) {
+      part.dim = ps.dim;
+      std::vector<double> c;
+      c.reserve(sub.size() * static_cast<std::size_t>(ps.dim));
+      for (Index i : sub) c.insert(c.end(), ps.point(i), ps.point(i) + ps.dim);
+      part.coords = Values(std::move(c));
+    }
+    const PointSet& cps = first != 0 ? part : ps;
+    auto local = [&](Index i) {  // input index -> index in cps
+      return first != 0 ? static_cast<Index>(std::lower_bound(sub.begin(), sub.end(), i) - sub.begin()) : i;
+    };
+    if (ps.dim == 2) {
+      // an edge (a, b) has the inside on its right (orient2d(a, b, x) < 0):
+      // clockwise, so b's counter-clockwise successor is a
+      std::unordered_map<Index, Index> next;
+      Index start = f[0][0];
+      for (const auto& e : f) {
+        next[e[1]] = e[0];
+        start = std::min(start, e[0]);
+      }
+      std::vector<Index> cycle{start};
+      for (Index v = next.at(start); v != start && cycle.size() <= f.size(); v = next.at(v)) cycle.push_back(v);
+      std::vector<Index> lc(cycle.size());
+      for (std::size_t k = 0; k < cycle.size(); ++k) lc[k] = local(cycle[k]);
+      check_certified(cpu::certify_hull2(cps, lc, certify::Level::canonical, threads_), "hull2");
+      a2_ = Hull2Attributes(ps, cycle);
+      vertices_ = cycle;
+      std::sort(vertices_.begin(), vertices_.end());
+      cycle_ = std::move(cycle);
+    } else if (ps.dim == 3) {
+      // orient3d(a, b, c, x) < 0 inside is det[b-a, c-a, x-a] > 0 inside:
+      // (a, c, b) is counter-clockwise seen from outside
+      std::vector<Triangle> tris, lt;
+      tris.reserve(f.size());
+      for (const auto& t : f) tris.push_back({t[0], t[2], t[1]});
+      tris = canonical_triangles(std::move(tris));
+      lt.reserve(tris.size());
+      for (const Triangle& t : tris) lt.push_back({local(t[0]), local(t[1]), local(t[2])});
+      check_certified(cpu::certify_hull3(cps, lt, certify::Level::canonical, threads_), "hull3");
+      a3_ = Hull3Attributes(ps, tris);
+      vertices_ = a3_.vertices;
+      tris_ = std::move(tris);
+    } else {
+      std::vector<std::vector<Index>> lf = f;
+      for (auto& x : lf)
+        for (Index& i : x) i = local(i);
+      if (const std::string why = cpu::hull_d_problem(cps, lf); !why.empty())
+        throw std::runtime_error("the ConvexHull result failed certification: " + why);
+      std::vector<Index> v;
+      for (const auto& x : f) v.insert(v.end(), x.begin(), x.end());
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      vertices_ = std::move(v);
+      facets_ = std::move(f);
+    }
+  }
+
+  int threads_;
+  std::unique_ptr<cpu::HullDIncremental> kernel_;
+  std::vector<Index> cycle_;  // 2D
+  Hull2Attributes a2_;
+  std::vector<Triangle> tris_;  // 3D
+  Hull3Attributes a3_;
+  std::vector<std::vector<Index>> facets_;  // 4D..9D
+  std::vector<Index> vertices_;             // of the last certified hull, ascending
+};
 
 // neighbors[i][j]: the simplex across the facet opposite vertex j of
 // simplex i, -1 on the boundary (scipy's convention); facet_neighbors with
@@ -2144,6 +2346,18 @@ NB_MODULE(_flipflop, m) {
   m.def("hull_d", &hull_d, nb::arg("points"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
         nb::arg("strict"), nb::arg("threads"), nb::arg("furthest") = false);
+  nb::class_<IncrementalTriangulation>(m, "IncrementalTriangulation")
+      .def(nb::init<const Points&, const std::optional<Vector>&, bool, int, bool>(), nb::arg("points"),
+           nb::arg("weights").none(), nb::arg("strict"), nb::arg("threads"), nb::arg("furthest"))
+      .def("add", &IncrementalTriangulation::add, nb::arg("points"), nb::arg("weights").none())
+      .def("result", &IncrementalTriangulation::result)
+      .def("__len__", &IncrementalTriangulation::size);
+  nb::class_<IncrementalHull>(m, "IncrementalHull")
+      .def(nb::init<const Points&, int>(), nb::arg("points"), nb::arg("threads"))
+      .def("add", &IncrementalHull::add, nb::arg("points"))
+      .def("attributes", &IncrementalHull::attributes)
+      .def("facets", &IncrementalHull::facets)
+      .def("__len__", &IncrementalHull::size);
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
         nb::arg("queries"));

@@ -423,41 +423,95 @@ def test_hull_coplanar_is_exact():
 
 # ---- add_points ------------------------------------------------------------------------
 
-@pytest.mark.parametrize("d", [2, 3, 4])
+@pytest.mark.parametrize("d", [2, 3, 4, 5, 6])
 def test_delaunay_add_points_in_batches_equals_one_shot(d):
     rng = np.random.default_rng(30 + d)
-    p = rng.random((60 if d < 4 else 30, d))
+    n = {2: 60, 3: 60, 4: 30, 5: 24, 6: 16}[d]
+    p = rng.random((n, d))
     p[-5:] = p[:5]  # duplicates arrive late
+    p[n // 2:n // 2 + 4] = np.round(p[n // 2:n // 2 + 4])  # cube corners: cospherical ties
     one = flipflop.Delaunay(p)
     t = flipflop.Delaunay(p[:d + 3], incremental=True)
+    kept = t._inc  # the kernel kept for in-place insertion (_flipflop.IncrementalTriangulation)
+    assert kept is not None and len(kept) == d + 3
     for lo in range(d + 3, len(p), 7):
         t.add_points(p[lo:lo + 7], restart=lo % 2 == 0)
+        assert t._inc is kept and len(kept) == min(lo + 7, len(p))  # inserted in place, not rebuilt
+        assert np.array_equal(t.simplices, flipflop.Delaunay(p[:lo + 7]).simplices)
     assert np.array_equal(t.points, p)
     for name in ("simplices", "neighbors", "convex_hull", "redundant", "coplanar", "vertex_to_simplex",
                  "transform", "equations"):
         assert np.array_equal(getattr(t, name), getattr(one, name), equal_nan=name in ("transform", "equations")), name
     assert np.array_equal(t.vertex_neighbor_vertices[1], one.vertex_neighbor_vertices[1])
     assert t.npoints == len(p)
+    t.close()
+    assert t._inc is None and np.array_equal(t.simplices, one.simplices)
 
 
-def test_weighted_add_points_and_hull_add_points():
-    rng = np.random.default_rng(40)
-    p, w = rng.random((50, 2)), rng.random(50) * 0.01
-    t = flipflop.Delaunay(p[:10], incremental=True, weights=w[:10])
-    for lo in range(10, 50, 9):
-        t.add_points(p[lo:lo + 9], weights=w[lo:lo + 9])
-    assert np.array_equal(t.simplices, flipflop.Delaunay(p, weights=w).simplices)
-    with pytest.raises(ValueError):
-        t.add_points(p[:2])  # weighted: weights needed
-    for d in (2, 3):
-        q = rng.random((70, d))
-        one = flipflop.ConvexHull(q, qhull_options="Qc QG3")
-        h = flipflop.ConvexHull(q[:d + 2], incremental=True, qhull_options="Qc QG3")
-        for lo in range(d + 2, 70, 6):
-            h.add_points(q[lo:lo + 6])
-        for name in ("simplices", "vertices", "neighbors", "equations", "good", "coplanar"):
-            assert np.array_equal(getattr(h, name), getattr(one, name)), name
-        assert (h.volume, h.area, h.npoints) == (one.volume, one.area, 70)
+def test_delaunay_add_points_in_place_on_grids_strict_and_good():
+    # a 2D and a 3D integer grid added row by row (every predicate exactly
+    # degenerate), with the strict view and with QG0 (point 0 left out:
+    # the kept kernel triangulates the others)
+    for d, side in ((2, 6), (3, 4)):
+        g = np.array(np.meshgrid(*[np.arange(side)] * d, indexing="ij"), dtype=float).reshape(d, -1).T
+        g = g[np.random.default_rng(d).permutation(len(g))]
+        for kw in ({}, {"strict": True}, {"qhull_options": "QG0"}):
+            one = flipflop.Delaunay(g, **kw)
+            t = flipflop.Delaunay(g[:side ** (d - 1)], incremental=True, **kw)
+            kept = t._inc
+            for lo in range(side ** (d - 1), len(g), side):
+                t.add_points(g[lo:lo + side])
+            assert t._inc is kept, kw
+            assert np.array_equal(t.simplices, one.simplices), kw
+            assert np.array_equal(t.good, one.good), kw
+
+
+@pytest.mark.parametrize("d", [2, 3, 4, 5, 6])
+def test_hull_add_points_in_place_equals_one_shot(d):
+    # random points, then a grid's points (ties on every facet) and
+    # duplicates in batches; the kept kernel is the same object throughout
+    rng = np.random.default_rng(50 + d)
+    side = {2: 5, 3: 4, 4: 3, 5: 2, 6: 2}[d]
+    grid = np.array(np.meshgrid(*[np.arange(side)] * d, indexing="ij"), dtype=float).reshape(d, -1).T / (side - 1)
+    p = np.concatenate([rng.random((d + 4, d)) * 0.5 + 0.25, grid[rng.permutation(len(grid))],
+                        rng.random((20, d))])
+    p = np.concatenate([p, p[:6]])
+    qc = "Qc" if d <= 4 else None  # Qc's coplanar points: Python-side, seconds on the 6D cube's 4440 facets
+    one = flipflop.ConvexHull(p, qhull_options=qc)
+    h = flipflop.ConvexHull(p[:d + 4], incremental=True, qhull_options=qc)
+    kept = h._inc
+    assert kept is not None and len(kept) == d + 4
+    step = 9 if d <= 4 else 31
+    for lo in range(d + 4, len(p), step):
+        h.add_points(p[lo:lo + step])
+        assert h._inc is kept and len(kept) == min(lo + step, len(p))  # inserted in place, not rebuilt
+        assert np.array_equal(h.simplices, flipflop.ConvexHull(p[:lo + step]).simplices)
+    for name in ("simplices", "vertices", "neighbors", "equations", "coplanar"):  # NaN: zero-area facets
+        assert np.array_equal(getattr(h, name), getattr(one, name), equal_nan=name == "equations"), name
+    assert (h.volume, h.area, h.npoints) == (one.volume, one.area, len(p))
+    h.close()
+    assert h._inc is None
+
+
+@pytest.mark.parametrize("cls, recomputing", [(flipflop.Delaunay, ({"backend": "reference"},)),
+                                               (flipflop.ConvexHull, ({"backend": "reference"}, {"strict": True}))])
+def test_add_points_bad_input_keeps_the_kept_kernel(cls, recomputing):
+    p = np.random.default_rng(9).random((40, 3))
+    h = cls(p[:10], incremental=True)
+    kept, before = h._inc, h.simplices.copy()
+    for bad_value in (np.nan, np.inf):
+        bad = p[10:20].copy()
+        bad[4, 0] = bad_value
+        with pytest.raises(ValueError):
+            h.add_points(bad)
+        assert h._inc is kept and len(kept) == 10 and np.array_equal(h.simplices, before) and h.npoints == 10
+    h.add_points(p[10:])
+    assert h._inc is kept and np.array_equal(h.simplices, cls(p).simplices)
+    for kw in recomputing:  # these recompute: the same answer
+        r = cls(p[:10], incremental=True, **kw)
+        r.add_points(p[10:])
+        assert getattr(r, "_inc", None) is None
+        assert np.array_equal(r.simplices, cls(p, **kw).simplices)
 
 
 # ---- bad input: what scipy raises -----------------------------------------------------

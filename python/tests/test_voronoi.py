@@ -843,13 +843,16 @@ def test_incremental():
     rng = np.random.default_rng(2)
     p = rng.random((60, 2))
     v = Voronoi(p[:30], incremental=True)
+    kept = v._inc  # the triangulation kernel kept for in-place insertion
     v.add_points(p[30:45])
     v.add_points(p[45:], restart=True)
+    assert v._inc is kept and len(kept) == 60  # inserted in place, not rebuilt
     full = Voronoi(p)
     assert np.array_equal(v.vertices, full.vertices)
     assert np.array_equal(v.ridge_points, full.ridge_points)
     assert v.regions == full.regions and v.npoints == 60
     v.close()
+    assert v._inc is None
     with pytest.raises(RuntimeError):
         v.add_points(p[:3])
     with pytest.raises(RuntimeError):
@@ -859,6 +862,14 @@ def test_incremental():
     w = Voronoi(p[:30], incremental=True, weights=np.zeros(30))
     w.add_points(p[30:], weights=np.zeros(30))
     assert np.array_equal(w.vertices, full.vertices)
+    # a power diagram in 3D, weights that make points redundant, in batches
+    q, qw = rng.random((70, 3)), rng.random(70) * 0.05
+    u = Voronoi(q[:10], incremental=True, weights=qw[:10])
+    for lo in range(10, 70, 13):
+        u.add_points(q[lo:lo + 13], weights=qw[lo:lo + 13])
+    one = Voronoi(q, weights=qw)
+    assert np.array_equal(u.vertices, one.vertices) and u.regions == one.regions
+    assert np.array_equal(u.ridge_points, one.ridge_points)
 
 
 def test_attributes_like_scipy():
