@@ -27,6 +27,7 @@
 #include "cli/commands.hpp"
 #include "cli/rt3_commands.hpp"
 #include "cli/rtd_commands.hpp"
+#include "reference/rtd/triangulation_d.hpp"
 
 int main(int argc, char** argv) {
   using namespace flipflop::cli;
@@ -112,7 +113,9 @@ int main(int argc, char** argv) {
   RtdArgs r;
   auto* rtd = app.add_subcommand("rtd", "d-dimensional regular triangulation (input: d coordinates and a weight per line)");
   rtd->add_option("IN", r.in, "input point file (.xyz)")->required();
-  rtd->add_option("--dim", r.dim, "dimension d (2 to 9)")->required()->check(CLI::Range(2, 9));
+  rtd->add_option("--dim", r.dim, "dimension d (2 to " + std::to_string(flipflop::ref::rtd::kMaxDim) + ")")
+      ->required()
+      ->check(CLI::Range(2, flipflop::ref::rtd::kMaxDim));
   rtd->add_option("-o,--output", r.out,
                   "output file, format by extension: .txt/.idx/none simplex list (default: standard output), "
                   ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
@@ -149,8 +152,10 @@ int main(int argc, char** argv) {
   cert->add_option("KIND", v.kind, "hull2, hull3, rt2, dt2, rtd, or rt3|dt3 (certify rtd --dim 3; dt3 unweighted)")
       ->required()
       ->check(CLI::IsMember({"hull2", "hull3", "rt2", "dt2", "rtd", "rt3", "dt3"}));
-  cert->add_option("--dim", v.dim, "rtd: the dimension d (2 to 9; points: d coordinates and a weight per line)")
-      ->check(CLI::Range(2, 9));
+  cert->add_option("--dim", v.dim,
+                   "rtd: the dimension d (2 to " + std::to_string(flipflop::ref::rtd::kMaxDim) +
+                       "; points: d coordinates and a weight per line)")
+      ->check(CLI::Range(2, flipflop::ref::rtd::kMaxDim));
   cert->add_option("POINTS", v.points, "input point file")->required();
   cert->add_option("OUTPUT", v.output, "index output to check (flipflop's or another program's, e.g. qhull i Qt)")
       ->required();

@@ -830,6 +830,13 @@ def test_convex_hull_6d_to_9d_equals_scipy(d, n):
         want_volume = 2.0 ** d / math.factorial(d)
     h = flipflop.ConvexHull(g)
     assert h.volume == pytest.approx(want_volume, rel=1e-14)
+    # backend 'reference' (the boundary of RT+1's canonical triangulation,
+    # another algorithm): the same canonical facets, on the tied lattice
+    # (7D..9D: 15..19 points) and on a few random points
+    if d >= 7:
+        assert np.array_equal(flipflop.ConvexHull(g, backend="reference").simplices, h.simplices)
+    q = p[:d + 6]
+    assert np.array_equal(flipflop.ConvexHull(q, backend="reference").simplices, flipflop.ConvexHull(q).simplices)
     F = Fraction
     for f in h.simplices[:: max(1, len(h.simplices) // 40)]:
         base = [F(x) for x in g[f[0]]]
