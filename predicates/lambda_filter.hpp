@@ -174,6 +174,31 @@ inline ErrDouble det_gauss_rt(const ErrDouble* t, int n) {
   return negate ? -det : det;
 }
 
+// The (k-1) x (k-1) matrix T of det Λ translated by the last row, in
+// ErrDouble (row-major into t): plain, row i is p_i - p_{k-1}; lifted (w
+// given, k-2 coordinates), row i is (p_i - p_{k-1}, |p_i - p_{k-1}|^2 -
+// (w_i - w_{k-1})). The dynamic filters of every k share it
+// (lambda_sign_filter<K> here, predicates.cpp's 9..11-row filter).
+FF_HD inline void translated_lambda(int k, const double* const* p, const double* w, ErrDouble* t) {
+  const int n = k - 1;
+  const double* base = p[k - 1];
+  if (w == nullptr) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) t[i * n + j] = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+  } else {
+    const int m = n - 1;  // real coordinates per point
+    for (int i = 0; i < n; ++i) {
+      ErrDouble lift = ErrDouble(0.0);
+      for (int j = 0; j < m; ++j) {
+        const ErrDouble diff = ErrDouble(p[i][j]) - ErrDouble(base[j]);
+        t[i * n + j] = diff;
+        lift = (j == 0) ? diff * diff : lift + diff * diff;
+      }
+      t[i * n + m] = lift - (ErrDouble(w[i]) - ErrDouble(w[k - 1]));
+    }
+  }
+}
+
 // Filtered sign of det Λ for K points in R^(K-1) given by coordinate pointers.
 // If `w` is non-null the last coordinate is the lifted height |x|^2 - w of the
 // first K-2 coordinates (the points then have K-2 real coordinates each).
@@ -181,22 +206,7 @@ template <int K>
 FF_HD inline int lambda_sign_filter(const double* const* p, const double* w) {
   constexpr int N = K - 1;  // size of the translated determinant
   ErrDouble t[N * N];
-  const double* base = p[K - 1];
-  if (w == nullptr) {
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) t[i * N + j] = ErrDouble(p[i][j]) - ErrDouble(base[j]);
-  } else {
-    constexpr int M = N - 1;  // real coordinates per point
-    for (int i = 0; i < N; ++i) {
-      ErrDouble lift = ErrDouble(0.0);
-      for (int j = 0; j < M; ++j) {
-        ErrDouble diff = ErrDouble(p[i][j]) - ErrDouble(base[j]);
-        t[i * N + j] = diff;
-        lift = (j == 0) ? diff * diff : lift + diff * diff;
-      }
-      t[i * N + M] = lift - (ErrDouble(w[i]) - ErrDouble(w[K - 1]));
-    }
-  }
+  translated_lambda(K, p, w, t);
   return sign_if_certain(det_by_minors<N>(t));
 }
 

@@ -56,25 +56,9 @@ void check_k(int k, const double* weights, int kmax = kMaxStagedK) {
 // (lambda_filter.hpp, det_gauss_rt), with a running error bound per value
 // (err_double.hpp), so a sign it returns is certain.
 int lambda_sign_filter_high(int k, const double* const* p, const double* w) {
-  const int n = k - 1;
   ErrDouble t[(kMaxLambdaK - 1) * (kMaxLambdaK - 1)];
-  const double* base = p[k - 1];
-  if (w == nullptr) {
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) t[i * n + j] = ErrDouble(p[i][j]) - ErrDouble(base[j]);
-  } else {
-    const int m = n - 1;
-    for (int i = 0; i < n; ++i) {
-      ErrDouble lift(0.0);
-      for (int j = 0; j < m; ++j) {
-        const ErrDouble diff = ErrDouble(p[i][j]) - ErrDouble(base[j]);
-        t[i * n + j] = diff;
-        lift = (j == 0) ? diff * diff : lift + diff * diff;
-      }
-      t[i * n + m] = lift - (ErrDouble(w[i]) - ErrDouble(w[k - 1]));
-    }
-  }
-  return sign_if_certain(det_gauss_rt(t, n));
+  translated_lambda(k, p, w, t);
+  return sign_if_certain(det_gauss_rt(t, k - 1));
 }
 
 }  // namespace
