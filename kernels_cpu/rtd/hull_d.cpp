@@ -5,13 +5,17 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
 #include "kernels_cpu/brio.hpp"
+#include "kernels_cpu/parallel.hpp"
+#include "predicates/plane_form.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/staged.hpp"
+#include "kernels_cpu/rtd/ridge_table.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/convex_surface.hpp"
@@ -99,6 +103,12 @@ class HullBuilder {
   std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
   std::vector<std::uint32_t> mark_, free_, work_;
   std::uint32_t stamp_ = 0;
+  RidgeTable<D - 1> ridges_;  // match()'s
+  // during one insertion: per visible facet slot, the first of its D+1 plane
+  // forms in vis_forms_ (kNone: none); insert() says when it has them
+  static constexpr std::size_t kFormMin = 32 * D;  // measured: 4D 10^5 and 5D 2x10^4 normal points, 2..64 D
+  std::vector<std::uint32_t> vis_form_at_;
+  std::vector<pred::PlaneForm<D>> vis_forms_;
   std::uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 
   bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
@@ -129,6 +139,22 @@ class HullBuilder {
   }
   // q strictly beyond facet f
   bool sees(std::uint32_t f, Index q) { return orient_of(&fv_[static_cast<std::size_t>(f) * D], q) > 0; }
+
+  // The plane form (plane_form.hpp) of facet f's tuple with vertex j
+  // replaced by p (j = kNone: the facet itself).
+  pred::PlaneForm<D> facet_form(std::uint32_t f, std::uint32_t j, Index p) const {
+    const double* t[D];
+    for (int c = 0; c < D; ++c)
+      t[c] = ps_->point(static_cast<std::uint32_t>(c) == j ? p : fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(c)]);
+    return pred::PlaneForm<D>(t);
+  }
+  // orient_d(t, q) by the form of the tuple t, the predicate where it is undecided
+  int form_sign(const pred::PlaneForm<D>& form, const Index* t, Index q) {
+    ++st_->tests;
+    if (const int s = form.sign(ps_->point(q))) return s;
+    --st_->tests;
+    return orient_of(t, q);
+  }
 
   // the floating-point hyperplane n . x + c of facet f (heuristic only)
   void plane(std::uint32_t f) {
@@ -178,36 +204,25 @@ class HullBuilder {
   // Links the ridges of the facets `fs` (all but position skip[k] of fs[k],
   // -1: none) among themselves: each such ridge is met exactly twice, and
   // two halves are the same ridge when they hold the same vertices (sorted;
-  // a ridge has D-1 vertices, or D-2 besides the apex of a cone).
+  // a ridge has D-1 vertices, or D-2 besides the apex of a cone). Matched in
+  // a hash table (ridge_table.hpp; a sort of the halves took a sixth of a 5D
+  // hull's time).
   void match(const std::vector<std::uint32_t>& fs, const std::vector<int>& skip) {
-    struct Half {
-      std::array<Index, D - 1> key;
-      std::uint32_t link;
-    };
-    std::vector<Half> halves(fs.size() * D);
-    std::size_t nh = 0;
+    ridges_.begin(fs.size() * D);
     for (std::size_t k = 0; k < fs.size(); ++k)
       for (int j = 0; j < D; ++j) {
         if (j == skip[k]) continue;
-        Half& h = halves[nh++];
-        h.key.fill(kNone);
+        typename RidgeTable<D - 1>::Key key;
+        key.fill(kNone);
         int c = 0;
         for (int q = 0; q < D; ++q)
-          if (q != j && q != skip[k]) h.key[static_cast<std::size_t>(c++)] = fv_[fs[k] * D + static_cast<std::uint32_t>(q)];
-        std::sort(h.key.begin(), h.key.begin() + c);
-        h.link = fs[k] * D + static_cast<std::uint32_t>(j);
+          if (q != j && q != skip[k]) key[static_cast<std::size_t>(c++)] = fv_[fs[k] * D + static_cast<std::uint32_t>(q)];
+        std::sort(key.begin(), key.begin() + c);
+        const std::uint32_t link = fs[k] * D + static_cast<std::uint32_t>(j);
+        const std::uint32_t other = ridges_.offer(key, link);
+        if (other != RidgeTable<D - 1>::kOpen) fn_[link] = other, fn_[other] = link;
       }
-    halves.resize(nh);
-    std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) {
-      return x.key != y.key ? x.key < y.key : x.link < y.link;
-    });
-    for (std::size_t a = 0; a < halves.size(); a += 2) {
-      if (a + 1 >= halves.size() || halves[a].key != halves[a + 1].key ||
-          (a + 2 < halves.size() && halves[a + 2].key == halves[a].key))
-        throw std::logic_error("hull (cpu): the horizon is not a closed ridge cycle");
-      fn_[halves[a].link] = halves[a + 1].link;
-      fn_[halves[a + 1].link] = halves[a].link;
-    }
+    if (!ridges_.end()) throw std::logic_error("hull (cpu): the horizon is not a closed ridge cycle");
   }
 
   // Adds q to facet f's outside set when f is the first of `fs` q sees;
@@ -283,19 +298,32 @@ class HullBuilder {
         if (j != i) fv_[f * D + static_cast<std::uint32_t>(c++)] = s[static_cast<std::size_t>(j)];
       // orient(facet, s_i) = (-1)^(D-i) orient(s): negative wanted
       if ((D - i) % 2 == 0) std::swap(fv_[f * D], fv_[f * D + 1]);
-      plane(f);
       fs.push_back(f);
       skip.push_back(-1);
     }
     match(fs, skip);
     std::vector<char> used(n_, 0);
     for (Index x : s) used[x] = 1;
-    for (Index q = 0; q < n_; ++q)
-      if (!used[q]) assign(q, fs);
+    // every point is tested against these D+1 facets: their orientations
+    // as plane forms (plane_form.hpp; an undecided form asks the predicate)
+    std::vector<pred::PlaneForm<D>> form;
+    for (std::uint32_t f : fs) form.push_back(facet_form(f, kNone, 0));
+    for (Index q = 0; q < n_; ++q) {
+      if (used[q]) continue;
+      for (std::size_t k = 0; k < fs.size(); ++k)
+        if (form_sign(form[k], &fv_[static_cast<std::size_t>(fs[k]) * D], q) > 0) {
+          if (out_[fs[k]].empty()) work_.push_back(fs[k]);
+          out_[fs[k]].push_back(q);
+          break;
+        }
+    }
   }
 
   void insert(std::uint32_t f0) {
     // the apex: the furthest point of f0's outside set in floating point
+    // (the plane only for the facets that pick an apex: a few percent of
+    // those created)
+    plane(f0);
     std::vector<Index>& pts = out_[f0];
     std::size_t best = 0;
     double hb = -1.0;
@@ -331,14 +359,26 @@ class HullBuilder {
       fn_[u * D + static_cast<std::uint32_t>(h.i)] = h.link;
       fn_[h.link] = u * D + static_cast<std::uint32_t>(h.i);
       mark_[u] = 0;
-      plane(u);
       fresh.push_back(u);
       skip.push_back(h.i);
     }
     st_->created += fresh.size();
     match(fresh, skip);
     // the points of the visible facets (p aside): each inside the grown hull
-    // or beyond one of the new facets (header)
+    // or beyond one of the new facets (header). A visible facet with at
+    // least kFormMin orphans gets the plane forms of its D cone sides f[j:=p]
+    // and of itself, which its orphans' walks test again and again (a form
+    // costs about D determinants of D-1 rows in ErrDouble, a test with it a
+    // dot product).
+    if (vis_form_at_.size() < mark_.size()) vis_form_at_.resize(mark_.size(), kNone);
+    vis_forms_.clear();
+    for (std::uint32_t f : vis) {
+      vis_form_at_[f] = kNone;
+      if (out_[f].size() < kFormMin) continue;
+      vis_form_at_[f] = static_cast<std::uint32_t>(vis_forms_.size());
+      for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(D); ++j) vis_forms_.push_back(facet_form(f, j, p));
+      vis_forms_.push_back(facet_form(f, kNone, 0));
+    }
     for (std::uint32_t f : vis)
       for (Index q : out_[f])
         if (q != p) place_orphan(q, f, p, fresh);
@@ -371,7 +411,9 @@ class HullBuilder {
         const int j = (r + k) % D;
         Index t[D];
         for (int c = 0; c < D; ++c) t[c] = c == j ? p : fv_[cur * D + static_cast<std::uint32_t>(c)];
-        if (orient_of(t, q) > 0) exit = j;
+        const std::uint32_t at = vis_form_at_[cur];
+        if ((at == kNone ? orient_of(t, q) : form_sign(vis_forms_[at + static_cast<std::uint32_t>(j)], t, q)) > 0)
+          exit = j;
       }
       if (exit < 0) {
         if (!beyond) break;
@@ -388,7 +430,8 @@ class HullBuilder {
       cur = g;
       Index t[D];
       for (int c = 0; c < D; ++c) t[c] = fv_[cur * D + static_cast<std::uint32_t>(c)];
-      beyond = orient_of(t, q) > 0;
+      const std::uint32_t at = vis_form_at_[cur];
+      beyond = (at == kNone ? orient_of(t, q) : form_sign(vis_forms_[at + static_cast<std::uint32_t>(D)], t, q)) > 0;
     }
     assign(q, fresh);
   }
@@ -413,6 +456,104 @@ std::string tuple_str(const Index* t, int k) {
   std::string o = "(";
   for (int i = 0; i < k; ++i) o += (i ? "," : "") + std::to_string(t[i]);
   return o + ")";
+}
+
+// The walk of hull_d_problem's "points-inside" condition, for the points
+// `order` (Morton order): each q walks through the cones (v, f) of the
+// certified star-shaped surface — side j of cone (v, f) is the hyperplane of
+// f with f_j replaced by v, and f_j's side is positive there
+// (orient(f[j:=v], f_j) = -orient(f, v) > 0) — to the cone that holds it (a
+// scan of every cone where the walk does not settle), then q must lie
+// strictly inside that cone's facet. The cones hold the space once (the
+// surface is star-shaped from v), so the cone reached, and the verdict, do
+// not depend on the walk's path.
+//
+// Speed: every side and facet orientation is a PlaneForm (plane_form.hpp:
+// the orientation as a linear form with a proven bound), built on first use
+// by the thread that claims it (an atomic state per form; a thread that
+// finds one being built asks the predicate itself) and shared by the walks
+// of every point; an undecided form falls back to the exact SoS predicate.
+// The points are walked in pieces of kChunk in parallel (par_for: the
+// caller's thread count), each piece from cone 0 with its own random
+// sequence; the first failing point in `order` is reported, so the message
+// does not depend on the thread count. Without forms (more than 2^21 of
+// them), the predicate alone.
+template <int D>
+std::string points_inside(const Certifier& ck, const std::vector<std::vector<Index>>& facets,
+                          const std::vector<std::uint32_t>& nb, Index v,
+                          const std::vector<std::pair<std::uint64_t, Index>>& order) {
+  const std::size_t h = facets.size();
+  const std::size_t slots = h * (D + 1);  // slot k (D+1) + j: side j of cone k; j = D: facet k itself
+  const bool cache = slots <= (std::size_t{1} << 21);
+  std::vector<pred::PlaneForm<D>> form(cache ? slots : 0);
+  std::unique_ptr<std::atomic<std::uint8_t>[]> state(cache ? new std::atomic<std::uint8_t>[slots] : nullptr);
+  for (std::size_t i = 0; cache && i < slots; ++i) state[i].store(0, std::memory_order_relaxed);
+  // orient_d of cone k's side j (j < D) or facet k (j = D) and point q
+  auto orient = [&](std::size_t k, int j, Index q) {
+    Index t[D];
+    for (int c = 0; c < D; ++c) t[c] = c == j ? v : facets[k][static_cast<std::size_t>(c)];
+    if (cache) {
+      const std::size_t slot = k * (D + 1) + static_cast<std::size_t>(j);
+      std::uint8_t st = state[slot].load(std::memory_order_acquire);
+      if (st == 0 && state[slot].compare_exchange_strong(st, 1, std::memory_order_acq_rel)) {
+        const double* p[D];
+        for (int c = 0; c < D; ++c) p[c] = ck.ps.point(t[c]);
+        form[slot] = pred::PlaneForm<D>(p);
+        state[slot].store(2, std::memory_order_release);
+        st = 2;
+      }
+      if (st == 2)
+        if (const int s = form[slot].sign(ck.ps.point(q))) return s;
+    }
+    return ck.orient(t, q);
+  };
+  const std::size_t pieces = (order.size() + kChunk - 1) / kChunk;
+  std::vector<std::size_t> failed_at(pieces, order.size());
+  std::vector<std::string> why(pieces);
+  const std::size_t cap = 4 * h + 100;
+  par_for(pieces, 1, [&](std::size_t plo, std::size_t phi) {
+    for (std::size_t piece = plo; piece < phi; ++piece) {
+      std::uint64_t rng = brio::splitmix64(piece) | 1;
+      std::size_t cur = 0;
+      for (std::size_t at = piece * kChunk; at < std::min(order.size(), (piece + 1) * kChunk); ++at) {
+        const Index q = order[at].second;
+        long found = -1;
+        for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
+          int cand[D], nc = 0;
+          for (int j = 0; j < D; ++j)
+            if (orient(cur, j, q) < 0) cand[nc++] = j;
+          if (nc == 0) {
+            found = static_cast<long>(cur);
+            break;
+          }
+          rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+          cur = nb[cur * D + static_cast<std::size_t>(cand[(rng >> 11) % static_cast<std::uint64_t>(nc)])];
+        }
+        if (found < 0) {  // the walk did not settle: the cone that holds q by a scan
+          for (std::size_t k = 0; k < h && found < 0; ++k) {
+            bool in = true;
+            for (int j = 0; j < D && in; ++j) in = orient(k, j, q) > 0;
+            if (in) found = static_cast<long>(k);
+          }
+          if (found < 0) {
+            failed_at[piece] = at;
+            why[piece] = "points-inside: point " + std::to_string(q) + " lies in no cone from point " + std::to_string(v);
+            break;
+          }
+          cur = static_cast<std::size_t>(found);
+        }
+        if (orient(cur, D, q) >= 0) {
+          failed_at[piece] = at;
+          why[piece] = "points-inside: point " + std::to_string(q) +
+                       " is not a vertex and not strictly inside the facet " + tuple_str(facets[cur].data(), D);
+          break;
+        }
+      }
+    }
+  });
+  for (std::size_t piece = 0; piece < pieces; ++piece)
+    if (failed_at[piece] < order.size()) return why[piece];
+  return {};
 }
 
 }  // namespace
@@ -580,11 +721,9 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
       return {};
   }
   if (v == n) return {};  // every point a vertex
-  // every other non-vertex point: a visibility walk in the cones (v, f). Side
-  // j of cone (v, f) is the hyperplane of f with f_j replaced by v; f_j's
-  // side is positive there (orient(f[j:=v], f_j) = -orient(f, v) > 0).
-  // (the points in Morton order of their bounding box: consecutive walks
-  // start near their target)
+  // every other non-vertex point: a visibility walk in the cones (v, f)
+  // (points_inside, below), the points in Morton order of their bounding
+  // box so that consecutive walks start near their target
   std::vector<std::pair<std::uint64_t, Index>> order;
   {
     std::array<double, kMaxHullDim> lo, hi;
@@ -597,50 +736,16 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
       if (!vertex[q] && q != v) order.emplace_back(brio::morton(ps.point(q), lo.data(), hi.data(), d, 60), q);
     std::sort(order.begin(), order.end());
   }
-  std::uint64_t rng = 0x9E3779B97F4A7C15ull;
-  std::size_t cur = 0;
-  const std::size_t cap = 4 * facets.size() + 100;
-  for (const auto& [key, q] : order) {
-    (void)key;
-    long found = -1;
-    for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
-      Index t[kMaxHullDim];
-      for (int j = 0; j < d; ++j) t[j] = facets[cur][static_cast<std::size_t>(j)];
-      int cand[kMaxHullDim], nc = 0;
-      for (int j = 0; j < d; ++j) {
-        const Index keep = t[j];
-        t[j] = v;
-        if (ck.orient(t, q) < 0) cand[nc++] = j;
-        t[j] = keep;
-      }
-      if (nc == 0) {
-        found = static_cast<long>(cur);
-        break;
-      }
-      rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-      cur = nb[cur * static_cast<std::size_t>(d) + static_cast<std::size_t>(cand[(rng >> 11) % static_cast<std::uint64_t>(nc)])];
-    }
-    if (found < 0) {  // the walk did not settle: the cone that holds q by a scan
-      for (std::size_t k = 0; k < facets.size() && found < 0; ++k) {
-        Index t[kMaxHullDim];
-        for (int j = 0; j < d; ++j) t[j] = facets[k][static_cast<std::size_t>(j)];
-        bool in = true;
-        for (int j = 0; j < d && in; ++j) {
-          const Index keep = t[j];
-          t[j] = v;
-          in = ck.orient(t, q) > 0;
-          t[j] = keep;
-        }
-        if (in) found = static_cast<long>(k);
-      }
-      if (found < 0) return "points-inside: point " + std::to_string(q) + " lies in no cone from point " + std::to_string(v);
-      cur = static_cast<std::size_t>(found);
-    }
-    if (ck.orient(facets[cur].data(), q) >= 0)
-      return "points-inside: point " + std::to_string(q) + " is not a vertex and not strictly inside the facet " +
-             tuple_str(facets[cur].data(), d);
+  switch (d) {
+    case 2: return points_inside<2>(ck, facets, nb, v, order);
+    case 3: return points_inside<3>(ck, facets, nb, v, order);
+    case 4: return points_inside<4>(ck, facets, nb, v, order);
+    case 5: return points_inside<5>(ck, facets, nb, v, order);
+    case 6: return points_inside<6>(ck, facets, nb, v, order);
+    case 7: return points_inside<7>(ck, facets, nb, v, order);
+    case 8: return points_inside<8>(ck, facets, nb, v, order);
+    default: return points_inside<9>(ck, facets, nb, v, order);
   }
-  return {};
 }
 
 }  // namespace flipflop::cpu

@@ -52,6 +52,7 @@
 
 #include "kernels_cpu/brio.hpp"
 #include "kernels_cpu/parallel.hpp"
+#include "kernels_cpu/rtd/ridge_table.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
 #include "predicates/staged.hpp"
 #include "reference/rtd/canonical_d.hpp"
@@ -151,13 +152,7 @@ class Builder {
   };
   std::vector<std::uint32_t> cavity_;
   std::vector<Horizon> horizon_;
-  struct Half {
-    std::array<std::uint32_t, kKey> key;
-    std::uint32_t link;
-    std::uint8_t state;  // 0 empty, 1 open, 2 matched (tombstone)
-  };
-  std::vector<Half> table_;
-  std::vector<std::uint32_t> used_;  // table_ slots filled by this link_cone
+  RidgeTable<kKey> ridges_;  // link_cone's
 
   // Appends the points `order` (input indices of ps) as positions n_..; the
   // static filter over all of ps.
@@ -269,12 +264,7 @@ class Builder {
   // simplex across, matched by that face's sorted vertices in a hash table.
   void link_cone(RtdCavityStats& st) {
     const std::size_t m = horizon_.size();
-    std::size_t cap = 16;
-    while (cap < 2 * m * D) cap <<= 1;
-    if (table_.size() < cap) table_.resize(cap);  // new entries empty; used ones are emptied below
-    const std::size_t mask = cap - 1;
-    used_.clear();
-    std::ptrdiff_t open = 0;
+    ridges_.begin(m * D);
     for (std::size_t k = 0; k < m; ++k) {
       const Horizon& h = horizon_[k];
       const std::uint32_t s = k < cavity_.size() ? cavity_[k] : take_slot();
@@ -288,41 +278,20 @@ class Builder {
       tn_[h.out] = s * W + static_cast<std::uint32_t>(h.i);
       for (int j = 0; j < W; ++j) {
         if (j == h.i) continue;
-        std::array<std::uint32_t, kKey> key;
+        typename RidgeTable<kKey>::Key key;
         int c = 0;
         for (int q = 0; q < W; ++q)
           if (q != j && q != h.i) key[static_cast<std::size_t>(c++)] = h.v[q];
-        for (int a = 1; a < kKey; ++a)  // insertion sort (at most 4 entries)
+        for (int a = 1; a < kKey; ++a)  // insertion sort (at most 8 entries)
           for (int b = a; b > 0 && key[static_cast<std::size_t>(b)] < key[static_cast<std::size_t>(b - 1)]; --b)
             std::swap(key[static_cast<std::size_t>(b)], key[static_cast<std::size_t>(b - 1)]);
-        std::uint64_t hash = 0x9E3779B97F4A7C15ull;
-        for (std::uint32_t x : key) hash = (hash ^ x) * 0x100000001B3ull;
         const std::uint32_t half = s * W + static_cast<std::uint32_t>(j);
-        for (std::size_t slot = (hash >> 20) & mask;; slot = (slot + 1) & mask) {
-          Half& e = table_[slot];
-          bool same = e.state == 1;
-          for (int q = 0; q < kKey && same; ++q) same = e.key[static_cast<std::size_t>(q)] == key[static_cast<std::size_t>(q)];
-          if (same) {
-            tn_[half] = e.link;
-            tn_[e.link] = half;
-            e.state = 2;
-            --open;
-            break;
-          }
-          if (e.state == 0) {
-            e.key = key;
-            e.link = half;
-            e.state = 1;
-            used_.push_back(static_cast<std::uint32_t>(slot));
-            ++open;
-            break;
-          }
-        }
+        const std::uint32_t other = ridges_.offer(key, half);
+        if (other != RidgeTable<kKey>::kOpen) tn_[half] = other, tn_[other] = half;
       }
       if (real) last_ = s;
     }
-    for (std::uint32_t q : used_) table_[q].state = 0;
-    if (open != 0) throw std::logic_error("rtd (cpu): the horizon of an insertion is not a closed manifold");
+    if (!ridges_.end()) throw std::logic_error("rtd (cpu): the horizon of an insertion is not a closed manifold");
     for (std::size_t q = m; q < cavity_.size(); ++q) {  // cavity slots not reused
       const std::uint32_t s = cavity_[q];
       for (int j = 0; j < W; ++j) tv_[static_cast<std::size_t>(s) * W + static_cast<std::size_t>(j)] = kDead;

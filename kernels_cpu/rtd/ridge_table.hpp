@@ -1,0 +1,74 @@
+// ridge_table.hpp — pairs the halves of ridges created together (the cone of
+// an insertion: kernels_cpu/rtd's cavity kernel and hull kernel). Each half is
+// a link (an integer naming a slot's side) and the ridge's vertices as a
+// sorted key; a ridge is met exactly twice, and its two halves are linked.
+// An open-addressing hash table, kept between calls so that its memory is
+// reused: begin(), offer() per half, end().
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace flipflop::cpu {
+
+template <int K>  // vertices per key
+class RidgeTable {
+ public:
+  using Key = std::array<std::uint32_t, static_cast<std::size_t>(K)>;
+  static constexpr std::uint32_t kOpen = 0xffffffffu;
+
+  // a call with at most `halves` halves
+  void begin(std::size_t halves) {
+    std::size_t cap = 16;
+    while (cap < 2 * halves) cap <<= 1;
+    if (table_.size() < cap) table_.resize(cap);  // new entries empty; used ones were emptied by end()
+    mask_ = cap - 1;
+    used_.clear();
+    open_ = 0;
+  }
+
+  // The half `link` of the ridge `key` (sorted): the link of the other half
+  // when it was offered before in this call (the two are then matched), else
+  // kOpen.
+  std::uint32_t offer(const Key& key, std::uint32_t link) {
+    std::uint64_t hash = 0x9E3779B97F4A7C15ull;
+    for (std::uint32_t x : key) hash = (hash ^ x) * 0x100000001B3ull;
+    for (std::size_t slot = (hash >> 20) & mask_;; slot = (slot + 1) & mask_) {
+      Half& e = table_[slot];
+      if (e.state == 1 && e.key == key) {
+        e.state = 2;
+        --open_;
+        return e.link;
+      }
+      if (e.state == 0) {
+        e.key = key;
+        e.link = link;
+        e.state = 1;
+        used_.push_back(static_cast<std::uint32_t>(slot));
+        ++open_;
+        return kOpen;
+      }
+    }
+  }
+
+  // Ends the call; true when every half offered was matched.
+  bool end() {
+    for (std::uint32_t q : used_) table_[q].state = 0;
+    return open_ == 0;
+  }
+
+ private:
+  struct Half {
+    Key key;
+    std::uint32_t link;
+    std::uint8_t state = 0;  // 0 empty, 1 open, 2 matched (a tombstone until end())
+  };
+  std::vector<Half> table_;
+  std::vector<std::uint32_t> used_;  // slots filled by this call
+  std::size_t mask_ = 0;
+  std::ptrdiff_t open_ = 0;
+};
+
+}  // namespace flipflop::cpu
