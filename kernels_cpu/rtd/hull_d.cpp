@@ -28,31 +28,6 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr int kMaxHullDim = 9;  // orientations of up to 10 points (predicates.hpp: lambda_sign; k > 8 host-only)
 
-// Determinant of an n x n double matrix (row-major, n < kMaxHullDim) by
-// Gaussian elimination with partial pivoting: floating point, for the
-// furthest-point heuristic only.
-double det_small(const double* m, int n) {
-  double a[kMaxHullDim * kMaxHullDim];
-  for (int k = 0; k < n * n; ++k) a[k] = m[k];
-  double det = 1.0;
-  for (int c = 0; c < n; ++c) {
-    int piv = c;
-    for (int r = c + 1; r < n; ++r)
-      if (std::fabs(a[r * n + c]) > std::fabs(a[piv * n + c])) piv = r;
-    if (a[piv * n + c] == 0.0) return 0.0;
-    if (piv != c) {
-      for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[piv * n + k]);
-      det = -det;
-    }
-    det *= a[c * n + c];
-    for (int r = c + 1; r < n; ++r) {
-      const double f = a[r * n + c] / a[c * n + c];
-      for (int k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
-    }
-  }
-  return det;
-}
-
 template <int D>
 class HullBuilder {
  public:
@@ -172,7 +147,7 @@ class HullBuilder {
       for (int r = 0; r < D - 1; ++r)
         for (int c = 0; c < D; ++c)
           if (c != k) sub[q++] = m[r * D + c];
-      h[static_cast<std::size_t>(k)] = (k % 2 ? -1.0 : 1.0) * (D > 1 ? det_small(sub, D - 1) : 1.0);
+      h[static_cast<std::size_t>(k)] = (k % 2 ? -1.0 : 1.0) * (D > 1 ? det_gauss_double(sub, D - 1) : 1.0);
       c0 -= h[static_cast<std::size_t>(k)] * a[k];
     }
     h[D] = c0;

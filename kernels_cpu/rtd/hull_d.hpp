@@ -31,9 +31,11 @@
 // facets keep their facet. Every decision is an exact SoS predicate.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "reference/point_set.hpp"
@@ -46,6 +48,32 @@ struct HullDStats {
   std::uint64_t created = 0;     // facets created (cones)
   std::uint64_t tests = 0;       // point-facet visibility tests
 };
+
+// Determinant of an n x n double matrix (row-major, 1 <= n <= 9) by Gaussian
+// elimination with partial pivoting: floating point, for heuristics and
+// floating-point attributes only (hull_d's furthest-point choice, Python's
+// hull equations), never for a sign that decides anything.
+inline double det_gauss_double(const double* m, int n) {
+  double a[81];
+  for (int k = 0; k < n * n; ++k) a[k] = m[k];
+  double det = 1.0;
+  for (int c = 0; c < n; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (std::fabs(a[r * n + c]) > std::fabs(a[piv * n + c])) piv = r;
+    if (a[piv * n + c] == 0.0) return 0.0;
+    if (piv != c) {
+      for (int k = 0; k < n; ++k) std::swap(a[c * n + k], a[piv * n + k]);
+      det = -det;
+    }
+    det *= a[c * n + c];
+    for (int r = c + 1; r < n; ++r) {
+      const double f = a[r * n + c] / a[c * n + c];
+      for (int k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
+    }
+  }
+  return det;
+}
 
 // The facets of the hull of ps (dim 2..9; weights ignored), each a d-tuple
 // of input indices oriented so that orient_d(facet, x) < 0 for every point x

@@ -515,8 +515,8 @@ def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarr
     kernel (kernels_cpu/rtd/hull_d, beneath-beyond, certified), 'reference'
     the boundary facets of the canonical Delaunay triangulation (RT+1,
     certified) — the same facets —, with the
-    attributes the compiled call gives in 2D and 3D, computed here in
-    floating point. Why it is the canonical hull: an unweighted Delaunay
+    attributes the compiled call gives in 2D and 3D, computed in floating
+    point by _flipflop.hull_d_attributes. Why it is the canonical hull: an unweighted Delaunay
     triangulation covers the convex hull of all points, so its boundary
     facets triangulate the hull's boundary; under the perturbation the
     points are in general position, the hull is simplicial and its facets
@@ -553,32 +553,9 @@ def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarr
         # that vertex appended, has the sign (-1)^(d-j); inside must be negative
         flip = (d - j) % 2 == 0
         facets[flip, -2:] = facets[flip, -1:-3:-1]
-    # canonical: ascending but for the last two (a sort's parity fixed by them)
-    order = np.argsort(facets, axis=1, kind="stable")
-    parity = np.zeros(len(facets), dtype=bool)
-    for x in range(d):  # inversions of the sorting permutation
-        for y in range(x + 1, d):
-            parity ^= order[:, x] > order[:, y]
-    facets = np.take_along_axis(facets, order, axis=1)
-    facets[parity, -2:] = facets[parity, -1:-3:-1]
-    facets = facets[np.lexsort(facets.T[::-1])]
-    vertices = np.unique(facets)
-    neighbors = _flipflop.neighbors(facets)
-    # equations, area, volume on the points scaled by a power of two (exact)
-    big = float(np.abs(a[vertices]).max())
-    _, e = np.frexp(big if big > 0 else 1.0)
-    P = np.ldexp(a, -int(e))
-    U = np.stack([P[facets[:, k]] - P[facets[:, 0]] for k in range(1, d)], axis=1)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        n = np.stack([(-1) ** (d - 1 + k) * _det(np.delete(U, k, axis=2)) for k in range(d)], axis=1)
-        size = np.linalg.norm(n, axis=1)  # (d-1)! times the facet's (d-1)-volume
-        unit = n / size[:, None]
-    equations = np.concatenate([unit, -(unit * a[facets[:, 0]]).sum(axis=1)[:, None]], axis=1)
-    o = P[vertices[0]]
-    cone = np.einsum("fd,fd->f", n, P[facets[:, 0]] - o)  # det[U; f0 - o] >= 0: d! times a cone's volume
-    area = float(np.ldexp(math.fsum(size) / math.factorial(d - 1), (d - 1) * int(e)))
-    volume = float(np.ldexp(math.fsum(cone) / math.factorial(d), d * int(e)))
-    return facets, vertices, neighbors, equations, volume, area
+    # canonical form, vertices, neighbours, equations, area and volume in
+    # one compiled pass (python/src/module.cpp: hull_d_attributes)
+    return _flipflop.hull_d_attributes(a, np.ascontiguousarray(facets, dtype=np.int64))
 
 
 def _hull_sides(points: np.ndarray, facets: np.ndarray, queries: np.ndarray, pairs_f: np.ndarray,

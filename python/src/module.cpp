@@ -793,6 +793,105 @@ IndexArray hull_d(const Points& p) {
   return cells_array(facets, static_cast<std::size_t>(ps.dim));
 }
 
+// The attributes of a certified hull in R^d, d = 4..9 (Python's _hull_d),
+// from its facets outward in the det convention (det[f1-f0, ..., x-f0] > 0
+// for x beyond): (facets, vertices, neighbors, equations, volume, area) as
+// hull2 / hull3 give them. Facets canonical: ascending but for a swap of the
+// last two where the sort's permutation is odd, rows sorted. Equations,
+// area and volume in floating point on the points scaled by a power of two
+// (exact), 2^-e with 2^(e-1) <= max |vertex coordinate| < 2^e: the normal's
+// components are the signed (d-1)-minors of [f1-f0, ..., f_{d-1}-f0],
+// |normal| = (d-1)! times the
+// facet's area, normal . (f0 - o) = d! times the volume of the cone from the
+// first vertex o; sums compensated (Neumaier); a zero-area facet's equation
+// is NaN. (-1)^(d-1+c) det(U without column c): cpu::det_gauss_double.
+HullTuple hull_d_attributes(const Points& p, const Cells& f) {
+  const std::size_t n = p.shape(0), d = p.shape(1), m = f.shape(0);
+  if (d < 2 || d > 9 || f.shape(1) != d)
+    throw std::invalid_argument("hull_d_attributes expects points (n, d), d = 2..9, and facets (m, d)");
+  std::vector<std::int64_t> facets(f.data(), f.data() + m * d), vertices, nbr;
+  std::vector<double> equations(m * (d + 1));
+  double volume = 0.0, area = 0.0;
+  {
+    nb::gil_scoped_release nogil;
+    for (std::int64_t x : facets)
+      if (x < 0 || static_cast<std::size_t>(x) >= n) throw std::invalid_argument("hull_d_attributes: a facet names point " + std::to_string(x));
+    for (std::size_t k = 0; k < m; ++k) {  // ascending, the permutation's parity kept by the last two
+      std::int64_t* r = facets.data() + k * d;
+      bool odd = false;
+      for (std::size_t a = 1; a < d; ++a)
+        for (std::size_t b = a; b > 0 && r[b] < r[b - 1]; --b) std::swap(r[b], r[b - 1]), odd = !odd;
+      if (odd) std::swap(r[d - 2], r[d - 1]);
+    }
+    std::vector<std::size_t> order(m);
+    for (std::size_t k = 0; k < m; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::lexicographical_compare(facets.begin() + static_cast<std::ptrdiff_t>(a * d),
+                                          facets.begin() + static_cast<std::ptrdiff_t>((a + 1) * d),
+                                          facets.begin() + static_cast<std::ptrdiff_t>(b * d),
+                                          facets.begin() + static_cast<std::ptrdiff_t>((b + 1) * d));
+    });
+    {
+      std::vector<std::int64_t> sorted(m * d);
+      for (std::size_t k = 0; k < m; ++k)
+        std::copy_n(facets.begin() + static_cast<std::ptrdiff_t>(order[k] * d), d, sorted.begin() + static_cast<std::ptrdiff_t>(k * d));
+      facets = std::move(sorted);
+    }
+    vertices = facets;
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    nbr = facet_neighbors(m, d, n, [&](std::size_t i, std::size_t l) { return facets[i * d + l]; });
+    const double* a = p.data();
+    double big = 0.0;
+    for (std::int64_t v : vertices)
+      for (std::size_t j = 0; j < d; ++j) big = std::max(big, std::fabs(a[static_cast<std::size_t>(v) * d + j]));
+    int e = 0;
+    std::frexp(big > 0 ? big : 1.0, &e);
+    auto P = [&](std::int64_t v, std::size_t j) { return std::ldexp(a[static_cast<std::size_t>(v) * d + j], -e); };
+    double fact = 1.0;  // (d-1)!
+    for (std::size_t k = 2; k < d; ++k) fact *= static_cast<double>(k);
+    double sa = 0.0, ca = 0.0, sv = 0.0, cv = 0.0;  // Neumaier sums of the sizes and cones
+    auto add = [](double& sum, double& c, double x) {
+      const double t = sum + x;
+      c += std::fabs(sum) >= std::fabs(x) ? (sum - t) + x : (x - t) + sum;
+      sum = t;
+    };
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::int64_t* r = facets.data() + k * d;
+      double U[8][9];  // rows f_i - f_0, i = 1..d-1
+      for (std::size_t i = 1; i < d; ++i)
+        for (std::size_t j = 0; j < d; ++j) U[i - 1][j] = P(r[i], j) - P(r[0], j);
+      double nrm[9], size2 = 0.0;
+      for (std::size_t c = 0; c < d; ++c) {  // (-1)^(d-1+c) det(U without column c)
+        double M[64];
+        const std::size_t s = d - 1;
+        for (std::size_t i = 0; i < s; ++i)
+          for (std::size_t j = 0, q = 0; j < d; ++j)
+            if (j != c) M[i * s + q++] = U[i][j];
+        const double det = cpu::det_gauss_double(M, static_cast<int>(s));
+        nrm[c] = (d - 1 + c) % 2 == 0 ? det : -det;
+        size2 += nrm[c] * nrm[c];
+      }
+      const double size = std::sqrt(size2);
+      double* eq = equations.data() + k * (d + 1);
+      double off = 0.0, cone = 0.0;
+      for (std::size_t c = 0; c < d; ++c) {
+        eq[c] = nrm[c] / size;
+        off -= eq[c] * a[static_cast<std::size_t>(r[0]) * d + c];
+        cone += nrm[c] * (P(r[0], c) - P(vertices[0], c));
+      }
+      eq[d] = off;
+      add(sa, ca, size);
+      add(sv, cv, cone);
+    }
+    area = std::ldexp((sa + ca) / fact, static_cast<int>(d - 1) * e);
+    volume = std::ldexp((sv + cv) / (fact * static_cast<double>(d)), static_cast<int>(d) * e);
+  }
+  const std::size_t nv = vertices.size();
+  return {index_array(std::move(facets), m, d), index_array(std::move(vertices), nv, 0, true), index_array(std::move(nbr), m, d),
+          double_array(std::move(equations), m, d + 1), volume, area};
+}
+
 // In-place insertion for ConvexHull(..., incremental=True).add_points: the
 // hull kernel (kernels_cpu/rtd/hull_d, every d = 2..9) kept between calls
 // (cpu::HullDIncremental); add() inserts only the new points. Each result is
@@ -2344,6 +2443,7 @@ NB_MODULE(_flipflop, m) {
   m.def("hull3", &hull3, nb::arg("points"), nb::arg("backend"), nb::arg("threads"));
   m.def("hull3_strict", &hull3_strict, nb::arg("points"), nb::arg("threads"));
   m.def("hull_d", &hull_d, nb::arg("points"));
+  m.def("hull_d_attributes", &hull_d_attributes, nb::arg("points"), nb::arg("facets"));
   m.def("triangulate", &triangulate, nb::arg("points"), nb::arg("weights").none(), nb::arg("backend"),
         nb::arg("strict"), nb::arg("threads"), nb::arg("furthest") = false);
   nb::class_<IncrementalTriangulation>(m, "IncrementalTriangulation")
