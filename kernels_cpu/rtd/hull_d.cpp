@@ -42,10 +42,19 @@ class HullBuilder {
 
   // In-place insertion (HullDIncremental::add): ps holds the points given
   // so far followed by new ones (the builder keeps only indices, so it reads
-  // coordinates from ps during this call only). Each new point is assigned
-  // to the first live facet it sees, or discarded as inside (a point inside
-  // stays inside: the hull only grows); then the outside sets are emptied as
-  // in run() (a point outside a convex polytope sees one of its facets).
+  // coordinates from ps during this call only). Each new point q is assigned
+  // to a live facet it sees, or discarded as inside (a point inside stays
+  // inside: the hull only grows); then the outside sets are emptied as in
+  // run() (a point outside a convex polytope sees one of its facets).
+  //
+  // Finding the facet: with a point v discarded earlier (strictly inside the
+  // hull under SoS), the cones (v, f) over the live facets fill the space
+  // once (the hull is star-shaped from v); a visibility walk through them —
+  // side j of cone (v, f) is f with f_j replaced by v, f_j's side positive
+  // (orient(f[j:=v], f_j) = -orient(f, v) > 0) — from the last point's cone
+  // ends in the cone that holds q, and q is outside the hull iff it sees
+  // that cone's facet: assigned to it, or discarded. A walk past its cap, or
+  // no such v yet: every live facet is tested (the first seen).
   void add(const PointSet& ps, HullDStats& st) {
     ps_ = &ps;
     st_ = &st;
@@ -55,7 +64,33 @@ class HullBuilder {
     std::vector<std::uint32_t> live;
     for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
       if (alive(f)) live.push_back(f);
-    for (Index q = static_cast<Index>(first); q < n_; ++q) assign(q, live);
+    std::uint32_t cur = live.front();
+    const std::size_t cap = 4 * live.size() + 100;
+    for (Index q = static_cast<Index>(first); q < n_; ++q) {
+      long found = -1;
+      for (std::size_t steps = 0; inner_ != kNone && steps < cap && found < 0; ++steps) {
+        int cand[D], nc = 0;
+        for (int j = 0; j < D; ++j) {
+          Index t[D];
+          for (int c = 0; c < D; ++c) t[c] = c == j ? inner_ : fv_[cur * D + static_cast<std::uint32_t>(c)];
+          if (orient_of(t, q) < 0) cand[nc++] = j;
+        }
+        if (nc == 0) {
+          found = static_cast<long>(cur);
+          break;
+        }
+        rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+        cur = fn_[cur * D + static_cast<std::uint32_t>(cand[(rng_ >> 32) % static_cast<std::uint64_t>(nc)])] / D;
+      }
+      if (found < 0) {
+        if (!assign(q, live)) discard(q);
+      } else if (sees(cur, q)) {
+        if (out_[cur].empty()) work_.push_back(cur);
+        out_[cur].push_back(q);
+      } else {
+        discard(q);
+      }
+    }
     grow();
   }
 
@@ -78,6 +113,7 @@ class HullBuilder {
   std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
   std::vector<std::uint32_t> mark_, free_, work_;
   std::uint32_t stamp_ = 0;
+  Index inner_ = kNone;  // a point found inside the hull (discard())
   RidgeTable<D - 1> ridges_;  // match()'s
   // during one insertion: per visible facet slot, the first of its D+1 plane
   // forms in vis_forms_ (kNone: none); insert() says when it has them
@@ -87,6 +123,12 @@ class HullBuilder {
   std::uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 
   bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
+
+  // q is inside the hull (for good: the hull only grows); the first such
+  // point is add()'s centre of cones
+  void discard(Index q) {
+    if (inner_ == kNone) inner_ = q;
+  }
 
   // Quickhull's loop: while some facet has an outside set, insert its
   // furthest point.
@@ -285,12 +327,14 @@ class HullBuilder {
     for (std::uint32_t f : fs) form.push_back(facet_form(f, kNone, 0));
     for (Index q = 0; q < n_; ++q) {
       if (used[q]) continue;
-      for (std::size_t k = 0; k < fs.size(); ++k)
+      bool outside = false;
+      for (std::size_t k = 0; k < fs.size() && !outside; ++k)
         if (form_sign(form[k], &fv_[static_cast<std::size_t>(fs[k]) * D], q) > 0) {
           if (out_[fs[k]].empty()) work_.push_back(fs[k]);
           out_[fs[k]].push_back(q);
-          break;
+          outside = true;
         }
+      if (!outside) discard(q);
     }
   }
 
@@ -392,6 +436,7 @@ class HullBuilder {
       }
       if (exit < 0) {
         if (!beyond) break;
+        discard(q);
         return;  // inside conv(cur ∪ p): inside the grown hull
       }
       const std::uint32_t l = fn_[cur * D + static_cast<std::uint32_t>(exit)];
@@ -408,7 +453,7 @@ class HullBuilder {
       const std::uint32_t at = vis_form_at_[cur];
       beyond = (at == kNone ? orient_of(t, q) : form_sign(vis_forms_[at + static_cast<std::uint32_t>(D)], t, q)) > 0;
     }
-    assign(q, fresh);
+    if (!assign(q, fresh)) discard(q);
   }
 };
 
