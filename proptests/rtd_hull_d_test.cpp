@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels_cpu/parallel.hpp"
 #include "kernels_cpu/rtd/hull_d.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/families.hpp"
@@ -266,4 +267,36 @@ TEST_CASE("hull_d: 6D..9D sets against the definition, certified (shrinking)", "
       }
       RC_ASSERT(spanning == dimension_problem(ps).empty());
     });
+}
+
+// The certifier's "points-inside" walks run in pieces of 8192 points in
+// parallel (hull_d.cpp, points_inside): on 30,000 points (four pieces) the
+// verdict and the message are the same at 1 and 4 threads, for the true hull
+// and for the hull of all but one point outside it (the first failing point
+// in Morton order named). Also in make tsan's selection.
+TEST_CASE("hull_d: the parallel certifier gives one verdict and message at 1 and 4 threads", "[hull_d]") {
+  PointSet ps;
+  ps.dim = 4;
+  std::vector<double> c;
+  std::uint64_t s = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < 30000 * 4; ++i) {
+    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+    c.push_back(static_cast<double>(s >> 11) * 0x1p-53 - 0.5);
+  }
+  ps.coords = Values(c);
+  const Facets f = cpu::hull_d(ps);
+  std::string one, four;
+  cpu::with_threads(1, [&] { one = cpu::hull_d_problem(ps, f); });
+  cpu::with_threads(4, [&] { four = cpu::hull_d_problem(ps, f); });
+  REQUIRE(one.empty());
+  REQUIRE(four.empty());
+  // two points far outside, appended: the facets no longer hold every point
+  PointSet out = ps;
+  for (double x : {2.0, 2.0, 2.0, 2.0, -3.0, 1.0, 0.0, 0.0}) c.push_back(x);
+  out.coords = Values(c);
+  cpu::with_threads(1, [&] { one = cpu::hull_d_problem(out, f); });
+  cpu::with_threads(4, [&] { four = cpu::hull_d_problem(out, f); });
+  INFO(one);
+  REQUIRE(one.rfind("points-inside: point 3000", 0) == 0);
+  REQUIRE(four == one);
 }

@@ -519,11 +519,14 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
         const double* p[D];
         for (int c = 0; c < D; ++c) p[c] = ck.ps.point(t[c]);
         form[slot] = pred::PlaneForm<D>(p);
+        tsan::released(&state[slot]);  // std::atomic is not instrumented here (.ci/tsan.ignorelist)
         state[slot].store(2, std::memory_order_release);
         st = 2;
       }
-      if (st == 2)
+      if (st == 2) {
+        tsan::acquired(&state[slot]);
         if (const int s = form[slot].sign(ck.ps.point(q))) return s;
+      }
     }
     return ck.orient(t, q);
   };
