@@ -215,15 +215,7 @@ TEST_CASE("rtd cavity: the 3^5 grid and 3000 random 4D points equal the referenc
   }
   grid.coords = Values(std::move(c));
   check(grid, false, [](bool ok) { REQUIRE(ok); });
-  PointSet r4;
-  r4.dim = 4;
-  std::vector<double> x;
-  std::uint64_t s = 0x9E3779B97F4A7C15ull;
-  for (int i = 0; i < 3000 * 4; ++i) {
-    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-    x.push_back(static_cast<double>(s >> 11) * 0x1p-53);
-  }
-  r4.coords = Values(std::move(x));
+  const PointSet r4 = test::xorshift_cube(4, 3000);
   check(r4, false, [](bool ok) { REQUIRE(ok); });
 }
 

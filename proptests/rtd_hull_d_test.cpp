@@ -275,15 +275,7 @@ TEST_CASE("hull_d: 6D..9D sets against the definition, certified (shrinking)", "
 // and for the hull of all but one point outside it (the first failing point
 // in Morton order named). Also in make tsan's selection.
 TEST_CASE("hull_d: the parallel certifier gives one verdict and message at 1 and 4 threads", "[hull_d]") {
-  PointSet ps;
-  ps.dim = 4;
-  std::vector<double> c;
-  std::uint64_t s = 0x9E3779B97F4A7C15ull;
-  for (int i = 0; i < 30000 * 4; ++i) {
-    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-    c.push_back(static_cast<double>(s >> 11) * 0x1p-53 - 0.5);
-  }
-  ps.coords = Values(c);
+  const PointSet ps = test::xorshift_cube(4, 30000, -0.5);
   const Facets f = cpu::hull_d(ps);
   std::string one, four;
   cpu::with_threads(1, [&] { one = cpu::hull_d_problem(ps, f); });
@@ -292,8 +284,7 @@ TEST_CASE("hull_d: the parallel certifier gives one verdict and message at 1 and
   REQUIRE(four.empty());
   // two points far outside, appended: the facets no longer hold every point
   PointSet out = ps;
-  for (double x : {2.0, 2.0, 2.0, 2.0, -3.0, 1.0, 0.0, 0.0}) c.push_back(x);
-  out.coords = Values(c);
+  for (double x : {2.0, 2.0, 2.0, 2.0, -3.0, 1.0, 0.0, 0.0}) out.coords.push_back(x);
   cpu::with_threads(1, [&] { one = cpu::hull_d_problem(out, f); });
   cpu::with_threads(4, [&] { four = cpu::hull_d_problem(out, f); });
   INFO(one);

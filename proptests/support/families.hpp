@@ -103,6 +103,22 @@ inline rc::Gen<int> point_count(int nmin, int nmax) { return rc::gen::inRange(nm
 
 inline void add_point(PointSet& ps, const double* x) { ps.coords.insert(ps.coords.end(), x, x + ps.dim); }
 
+// n points in [lo, lo + 1)^d from a fixed xorshift64 sequence (the same
+// points on every run and build): large deterministic inputs.
+inline PointSet xorshift_cube(int d, std::size_t n, double lo = 0.0) {
+  PointSet ps;
+  ps.dim = d;
+  std::vector<double> c;
+  c.reserve(n * static_cast<std::size_t>(d));
+  std::uint64_t s = 0x9E3779B97F4A7C15ull;
+  for (std::size_t i = 0; i < n * static_cast<std::size_t>(d); ++i) {
+    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+    c.push_back(static_cast<double>(s >> 11) * 0x1p-53 + lo);
+  }
+  ps.coords = Values(std::move(c));
+  return ps;
+}
+
 // The points of `keep` (in index order), weights included.
 inline PointSet subset(const PointSet& ps, const std::vector<bool>& keep) {
   PointSet out;
