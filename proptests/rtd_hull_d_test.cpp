@@ -274,6 +274,23 @@ TEST_CASE("hull_d: 6D..9D sets against the definition, certified (shrinking)", "
 // verdict and the message are the same at 1 and 4 threads, for the true hull
 // and for the hull of all but one point outside it (the first failing point
 // in Morton order named). Also in make tsan's selection.
+TEST_CASE("hull_d: the parallel construction gives the same facets at 1, 2 and 4 threads", "[hull_d]") {
+  // large enough that insertions walk their orphans in parallel pieces
+  for (int d : {4, 5}) {
+    const PointSet ps = test::xorshift_cube(d, d == 4 ? 30000 : 12000, -0.5);
+    Facets one, two, four;
+    cpu::HullDStats st1, st4;
+    cpu::with_threads(1, [&] { one = cpu::hull_d(ps, &st1); });
+    cpu::with_threads(2, [&] { two = cpu::hull_d(ps); });
+    cpu::with_threads(4, [&] { four = cpu::hull_d(ps, &st4); });
+    INFO("d = " << d);
+    REQUIRE(st4.parallel_batches > 0);
+    REQUIRE(one == two);
+    REQUIRE(one == four);
+    REQUIRE(cpu::hull_d_problem(ps, one).empty());
+  }
+}
+
 TEST_CASE("hull_d: the parallel certifier gives one verdict and message at 1 and 4 threads", "[hull_d]") {
   const PointSet ps = test::xorshift_cube(4, 30000, -0.5);
   const Facets f = cpu::hull_d(ps);

@@ -47,6 +47,7 @@ struct HullDStats {
   std::uint64_t removed = 0;     // facets removed (visible from an apex)
   std::uint64_t created = 0;     // facets created (cones)
   std::uint64_t tests = 0;       // point-facet visibility tests
+  std::uint64_t parallel_batches = 0;  // insertions whose orphans were walked in parallel pieces
 };
 
 // Determinant of an n x n double matrix (row-major, 1 <= n <= 9) by Gaussian

@@ -29,21 +29,36 @@ class RidgeTable {
     open_ = 0;
   }
 
+  // Sorts a key in place: K rounds of odd-even transposition with branch-free
+  // min / max (a sort of K elements; a std::sort of these few entries, with
+  // its mispredicted branches, took most of a 5D hull's ridge matching).
+  // Unused entries set to kOpen sort last.
+  static void sort(Key& k) {
+    for (int r = 0; r < K; ++r)
+      for (int i = r & 1; i + 1 < K; i += 2) {
+        const std::uint32_t a = k[static_cast<std::size_t>(i)], b = k[static_cast<std::size_t>(i + 1)];
+        k[static_cast<std::size_t>(i)] = a < b ? a : b;
+        k[static_cast<std::size_t>(i + 1)] = a < b ? b : a;
+      }
+  }
+
   // The half `link` of the ridge `key` (sorted): the link of the other half
   // when it was offered before in this call (the two are then matched), else
   // kOpen.
   std::uint32_t offer(const Key& key, std::uint32_t link) {
     std::uint64_t hash = 0x9E3779B97F4A7C15ull;
     for (std::uint32_t x : key) hash = (hash ^ x) * 0x100000001B3ull;
+    const std::uint32_t tag = static_cast<std::uint32_t>(hash >> 32);
     for (std::size_t slot = (hash >> 20) & mask_;; slot = (slot + 1) & mask_) {
       Half& e = table_[slot];
-      if (e.state == 1 && e.key == key) {
+      if (e.state == 1 && e.tag == tag && same(e.key, key)) {
         e.state = 2;
         --open_;
         return e.link;
       }
       if (e.state == 0) {
         e.key = key;
+        e.tag = tag;
         e.link = link;
         e.state = 1;
         used_.push_back(static_cast<std::uint32_t>(slot));
@@ -60,8 +75,14 @@ class RidgeTable {
   }
 
  private:
+  static bool same(const Key& a, const Key& b) {
+    bool eq = true;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(K); ++i) eq &= a[i] == b[i];
+    return eq;
+  }
   struct Half {
     Key key;
+    std::uint32_t tag;  // the hash's high half
     std::uint32_t link;
     std::uint8_t state = 0;  // 0 empty, 1 open, 2 matched (a tombstone until end())
   };

@@ -282,9 +282,7 @@ class Builder {
         int c = 0;
         for (int q = 0; q < W; ++q)
           if (q != j && q != h.i) key[static_cast<std::size_t>(c++)] = h.v[q];
-        for (int a = 1; a < kKey; ++a)  // insertion sort (at most 8 entries)
-          for (int b = a; b > 0 && key[static_cast<std::size_t>(b)] < key[static_cast<std::size_t>(b - 1)]; --b)
-            std::swap(key[static_cast<std::size_t>(b)], key[static_cast<std::size_t>(b - 1)]);
+        RidgeTable<kKey>::sort(key);
         const std::uint32_t half = s * W + static_cast<std::uint32_t>(j);
         const std::uint32_t other = ridges_.offer(key, half);
         if (other != RidgeTable<kKey>::kOpen) tn_[half] = other, tn_[other] = half;

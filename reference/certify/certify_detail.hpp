@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -325,21 +326,35 @@ void radix_sort_high(std::vector<std::uint64_t>& v, int lo_bit, const ForRange& 
 // order in `pts` (with pts increasing: sorted by (key, index)). The keys are
 // computed through for_range and sorted by radix_sort_high (each key above
 // its position in `pts`), so the order does not depend on the split.
+// d = 1..16 (32 / d bits per axis; 16 in 2D).
 template <class ForRange>
 void morton_sort(const PointSet& ps, std::vector<Index>& pts, const ForRange& for_range) {
   if (pts.empty()) return;
   const int d = ps.dim;
-  double lo[3], hi[3];
+  constexpr int kMax = 16;  // keys of at most 32 bits: 32 / d bits per axis
+  if (d < 1 || d > kMax) throw std::invalid_argument("morton_sort: dimension 1..16");
+  double lo[kMax], hi[kMax];
   for (int j = 0; j < d; ++j) lo[j] = hi[j] = ps.point(pts[0])[j];
-  for (Index p : pts)
-    for (int j = 0; j < d; ++j) {
-      lo[j] = std::min(lo[j], ps.point(p)[j]);
-      hi[j] = std::max(hi[j], ps.point(p)[j]);
-    }
-  const int bits = d == 2 ? 16 : 10;  // keys of at most 32 bits
+  {  // the box, by pieces
+    const std::size_t m = pts.size();
+    const std::size_t pieces = (m + 65535) / 65536;
+    std::vector<std::array<double, 2 * kMax>> part(pieces);
+    for_chunks(m, 65536, for_range, [&](std::size_t c, std::size_t a, std::size_t b) {
+      auto& box = part[c];
+      for (int j = 0; j < d; ++j) box[j] = box[kMax + j] = ps.point(pts[a])[j];
+      for (std::size_t i = a; i < b; ++i)
+        for (int j = 0; j < d; ++j) {
+          box[j] = std::min(box[j], ps.point(pts[i])[j]);
+          box[kMax + j] = std::max(box[kMax + j], ps.point(pts[i])[j]);
+        }
+    });
+    for (const auto& box : part)
+      for (int j = 0; j < d; ++j) lo[j] = std::min(lo[j], box[j]), hi[j] = std::max(hi[j], box[kMax + j]);
+  }
+  const int bits = d == 2 ? 16 : 32 / d;  // 2D 16, 3D 10, 4D 8, ... 9D 3
   auto key = [&](Index p) {
     std::uint32_t k = 0;
-    std::uint32_t cell[3] = {0, 0, 0};
+    std::uint32_t cell[kMax] = {};
     for (int j = 0; j < d; ++j) {
       double span = hi[j] - lo[j];
       double t = (std::isfinite(span) && span > 0) ? (ps.point(p)[j] - lo[j]) / span : 0.0;
