@@ -636,15 +636,19 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
         const Index q = order[at];
         long found = -1;
         for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
-          int cand[D], nc = 0;
-          for (int j = 0; j < D; ++j)
-            if (orient(cur, j, q) < 0) cand[nc++] = j;
-          if (nc == 0) {
+          // the first side q is beyond, from a random one on: crossed
+          rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
+          const int r = static_cast<int>((rng >> 11) % static_cast<std::uint64_t>(D));
+          int exit = -1;
+          for (int k = 0; k < D && exit < 0; ++k) {
+            const int j = (r + k) % D;
+            if (orient(cur, j, q) < 0) exit = j;
+          }
+          if (exit < 0) {
             found = static_cast<long>(cur);
             break;
           }
-          rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-          cur = nb[cur * D + static_cast<std::size_t>(cand[(rng >> 11) % static_cast<std::uint64_t>(nc)])];
+          cur = nb[cur * D + static_cast<std::size_t>(exit)];
         }
         if (found < 0) {  // the walk did not settle: the cone that holds q by a scan
           for (std::size_t k = 0; k < h && found < 0; ++k) {
