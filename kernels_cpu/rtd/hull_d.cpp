@@ -275,8 +275,10 @@ class HullBuilder {
     std::vector<std::array<double, D>> basis;
     for (int k = 1; k <= D; ++k) {
       const double* o = ps_->point(s[0]);
-      auto residual = [&](Index i) {  // the squared length of i - o off the basis; -inf: chosen or not finite
-        if (std::find(s.begin(), s.end(), i) != s.end()) return -HUGE_VAL;
+      // the squared length of i - o off the basis (-inf: not finite); about 0
+      // for the points chosen already, which are taken again only where
+      // every other point is as degenerate (below: then the first unchosen)
+      auto residual = [&](Index i) {
         std::array<double, D> v;
         for (int c = 0; c < D; ++c) v[static_cast<std::size_t>(c)] = ps_->point(i)[c] - o[c];
         for (const auto& b : basis) {
@@ -289,7 +291,9 @@ class HullBuilder {
         return std::isfinite(len) ? len : -HUGE_VAL;
       };
       Index arg = par_argmax(n_, residual);
-      if (!(residual(arg) > -HUGE_VAL))  // every length overflowed (magnitudes near DBL_MAX): any unchosen point
+      // every length overflowed (magnitudes near DBL_MAX), or no point off the
+      // span in floating point: any unchosen point (SoS decides the rest)
+      if (!(residual(arg) > -HUGE_VAL) || std::find(s.begin(), s.end(), arg) != s.end())
         for (arg = 0; std::find(s.begin(), s.end(), arg) != s.end(); ++arg) {
         }
       s.push_back(arg);
