@@ -1160,9 +1160,20 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
       return 0;
     };
     const auto neighbour = [&](std::size_t s, std::size_t j) { return nbr.data()[s * k + j]; };
+    // the points' bounding box: a query strictly outside it in some
+    // coordinate is strictly outside the hull (exact comparisons), -1 without
+    // a walk (on a grid every query outside the hull is; its walk along the
+    // flat boundary simplices was most of the time)
+    double lo[kMaxD], hi[kMaxD];
+    for (std::size_t j = 0; j < d; ++j) lo[j] = hi[j] = ps.point(0)[j];
+    for (std::size_t i = 1; i < ps.size(); ++i)
+      for (std::size_t j = 0; j < d; ++j) lo[j] = std::min(lo[j], ps.point(i)[j]), hi[j] = std::max(hi[j], ps.point(i)[j]);
     std::size_t cur = 0, prev = m;  // prev: where the walk came from (m: nowhere)
     for (const std::size_t qi : morton_order(q.data(), q.shape(0), d)) {
       const double* x = q.data() + qi * d;
+      bool boxed = true;
+      for (std::size_t j = 0; j < d; ++j) boxed &= x[j] >= lo[j] && x[j] <= hi[j];
+      if (!boxed) continue;  // out[qi] stays -1
       long found = -1;
       bool outside = false;
       for (std::size_t steps = 0; steps < 4 * m + 16; ++steps) {
