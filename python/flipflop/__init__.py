@@ -981,7 +981,9 @@ class Delaunay(_QhullUser):
                              f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
         s64, n64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))
-        return _intc(_flipflop.find_simplex(self.points, s64, n64, q).reshape(shape))
+        # each simplex's exact orientation sign, once per triangulation
+        signs = self._cached("signs", lambda: _flipflop.simplex_signs(self.points, s64))
+        return _intc(_flipflop.find_simplex(self.points, s64, n64, q, signs).reshape(shape))
 
     # ---- their computation -----------------------------------------------------------
 

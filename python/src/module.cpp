@@ -45,6 +45,7 @@
 
 #include "gen/generate.hpp"
 #include "kernels_cpu/hull2/certify_hull2.hpp"
+#include "kernels_cpu/parallel.hpp"
 #include "kernels_cpu/hull2/hull2.hpp"
 #include "kernels_cpu/hull3/certify_hull3.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
@@ -1112,11 +1113,49 @@ std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_
 // steps on to a neighbour (not the one it came from, where it can); a walk
 // that does not settle within 4m + 16 steps ends in the scan, which decides
 // every query exactly.
-IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const Points& q) {
+using Signs = nb::ndarray<const std::int8_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+// The exact sign of det[[v_0 1] ... [v_d 1]] of every simplex (0: zero
+// volume), in parallel pieces; find_simplex's, which Python computes once per
+// triangulation and passes back (on near-degenerate input these signs are
+// exact-stage calls: 65 ms of a 90 ms find_simplex on a perturbed 3^5 grid).
+std::vector<std::int8_t> signs_of(const PointSet& ps, const Cells& c) {
+  const std::size_t m = c.shape(0), k = c.shape(1);
+  if (k < 2 || k > static_cast<std::size_t>(kMaxD) + 1) throw std::invalid_argument("simplices need 2..10 vertices");
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
+      throw std::invalid_argument("simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  std::vector<std::int8_t> own(m);
+  cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t s = lo; s < hi; ++s) {
+      const double* rows[kMaxD + 1];
+      for (std::size_t l = 0; l < k; ++l) rows[l] = ps.point(static_cast<std::size_t>(c.data()[s * k + l]));
+      own[s] = static_cast<std::int8_t>(pred::orient_d_exact(static_cast<int>(k - 1), rows));
+    }
+  });
+  return own;
+}
+
+nb::ndarray<nb::numpy, std::int8_t> simplex_signs(const Points& p, const Cells& c) {
+  const PointSet ps = point_set(p, std::nullopt);
+  if (c.shape(1) != static_cast<std::size_t>(ps.dim) + 1) throw std::invalid_argument("simplices need d+1 indices");
+  std::vector<std::int8_t> v;
+  {
+    nb::gil_scoped_release nogil;
+    v = signs_of(ps, c);
+  }
+  auto* heap = new std::vector<std::int8_t>(std::move(v));
+  nb::capsule owner(heap, [](void* x) noexcept { delete static_cast<std::vector<std::int8_t>*>(x); });
+  return nb::ndarray<nb::numpy, std::int8_t>(heap->data(), {heap->size()}, owner);
+}
+
+IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const Points& q,
+                        std::optional<Signs> signs) {
   const PointSet ps = point_set(p, std::nullopt);
   const std::size_t m = c.shape(0), k = c.shape(1), d = k - 1;
   if (q.shape(1) != d) throw std::invalid_argument("query points must have the points' dimension");
   if (nbr.shape(0) != m || nbr.shape(1) != k) throw std::invalid_argument("neighbors must have the simplices' shape");
+  if (signs && signs->shape(0) != m) throw std::invalid_argument("signs must hold one sign per simplex");
   for (std::size_t i = 0; i < q.shape(0) * q.shape(1); ++i)
     if (!std::isfinite(q.data()[i])) throw std::invalid_argument("the query points hold NaN or infinite coordinates");
   std::vector<std::int64_t> out(q.shape(0), -1);
@@ -1130,12 +1169,16 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
       for (std::size_t l = 0; l < k; ++l) rows[l] = static_cast<long>(l) == j ? x : vtx(s, l);
       return pred::orient_d_exact(static_cast<int>(d), rows);
     };
-    std::vector<int> own(m);
-    int positive = 0;  // the sign of every simplex of non-zero volume (all are positive in one convention)
-    for (std::size_t s = 0; s < m; ++s) {
-      own[s] = orient(s, -1, nullptr);
-      if (positive == 0) positive = own[s];
+    std::vector<std::int8_t> own;
+    if (signs) {
+      own.assign(signs->data(), signs->data() + m);
+      for (std::int8_t x : own)
+        if (x < -1 || x > 1) throw std::invalid_argument("signs must be -1, 0 or 1");
+    } else {
+      own = signs_of(ps, c);
     }
+    int positive = 0;  // the sign of every simplex of non-zero volume (all are positive in one convention)
+    for (std::size_t s = 0; s < m && positive == 0; ++s) positive = own[s];
     if (positive == 0) positive = d % 2 == 0 ? 1 : -1;  // (all flat: the volume convention's, canonical_d.hpp)
     // The query as the walk sees it: x' = (1 - e - ... - e^(d+1)) x + e v_0 +
     // e^2 v_1 + ... + e^(d+1) v_d, the v_l the vertices of the first simplex of non-zero
@@ -2471,7 +2514,8 @@ NB_MODULE(_flipflop, m) {
       .def("__len__", &IncrementalHull::size);
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
-        nb::arg("queries"));
+        nb::arg("queries"), nb::arg("signs").none() = nb::none());
+  m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
   m.def("certify", &certify_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"), nb::arg("weights").none(),
         nb::arg("canonical"));
   m.def("orient", &orient_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"));

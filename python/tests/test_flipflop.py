@@ -859,3 +859,46 @@ def test_hull_kernel_equals_triangulation_boundary(d):
     s = ss.ConvexHull(p)
     assert ({tuple(sorted(x)) for x in flipflop.ConvexHull(p).simplices.tolist()} ==
             {tuple(sorted(x)) for x in s.simplices.tolist()})
+
+
+def test_find_simplex_signs_cached_and_checked():
+    from flipflop import _flipflop
+    # a 3^4 grid with a fifth of its points moved by 2 ulp: slivers and
+    # zero-volume simplices. The per-simplex signs find_simplex caches are
+    # the exact orientations (zero exactly where _flat's independent numpy /
+    # integer computation says so); a call with them equals one without; the
+    # bounding-box shortcut answers -1 where a scan of every simplex does.
+    rng = np.random.default_rng(11)
+    g = np.array(np.meshgrid(*[np.arange(3)] * 4, indexing="ij"), dtype=float).reshape(4, -1).T + 1.0
+    for i in np.nonzero(rng.random(len(g)) < 0.2)[0]:
+        for j in range(4):
+            for _ in range(2):
+                g[i, j] = np.nextafter(g[i, j], np.inf if rng.random() < 0.5 else -np.inf)
+    t = flipflop.Delaunay(g)
+    s64, n64 = t.simplices.astype(np.int64), t.neighbors.astype(np.int64)
+    signs = _flipflop.simplex_signs(t.points, s64)
+    assert signs.dtype == np.int8 and signs.shape == (t.nsimplex,)
+    assert np.array_equal(signs == 0, t._flat())
+    assert (signs != 0).any() and len(set(signs[signs != 0].tolist())) == 1  # one orientation
+    q = rng.random((3000, 4)) * 2.4 + 0.8  # a third outside the box [1, 3]^4
+    without = _flipflop.find_simplex(t.points, s64, n64, q)
+    assert np.array_equal(_flipflop.find_simplex(t.points, s64, n64, q, signs), without)
+    assert np.array_equal(t.find_simplex(q), without)
+    assert np.array_equal(t.find_simplex(q), without)  # the cached signs again
+    outside = ((q < g.min(axis=0)) | (q > g.max(axis=0))).any(axis=1)
+    assert outside.sum() > 500 and (without[outside] == -1).all()
+    # a found simplex holds its query (closed): every vertex replaced by the
+    # query leaves the orientation's sign or makes it 0 (exact signs)
+    found = np.nonzero(without >= 0)[0]
+    assert len(found) > 1000
+    for i in found[:60]:
+        k = without[i]
+        v = t.points[t.simplices[k]]
+        for j in range(5):
+            w = v.copy()
+            w[j] = q[i]
+            assert _flipflop.simplex_signs(w, np.arange(5, dtype=np.int64)[None, :])[0] * signs[k] >= 0
+    with pytest.raises(ValueError):
+        _flipflop.find_simplex(t.points, s64, n64, q, signs[:-1])
+    with pytest.raises(ValueError):
+        _flipflop.find_simplex(t.points, s64, n64, q, np.full(t.nsimplex, 2, dtype=np.int8))
