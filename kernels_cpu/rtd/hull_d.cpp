@@ -606,6 +606,14 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   std::vector<pred::PlaneForm<D>> form(cache ? slots : 0);
   std::unique_ptr<std::atomic<std::uint8_t>[]> state(cache ? new std::atomic<std::uint8_t>[slots] : nullptr);
   for (std::size_t i = 0; cache && i < slots; ++i) state[i].store(0, std::memory_order_relaxed);
+  // A slot's state: below `lazy` - 1 the number of its uses so far (each
+  // asks the predicate); the next use builds its form. A form costs about as
+  // much as 16 tests: built at once where the points are many per cone (10^5
+  // normal 4D points, 82 per cone), from the 16th use on where they are few
+  // (2x10^4 5D points, 2.8 per cone: 37,000 forms were built for 20,000
+  // walks; 17 % less certifier time, and 4 % more in 4D had it been used there)
+  constexpr std::uint8_t kBuilding = 254, kReady = 255;
+  const int lazy = order.size() >= 16 * h ? 1 : 16;
   // orient_d of cone k's side j (j < D) or facet k (j = D) and point q
   auto orient = [&](std::size_t k, int j, Index q) {
     Index t[D];
@@ -613,15 +621,17 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
     if (cache) {
       const std::size_t slot = k * (D + 1) + static_cast<std::size_t>(j);
       std::uint8_t st = state[slot].load(std::memory_order_acquire);
-      if (st == 0 && state[slot].compare_exchange_strong(st, 1, std::memory_order_acq_rel)) {
+      if (st + 1 < lazy) {
+        state[slot].compare_exchange_strong(st, static_cast<std::uint8_t>(st + 1), std::memory_order_relaxed);
+      } else if (st + 1 == lazy && state[slot].compare_exchange_strong(st, kBuilding, std::memory_order_acq_rel)) {
         const double* p[D];
         for (int c = 0; c < D; ++c) p[c] = ck.ps.point(t[c]);
         form[slot] = pred::PlaneForm<D>(p);
         tsan::released(&state[slot]);  // std::atomic is not instrumented here (.ci/tsan.ignorelist)
-        state[slot].store(2, std::memory_order_release);
-        st = 2;
+        state[slot].store(kReady, std::memory_order_release);
+        st = kReady;
       }
-      if (st == 2) {
+      if (st == kReady) {
         tsan::acquired(&state[slot]);
         if (const int s = form[slot].sign(ck.ps.point(q))) return s;
       }
