@@ -105,8 +105,7 @@ std::vector<Index> order(std::size_t n, std::size_t brio_min, const Curve& curve
   // keys[i] holds i in its low bits, so the stable radix sort on the high
   // bits (the certifiers' one, here over par_for) is the sort of the whole
   // (distinct) keys
-  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
-      [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, kChunk, body); };
+  const auto for_range = par_for_range();
   certify::detail::radix_sort_high(keys, kIndexBits, for_range);
   if (rounds_at) {
     rounds_at->clear();

@@ -1143,8 +1143,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   std::size_t vertices = 0;
   for (Index p = 0; p < n; ++p) vertices += P.deg[p] > 0;
   w.ball = worth_inner_ball(n - vertices, out.size());
-  const std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)> for_range =
-      [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, kChunk, body); };
+  const auto for_range = par_for_range();
   const certify::detail::InnerBall<3> ball =
       w.ball ? certify::detail::InnerBall<3>(ps, out, for_range) : certify::detail::InnerBall<3>();
   clock.mark("witness: inner ball");
