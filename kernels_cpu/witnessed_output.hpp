@@ -19,6 +19,7 @@
 // smallest such slot.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -121,10 +122,14 @@ std::size_t first_unwitnessed_slot(std::size_t n, const std::vector<Simplex>& T,
       for (std::size_t m = from; m <= to; ++m) first[m] = static_cast<std::uint32_t>(i);
     }
   });
+  // binary search among the output simplices with x's smallest index (T is
+  // strictly increasing): a vertex that is the smallest index of very many
+  // simplices (a fan of flat ones over coplanar points) costs O(log), not
+  // O(run) per lookup
   auto in_output = [&](const Simplex& x) {
-    for (std::uint32_t i = first[x[0]]; i < first[x[0] + 1]; ++i)
-      if (T[i] == x) return true;
-    return false;
+    const auto b = T.begin() + first[x[0]], e = T.begin() + first[x[0] + 1];
+    const auto it = std::lower_bound(b, e, x);
+    return it != e && *it == x;
   };
   // bucket-major write positions: bucket b of chunk ch after all of bucket
   // b's earlier chunks and all smaller buckets

@@ -19,6 +19,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "gen/generate.hpp"
+#include "kernels_cpu/rt3/certify_rt3.hpp"
 #include "kernels_cpu/rt3/rt3.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/large_n.hpp"
@@ -241,6 +243,25 @@ TEST_CASE("rt3 cpu: lattices, cospherical sets, duplicates and redundant-heavy i
     ps = with_weights(ps, w);
     const std::string expect = check_req(ps);
     REQUIRE(std::count(expect.begin(), expect.end(), '\n') == 1);  // one tetrahedron
+  }
+  SECTION("the scanned building (planes3): a vertex is the smallest index of a long fan of flat tetrahedra") {
+    // the output stage sorts such a run (more than 32 tetrahedra with one
+    // smallest index: 262 at 2000 points) by std::sort, the short ones by
+    // insertion; the witness certifier looks tetrahedra up in it by binary
+    // search
+    const PointSet ps = gen::generate("planes3", 2000, o);
+    check_req(ps);
+    cpu::Rt3Witness w;
+    const cpu::Rt3Result r = cpu::rt3(ps, {}, nullptr, &w);
+    std::size_t longest = 0;
+    for (std::size_t i = 0, j = 0; i < r.tets.size(); i = j) {
+      for (j = i; j < r.tets.size() && r.tets[j][0] == r.tets[i][0]; ++j) {
+      }
+      longest = std::max(longest, j - i);
+    }
+    INFO("longest run of one smallest index: " << longest);
+    REQUIRE(longest > 32);
+    REQUIRE(cpu::certify_rt3(ps, w, r.tets).ok);
   }
   SECTION("points on two planes") {
     PointSet ps;

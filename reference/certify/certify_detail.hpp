@@ -115,6 +115,7 @@ struct VertexLinks {
   };
   std::vector<std::uint32_t> start;
   std::vector<Link> link;
+  static constexpr std::ptrdiff_t kShortLink = 32;  // longer vertex links are sorted and searched in O(log)
 
   template <class ForRange>
   void build(std::size_t n, const std::vector<Triangle>& tris, const ForRange& for_range) {
@@ -136,8 +137,15 @@ struct VertexLinks {
               tris[t][(k + 1) % 3], tris[t][(k + 2) % 3], static_cast<std::uint32_t>(3 * t + k)};
     });
     for_pieces(n, for_range, [&](std::size_t lo, std::size_t hi) {
-      for (std::size_t v = lo; v < hi; ++v) {  // insertion sort: a handful of entries each
+      for (std::size_t v = lo; v < hi; ++v) {
+        // insertion sort for the handful of entries most vertices have; a
+        // vertex of large degree (a fan over many coplanar points) by
+        // std::sort, not in quadratic time
         const auto b = link.begin() + start[v], e = link.begin() + start[v + 1];
+        if (e - b > kShortLink) {
+          std::sort(b, e);
+          continue;
+        }
         for (auto i = b; i != e; ++i)
           for (auto j = i; j != b && *j < *(j - 1); --j) std::iter_swap(j, j - 1);
       }
@@ -151,6 +159,10 @@ struct VertexLinks {
   const Link* entry(Index v, Index u) const {
     const Link* b = link.data() + start[v];
     const Link* e = link.data() + start[v + 1];
+    if (e - b > kShortLink) {  // a large degree: binary search (sorted by from first)
+      b = std::lower_bound(b, e, u, [](const Link& l, Index x) { return l.from < x; });
+      return b != e && b->from == u ? b : nullptr;
+    }
     for (; b != e && b->from <= u; ++b)
       if (b->from == u) return b;
     return nullptr;
