@@ -134,6 +134,29 @@ TEST_CASE("hull3 cpu: deterministic sweep over the families, sizes and thread co
   REQUIRE(cases >= 13 * 6 * 2 * 3);
 }
 
+// Line 8 among points exactly in a triangle's plane (in_plane_tie.hpp): the
+// answer is the reference's whichever point is inserted; the count of
+// insertions shows the choice. On the bottom face of 10^4 lattice points,
+// with ties broken by the smaller index alone, 8890 of the 10001 points were
+// inserted (and all but 125 removed again by flip-flop); with the perturbed
+// distance's order, 662. The bound n / 5 fails on the former.
+TEST_CASE("hull3 cpu: points in the plane of a face are inserted furthest first under the perturbation",
+          "[hull3_cpu]") {
+  for (const double apex_z : {1000.0, -1000.0}) {
+    const PointSet ps = test::lattice_pyramid(10000, apex_z, 5);
+    const std::string expect = ref_text(ps);
+    REQUIRE(!is_error(expect));
+    for (const Run& run : kRuns) {
+      ref::Hull3Stats st;
+      INFO("apex z " << apex_z << ", " << run.threads << " threads");
+      REQUIRE(cpu_text(ps, run.threads, &st, run.flip_flop) == expect);
+      std::cout << "hull3 cpu lattice pyramid, apex z " << apex_z << ", " << run.threads
+                << " threads: insertions " << st.insertions << " of " << ps.size() << " points\n";
+      REQUIRE(st.insertions <= ps.size() / 5);
+    }
+  }
+}
+
 TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, certified", "[hull3_cpu][long]") {
   for (const char* fam : {"ball", "sphere", "box", "cball", "sphere-lattice", "grid3"}) {
     gen::Options o;

@@ -150,6 +150,26 @@ TEST_CASE("hull3 cuda-omp: large ball, sphere, box and lattice inputs equal the 
 // 40 runs of flipflop hull3 --backend cuda-omp on 50000 sphere points crashed
 // or hung at OMP_NUM_THREADS=16, 2026-11-27). Several runs in Release, one
 // under ThreadSanitizer (make tsan), which needs no unlucky timing.
+// Line 8 among points exactly in a triangle's plane (in_plane_tie.hpp), as
+// hull3_cpu_test's case: the reference's answer, and few insertions (with
+// ties broken by the smaller index alone, most of the bottom face's points
+// were inserted).
+TEST_CASE("hull3 cuda-omp: points in the plane of a face are inserted furthest first under the perturbation",
+          "[hull3_cuda_omp]") {
+  for (const double apex_z : {1000.0, -1000.0}) {
+    const PointSet ps = test::lattice_pyramid(10000, apex_z, 5);
+    const std::string expect = ref_text(ps);
+    REQUIRE(!is_error(expect));
+    ref::Hull3Stats st;
+    INFO("apex z " << apex_z);
+    REQUIRE(omp_text(ps, &st) == expect);
+    REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+    std::cout << "hull3 cuda-omp lattice pyramid, apex z " << apex_z << ": insertions " << st.insertions << " of "
+              << ps.size() << " points\n";
+    REQUIRE(st.insertions <= ps.size() / 5);
+  }
+}
+
 TEST_CASE("hull3 cuda-omp: 16 OpenMP threads give the reference's output", "[hull3_cuda_omp]") {
   for (const char* fam : {"sphere", "ball"}) {
     gen::Options o;

@@ -2,6 +2,7 @@
 // §6.4.1) on oneTBB; what is parallel and why the answer is the reference's
 // is documented in ffhull.hpp.
 #include "kernels_cpu/hull3/ffhull.hpp"
+#include "kernels_cpu/hull3/in_plane_tie.hpp"
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
 
 #include <algorithm>
@@ -240,20 +241,41 @@ struct Buffers {
   RawVec<double> tmp_xyz;
 };
 
+// Line 8's choice of the point to insert: the largest rounded distance key;
+// among equal keys the larger `tie` (in_plane_tie.hpp: the order of the
+// perturbed distance for points exactly in the triangle's plane), then the
+// smaller index — a strict total order, so the choice does not depend on the
+// units or the schedule.
+struct Far {
+  double key = -HUGE_VAL, tie = 0;
+  Index i = kNone;
+};
+inline bool further(double key, double tie, Index i, const Far& b) {
+  if (std::isnan(key)) key = -HUGE_VAL;
+  if (std::isnan(tie)) tie = -HUGE_VAL;
+  if (b.i == kNone) return true;
+  return key > b.key || (key == b.key && (tie > b.tie || (tie == b.tie && i < b.i)));
+}
+// A point's key for line 8 (Far), from the classifier that keeps it.
+struct Key {
+  double d = 0;    // the rounded distance (p - t0) · ((t1 - t0) × (t2 - t0))
+  double tie = 0;  // when d == 0: in_plane_tie
+};
+
 // The classification pass of a regrouping: B.code[i] per point (its child,
 // or kDropped), and per unit u and child c the number of points kept cnt[u m
 // + c] and their furthest point best[u m + c].
 struct Classified {
   std::vector<std::size_t> cnt;
-  std::vector<Best> best;
+  std::vector<Far> best;
   // child c of segment k over its units: the furthest point, and the count
-  Best child(const Units& U, std::size_t k, std::uint32_t c, int m, std::size_t& count) const {
-    Best bb;
+  Far child(const Units& U, std::size_t k, std::uint32_t c, int m, std::size_t& count) const {
+    Far bb;
     count = 0;
     for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) {
       count += cnt[u * m + c];
-      const Best& b = best[u * m + c];
-      if (b.i != kNone && better(b.key, b.i, bb)) bb = b;
+      const Far& b = best[u * m + c];
+      if (b.i != kNone && further(b.key, b.tie, b.i, bb)) bb = b;
     }
     return bb;
   }
@@ -265,21 +287,22 @@ Classified classify_units(const Segments& S, Buffers& B, const Units& U, int m, 
   if (B.code.size() < S.pts.size()) B.code.resize(S.pts.size());
   std::uint8_t* code = B.code.data();
   Classified r{std::vector<std::size_t>(nu * static_cast<std::size_t>(m), 0),
-               std::vector<Best>(nu * static_cast<std::size_t>(m))};
+               std::vector<Far>(nu * static_cast<std::size_t>(m))};
   par_for(nu, 1, [&](std::size_t ulo, std::size_t uhi) {
     for (std::size_t u = ulo; u < uhi; ++u) {
       std::size_t* c = &r.cnt[u * m];
-      Best* b = &r.best[u * m];
+      Far* b = &r.best[u * m];
       const auto cl = classify(U.seg[u]);
       for (std::size_t i = U.lo[u]; i < U.hi[u]; ++i) {
         if (i + kAhead < U.hi[u]) S.prefetch(input, i + kAhead);
-        double key;
+        Key key;
         const Index p = S.pts[i];
         const std::uint32_t ch = cl(i, p, S.coords(input, i), key);
         code[i] = ch == kNone ? kDropped : static_cast<std::uint8_t>(ch);
         if (ch != kNone) {
           ++c[ch];
-          if (better(key, p, b[ch])) b[ch] = {std::isnan(key) ? -HUGE_VAL : key, p};
+          if (further(key.d, key.tie, p, b[ch]))
+            b[ch] = {std::isnan(key.d) ? -HUGE_VAL : key.d, std::isnan(key.tie) ? -HUGE_VAL : key.tie, p};
         }
       }
     }
@@ -333,7 +356,7 @@ std::size_t regroup(Segments& S, Buffers& B, const Units& U, int m, const PointS
       const std::size_t start = pos;
       for (std::size_t u = U.first[k]; u < U.first[k + 1]; ++u) off[u * m + c] = pos, pos += cnt[u * m + c];
       std::size_t count;
-      const Best bb = cl.child(U, k, static_cast<std::uint32_t>(c), m, count);
+      const Far bb = cl.child(U, k, static_cast<std::uint32_t>(c), m, count);
       if (pos > start) {
         lo.push_back(start);
         tri.push_back(child_tri(k, c));
@@ -448,10 +471,15 @@ struct Tests {
   // p on the inner side of (t0, t1, t2) — orient3d(t0, t1, t2, p) > 0, i.e.
   // (p - t0) · ((t1 - t0) × (t2 - t0)) < 0
   // (key: the rounded distance, line 8's key in t)
-  bool inner(const Plane& face, const Index* t, Index p, const double* px, double& key) const {
-    const int r = face.eval(px, key);
+  bool inner(const Plane& face, const Index* t, Index p, const double* px, Key& key) const {
+    const int r = face.eval(px, key.d);
     if (fast && r) return r < 0;
-    return orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
+    const bool in = orient(f, t[0], ps.point(t[0]), t[1], ps.point(t[1]), t[2], ps.point(t[2]), p, px) > 0;
+    if (!in && key.d == 0.0) {
+      const double* c[3] = {ps.point(t[0]), ps.point(t[1]), ps.point(t[2])};
+      key.tie = in_plane_tie(t, c, p, px);
+    }
+    return in;
   }
   void face_plane(Plane& pl, const Index* t) const {
     pl.set(ps.point(t[0]), ps.point(t[1]), ps.point(t[2]), m2);
@@ -531,7 +559,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     X.side_plane(ac, a, c), X.side_plane(cb, c, b), X.side_plane(ba, b, a);
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
-    const auto classify0 = [&](std::size_t, Index p, const double* x, double& key) -> std::uint32_t {
+    const auto classify0 = [&](std::size_t, Index p, const double* x, Key& key) -> std::uint32_t {
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -635,7 +663,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     X.side_plane(pl[0], v, ta), X.side_plane(pl[1], v, tb), X.side_plane(pl[2], v, tc);
     X.face_plane(pl[3], &M.v[3 * t[0]]), X.face_plane(pl[4], &M.v[3 * t[1]]), X.face_plane(pl[5], &M.v[3 * t[2]]);
     return [&X, &M, &R, record, k, v, ta, tb, tc, pl](std::size_t, Index p, const double* x,
-                                                       double& key) -> std::uint32_t {
+                                                       Key& key) -> std::uint32_t {
       if (p == v) return kNone;  // line 10
       std::uint32_t ch;
       if (X.side(pl[0], v, ta, p, x) > 0) ch = X.side(pl[1], v, tb, p, x) < 0 ? 0 : 1;
@@ -684,7 +712,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     for (std::size_t k = 0; k < K; ++k)
       for (std::uint32_t c = 0; c < 3; ++c) {
         std::size_t count = 0;
-        const Best bb = c1.child(U, k, c, 3, count);
+        const Far bb = c1.child(U, k, c, 3, count);
         if (count == 0) continue;
         seg2[3 * k + c] = static_cast<std::uint32_t>(R2.tri.size());
         R2.tri.push_back(R.child(k, c));
@@ -705,7 +733,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
           std::array<std::optional<Classifier>, 3> cl;
           for (std::uint32_t c = 0; c < 3; ++c)
             if (seg2[3 * k + c] != kNone) cl[c].emplace(classifier(R2, seg2[3 * k + c]));
-          return [code1, cl](std::size_t i, Index p, const double* x, double& key) -> std::uint32_t {
+          return [code1, cl](std::size_t i, Index p, const double* x, Key& key) -> std::uint32_t {
             const std::uint8_t c = code1[i];  // read before regroup writes the new code of i
             if (c == kDropped) return kNone;
             const std::uint32_t ch = (*cl[c])(i, p, x, key);

@@ -96,6 +96,7 @@
 #include <utility>
 #include <vector>
 
+#include "kernels_cpu/hull3/in_plane_tie.hpp"
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
 #include "kernels_cpu/stage_times.hpp"
 #include "kernels_cuda/backend.cuh"
@@ -526,12 +527,17 @@ struct AssociateRound0 : OnGeo {
   FF_HD bool marked(std::size_t i) const { return out.marked(i); }
 };
 
-// Line 8: per triangle t with points, its furthest point — BestOf's order
-// (the larger key, ties: the smaller index) — in two passes over the points
-// in place: the largest key's bits by atomic maximum, then the smallest index
-// among the points of that key by atomic minimum. The triangles with points
-// are then listed in slot order (select), each given its rank k, its point
-// far[k], and its entries emptied for later rounds.
+// Line 8: per triangle t with points, its furthest point — the larger key,
+// ties: the smaller index; among points of key 0 (exactly in t's plane) the
+// larger in_plane_tie first (kernels_cpu/hull3/in_plane_tie.hpp: the order of
+// the perturbed distance; here rounded to the top 32 bits of its order, the
+// CPU kernel compares the doubles) — in passes over the points in place: the
+// largest key's bits by atomic maximum; when that key is 0, the largest
+// (tie's top 32 bits, complement of the index) by atomic maximum, one
+// computation of the tie per point; else the smallest index among the points
+// of that key by atomic minimum. The triangles with points are then listed
+// in slot order (select), each given its rank k, its point far[k], and its
+// entries emptied for later rounds.
 
 // The order of doubles as unsigned integers: x < y exactly when
 // ordered_key(x) < ordered_key(y), for keys (never NaN; -0 taken as +0, which
@@ -551,6 +557,26 @@ struct FurthestKey {
     if (k > b.load(cuda::memory_order_relaxed)) b.fetch_max(k, cuda::memory_order_relaxed);
   }
 };
+// the ordered key of key 0 (a point exactly in its triangle's plane)
+FF_HD inline unsigned long long zero_key() { return ordered_key(0.0); }
+struct FurthestTie {
+  const double* xyz;
+  const Index* tv;
+  const uint32_t* ptri;
+  const double* pkey;
+  const Index* pid;
+  const unsigned long long* best_key;
+  unsigned long long* best_tie;
+  FF_HD void operator()(std::size_t i) const {
+    const uint32_t t = ptri[i];
+    if (best_key[t] != zero_key() || pkey[i] != 0) return;
+    const Index* v = tv + 3 * static_cast<std::size_t>(t);
+    const double* c[3] = {xyz + 3 * std::size_t{v[0]}, xyz + 3 * std::size_t{v[1]}, xyz + 3 * std::size_t{v[2]}};
+    const double tie = cpu::in_plane_tie(v, c, pid[i], xyz + 3 * std::size_t{pid[i]});
+    const unsigned long long order = ordered_key(tie == tie ? tie : -HUGE_VAL) & 0xffffffff00000000ull;
+    Atomic<unsigned long long>(best_tie[t]).fetch_max(order | (~pid[i] & 0xffffffffull), cuda::memory_order_relaxed);
+  }
+};
 struct FurthestId {
   const uint32_t* ptri;
   const double* pkey;
@@ -559,7 +585,8 @@ struct FurthestId {
   Index* best_id;
   FF_HD void operator()(std::size_t i) const {
     const uint32_t t = ptri[i];
-    if (ordered_key(pkey[i]) == best_key[t]) Atomic<Index>(best_id[t]).fetch_min(pid[i], cuda::memory_order_relaxed);
+    if (best_key[t] == zero_key() || ordered_key(pkey[i]) != best_key[t]) return;
+    Atomic<Index>(best_id[t]).fetch_min(pid[i], cuda::memory_order_relaxed);
   }
 };
 struct HasPoints {
@@ -569,12 +596,13 @@ struct HasPoints {
 struct TakeFurthest {
   const uint32_t* seg_tri;
   unsigned long long* best_key;
+  unsigned long long* best_tie;
   Index* best_id;
   Index* far;
   FF_HD void operator()(std::size_t k) const {
     const uint32_t t = seg_tri[k];
-    far[k] = best_id[t];
-    best_key[t] = 0, best_id[t] = kNone;
+    far[k] = best_key[t] == zero_key() ? static_cast<Index>(~best_tie[t] & 0xffffffffull) : best_id[t];
+    best_key[t] = 0, best_tie[t] = 0, best_id[t] = kNone;
   }
 };
 
@@ -1195,8 +1223,9 @@ struct Buffers {
   // construction rounds: per slot its rank in the round; per split triangle
   Scratch<uint32_t> rank, seg_tri;
   Scratch<Index> far;
-  // per slot: the largest key's bits and the smallest index of that key among its points
-  Scratch<unsigned long long> best_key;
+  // per slot: the largest key's bits, the largest tie among its points of
+  // key 0, and the smallest index of that key (and tie) among its points
+  Scratch<unsigned long long> best_key, best_tie;
   Scratch<Index> best_id;
   Scratch<Index> old_v;
   Scratch<uint32_t> old_nb;
@@ -1216,7 +1245,7 @@ struct Buffers {
     pid.resize(n), ptri.resize(n), pkey.resize(n), drop.resize(n);
     tv.resize(3 * max_tri), tn.resize(3 * max_tri), alive.resize(max_tri);
     rank.resize(max_tri), seg_tri.resize(n), far.resize(n);
-    best_key.resize(max_tri), best_id.resize(max_tri);
+    best_key.resize(max_tri), best_tie.resize(max_tri), best_id.resize(max_tri);
     old_v.resize(3 * n), old_nb.resize(3 * n), old_pos.resize(3 * n);
     claim.resize(max_tri), partner.resize(max_tri), stamp_t.resize(max_tri);
     deg.resize(n), labelled.resize(n), stamp_v.resize(n);
@@ -1228,6 +1257,7 @@ struct Buffers {
     counts.resize(2), state.resize(1), op_counts.resize(3);
     fill_n(raw(rank), max_tri, kNone);
     fill_n(raw(best_key), max_tri, 0ull);
+    fill_n(raw(best_tie), max_tri, 0ull);
     fill_n(raw(best_id), max_tri, kNone);
     fill_n(raw(deg), n, uint32_t{0});
     fill_n(raw(labelled), n, uint32_t{0});
@@ -1284,9 +1314,10 @@ class Hull3 {
       ++st_.rounds;
       // line 8 (see FurthestKey)
       for_n(m, FurthestKey{ptri, pkey, raw(B_.best_key)});
+      for_n(m, FurthestTie{g_.xyz, raw(B_.tv), ptri, pkey, pid, raw(B_.best_key), raw(B_.best_tie)});
       for_n(m, FurthestId{ptri, pkey, pid, raw(B_.best_key), raw(B_.best_id)});
       const std::size_t K = select(B_.temp, T_, raw(B_.seg_tri), HasPoints{raw(B_.best_key)});
-      for_n(K, TakeFurthest{raw(B_.seg_tri), raw(B_.best_key), raw(B_.best_id), raw(B_.far)});
+      for_n(K, TakeFurthest{raw(B_.seg_tri), raw(B_.best_key), raw(B_.best_tie), raw(B_.best_id), raw(B_.far)});
       step("construction: furthest points");
       const uint32_t T = T_;
       for_n(K, SplitRead{raw(B_.tv), raw(B_.tn), raw(B_.seg_tri), raw(B_.rank), raw(B_.old_v), raw(B_.old_nb),

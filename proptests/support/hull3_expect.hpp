@@ -6,7 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "proptests/support/outcome.hpp"
 #include "reference/dimension.hpp"
@@ -27,6 +30,24 @@ inline std::string hull3_sweep_expect(const PointSet& ps, std::size_t& rejected)
     REQUIRE(!dimension_problem(ps).empty());
   }
   return expect;
+}
+
+// A pyramid whose base is `n` points drawn uniformly from the integer
+// lattice of [0, 1000]^2 in the plane z = 0 (duplicates possible), apex
+// (500, 500, apex_z) at index 0: apex_z > 0 makes z = 0 the bottom face,
+// where every point's perturbation points inwards (most base points are
+// outside a base triangle whose smallest corner index is below theirs, and
+// none of them is a hull vertex but a few), apex_z < 0 the top face (the
+// perturbations point outwards). The test of in_plane_tie.hpp's choice.
+inline PointSet lattice_pyramid(std::size_t n, double apex_z, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> u(0, 1000);
+  std::vector<double> c = {500, 500, apex_z};
+  for (std::size_t i = 0; i < n; ++i) c.insert(c.end(), {double(u(rng)), double(u(rng)), 0.0});
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = Values(std::move(c));
+  return ps;
 }
 
 }  // namespace flipflop::test
