@@ -69,7 +69,7 @@ std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vec
         const double* p = ps.point(i);
         return hilbert15(grid15(p[0], b[0], b[2]), grid15(p[1], b[1], b[3]));
       },
-      rounds_at);
+      [&](std::size_t i) { return brio::point_hash(ps.point(i), 2); }, rounds_at);
 }
 
 // ---- stage 2: incremental flipping ----------------------------------------------
@@ -87,6 +87,7 @@ class Builder {
   // positions [0, parallel_from) inserted one by one, the rest of each BRIO
   // round (rounds_at: brio_order's round starts) in parallel batches
   void run(std::size_t parallel_from, bool territories, const std::vector<std::size_t>& rounds_at);
+  void defer_copies();
   // the real triangles, as input indices in canonical form, sorted
   std::vector<Triangle> output() const;
   // stage 4: completes at_ and hands the triangulation over (the builder is
@@ -415,6 +416,26 @@ void Builder::regularize(std::uint32_t p) {
   }
 }
 
+// Exact copies (coordinates and weight) come one after the other in the
+// order, by increasing input index (brio.hpp). Of such a group the copy of
+// largest index is lowest when lifted (reference/rt2/rt2.hpp), so inside the
+// hull it is the only one that can be a vertex; inserted before it, each
+// other copy would be inserted and removed again when the next comes (in a
+// parallel batch, two copies are inserted together even in the other
+// order). So each copy followed by a copy of larger index waits (missing_
+// 3) until everything else is in, then goes through insert_one: a copy
+// inside the hull is found redundant when located, one on the hull's
+// boundary (where the perturbation of the coordinates can make every copy a
+// hull vertex) is inserted like any point. Not the initial three (missing_
+// 2).
+void Builder::defer_copies() {
+  const std::uint32_t n = V_;
+  for (std::uint32_t k = 0; k + 1 < n; ++k)
+    if (missing_[k] == 0 && P_[k].xy[0] == P_[k + 1].xy[0] && P_[k].xy[1] == P_[k + 1].xy[1] &&
+        P_[k].w == P_[k + 1].w && P_[k].id < P_[k + 1].id)
+      missing_[k] = 3;
+}
+
 void Builder::insert_one(std::uint32_t p) {
   bool inside = false;
   const std::uint32_t e = walk(p, inside);
@@ -426,6 +447,7 @@ void Builder::insert_one(std::uint32_t p) {
     if (power(tv_[3 * t], tv_[3 * t + 1], tv_[3 * t + 2], p) < 0) {
       ++st_.discarded_early;
       at_[p] = t, missing_[p] = 1;
+      home_ = t;  // the next point along the curve is near
       return;
     }
     for (std::uint32_t h : flip13(t, p)) stack_.push_back(h);
@@ -455,10 +477,16 @@ void Builder::run(std::size_t parallel_from, bool territories, const std::vector
   // inserting (nothing inserts them again), 0 again at the end if still
   // vertices
   missing_[a] = missing_[b] = missing_[c] = 2;
+  defer_copies();
   const std::uint32_t seq_end = static_cast<std::uint32_t>(std::min<std::size_t>(n, parallel_from));
   for (std::uint32_t p = 0; p < seq_end; ++p)
     if (missing_[p] == 0) insert_one(p);
   if (seq_end < n) run_parallel(seq_end, rounds_at);
+  for (std::uint32_t p = 0; p < n; ++p)  // the copies that waited, along the curve
+    if (missing_[p] == 3) {
+      missing_[p] = 0;
+      insert_one(p);
+    }
   for (std::uint32_t x : {a, b, c})
     if (missing_[x] == 2) missing_[x] = 0;  // still a vertex (else removed: 1)
 }
@@ -1073,7 +1101,8 @@ void Builder::witness(Rt2Witness& w) {
     for (std::size_t k = lo; k < hi; ++k) {
       if (!missing_[k]) continue;
       const std::uint32_t hint = at_[k];
-      const std::uint32_t start = prev != kDead ? prev : is_real(hint) ? hint : home_;
+      // (hint: kDead when the point was never located)
+      const std::uint32_t start = prev != kDead ? prev : hint < slots && is_real(hint) ? hint : home_;
       bool inside = false;
       const std::uint32_t e = locate(static_cast<std::uint32_t>(k), start, rng, inside);
       if (!inside)

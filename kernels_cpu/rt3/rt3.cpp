@@ -121,7 +121,7 @@ std::vector<Index> brio_order(const PointSet& ps, std::size_t brio_min, std::vec
         if (keys) (*keys)[i] = h;
         return h;
       },
-      rounds_at);
+      [&](std::size_t i) { return brio::point_hash(ps.point(i), 3); }, rounds_at);
 }
 
 // ---- stage 2: insertion -------------------------------------------------------------
@@ -696,8 +696,26 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
   start();
   const std::size_t n = V_;
   std::size_t k = 4;
+  // Exact copies (coordinates and weight) come one after the other, by
+  // increasing input index (brio.hpp). Of such a group the copy of largest
+  // index is lowest when lifted (reference/rt2/rt2.hpp gives the argument),
+  // so inside the hull it is the only one that can be a vertex; inserted
+  // before it, each other copy would be inserted and removed again (in a
+  // parallel round even in the other order). So each copy followed by a
+  // copy of larger index waits until every other point is in, then is
+  // inserted one by one: inside the hull it is found redundant when located;
+  // on the hull's boundary, where the perturbation of the coordinates can
+  // make every copy a vertex, it is inserted like any point.
+  std::vector<std::uint8_t> wait(n, 0);
+  par_for(n > 5 ? n - 5 : 0, kChunk, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t j = lo + 4; j < hi + 4; ++j) {
+      const Rt3Point &a = P_[j], &b = P_[j + 1];
+      wait[j] = a.xyz[0] == b.xyz[0] && a.xyz[1] == b.xyz[1] && a.xyz[2] == b.xyz[2] && a.w == b.w && a.id < b.id;
+    }
+  });
   auto sequential_to = [&](std::size_t end) {
-    for (; k < end; ++k) insert(seq_, static_cast<std::uint32_t>(k));
+    for (; k < end; ++k)
+      if (!wait[k]) insert(seq_, static_cast<std::uint32_t>(k));
   };
   auto merge = [&](const Rt3Stats& a) {
     st.inserted += a.inserted, st.placed += a.placed, st.discarded += a.discarded;
@@ -734,31 +752,25 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
     sequential_to(std::min(n, std::max<std::size_t>(parallel_from, 4)));
     const std::size_t threads = static_cast<std::size_t>(std::max(1, tbb::this_task_arena::max_concurrency()));
     if (rounds_at.empty()) throw std::logic_error("rt3 (cpu): no BRIO rounds");
-    for (std::size_t r = 0; r + 1 < rounds_at.size(); ++r) {
-      const std::size_t lo = std::max(k, rounds_at[r]), hi = rounds_at[r + 1];
-      if (hi <= lo) continue;
-      const std::size_t pieces = std::min(8 * threads, (hi - lo) / std::max<std::size_t>(min_piece, 1));
-      if (pieces < 2) {
-        reserve_for(hi, 0);
-        sequential_to(hi);
-        continue;
-      }
-      reserve_for(hi, pieces);
+    // A parallel round over the `count` positions pos(0..count-1) (in curve
+    // order), `pieces` of them; known: the positions below which hold the
+    // hints of the points handled so far.
+    auto parallel_round = [&](std::size_t count, std::size_t pieces, std::size_t known, const auto& pos) {
       const std::uint32_t anchor = live(seq_.last) && !is_virtual(seq_.last) ? seq_.last : any_real();
       // each piece starts near its first point: at the tetrahedron noted for
       // the last point inserted so far in the nearest lock cell along the
       // curve (hint_) — one shared start would make the pieces wait for the
       // first one there
       std::vector<std::uint32_t> cellpos(lock_count_, kDead);
-      for (std::size_t j = 0; j < lo; ++j)
+      for (std::size_t j = 0; j < known; ++j)
         if (hint_[j] != kDead) cellpos[P_[j].cell] = static_cast<std::uint32_t>(j);
       std::vector<Worker> ws(pieces);
       for (std::size_t q = 0; q < pieces; ++q) {
         ws[q].me = static_cast<std::uint32_t>(q + 1);
-        ws[q].rng = brio::splitmix64(lo + q) | 1;
+        ws[q].rng = brio::splitmix64(pos(0) + q) | 1;
         ws[q].fail_every = fail_every;
         ws[q].remember(anchor);
-        const std::size_t c = P_[lo + (hi - lo) * q / pieces].cell;
+        const std::size_t c = P_[pos(count * q / pieces)].cell;
         for (std::size_t d = 0; d < lock_count_; ++d) {
           const std::uint32_t j = c >= d && cellpos[c - d] != kDead ? cellpos[c - d]
                                   : c + d < lock_count_         ? cellpos[c + d]
@@ -776,21 +788,23 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
       par_for(pieces, 1, [&](std::size_t a, std::size_t b) {
         for (std::size_t q = a; q < b; ++q) {
           Worker& w = ws[q];
-          const std::size_t from = lo + (hi - lo) * q / pieces, to = lo + (hi - lo) * (q + 1) / pieces;
+          const std::size_t from = count * q / pieces, to = count * (q + 1) / pieces;
           int lost = 0;  // consecutive insertions that found no start
-          for (std::size_t p = from; p < to; ++p) {
-            const Outcome o = insert(w, static_cast<std::uint32_t>(p));
-            if (o != Outcome::done) w.deferred.push_back(static_cast<std::uint32_t>(p));
+          for (std::size_t i = from; i < to; ++i) {
+            const std::uint32_t p = static_cast<std::uint32_t>(pos(i));
+            if (wait[p]) continue;
+            const Outcome o = insert(w, p);
+            if (o != Outcome::done) w.deferred.push_back(p);
             lost = o == Outcome::lost ? lost + 1 : 0;
             if (lost == 8) {  // no start for a while: the rest of the piece after the round
-              for (++p; p < to; ++p) w.deferred.push_back(static_cast<std::uint32_t>(p));
+              for (++i; i < to; ++i)
+                if (!wait[pos(i)]) w.deferred.push_back(static_cast<std::uint32_t>(pos(i)));
               break;
             }
           }
         }
       });
       // the deferred points, in position order of the pieces, one by one
-      k = hi;
       if (slots_.load() > cap_) slots_.store(cap_);  // a failed block grab overshoots
       for (Worker& w : ws) {
         merge(w.st);
@@ -805,9 +819,36 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
       for (Worker& w : ws)
         for (std::uint32_t p : w.deferred) insert(seq_, p);
       ++st.parallel_rounds;
+    };
+    for (std::size_t r = 0; r + 1 < rounds_at.size(); ++r) {
+      const std::size_t lo = std::max(k, rounds_at[r]), hi = rounds_at[r + 1];
+      if (hi <= lo) continue;
+      const std::size_t pieces = std::min(8 * threads, (hi - lo) / std::max<std::size_t>(min_piece, 1));
+      if (pieces < 2) {
+        reserve_for(hi, 0);
+        sequential_to(hi);
+        continue;
+      }
+      reserve_for(hi, pieces);
+      parallel_round(hi - lo, pieces, lo, [lo](std::size_t i) { return lo + i; });
+      k = hi;
     }
     sequential_to(n);
+    // the copies that waited: located (nearly all found redundant) in a
+    // parallel round of their own
+    std::vector<std::uint32_t> waited;
+    for (std::size_t p = 4; p < n; ++p)
+      if (wait[p]) waited.push_back(static_cast<std::uint32_t>(p)), wait[p] = 0;
+    const std::size_t pieces = std::min(8 * threads, waited.size() / std::max<std::size_t>(min_piece, 1));
+    if (pieces >= 2) {
+      reserve_for(n, pieces);
+      parallel_round(waited.size(), pieces, n, [&waited](std::size_t i) { return std::size_t{waited[i]}; });
+      waited.clear();
+    }
+    for (std::uint32_t p : waited) insert(seq_, p);
   }
+  for (std::size_t p = 4; p < n; ++p)  // the copies that waited (sequential run), along the curve
+    if (wait[p]) insert(seq_, static_cast<std::uint32_t>(p));
   merge(seq_.st);
   st.slots = slots_.load();
 }

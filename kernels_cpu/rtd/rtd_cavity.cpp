@@ -79,7 +79,7 @@ class Builder {
 
   void run(RtdCavityStats& st) {
     start(st);
-    for (std::size_t k = W; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
+    insert_range(W, st);
   }
 
   // In-place insertion of more points (RtdCavityIncremental::add): ps holds
@@ -90,7 +90,33 @@ class Builder {
   void append(const PointSet& ps, const std::vector<Index>& order, RtdCavityStats& st) {
     const std::size_t first = n_;
     take(ps, order);
-    for (std::size_t k = first; k < n_; ++k) insert(static_cast<std::uint32_t>(k), st);
+    insert_range(first, st);
+  }
+
+  // Positions first.. in order. Exact copies (coordinates and weight) come
+  // one after the other, by increasing input index (brio.hpp); of such a
+  // group the copy of largest index is lowest when lifted
+  // (reference/rt2/rt2.hpp gives the argument), so inside the hull it is the
+  // only one that can be a vertex, and each other copy inserted before it
+  // would be inserted and removed again. So a copy followed by a copy of
+  // larger index waits until the rest are in: then it is found redundant
+  // when located (or, on the hull's boundary, inserted like any point). The
+  // answer does not depend on the order.
+  void insert_range(std::size_t first, RtdCavityStats& st) {
+    std::vector<std::uint32_t> waited;
+    for (std::size_t k = first; k < n_; ++k) {
+      if (k + 1 < n_ && copy_of_next(k)) {
+        waited.push_back(static_cast<std::uint32_t>(k));
+        continue;
+      }
+      insert(static_cast<std::uint32_t>(k), st);
+    }
+    for (std::uint32_t k : waited) insert(k, st);
+  }
+  bool copy_of_next(std::size_t k) const {
+    for (int j = 0; j < D; ++j)
+      if (xs_[k * D + static_cast<std::size_t>(j)] != xs_[(k + 1) * D + static_cast<std::size_t>(j)]) return false;
+    return ws_[k] == ws_[k + 1] && ids_[k] < ids_[k + 1];
   }
 
   // The real simplices in canonical form (canonical_d.hpp), sorted; the
@@ -374,7 +400,7 @@ std::vector<Index> insertion_order(const PointSet& ps, std::size_t first, const 
                           return static_cast<std::uint32_t>(
                               brio::morton(ps.point(first + i), box.data(), box.data() + D, D, 30));
                         },
-                        nullptr);
+                        [&](std::size_t i) { return brio::point_hash(ps.point(first + i), D); }, nullptr);
   });
   if (first != 0)
     for (Index& i : order) i += static_cast<Index>(first);
