@@ -269,7 +269,7 @@ TEST_CASE("rt3 cpu: lattices, cospherical sets, duplicates and redundant-heavy i
     // it is in (rt3.cpp, Builder::run) and are found redundant when located:
     // few vertices are removed again (with every copy inserted as it came,
     // 57 % of the points at 10^6)
-    const PointSet ps = gen::generate("duplicates3", 6000, o);
+    const PointSet ps = gen::generate("duplicates3", 3000, o);
     check_req(ps);
     for (const Mode& m : kModes) {
       cpu::Rt3Stats st;
