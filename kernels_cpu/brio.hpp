@@ -10,13 +10,19 @@
 // R is the number of rounds of expected size >= brio_min (at most 20, < 2^5).
 // The order is a heuristic for locality only: the answers never depend on it.
 //
-// Exact copies: with the round drawn from a hash of the coordinates
-// (point_hash), copies of one point fall in one round and one curve cell, so
-// they come one after the other in the order, by increasing index — which
-// lets the triangulation kernels set aside all but the one of largest index
-// at once (of exact copies only that one can be a vertex under flipflop's
-// SoS: reference/rt2/rt2.hpp) instead of inserting each and removing it again
-// when a later copy comes (duplicates2 at 10^6, 2D: 569526 such removals).
+// Exact copies (coordinates and weight): with the round drawn from a hash of
+// the coordinates (point_hash), copies of one point fall in one round and one
+// curve cell, so they come one after the other in the order, by increasing
+// index. Of such a group the copy of largest index is lowest when lifted
+// (reference/rt2/rt2.hpp), so inside the hull it is the only one that can be
+// a vertex; each other copy inserted before it would be inserted and removed
+// again when the next comes (in a parallel round even in the other order:
+// duplicates2 at 10^6, 2D, had 569526 such removals). So the triangulation
+// kernels (rt2, rt3, rtd cavity) let each copy followed by a copy of larger
+// index (waits_for_next) wait until the rest is in; it then goes through the
+// normal insertion: inside the hull it is found redundant when located, on
+// the hull's boundary (where the perturbation of the coordinates can make
+// every copy a hull vertex) it is inserted like any point.
 #pragma once
 
 #include <algorithm>
@@ -103,6 +109,14 @@ inline std::uint64_t point_hash(const double* x, int d) {
     h = splitmix64(h ^ b);
   }
   return h;
+}
+
+// The point at one position waits for the next (see the header): x, w, id its
+// d coordinates, weight and input index, y, wy, idy the next one's.
+inline bool waits_for_next(const double* x, double w, Index id, const double* y, double wy, Index idy, int d) {
+  for (int j = 0; j < d; ++j)
+    if (x[j] != y[j]) return false;
+  return w == wy && id < idy;
 }
 
 // The order: curve(point index) gives a point's curve index (< 2^30), seed(i)

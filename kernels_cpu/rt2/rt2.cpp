@@ -416,23 +416,14 @@ void Builder::regularize(std::uint32_t p) {
   }
 }
 
-// Exact copies (coordinates and weight) come one after the other in the
-// order, by increasing input index (brio.hpp). Of such a group the copy of
-// largest index is lowest when lifted (reference/rt2/rt2.hpp), so inside the
-// hull it is the only one that can be a vertex; inserted before it, each
-// other copy would be inserted and removed again when the next comes (in a
-// parallel batch, two copies are inserted together even in the other
-// order). So each copy followed by a copy of larger index waits (missing_
-// 3) until everything else is in, then goes through insert_one: a copy
-// inside the hull is found redundant when located, one on the hull's
-// boundary (where the perturbation of the coordinates can make every copy a
-// hull vertex) is inserted like any point. Not the initial three (missing_
-// 2).
+// Exact copies wait for the copy of larger index that follows them
+// (brio.hpp, waits_for_next): missing_ 3 until everything else is in, then
+// insert_one. Not the initial three (missing_ 2).
 void Builder::defer_copies() {
   const std::uint32_t n = V_;
   for (std::uint32_t k = 0; k + 1 < n; ++k)
-    if (missing_[k] == 0 && P_[k].xy[0] == P_[k + 1].xy[0] && P_[k].xy[1] == P_[k + 1].xy[1] &&
-        P_[k].w == P_[k + 1].w && P_[k].id < P_[k + 1].id)
+    if (missing_[k] == 0 &&
+        brio::waits_for_next(P_[k].xy, P_[k].w, P_[k].id, P_[k + 1].xy, P_[k + 1].w, P_[k + 1].id, 2))
       missing_[k] = 3;
 }
 

@@ -696,21 +696,14 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
   start();
   const std::size_t n = V_;
   std::size_t k = 4;
-  // Exact copies (coordinates and weight) come one after the other, by
-  // increasing input index (brio.hpp). Of such a group the copy of largest
-  // index is lowest when lifted (reference/rt2/rt2.hpp gives the argument),
-  // so inside the hull it is the only one that can be a vertex; inserted
-  // before it, each other copy would be inserted and removed again (in a
-  // parallel round even in the other order). So each copy followed by a
-  // copy of larger index waits until every other point is in, then is
-  // inserted one by one: inside the hull it is found redundant when located;
-  // on the hull's boundary, where the perturbation of the coordinates can
-  // make every copy a vertex, it is inserted like any point.
+  // Exact copies wait for the copy of larger index that follows them
+  // (brio.hpp, waits_for_next) until every other point is in; then they are
+  // inserted in a parallel round of their own (sequential run: one by one).
   std::vector<std::uint8_t> wait(n, 0);
   par_for(n > 5 ? n - 5 : 0, kChunk, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t j = lo + 4; j < hi + 4; ++j) {
       const Rt3Point &a = P_[j], &b = P_[j + 1];
-      wait[j] = a.xyz[0] == b.xyz[0] && a.xyz[1] == b.xyz[1] && a.xyz[2] == b.xyz[2] && a.w == b.w && a.id < b.id;
+      wait[j] = brio::waits_for_next(a.xyz, a.w, a.id, b.xyz, b.w, b.id, 3);
     }
   });
   auto sequential_to = [&](std::size_t end) {

@@ -93,30 +93,20 @@ class Builder {
     insert_range(first, st);
   }
 
-  // Positions first.. in order. Exact copies (coordinates and weight) come
-  // one after the other, by increasing input index (brio.hpp); of such a
-  // group the copy of largest index is lowest when lifted
-  // (reference/rt2/rt2.hpp gives the argument), so inside the hull it is the
-  // only one that can be a vertex, and each other copy inserted before it
-  // would be inserted and removed again. So a copy followed by a copy of
-  // larger index waits until the rest are in: then it is found redundant
-  // when located (or, on the hull's boundary, inserted like any point). The
-  // answer does not depend on the order.
+  // Positions first.. in order, except that exact copies wait for the copy
+  // of larger index that follows them (brio.hpp, waits_for_next) until the
+  // rest are in. The answer does not depend on the order.
   void insert_range(std::size_t first, RtdCavityStats& st) {
     std::vector<std::uint32_t> waited;
     for (std::size_t k = first; k < n_; ++k) {
-      if (k + 1 < n_ && copy_of_next(k)) {
+      if (k + 1 < n_ && brio::waits_for_next(&xs_[k * D], ws_[k], static_cast<Index>(ids_[k]), &xs_[(k + 1) * D],
+                                             ws_[k + 1], static_cast<Index>(ids_[k + 1]), D)) {
         waited.push_back(static_cast<std::uint32_t>(k));
         continue;
       }
       insert(static_cast<std::uint32_t>(k), st);
     }
     for (std::uint32_t k : waited) insert(k, st);
-  }
-  bool copy_of_next(std::size_t k) const {
-    for (int j = 0; j < D; ++j)
-      if (xs_[k * D + static_cast<std::size_t>(j)] != xs_[(k + 1) * D + static_cast<std::size_t>(j)]) return false;
-    return ws_[k] == ws_[k + 1] && ids_[k] < ids_[k + 1];
   }
 
   // The real simplices in canonical form (canonical_d.hpp), sorted; the
