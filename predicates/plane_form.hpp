@@ -11,18 +11,30 @@
 // (D-1) x (D-1) matrix of the difference rows without column j.
 //
 // The bound. The N_j are computed once in ErrDouble (err_double.hpp: a
-// running bound e_j on |N_j* - N_j| with the rounded differences included;
-// det_by_minors, or Gaussian elimination for D - 1 > 7). For x: a_j =
-// fl(x_j - t0_j) = (x_j - t0_j)(1 + δ_j), |δ_j| <= u (a difference of doubles
-// that lands in the subnormal range is exact), s = fl(Σ N_j a_j), and
-//   |det Λ - s| <= (1 + 2u) [Σ e_j |a_j| + (u + γ_D) Σ |N_j| |a_j|] + D η
-// (the cofactors' errors; the differences' roundings, |x_j - t0_j - a_j| <=
-// u(1 + 2u) |a_j|; the dot product's, γ_D = D u / (1 - D u), with η = 2^-1073
-// per product that may underflow). With w_j = e_j + 2(u + γ_D)|N_j| the
-// bound is below Σ w_j |a_j| + D η, itself computed in floating point from
-// non-negative terms and multiplied by (1 + 2^-40) (ErrDouble's rule for the
-// bound's own roundings). |s| above it: det Λ has s's sign, which is then
-// orient_d's under SoS too (a non-zero determinant is never perturbed).
+// running bound e_j on |n_j - N_j|, n_j the computed value, with the rounded
+// differences included; every ErrDouble operation adds 4 eta, so e_j >= 4 eta,
+// eta = 2^-1074; det_by_minors, or Gaussian elimination for D - 1 > 7). For
+// x: d_j = x_j - t0_j exactly, a_j = fl(d_j), |d_j - a_j| <= u |a_j|
+// (round to nearest; a difference of doubles that lands in the subnormal
+// range is exact), s = fl(Σ n_j a_j). Then
+//   det Λ - Σ n_j a_j = Σ (N_j - n_j) d_j + Σ n_j (d_j - a_j),
+//   |det Λ - s| <= Σ e_j |d_j| + u Σ |n_j| |a_j| + γ_D Σ |n_j| |a_j| + D eta/2
+//               <= Σ [(1 + 2u) e_j + (u + γ_D) |n_j|] |a_j| + D eta/2
+// (|d_j| <= (1 + u)|a_j|; the dot product's error, left to right, γ_D = D u /
+// (1 - D u) times Σ |n_j a_j|, and at most eta/2 per product that
+// underflows). The weights are computed as w_j = fl((1 + 2u) e_j + (u + γ_D)
+// |n_j|) + eta: the product (u + γ_D)|n_j| may underflow, losing at most
+// eta/2, which the added eta covers after the multiplication by |a_j|; every
+// other rounding of the weights and of Σ w_j |a_j| is relative (sums of
+// non-negative terms, e_j >= 4 eta), and the products w_j |a_j| lose at most
+// eta/2 each where they underflow. So |det Λ - s| is below
+// Σ w_j |a_j| (1 + 2^-40) + D 2^-1072 (ErrDouble's rule for the bound's own
+// roundings: the factor covers far more than the 2D + 6 roundings along any
+// path; 4 eta per product for the rest). |s| above it: det Λ has s's sign,
+// which is then orient_d's under SoS too (a non-zero determinant is never
+// perturbed). (Before 2026-11-30 the weights were e_j + 2 (u + γ_D)|n_j|;
+// the sensitivity search of proptests/filter_sensitivity_test.cpp then met
+// wrong signs only below 1/4.4 of the bound.)
 // Otherwise — NaN or infinity anywhere, an overflowing sum included — sign()
 // answers 0 and the
 // caller asks the exact predicate. Tested against the exact predicate on
@@ -67,7 +79,7 @@ struct PlaneForm {
         minor = det_gauss_rt(m, D - 1);
       }
       n[j] = j % 2 == 0 ? -minor.v : minor.v;
-      w[j] = minor.e + 2.0 * (u + gamma) * std::fabs(minor.v);
+      w[j] = ((1.0 + 2.0 * u) * minor.e + (u + gamma) * std::fabs(minor.v)) + 0x1p-1074;
     }
   }
 

@@ -46,6 +46,12 @@
 //               k = 3..5: (e + |l|)(1 + 2^-40); agreement asserted.
 //               Soundness: stages (b'') (a running bound weakened 4x was
 //               caught there on an exactly degenerate 50-bit family).
+//   plane form  PlaneForm<D>::sign (plane_form.hpp), D = k - 1 = 2..7:
+//               orient_d of a fixed D-tuple (rows 0..D-1) and x (the last
+//               row) as a dot product, Σ w_j |a_j| (1 + 2^-40) + D 2^-1072,
+//               recomputed from the form's public n, w, base; agreement
+//               with sign() asserted. Soundness: predicates_stages_test
+//               "PlaneForm" (D = 2..9, random, near- and exactly degenerate).
 // Not covered here (no targeted set yet): the double-double stage for
 // k = 6..8, mixed_semi_static_sign (5) (the kernel point's per-call filter
 // of predicates.cpp), the adaptive stages' bounds (xp::orient_adaptive,
@@ -97,6 +103,7 @@
 #include "predicates/err_dd.hpp"
 #include "predicates/exact_expansion.hpp"
 #include "predicates/lambda_filter.hpp"
+#include "predicates/plane_form.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
 #include "predicates/staged.hpp"
@@ -158,7 +165,7 @@ Input empty(int k, bool lifted) {
   return in;
 }
 
-enum class Bound { static_bound, semi_static, permanent, dynamic, dd_apriori, dd_running };
+enum class Bound { static_bound, semi_static, permanent, dynamic, dd_apriori, dd_running, plane_form };
 const char* name_of(Bound b) {
   switch (b) {
     case Bound::static_bound: return "static";
@@ -166,6 +173,7 @@ const char* name_of(Bound b) {
     case Bound::permanent: return "permanent";
     case Bound::dd_apriori: return "dd a-priori";
     case Bound::dd_running: return "dd running";
+    case Bound::plane_form: return "plane form";
     default: return "dynamic";
   }
 }
@@ -190,6 +198,28 @@ Eval evaluate(const Input& in, Bound b) {
   in.rows(p);
   const double* w = in.wp();
   Eval e;
+  if (b == Bound::plane_form) {
+    // PlaneForm<D> of rows 0..D-1 (D = K - 1) and x = the last row: s =
+    // Σ n_j a_j, a_j = fl(x_j - t0_j), against Σ w_j |a_j| (1 + 2^-40) + D
+    // 2^-1072, as PlaneForm::sign computes them (plane_form.hpp); "weakened"
+    // divides Σ w_j |a_j| (1 + 2^-40)
+    if constexpr (K >= 3) {
+      constexpr int D = K - 1;
+      const pred::PlaneForm<D> f(p);
+      const double* x = p[K - 1];
+      double sum = 0.0, wsum = 0.0;
+      for (int j = 0; j < D; ++j) {
+        const double a = x[j] - f.base[j];
+        sum += f.n[j] * a;
+        wsum += f.w[j] * std::fabs(a);
+      }
+      e.a = sum;
+      e.bound = std::fabs(sum) <= 0x1.fffffffffffffp+1023 ? wsum * (1.0 + 0x1p-40) : HUGE_VAL;
+      e.fixed = D * 0x1p-1072;
+      e.library = f.sign(x);
+    }
+    return e;
+  }
   if (b == Bound::dynamic) {
     // lambda_sign_filter's entries, then det_by_minors (lambda_filter.hpp)
     ErrDouble t[N * N];
@@ -671,7 +701,12 @@ KernelSearch kernel_search(int restarts, int steps, const Input& orient3d_edge) 
 // there): caught at 8x (running, k = 3, 4) and 32-64x (a-priori, k = 4);
 // at k = 5 only at 2^16-2^23; for orient2d's a-priori bound and both bounds
 // of power1d (k = 3 lifted) the set holds no wrong sign of h at all (0
-// below: not caught by this set).
+// below: not caught by this set). PlaneForm: ratios 0.39, 0.30, 0.21, 0.17,
+// 0.22, 0.032 for D = 2..7 (4x, 4x, 8x, 8x, 8x, 32x) after its weights were
+// tightened to (1 + 2u) e_j + (u + γ_D)|n_j| + eta (0.23-0.17 with the former
+// e_j + 2(u + γ_D)|n_j|); for D >= 4 the cofactors' ErrDouble running bounds
+// e_j dominate the weights, and those are caught at 4-16x by the dynamic
+// rows above (k = D), which bounds how close this search comes.
 struct Expect {
   Bound b;
   int k;
@@ -706,6 +741,9 @@ const Expect kCaught[] = {
     {Bound::dd_running, 3, false, 8},            {Bound::dd_running, 3, true, 0},
     {Bound::dd_running, 4, false, 8},            {Bound::dd_running, 4, true, 8},
     {Bound::dd_running, 5, false, 65536},        {Bound::dd_running, 5, true, 0x1p23},
+    {Bound::plane_form, 3, false, 4},            {Bound::plane_form, 4, false, 4},
+    {Bound::plane_form, 5, false, 8},            {Bound::plane_form, 6, false, 8},
+    {Bound::plane_form, 7, false, 8},            {Bound::plane_form, 8, false, 32},
 };
 constexpr double kKernelCaught = 16;
 
@@ -732,6 +770,7 @@ void check_bound(Bound b) {
     for (bool lifted : {false, true}) {
       if (b == Bound::permanent && (lifted || k > 4)) continue;
       if ((b == Bound::dd_apriori || b == Bound::dd_running) && k > 5) continue;
+      if (b == Bound::plane_form && lifted) continue;
       const Search s = search(k, lifted, b, kRestarts, kSteps);
       const double F = caught_factor(b, k, lifted);
       std::printf("sensitivity %-11s k=%d %-7s evaluated %6ld decided %6ld (GMP %6ld): max |det|/bound among "
@@ -778,6 +817,10 @@ TEST_CASE("filters: deterministic sensitivity of the ErrDouble running bound", "
 TEST_CASE("filters: deterministic sensitivity of the double-double filter's a-priori bound",
           "[predicates][sensitivity][long]") {
   check_bound(Bound::dd_apriori);
+}
+TEST_CASE("filters: deterministic sensitivity of PlaneForm's per-tuple bound (orient_d as a linear form)",
+          "[predicates][sensitivity][long]") {
+  check_bound(Bound::plane_form);
 }
 TEST_CASE("filters: deterministic sensitivity of the double-double stage's running bound",
           "[predicates][sensitivity][long]") {
