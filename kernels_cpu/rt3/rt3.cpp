@@ -658,8 +658,17 @@ Outcome Builder::insert(Worker& w, std::uint32_t p) {
   set_mark(root, in);
   for (std::size_t q = 0; q < w.cavity.size(); ++q) {
     const std::uint32_t t = w.cavity[q];
+    // t's four neighbours: their marks and corners requested together, so
+    // that the misses overlap instead of coming one after the other (perf:
+    // the loads of a neighbour's mark and corner were the loop's hottest)
+    std::uint32_t links[4];
     for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t l = tn_[4 * static_cast<std::size_t>(t) + i];
+      links[i] = tn_[4 * static_cast<std::size_t>(t) + i];
+      __builtin_prefetch(&mark_[links[i] >> 2]);
+      __builtin_prefetch(&tv_[links[i] & ~3u]);
+    }
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t l = links[i];
       const std::uint32_t u = l >> 2;
       const std::uint32_t mu = mark(u);
       if (mu == in) continue;
@@ -668,6 +677,7 @@ Outcome Builder::insert(Worker& w, std::uint32_t p) {
         if (visible(u, p)) {
           set_mark(u, in);
           w.cavity.push_back(u);
+          __builtin_prefetch(&tn_[4 * static_cast<std::size_t>(u)]);
           continue;
         }
         set_mark(u, out);
