@@ -117,6 +117,7 @@ FF_HD inline int clz64(std::uint64_t x) {
   return __builtin_clzll(x);
 #endif
 }
+FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
 FF_HD inline int popcount32(unsigned x) {
 #if defined(__CUDA_ARCH__)
   return __popc(x);
@@ -504,8 +505,11 @@ FF_HD inline ErrDouble approx_entry(const Entry<A, C>& e) {
     for (int i = 0; i < e.n; ++i) {
       const double m = e.c[i].m;
       const int ex = e.c[i].e;
-      if (ex > 1000 || ex < -900) return ErrDouble(0.0, HUGE_VAL);  // leave it to the exact stage
-      acc = (i == 0) ? ErrDouble(std::ldexp(m, ex)) : acc + ErrDouble(std::ldexp(m, ex));
+      if (ex > 1000) return ErrDouble(0.0, HUGE_VAL);  // leave it to the exact stage
+      // below the normal range ldexp rounds (to a subnormal or 0): off by at
+      // most half the smallest subnormal
+      const ErrDouble c = ex < -900 ? ErrDouble(std::ldexp(m, ex), 0x1p-1074) : ErrDouble(std::ldexp(m, ex));
+      acc = (i == 0) ? c : acc + c;
     }
     return acc;
   } else {
@@ -538,6 +542,55 @@ FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsig
   }
 }
 
+// The sign of a minor whose kept entries are all small integers (one
+// component each: the rows of unmoved lattice points, whose minors in an SoS
+// search are mostly exactly 0 — a perturbed grid's zero minors, which the
+// ErrDouble filter cannot decide, went to the expansion minor), in plain
+// doubles, exactly: with b_j the bit length of column j's largest |entry|,
+// every value det_plain forms is a partial sum of at most r! products of one
+// entry per column, an integer below r! Π 2^(b_j) <= 2^53 when lf(r) + Σ b_j
+// <= 53 (doubles_exact_minors' argument): no rounding, and a computed 0 is a
+// true 0. 2 when an entry is not such an integer or the bound fails.
+template <class A, int K, int C>
+FF_HD inline int small_integer_minor(const LambdaX<A, K, C>& L, const Kept<K>& kept) {
+  constexpr int kLogFact[9] = {0, 0, 1, 3, 5, 7, 10, 13, 16};
+  const int r = kept.r;
+  double t[K * K];
+  int bits = kLogFact[r];
+  for (int j = 0; j < r; ++j) {
+    double big = 0.0;
+    for (int i = 0; i < r; ++i) {
+      const auto& e = L.a[kept.ri[i]][kept.ci[j]];
+      double v = 0.0;
+      if (e.n != 1) return 2;
+      if constexpr (A::kExtended) {
+        if (e.c[0].e > 30) return 2;  // |v| >= 2^30
+        v = e.c[0].e < -60 ? 0.5 : std::ldexp(e.c[0].m, e.c[0].e);  // (tiny: not an integer unless 0)
+        if (e.c[0].m == 0.0) v = 0.0;
+      } else {
+        v = e.c[0];
+      }
+      if (!(std::fabs(v) < 0x1p30) || v != std::floor(v)) return 2;
+      t[i * r + j] = v;
+      big = std::fmax(big, std::fabs(v));
+    }
+    bits += bit_length(static_cast<unsigned long long>(big));
+  }
+  if (bits > 53) return 2;
+  double m = 0.0;
+  switch (r) {
+    case 1: m = t[0]; break;
+    case 2: m = filter_detail::det_plain<2>(t); break;
+    case 3: m = filter_detail::det_plain<3>(t); break;
+    case 4: m = filter_detail::det_plain<4>(t); break;
+    case 5: m = filter_detail::det_plain<5>(t); break;
+    case 6: m = filter_detail::det_plain<6>(t); break;
+    case 7: m = filter_detail::det_plain<7>(t); break;
+    default: return 2;
+  }
+  return (m > 0.0) - (m < 0.0);
+}
+
 // Cheap decisions on a minor before the exact evaluation: 0 when two kept
 // rows are equal or a kept column is zero (duplicated points, lattices), the
 // ErrDouble filter's sign when it is certain; 2 when undecided.
@@ -549,26 +602,35 @@ FF_HD inline int minor_quick(const LambdaX<A, K, C>& L, const ErrDouble* ap, uns
   const int* ci = kept.ci;
   const int r = kept.r;
   if (r == 0) return 1;
+  auto same = [](const auto& x, const auto& y) {
+    bool eq = x.n == y.n;
+    for (int t = 0; t < x.n && eq; ++t)
+      eq = !A::abs_less(x.c[t], y.c[t]) && !A::abs_less(y.c[t], x.c[t]) && A::sign(x.c[t]) == A::sign(y.c[t]);
+    return eq;
+  };
+  // with the last column kept and constant on the kept rows (the 1-column of
+  // points; a mixed row's is its count, build_lambda_mixed), a kept column
+  // constant on them (points on a plane x_j = c) is a multiple of it: the
+  // minor is 0, as in sos_lazy
+  bool one = (cols >> (K - 1)) & 1u;
+  for (int i = 1; i < r && one; ++i) one = same(L.a[ri[i]][K - 1], L.a[ri[0]][K - 1]);
   for (int j = 0; j < r; ++j) {
-    bool zero = true;
-    for (int i = 0; i < r && zero; ++i) zero = L.a[ri[i]][ci[j]].zero();
-    if (zero) return 0;
+    bool zero = true, constant = one && ci[j] != K - 1;
+    for (int i = 0; i < r && (zero || constant); ++i) {
+      zero = zero && L.a[ri[i]][ci[j]].zero();
+      constant = constant && same(L.a[ri[i]][ci[j]], L.a[ri[0]][ci[j]]);
+    }
+    if (zero || constant) return 0;
   }
   for (int a = 1; a < r; ++a)
     for (int b = 0; b < a; ++b) {
-      bool same = true;
-      for (int j = 0; j < r && same; ++j) {
-        const auto& x = L.a[ri[a]][ci[j]];
-        const auto& y = L.a[ri[b]][ci[j]];
-        same = x.n == y.n;
-        for (int t = 0; t < x.n && same; ++t) same = !A::abs_less(x.c[t], y.c[t]) &&
-                                                    !A::abs_less(y.c[t], x.c[t]) &&
-                                                    A::sign(x.c[t]) == A::sign(y.c[t]);
-      }
-      if (same) return 0;
+      bool equal = true;
+      for (int j = 0; j < r && equal; ++j) equal = same(L.a[ri[a]][ci[j]], L.a[ri[b]][ci[j]]);
+      if (equal) return 0;
     }
   const int s = sign_if_certain(errdouble_minor<K>(ap, rows, cols));
-  return s != 0 ? s : 2;
+  if (s != 0) return s;
+  return small_integer_minor<A, K>(L, kept);
 }
 
 // The search over matchings in the dominance order for a Λ of K rows; with
@@ -1312,7 +1374,6 @@ struct IntLambda {
   bool wide = false;  // __int128 needed (lf(K) + B > 63)
 };
 
-FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
 
 // int_lambda's first half: the coordinates' exponent span (gc, hc). Unlifted,
 // it also knows the bound lf(K) + 1 + B exactly (see below), hence whether

@@ -463,27 +463,39 @@ TEST_CASE("oracle: mixed_sign with an exact centroid row equals the oracle") {
   Det g(6);
   int deep = 0;
   for (int dim = 1; dim <= 3; ++dim)
-    for (int rep = 0; rep < std::max(30, static_cast<int>(300 * release_scale())); ++rep) {
+    for (int rep = 0; rep < std::max(150, static_cast<int>(300 * release_scale())); ++rep) {
       const int k = dim + 1;
       const int count = 1 << g.uni(0, 3);
       const int e = std::vector<int>{0, -60, 60, -30}[static_cast<size_t>(g.uni(0, 3))];
-      // everything on an integer flat x_dim = a·x + b (degenerate), or a grid
+      // everything on an integer flat x_dim = a·x + b (degenerate), or a grid;
+      // or (axis) every point row on the plane x_jc = c and the sources'
+      // x_jc summing to c, so that column jc of Λ is constant on the rows
+      // while the centroid row's last entry is its count: the column is then
+      // not a multiple of the last one. minor_quick's constant-column rule
+      // without its test that the last column is constant too answered 0
+      // here (caught by this family, with point rows copied so that det Λ =
+      // 0 and the SoS minors decide; it had hung ref::TwistFlip in
+      // oracle_output_test)
       const bool flat = g.uni(0, 1);
+      const bool axis = !flat && g.uni(0, 1) == 0;
+      const int jc = g.uni(0, dim - 1);
+      const double cval = g.ints(-3, 3);
       std::vector<double> a(3);
       for (double& v : a) v = g.ints(-2, 2);
-      auto point = [&](double* x) {
+      auto point = [&](double* x, int source) {
         for (int j = 0; j < dim; ++j) x[j] = g.ints(-3, 3);
         if (flat) {
           double v = a[2];
           for (int j = 0; j + 1 < dim; ++j) v += a[static_cast<size_t>(j)] * x[j];
           x[dim - 1] = v;
         }
+        if (axis) x[jc] = source <= 0 ? cval : 0.0;  // source 0 carries c, the others 0
         for (int j = 0; j < dim; ++j) x[j] = std::ldexp(x[j], e);
       };
       std::vector<double> src(static_cast<size_t>(8 * 3)), xs(static_cast<size_t>(4 * 3));
       std::vector<const double*> sp;
       for (int i = 0; i < count; ++i) {
-        point(&src[static_cast<size_t>(i * dim)]);
+        point(&src[static_cast<size_t>(i * dim)], i);
         sp.push_back(&src[static_cast<size_t>(i * dim)]);
       }
       const pred::RationalPoint cen = pred::RationalPoint::centroid(sp.data(), count, dim);
@@ -504,11 +516,14 @@ TEST_CASE("oracle: mixed_sign with an exact centroid row equals the oracle") {
           orows.push_back(r);
         } else {
           double* x = &xs[static_cast<size_t>(i * 3)];
-          if (g.uni(0, 3) == 0) {  // a copy of a source point
+          const int prev = i - 1 == at ? i - 2 : i - 1;  // the point row before this one
+          if (axis && prev >= 0 && g.uni(0, 1) == 0) {  // a copy of it (det Λ = 0: the SoS minors decide)
+            for (int j = 0; j < dim; ++j) x[j] = xs[static_cast<size_t>(prev * 3 + j)];
+          } else if (g.uni(0, 3) == 0) {  // a copy of a source point
             const int t = g.uni(0, count - 1);
             for (int j = 0; j < dim; ++j) x[j] = src[static_cast<size_t>(t * dim + j)];
           } else {
-            point(x);
+            point(x, -1);
           }
           rows[static_cast<size_t>(i)] = pred::MixedRow{id, x, nullptr};
           orows.push_back(so::coords_row(x, dim));
