@@ -542,53 +542,175 @@ FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsig
   }
 }
 
-// The sign of a minor whose kept entries are all small integers (one
-// component each: the rows of unmoved lattice points, whose minors in an SoS
-// search are mostly exactly 0 — a perturbed grid's zero minors, which the
-// ErrDouble filter cannot decide, went to the expansion minor), in plain
-// doubles, exactly: with b_j the bit length of column j's largest |entry|,
-// every value det_plain forms is a partial sum of at most r! products of one
-// entry per column, an integer below r! Π 2^(b_j) <= 2^53 when lf(r) + Σ b_j
-// <= 53 (doubles_exact_minors' argument): no rounding, and a computed 0 is a
-// true 0. 2 when an entry is not such an integer or the bound fails.
+// det_plain<N>(t) for the run-time order r, N <= r <= min(K, 7): only orders
+// that fit t (K x K entries) are instantiated.
+template <int N, int K>
+FF_HD inline double det_plain_of_order(const double* t, int r) {
+  if constexpr (N > K || N > 7) {
+    return 0.0;  // unreachable: r <= K and r <= 7
+  } else {
+    if (r == N) return filter_detail::det_plain<N>(t);
+    return det_plain_of_order<N + 1, K>(t, r);
+  }
+}
+
+// The sign of a minor of near-lattice entries, without the expansion minor:
+// the SoS searches on a perturbed grid (lattice points, some moved by a few
+// ulps, zeros moved to subnormals) meet mostly minors that are exactly 0,
+// which the ErrDouble filter cannot decide. Three steps, each exact:
+//   * a kept column whose kept entries are all 0 but one, a_ab at positions
+//     (a, b) of the kept rows and columns: minor = (-1)^(a+b) a_ab times the
+//     minor without row a and column b (Laplace along that column); the sign
+//     of a_ab is its expansion's leading non-zero component's;
+//   * the rest split entry by entry into an integer part below 2^30 and a
+//     tail below 2^-40 (comments below), the integer parts' determinant d in
+//     plain doubles, exactly: with b_j the bit length of column j's largest
+//     |integer part|, every value det_plain forms is a partial sum of at most
+//     r! products of one entry per column, an integer below r! Π 2^(b_j) <=
+//     2^53 when lf(r) + Σ b_j <= 53 (doubles_exact_minors' argument): no
+//     rounding, and a computed 0 is a true 0;
+//   * with the tails all in one row or all in one column, the minor is d +
+//     Σ tail_k C_k (linear in that row or column; C_k integer cofactors,
+//     exact the same way): d's sign when d != 0 and the tails cannot reach
+//     1, else the largest term's sign where it dominates the others.
+// 2 when a step does not apply (the expansion minor decides). Tested against
+// the expansion minor on near-lattice Λ (predicates_int_lattice_test,
+// "small_integer_minor").
 template <class A, int K, int C>
 FF_HD inline int small_integer_minor(const LambdaX<A, K, C>& L, const Kept<K>& kept) {
   constexpr int kLogFact[9] = {0, 0, 1, 3, 5, 7, 10, 13, 16};
-  const int r = kept.r;
-  double t[K * K];
+  int r = kept.r;
+  int ri[K], ci[K];
+  for (int i = 0; i < r; ++i) ri[i] = kept.ri[i], ci[i] = kept.ci[i];
+  int sign = 1;
+  for (bool again = true; again && r > 0;) {
+    again = false;
+    for (int b = 0; b < r && !again; ++b) {
+      int a = -1, nonzero = 0;
+      for (int i = 0; i < r && nonzero < 2; ++i)
+        if (!L.a[ri[i]][ci[b]].zero()) ++nonzero, a = i;
+      if (nonzero == 0) return 0;
+      if (nonzero != 1) continue;
+      const auto& e = L.a[ri[a]][ci[b]];
+      int es = 0;
+      for (int t = e.n - 1; t >= 0 && es == 0; --t) es = A::sign(e.c[t]);
+      sign *= ((a + b) & 1) ? -es : es;
+      for (int i = a; i + 1 < r; ++i) ri[i] = ri[i + 1];
+      for (int j = b; j + 1 < r; ++j) ci[j] = ci[j + 1];
+      --r;
+      again = true;
+    }
+  }
+  if (r == 0) return sign;
+  // The rest: each entry an integer part I (its largest component rounded
+  // to an integer below 2^30) plus a tail (the rounding's remainder, exact,
+  // and the lower components) below 2^-40, the tails all in one row or all
+  // in one column. A tail's sign is its leading part's (below), and |tail|
+  // lies in [2^(texp-2), 2^(texp+1)), 2^(texp-1) <= |lead| < 2^texp.
+  double t[K * K] = {};
+  int tsign[K * K] = {}, texp[K * K] = {};
+  int trow = -1, tcol = -1, tails = 0, max_texp = -100000;
+  bool one_row = true, one_col = true;
   int bits = kLogFact[r];
   for (int j = 0; j < r; ++j) {
     double big = 0.0;
     for (int i = 0; i < r; ++i) {
-      const auto& e = L.a[kept.ri[i]][kept.ci[j]];
-      double v = 0.0;
-      if (e.n != 1) return 2;
+      const auto& e = L.a[ri[i]][ci[j]];
+      double top = 0.0;  // the largest component as a double (0 when below 2^-60)
       if constexpr (A::kExtended) {
-        if (e.c[0].e > 30) return 2;  // |v| >= 2^30
-        v = e.c[0].e < -60 ? 0.5 : std::ldexp(e.c[0].m, e.c[0].e);  // (tiny: not an integer unless 0)
-        if (e.c[0].m == 0.0) v = 0.0;
+        const XD& h = e.c[e.n - 1];
+        if (h.e > 30) return 2;  // |v| >= 2^30
+        if (h.m != 0.0 && h.e >= -60) top = std::ldexp(h.m, h.e);
       } else {
-        v = e.c[0];
+        top = e.c[e.n - 1];
+        if (!(std::fabs(top) < 0x1p30)) return 2;
+        if (std::fabs(top) < 0x1p-60) top = 0.0;
       }
-      if (!(std::fabs(v) < 0x1p30) || v != std::floor(v)) return 2;
+      const double v = std::rint(top), rem = top - v;  // exact: |top| < 2^30
+      // the tail's parts, largest first: rem (when not 0), then the lower
+      // components (from the top one when it was below 2^-60); its sign is
+      // the first part's, te that part's exponent, and the next part must
+      // be below 2^(te-3): the parts after the first then sum to less than
+      // 2^(te-2) (each component is below the previous one's lowest bit)
+      int ts = 0, te = 0;
+      auto part = [&](int q, int& sg, int& ex) {
+        sg = A::sign(e.c[q]);
+        if constexpr (A::kExtended) ex = e.c[q].e;
+        else ex = sg != 0 ? std::ilogb(e.c[q]) + 1 : 0;
+      };
+      int q = top == 0.0 ? e.n - 1 : e.n - 2;
+      if (rem != 0.0) {
+        ts = (rem > 0.0) - (rem < 0.0);
+        te = std::ilogb(rem) + 1;
+      } else {
+        for (; q >= 0 && ts == 0; --q) part(q, ts, te);
+      }
+      for (int s2 = 0, e2 = 0; q >= 0 && ts != 0; --q) {
+        part(q, s2, e2);
+        if (s2 == 0) continue;
+        if (e2 > te - 3) return 2;
+        break;
+      }
+      if (ts != 0) {
+        if (te + 1 > -40) return 2;
+        const int k = i * r + j;
+        tsign[k] = ts;
+        texp[k] = te;
+        max_texp = te > max_texp ? te : max_texp;
+        ++tails;
+        one_row = one_row && (trow < 0 || trow == i);
+        one_col = one_col && (tcol < 0 || tcol == j);
+        trow = i, tcol = j;
+      }
       t[i * r + j] = v;
       big = std::fmax(big, std::fabs(v));
     }
     bits += bit_length(static_cast<unsigned long long>(big));
   }
-  if (bits > 53) return 2;
-  double m = 0.0;
-  switch (r) {
-    case 1: m = t[0]; break;
-    case 2: m = filter_detail::det_plain<2>(t); break;
-    case 3: m = filter_detail::det_plain<3>(t); break;
-    case 4: m = filter_detail::det_plain<4>(t); break;
-    case 5: m = filter_detail::det_plain<5>(t); break;
-    case 6: m = filter_detail::det_plain<6>(t); break;
-    case 7: m = filter_detail::det_plain<7>(t); break;
-    default: return 2;
+  if (bits > 53 || r > 7) return 2;
+  auto int_det = [](const double* m, int n) -> double {
+    if (n == 0) return 1.0;
+    if (n == 1) return m[0];
+    return det_plain_of_order<2, K>(m, n);
+  };
+  const double d = int_det(t, r);  // det of the integer parts, exactly
+  if (tails == 0) return sign * ((d > 0.0) - (d < 0.0));
+  if (!one_row && !one_col) return 2;
+  // The minor is linear in the row (or column) holding the tails: minor = d
+  // + Σ_k tail_k C_k, C_k the integer parts' cofactor at tail k's entry, an
+  // integer with |C_k| < 2^bits (the bound above). At most 7 terms, each
+  // below 2^(max_texp + 1 + bits): the sum is below 1 <= |d| when d != 0
+  // and max_texp + bits + 4 <= 0. When d = 0 the largest term's sign is the
+  // minor's where it dominates: |tail_top C_top| >= 2^(texp_top - 2)
+  // against the others' < 7 2^(texp_2nd + 1 + bits), less when texp_top -
+  // texp_2nd > bits + 6.
+  if (d != 0.0) {
+    if (max_texp + bits + 4 > 0) return 2;
+    return sign * ((d > 0.0) - (d < 0.0));
   }
-  return (m > 0.0) - (m < 0.0);
+  int best = -1, best_exp = 0, second_exp = -100000, best_sign = 0;
+  for (int k = 0; k < r * r; ++k) {
+    if (tsign[k] == 0) continue;
+    const int i = k / r, j = k % r;
+    double m[K * K] = {};
+    int q = 0;
+    for (int a = 0; a < r; ++a)
+      for (int b = 0; b < r; ++b)
+        if (a != i && b != j) m[q++] = t[a * r + b];
+    const double c = int_det(m, r - 1);
+    if (c == 0.0) continue;
+    const int sc = (c > 0.0) - (c < 0.0);
+    if (best < 0 || texp[k] > best_exp) {
+      second_exp = best < 0 ? second_exp : best_exp;
+      best = k, best_exp = texp[k];
+      best_sign = (((i + j) & 1) ? -sc : sc) * tsign[k];
+    } else if (texp[k] > second_exp) {
+      second_exp = texp[k];
+    }
+  }
+  if (best < 0) return 0;
+  if (second_exp > -100000 && best_exp - second_exp <= bits + 6) return 2;
+  return sign * best_sign;
 }
 
 // Cheap decisions on a minor before the exact evaluation: 0 when two kept
@@ -805,18 +927,6 @@ FF_HD inline bool doubles_exact_minors(const double (&a)[K][K], bool lifted, Ran
   return r * gm >= -1074 && kLogFact[r] + r * mp - r * gm <= 53;
 }
 
-// det_plain<N>(t) for the run-time order r, N <= r <= min(K, 7): only orders
-// that fit t (K x K entries) are instantiated.
-template <int N, int K>
-FF_HD inline double det_plain_of_order(const double* t, int r) {
-  if constexpr (N > K || N > 7) {
-    return 0.0;  // unreachable: r <= K and r <= 7
-  } else {
-    if (r == N) return filter_detail::det_plain<N>(t);
-    return det_plain_of_order<N + 1, K>(t, r);
-  }
-}
-
 // Plain-double minor of a on the kept rows / columns (static_filter.hpp's
 // det_plain: Laplace over column subsets, sums of products as above).
 template <int K>
@@ -975,7 +1085,8 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
       build_lambda<Dbl, K>(p, w, L);
       built = true;
     }
-    return MinorOf<Dbl, K>::sign(L, kr, kc);
+    const int q = small_integer_minor<Dbl, K>(L, kept);
+    return q != 2 ? q : MinorOf<Dbl, K>::sign(L, kr, kc);
   });
 }
 

@@ -408,3 +408,94 @@ TEST_CASE("int lattice: acceptance", "[predicates][stages][int_lattice]") {
   const double wsub[5] = {0, 0, 0, 0, 4.9e-324};
   CHECK(!xp::int_lambda<5>(p, wsub, L));
 }
+
+// xp::small_integer_minor (the SoS minors' near-lattice stage of minor_quick
+// and sos_lazy) against the exact expansion minor (MinorLaplace<XDbl>), on
+// the Λ of near-lattice points: small integer coordinates (and integer
+// weights), each value moved with some probability by 1..4 ulps, a zero to
+// ±1..4 subnormal steps, or by ±2^-e for e in {2, 4, 10, 20, 30, 45, 55}
+// (tails at and beyond the stage's 2^-40 limit, which it must refuse or
+// decide correctly); equal rows and columns from copied points. Every answer
+// other than 2 must be the exact sign. Not vacuous: many minors decided, zero
+// and non-zero among them, and among those some whose entries were not all
+// integers (the tail rule). Planted errors caught here: the tail limit lifted
+// to 1 with the d != 0 bound test removed; the dominant tail's sign flipped.
+// Not caught (this family has no such entries): the ordering margin of a
+// tail's parts (te - 3) widened to te + 3.
+template <class A, int K>
+void near_lattice_minors(std::mt19937_64& g, long (&tally)[4]) {
+  const bool lifted = (g() & 1) != 0 && K >= 4;
+  const int nc = lifted ? K - 2 : K - 1;
+  std::vector<double> x(static_cast<size_t>(K * nc)), w(static_cast<size_t>(K), 0.0);
+  auto uni = [&](int lo, int hi) { return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  bool moved_any = false;
+  for (int i = 0; i < K; ++i) {
+    const int copy = i > 0 && uni(0, 4) == 0 ? uni(0, i - 1) : -1;
+    for (int j = 0; j < nc; ++j) {
+      double& v = x[static_cast<size_t>(i * nc + j)];
+      v = copy >= 0 ? x[static_cast<size_t>(copy * nc + j)] : uni(-2, 2);
+      if (copy >= 0 || uni(0, 3) != 0) continue;
+      moved_any = true;
+      const int kind = uni(0, 2);
+      if (kind == 0) {
+        for (int u = uni(1, 4); u > 0; --u) v = std::nextafter(v, (g() & 1) ? 1e9 : -1e9);
+      } else if (kind == 1) {
+        v = (v == 0.0 ? 0.0 : v) + ((g() & 1) ? 1 : -1) * uni(1, 4) * 0x1p-1074;
+      } else {
+        const int e = std::vector<int>{2, 4, 10, 20, 30, 45, 55}[static_cast<size_t>(uni(0, 6))];
+        v += ((g() & 1) ? 1 : -1) * std::ldexp(1.0, -e);
+      }
+    }
+    if (lifted) w[static_cast<size_t>(i)] = copy >= 0 ? w[static_cast<size_t>(copy)] : uni(-3, 3);
+  }
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = x.data() + i * nc;
+  // the Dbl Λ inside its window only (ulp moves of a zero are subnormals),
+  // as lambda_exact and sos_lazy use it
+  if (!A::kExtended && !xp::call_range<K>(p, lifted ? w.data() : nullptr).fits(lifted ? K : K - 1)) return;
+  xp::RawLambda<A, K> L;
+  xp::build_lambda<A, K>(p, lifted ? w.data() : nullptr, L);
+  xp::RawLambda<xp::XDbl, K> X;
+  xp::build_lambda<xp::XDbl, K>(p, lifted ? w.data() : nullptr, X);
+  constexpr unsigned kAll = (1u << K) - 1u;
+  for (int rep = 0; rep < 8; ++rep) {
+    const int r = uni(1, K);
+    unsigned rows = 0, cols = 0;
+    while (__builtin_popcount(rows) < r) rows |= 1u << uni(0, K - 1);
+    while (__builtin_popcount(cols) < r) cols |= 1u << uni(0, K - 1);
+    if (rep == 0) rows = cols = kAll;
+    const int q = xp::small_integer_minor<A, K>(L, xp::Kept<K>(rows, cols));
+    if (q == 2) continue;
+    const int exact = xp::MinorLaplace<xp::XDbl, K>::sign(X, rows, cols);
+    INFO("K " << K << (lifted ? " lifted" : " plain") << " rows " << rows << " cols " << cols);
+    REQUIRE(q == exact);
+    ++tally[0];
+    tally[1] += q == 0;
+    tally[2] += moved_any;
+    tally[3] += moved_any && q != 0;
+  }
+}
+
+TEST_CASE("small_integer_minor: near-lattice minors equal the exact expansion minor",
+          "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x5a11);
+  long dbl[4] = {}, xdbl[4] = {};
+  for (int n = 0; n < 1500; ++n) {
+    near_lattice_minors<xp::Dbl, 4>(g, dbl);
+    near_lattice_minors<xp::Dbl, 5>(g, dbl);
+    near_lattice_minors<xp::Dbl, 6>(g, dbl);
+    near_lattice_minors<xp::Dbl, 7>(g, dbl);
+    near_lattice_minors<xp::XDbl, 4>(g, xdbl);
+    near_lattice_minors<xp::XDbl, 5>(g, xdbl);
+    near_lattice_minors<xp::XDbl, 6>(g, xdbl);
+    near_lattice_minors<xp::XDbl, 7>(g, xdbl);
+  }
+  std::printf("small_integer_minor: Dbl decided %ld (zero %ld, moved %ld, moved non-zero %ld); "
+              "XDbl decided %ld (zero %ld, moved %ld, moved non-zero %ld)\n",
+              dbl[0], dbl[1], dbl[2], dbl[3], xdbl[0], xdbl[1], xdbl[2], xdbl[3]);
+  for (const long* t : {dbl, xdbl}) {
+    CHECK(t[0] > 5000);
+    CHECK(t[1] > 500);
+    CHECK(t[3] > 500);
+  }
+}
