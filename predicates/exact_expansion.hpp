@@ -118,6 +118,11 @@ FF_HD inline int clz64(std::uint64_t x) {
 #endif
 }
 FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
+// ceil(log2 k!) for k <= 8: the factor of the minor bounds below (a
+// function: a namespace-scope array is not usable in device code).
+FF_HD constexpr int log2_factorial_ceil(int k) {
+  return k <= 1 ? 0 : k == 2 ? 1 : k == 3 ? 3 : k == 4 ? 5 : k == 5 ? 7 : k == 6 ? 10 : k == 7 ? 13 : 16;
+}
 FF_HD inline int popcount32(unsigned x) {
 #if defined(__CUDA_ARCH__)
   return __popc(x);
@@ -578,7 +583,6 @@ FF_HD inline double det_plain_of_order(const double* t, int r) {
 // "small_integer_minor").
 template <class A, int K, int C>
 FF_HD inline int small_integer_minor(const LambdaX<A, K, C>& L, const Kept<K>& kept) {
-  constexpr int kLogFact[9] = {0, 0, 1, 3, 5, 7, 10, 13, 16};
   int r = kept.r;
   int ri[K], ci[K];
   for (int i = 0; i < r; ++i) ri[i] = kept.ri[i], ci[i] = kept.ci[i];
@@ -611,7 +615,7 @@ FF_HD inline int small_integer_minor(const LambdaX<A, K, C>& L, const Kept<K>& k
   int tsign[K * K] = {}, texp[K * K] = {};
   int trow = -1, tcol = -1, tails = 0, max_texp = -100000;
   bool one_row = true, one_col = true;
-  int bits = kLogFact[r];
+  int bits = log2_factorial_ceil(r);
   for (int j = 0; j < r; ++j) {
     double big = 0.0;
     for (int i = 0; i < r; ++i) {
@@ -918,13 +922,12 @@ FF_HD inline bool lambda_doubles(const double* const* p, const double* w, double
 // by induction every value is exact, and a computed 0 is a true 0.
 template <int K>
 FF_HD inline bool doubles_exact_minors(const double (&a)[K][K], bool lifted, Range range, int r) {
-  constexpr int kLogFact[9] = {0, 0, 1, 3, 5, 7, 10, 13, 16};
   range.add(1.0);
   if (lifted)
     for (int i = 0; i < K; ++i) range.add(a[i][K - 2]);
   const int mp = range.ehi > 0 ? range.ehi : 0;
   const int gm = range.llo < 0 ? range.llo : 0;
-  return r * gm >= -1074 && kLogFact[r] + r * mp - r * gm <= 53;
+  return r * gm >= -1074 && log2_factorial_ceil(r) + r * mp - r * gm <= 53;
 }
 
 // Plain-double minor of a on the kept rows / columns (static_filter.hpp's
@@ -1499,11 +1502,6 @@ inline constexpr int kIntLambdaMaxBits = 127;
 #else
 inline constexpr int kIntLambdaMaxBits = 63;
 #endif
-// ceil(log2 K!) for K <= 7 (a function: a namespace-scope array is not
-// readable in device code)
-FF_HD constexpr int int_lambda_log_fact(int k) {
-  return k <= 1 ? 0 : k == 2 ? 1 : k == 3 ? 3 : k == 4 ? 5 : k == 5 ? 7 : k == 6 ? 10 : 13;
-}
 
 // False when a value is not finite or a bound fails. Random doubles fail
 // within the first row: lifted, a value whose own mantissa spans more than 29
@@ -1529,7 +1527,7 @@ FF_HD inline bool int_lambda_scan(const double* const* p, const double* w, IntSc
       colhi[j] = hi > colhi[j] ? hi : colhi[j];
     }
     if (!w) {
-      lower = int_lambda_log_fact(K) + 1;  // the 1-column
+      lower = log2_factorial_ceil(K) + 1;  // the 1-column
       for (int j = 0; j < ncoord; ++j)
         if (colhi[j] > -100000) lower += colhi[j] - gc;
       if (lower > kIntLambdaMaxBits) return false;
@@ -1576,7 +1574,7 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
     L.a[i][K - 2] = static_cast<long long>(static_cast<unsigned long long>(sq) << s) -
                     static_cast<long long>(w[i] * wscale);
   }
-  int bits = int_lambda_log_fact(K) + 1;  // the 1-column
+  int bits = log2_factorial_ceil(K) + 1;  // the 1-column
   for (int j = 0; j < K - 1; ++j) {
     unsigned long long any = 0;  // the OR of the magnitudes: the bit length of their maximum
     for (int i = 0; i < K; ++i) {
