@@ -1480,12 +1480,14 @@ FF_HD inline int lattice_sign(const double (&a)[K][K], bool sos) {
 #if defined(__SIZEOF_INT128__)
 #define FLIPFLOP_INT128 1
 __extension__ typedef __int128 int128_t;  // __extension__: no -Wpedantic warning
+__extension__ typedef unsigned __int128 uint128_t;
 #endif
 
 template <int K>
 struct IntLambda {
   long long a[K][K];
   bool wide = false;  // __int128 needed (lf(K) + B > 63)
+  int bits = 127;     // lf(K) + B: every minor is below 2^bits in magnitude
 };
 
 
@@ -1495,6 +1497,7 @@ struct IntLambda {
 struct IntScan {
   int gc = 100000, hc = -100000;
   bool wide = false;  // unlifted: lf(K) + 1 + B > 63 (lifted: decided by int_lambda_build)
+  int bits = 127;     // unlifted: lf(K) + 1 + B (lifted: computed by int_lambda_build)
 };
 
 #if defined(FLIPFLOP_INT128)
@@ -1538,6 +1541,7 @@ FF_HD inline bool int_lambda_scan(const double* const* p, const double* w, IntSc
   S.gc = gc;
   S.hc = hc;
   S.wide = !w && lower > 63;
+  S.bits = w ? 127 : lower;
   return true;
 }
 
@@ -1552,6 +1556,7 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
   for (int i = 0; i < K; ++i) L.a[i][K - 1] = 1;
   if (!w) {  // B is known from the scan
     L.wide = S.wide;
+    L.bits = S.bits;
     return true;
   }
   int gw = 100000, hw = -100000;
@@ -1585,6 +1590,7 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
   }
   if (bits > kIntLambdaMaxBits) return false;
   L.wide = bits > 63;
+  L.bits = bits;
   return true;
 }
 
@@ -1625,15 +1631,271 @@ FF_HD inline int int_minor_sign(const IntLambda<K>& L, unsigned rows, unsigned c
   return (m > 0) - (m < 0);
 }
 
+// ---- The SoS search on an integer Λ by ranks modulo p = 2^61 - 1 ----------
+// sos_search returns sg · minor(kr, kc) at the first leaf, in its order, whose
+// minor is not 0; on a degenerate lattice it reads ~25 minors and walks
+// hundreds of leaves per call (3^5 grid Delaunay, K = 7: 107,569 calls, 2.7 M
+// minors, 65 % of rtd_cavity's instructions). The same leaf is found by rank
+// tests, one row at a time.
+//
+// Lemma (the subtree test). Fix the choices of rows K-1 .. r+1: F the rows
+// kept so far, kc the columns left (the 1-column always among them; |F| +
+// r + 1 = |kc|). The leaves below are the partial matchings of rows r .. 0
+// to the perturbable columns of kc, and their terms are exactly the terms of
+// det [F; G] (on the columns kc) expanded along the rows of G, where row i of
+// G is Λ's row i with an indeterminate ε_ij added in each perturbable column
+// of kc: a row contributes either its entries or ε_ij e_j, two rows with the
+// same e_j give 0, and distinct matchings give distinct monomials (no
+// cancellation). So some leaf below is not 0 iff det [F; G] is not the zero
+// polynomial, iff F has full row rank on kc: necessary at once; sufficient
+// because a row of G ranges over every vector (y, 1) (its 1-column entry is
+// 1, y free), an affine hyperplane off the origin, which spans the space, so
+// each row of G can be chosen outside the span of the rows before it.
+// Hence the greedy walk: at row r take the first option (not perturbed, then
+// columns K-2 .. 0 still in kc) whose subtree passes the test — for "not
+// perturbed", F + row r independent on kc; for column c, F independent on
+// kc \ {c}, i.e. e_c not in the row space of F on kc. The root passes (F
+// empty) and a passing subtree has a passing option, so the walk reaches a
+// leaf with F square and of full rank: sos_search's first non-zero leaf,
+// with the same sign bookkeeping. One exact minor (int_minor_sign) gives its
+// sign.
+// Ranks modulo p. Every minor of Λ is below 2^bits (int_lambda's bound lf(K)
+// + B) in magnitude; with bits <= P::kMaxBits < log2 p a minor is 0 iff it is
+// 0 modulo the prime p, so every rank above — the size of the largest
+// non-zero minor — is the same over the integers and over GF(p). The
+// elimination is fraction-free (row <- g row - f pivot_row, g a non-zero
+// pivot: an invertible row operation in GF(p)), with no inverse to compute.
+// Two primes: p = 2^31 - 1 (products in 64 bits; the 3^5 grid's K = 7 calls
+// have bits = 29) and p = 2^61 - 1 (products in 128 bits).
+struct ModP31 {
+  static constexpr unsigned long long p = (1ull << 31) - 1ull;
+  static constexpr int kMaxBits = 30;
+  // x mod p for any 64-bit x: 2^31 = 1 (mod p), so x = hi + lo; twice leaves
+  // it below 2^31 + 8, one subtraction below p
+  FF_HD static unsigned long long fold(unsigned long long x) {
+    x = (x & p) + (x >> 31);
+    x = (x & p) + (x >> 31);
+    return x >= p ? x - p : x;
+  }
+  FF_HD static unsigned long long mul(unsigned long long a, unsigned long long b) { return fold(a * b); }
+  // a x - b y = a x + b (p - y) (mod p): each product at most 2^62, the sum below 2^63
+  FF_HD static unsigned long long cross(unsigned long long a, unsigned long long x, unsigned long long b,
+                                        unsigned long long y) {
+    return fold(a * x + b * (p - y));
+  }
+};
+#if defined(FLIPFLOP_INT128)
+struct ModP61 {
+  static constexpr unsigned long long p = (1ull << 61) - 1ull;
+  static constexpr int kMaxBits = 60;
+  // 2^61 = 1 (mod p): hi + lo < 2^61 + 8 for a 64-bit x, then one subtraction
+  FF_HD static unsigned long long fold(unsigned long long x) {
+    x = (x & p) + (x >> 61);
+    return x >= p ? x - p : x;
+  }
+  // a product (< 2^122) folds to hi + lo < 2^62, then below p
+  FF_HD static unsigned long long mul(unsigned long long a, unsigned long long b) {
+    const uint128_t s = static_cast<uint128_t>(a) * b;
+    return fold((static_cast<unsigned long long>(s) & p) + static_cast<unsigned long long>(s >> 61));
+  }
+  FF_HD static unsigned long long cross(unsigned long long a, unsigned long long x, unsigned long long b,
+                                        unsigned long long y) {
+    const unsigned long long u = mul(a, x), v = mul(b, y);
+    return u >= v ? u - v : u + (p - v);
+  }
+};
+#endif
+
+// A value of Λ (|v| < 2^63) modulo P::p.
+template <class P>
+FF_HD inline unsigned long long mod_of(long long v) {
+  const unsigned long long m =
+      P::fold(v < 0 ? 0ull - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v));
+  return v < 0 && m != 0 ? P::p - m : m;
+}
+
+// Rows in echelon form over GF(p) on a column mask: row t is 0 at the pivot
+// columns of rows 0 .. t-1 and not 0 at its own. Row operations run on all K
+// columns (no branch per entry); only the columns in the mask are read.
+template <class P, int K>
+struct ModEchelon {
+  unsigned long long row[K][K];
+  int piv[K];
+  int n = 0;
+  // v minus its components along the rows: 0 on the mask iff v lies in their span
+  FF_HD void reduce(unsigned long long* v) const {
+    for (int t = 0; t < n; ++t) {
+      const unsigned long long f = v[piv[t]];
+      if (f == 0) continue;
+      const unsigned long long g = row[t][piv[t]];
+      for (int j = 0; j < K; ++j) v[j] = P::cross(g, v[j], f, row[t][j]);
+    }
+  }
+  FF_HD static int first_nonzero(const unsigned long long* v, unsigned cols) {
+    for (int j = 0; j < K; ++j)
+      if (((cols >> j) & 1u) && v[j] != 0) return j;
+    return -1;
+  }
+  // adds v (reduced in place) when it is independent of the rows on cols
+  FF_HD bool add(unsigned long long* v, unsigned cols) {
+    reduce(v);
+    const int j = first_nonzero(v, cols);
+    if (j < 0) return false;
+    for (int i = 0; i < K; ++i) row[n][i] = v[i];
+    piv[n++] = j;
+    return true;
+  }
+};
+
+// p - 2 powers: the inverse of a non-zero a in GF(p) (Fermat).
+template <class P>
+FF_HD inline unsigned long long mod_inverse(unsigned long long a) {
+  unsigned long long r = 1, e = P::p - 2;
+  while (e) {
+    if (e & 1u) r = P::mul(r, a);
+    a = P::mul(a, a);
+    e >>= 1;
+  }
+  return r;
+}
+
+// The sign of the determinant of the r x r matrix t (row-major, entries in
+// GF(p)) of an integer matrix whose |determinant| < 2^P::kMaxBits <= (p - 1)
+// / 2: fraction-free elimination (row_i <- g row_i - f row_k multiplies the
+// determinant by g; den collects those g), det = Π pivots / den, and the
+// residue in [1, (p - 1) / 2] is a positive determinant, above it a negative
+// one. t is overwritten.
+template <class P>
+FF_HD inline int mod_det_sign(unsigned long long* t, int r) {
+  unsigned long long num = 1, den = 1;
+  bool negate = false;
+  for (int k = 0; k < r; ++k) {
+    int i = k;
+    while (i < r && t[i * r + k] == 0) ++i;
+    if (i == r) return 0;
+    if (i != k) {
+      for (int j = k; j < r; ++j) {
+        const unsigned long long x = t[i * r + j];
+        t[i * r + j] = t[k * r + j];
+        t[k * r + j] = x;
+      }
+      negate = !negate;
+    }
+    const unsigned long long g = t[k * r + k];
+    num = P::mul(num, g);
+    for (i = k + 1; i < r; ++i) {
+      const unsigned long long f = t[i * r + k];
+      if (f == 0) continue;
+      for (int j = k + 1; j < r; ++j) t[i * r + j] = P::cross(g, t[i * r + j], f, t[k * r + j]);
+      den = P::mul(den, g);
+    }
+  }
+  unsigned long long d = P::mul(num, mod_inverse<P>(den));
+  if (negate && d != 0) d = P::p - d;
+  return d == 0 ? 0 : d <= (P::p - 1) / 2 ? 1 : -1;
+}
+
+// The exact SoS sign of an integer Λ (rows sorted by index): the leaf of
+// sos_search reached by the greedy walk above — with every row kept, det Λ
+// itself, when it is not 0; L.bits <= P::kMaxBits. Returns 2 only where the
+// lemma says it cannot (the caller's search then decides).
+// Row K-1 is always kept (the walk's first row: F empty, its 1-column entry
+// 1), with its pivot in the 1-column, where every other row also has a 1:
+// reducing a row against it is subtracting it. So the walk runs on the
+// differences D_i = Λ_i - Λ_{K-1} (i < K-1) without the 1-column, exactly
+// (|entries| < 2^60, differences < 2^61): F has full rank on kc iff its rows
+// other than K-1 have full rank on D's columns of kc, and e_c (0 in the
+// 1-column) is in F's row space iff it is in theirs. The leaf's minor, rows
+// kr and columns kc of Λ in increasing order, equals the minor of D on kr and
+// kc without K-1 (the row operations keep it; its last row and column then
+// hold the only 1 of the last column, at cofactor sign +1) — a minor of Λ, so
+// below 2^bits: mod_det_sign gives its sign.
+template <class P, int K>
+FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L) {
+  constexpr int W = K - 1;  // D's columns: Λ's coordinate columns
+  constexpr unsigned kAll = (1u << K) - 1u;
+  unsigned long long m[W][W];
+  for (int i = 0; i < W; ++i)
+    for (int j = 0; j < W; ++j) m[i][j] = mod_of<P>(L.a[i][j] - L.a[K - 1][j]);
+  ModEchelon<P, W> E;
+  unsigned kr = kAll, kc = kAll;
+  int sg = 1;
+  for (int r = K - 2; r >= 0; --r) {
+    unsigned long long v[W];
+    for (int j = 0; j < W; ++j) v[j] = m[r][j];
+    if (E.add(v, kc)) continue;  // not perturbed: F + row r independent on kc
+    bool moved = false;
+    for (int c = K - 2; c >= 0 && !moved; --c) {  // options 1 .. K-1: columns K-2 .. 0
+      if (!((kc >> c) & 1u)) continue;
+      unsigned long long e[W] = {};
+      e[c] = 1;
+      E.reduce(e);
+      if (ModEchelon<P, W>::first_nonzero(e, kc) < 0) continue;  // e_c in F's row space: F loses rank without c
+      const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
+      if (parity & 1) sg = -sg;
+      kr &= ~(1u << r);
+      kc &= ~(1u << c);
+      moved = true;
+      bool pivot = false;
+      for (int t = 0; t < E.n; ++t) pivot = pivot || E.piv[t] == c;
+      if (pivot && r > 0) {  // re-pivot: F's rows again, on kc (independent there by the test)
+        E.n = 0;
+        for (int i = K - 2; i > r; --i) {
+          if (!((kr >> i) & 1u)) continue;
+          for (int j = 0; j < W; ++j) v[j] = m[i][j];
+          E.add(v, kc);
+        }
+      }
+    }
+    if (!moved) return 2;
+  }
+  int ri[W], ci[W], n = 0, nc = 0;
+  for (int i = 0; i < W; ++i) {
+    if ((kr >> i) & 1u) ri[n++] = i;
+    if ((kc >> i) & 1u) ci[nc++] = i;
+  }
+  if (n == 0) return sg;  // every row but K-1 perturbed: the minor is the 1-column's 1
+  // D's entries are below 2^(b_j + 1) in column j: Laplace's values below
+  // 2^(lf + B + W) <= 2^(bits + W) (int_lambda's bound, one bit per column more)
+  if (L.bits + W <= 63) {
+    long long t[W * W];
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) t[i * n + j] = L.a[ri[i]][ci[j]] - L.a[K - 1][ci[j]];
+    const long long d = int_det_of_order<1, W, long long>(t, n);
+    return sg * ((d > 0) - (d < 0));
+  }
+  unsigned long long t[W * W];
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) t[i * n + j] = m[ri[i]][ci[j]];
+  return sg * mod_det_sign<P>(t, n);
+}
+
 // The exact (sos: SoS) sign of det Λ on the integer matrix; rows sorted by
-// index for sos, as lattice_sign.
+// index for sos, as lattice_sign. SoS: the greedy walk by ranks modulo p
+// where every minor fits the prime, else det Λ and sos_search on the exact
+// minors.
 template <class I, int K>
 FF_HD inline int int_lattice_sign_as(const IntLambda<K>& L, bool sos) {
+  if (sos) {
+    int g = 2;
+    if (L.bits <= ModP31::kMaxBits) g = int_lattice_sos_mod<ModP31, K>(L);
+#if defined(FLIPFLOP_INT128)
+    else if (L.bits <= ModP61::kMaxBits) g = int_lattice_sos_mod<ModP61, K>(L);
+#endif
+    if (g != 2) return g;
+  }
   auto sign_of = [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); };
   constexpr unsigned kAll = (1u << K) - 1u;
   const int s = sign_of(kAll, kAll);
   if (s != 0 || !sos) return s;
   return sos_search<K>(true, sign_of);
+}
+
+// sos_search on the exact integer minors alone (the reference of
+// int_lattice_sos_mod in the tests); det Λ = 0.
+template <class I, int K>
+FF_HD inline int int_lattice_sos_search(const IntLambda<K>& L) {
+  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); });
 }
 template <int K>
 FF_HD inline int int_lattice_sign(const IntLambda<K>& L, bool sos) {

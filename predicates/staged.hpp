@@ -113,6 +113,7 @@ FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambd
   if (parity == 0) return 0;
   xp::IntLambda<K> S;
   S.wide = L.wide;
+  S.bits = L.bits;
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) S.a[i][j] = L.a[order[i]][j];
   return parity * xp::int_lattice_sign<K>(S, ids != nullptr);

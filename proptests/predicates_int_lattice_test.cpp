@@ -499,3 +499,215 @@ TEST_CASE("small_integer_minor: near-lattice minors equal the exact expansion mi
     CHECK(t[3] > 500);
   }
 }
+
+// xp::int_lattice_sos_mod (the SoS sign of an integer Λ by the greedy walk of
+// rank tests modulo p = 2^31 - 1 or 2^61 - 1) against sos_search on the exact
+// integer minors (xp::int_lattice_sos_search, the memo search it replaces),
+// on integer matrices with a 1-column built to be deeply degenerate: the
+// rows on an affine flat of dimension 0 .. K-2 (a base row plus small
+// integer combinations of flat generators), then with some probability a
+// column made constant, zero, a copy or the sum of two others, a row copied,
+// or a column replaced by the rows' squared norms (a lifted Λ). Entries from
+// a bound R in {1, 2, 3, 46, 1000}: both primes' ranges (int_lambda's bound
+// lf(K) + B <= 30, <= 60) and beyond (the dispatcher int_lattice_sign_as then
+// takes sos_search). The walk's lemma needs nothing of a Λ but the 1-column,
+// so any such matrix is a valid input. Not vacuous: most calls have det = 0,
+// many make the reference search read more than K minors (perturbations
+// beyond the first row), and both primes run.
+// Planted errors caught here: the column options tried in increasing order
+// (0 .. K-2); the re-pivot after removing a pivot column skipped. A minor that
+// is a multiple of the prime does not occur by chance; the test after this
+// one builds one.
+namespace {
+
+int bit_len(unsigned long long v) {
+  int b = 0;
+  while (v) ++b, v >>= 1;
+  return b;
+}
+
+template <int K>
+xp::IntLambda<K> degenerate_int_lambda(std::mt19937_64& g) {
+  auto uni = [&](long long lo, long long hi) {
+    return lo + static_cast<long long>(g() % static_cast<std::uint64_t>(hi - lo + 1));
+  };
+  const long long R = std::vector<long long>{1, 2, 3, 46, 1000}[static_cast<size_t>(uni(0, 4))];
+  constexpr int C = K - 1;  // columns before the 1-column
+  long long base[C], gen[K][C];
+  const int q = static_cast<int>(uni(0, K - 2));  // the flat's dimension
+  for (int j = 0; j < C; ++j) base[j] = uni(-R, R);
+  for (int k = 0; k < q; ++k)
+    for (int j = 0; j < C; ++j) gen[k][j] = uni(-1, 1) * (uni(0, 2) == 0 ? uni(-R, R) : 1);
+  xp::IntLambda<K> L;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < C; ++j) L.a[i][j] = base[j];
+    for (int k = 0; k < q; ++k) {
+      const long long c = uni(-2, 2);
+      for (int j = 0; j < C; ++j) L.a[i][j] += c * gen[k][j];
+    }
+    L.a[i][K - 1] = 1;
+  }
+  for (int e = static_cast<int>(uni(0, 3)); e > 0; --e) {
+    const int j = static_cast<int>(uni(0, C - 1)), a = static_cast<int>(uni(0, C - 1)),
+              b = static_cast<int>(uni(0, C - 1));
+    switch (uni(0, 5)) {
+      case 0: for (int i = 0; i < K; ++i) L.a[i][j] = L.a[0][j]; break;              // constant
+      case 1: for (int i = 0; i < K; ++i) L.a[i][j] = 0; break;                      // zero
+      case 2: for (int i = 0; i < K; ++i) L.a[i][j] = L.a[i][a]; break;              // a copy
+      case 3: for (int i = 0; i < K; ++i) L.a[i][j] = L.a[i][a] + L.a[i][b]; break;  // a sum
+      case 4: {                                                                      // a copied row
+        const int r = static_cast<int>(uni(0, K - 1)), s = static_cast<int>(uni(0, K - 1));
+        for (int t = 0; t < K; ++t) L.a[r][t] = L.a[s][t];
+        break;
+      }
+      default:  // lifted: column C-1 the squared norm of the others
+        if (C >= 2)
+          for (int i = 0; i < K; ++i) {
+            long long s = 0;
+            for (int t = 0; t < C - 1; ++t) s += L.a[i][t] * L.a[i][t];
+            L.a[i][C - 1] = s;
+          }
+    }
+  }
+  int bits = xp::log2_factorial_ceil(K);  // int_lambda's bound: lf(K) + the columns' bit lengths
+  for (int j = 0; j < K; ++j) {
+    unsigned long long any = 0;
+    for (int i = 0; i < K; ++i) any |= static_cast<unsigned long long>(L.a[i][j] < 0 ? -L.a[i][j] : L.a[i][j]);
+    bits += bit_len(any);
+  }
+  L.bits = bits;
+  L.wide = bits > 63;
+  return L;
+}
+
+template <class I, int K>
+void greedy_against_search(const xp::IntLambda<K>& L, long (&tally)[6]) {
+  constexpr unsigned kAll = (1u << K) - 1u;
+  const int det = xp::int_minor_sign<I, K>(L, kAll, kAll);
+  int asked = 0;
+  const int ref = det != 0 ? det : xp::sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+    ++asked;
+    return xp::int_minor_sign<I, K>(L, kr, kc);
+  });
+  REQUIRE(ref != 0);
+  INFO("K " << K << " bits " << L.bits << " det " << det);
+  if (L.bits <= xp::ModP31::kMaxBits) {
+    REQUIRE((xp::int_lattice_sos_mod<xp::ModP31, K>(L)) == ref);
+    ++tally[3];
+  }
+#if defined(FLIPFLOP_INT128)
+  if (L.bits <= xp::ModP61::kMaxBits) {
+    REQUIRE((xp::int_lattice_sos_mod<xp::ModP61, K>(L)) == ref);
+    ++tally[4];
+  }
+#endif
+  REQUIRE((xp::int_lattice_sign_as<I, K>(L, true)) == ref);
+  REQUIRE((xp::int_lattice_sign_as<I, K>(L, false)) == det);
+  ++tally[0];
+  tally[1] += det == 0;
+  tally[2] += asked > K;
+  tally[5] += L.bits > 60;
+}
+
+template <int K>
+void greedy_property(std::mt19937_64& g, long (&tally)[6]) {
+  const xp::IntLambda<K> L = degenerate_int_lambda<K>(g);
+#if defined(FLIPFLOP_INT128)
+  if (L.wide) return greedy_against_search<xp::int128_t, K>(L, tally);
+#else
+  if (L.wide) return;
+#endif
+  greedy_against_search<long long, K>(L, tally);
+}
+
+}  // namespace
+
+TEST_CASE("int lattice: the SoS walk by ranks modulo p equals sos_search on the exact minors",
+          "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x31e7);
+  long t[6] = {};
+  for (int n = 0; n < 3000; ++n) {
+    greedy_property<2>(g, t);
+    greedy_property<3>(g, t);
+    greedy_property<4>(g, t);
+    greedy_property<5>(g, t);
+    greedy_property<6>(g, t);
+    greedy_property<7>(g, t);
+  }
+  std::printf("int lattice SoS walk: calls %ld det 0 %ld deep %ld (P31 %ld, P61 %ld, beyond 60 bits %ld)\n", t[0],
+              t[1], t[2], t[3], t[4], t[5]);
+  CHECK(t[1] * 2 > t[0]);
+  CHECK(t[2] * 5 > t[1]);
+  CHECK(t[3] > 2000);
+  CHECK(t[4] > t[3] + 1000);
+  CHECK(t[5] > 100);
+}
+
+// The prime must exceed every minor: here det Λ = 0 (three collinear points,
+// columns x, y, 1) and sos_search's first non-zero leaf is the minor on rows
+// {1, 2}, columns {0, 2}, equal to -p for p = 2^31 - 1. Modulo that p it
+// vanishes and the walk takes the next leaf, of the other sign; int_lambda's
+// bound (bits = 38 here) keeps the dispatcher off that prime.
+TEST_CASE("int lattice: the SoS walk's prime bound", "[predicates][stages][int_lattice]") {
+  constexpr long long p = (1ll << 31) - 1;
+  xp::IntLambda<3> L;
+  const long long rows[3][3] = {{0, 0, 1}, {p, 1, 1}, {2 * p, 2, 1}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) L.a[i][j] = rows[i][j];
+  L.bits = xp::log2_factorial_ceil(3) + bit_len(static_cast<unsigned long long>(2 * p)) + 2 + 1;
+  CHECK(L.bits > xp::ModP31::kMaxBits);
+  const int ref = xp::int_lattice_sos_search<long long, 3>(L);
+  CHECK(ref == 1);
+  CHECK((xp::int_lattice_sos_mod<xp::ModP31, 3>(L)) == -ref);  // the prime too small: wrong
+#if defined(FLIPFLOP_INT128)
+  CHECK((xp::int_lattice_sos_mod<xp::ModP61, 3>(L)) == ref);
+#endif
+  CHECK((xp::int_lattice_sign_as<long long, 3>(L, true)) == ref);
+}
+
+// xp::mod_det_sign (the leaf minor's sign from its residue modulo p, where
+// the walk's leaf minor would need __int128) against det_by_minors on
+// __int128, on r x r integer matrices (r = 1..6) whose entries keep every
+// minor below 2^30 (both primes) or 2^60 (p = 2^61 - 1), singular ones among
+// them (a row a combination of two others), negative determinants as often
+// as positive ones.
+#if defined(FLIPFLOP_INT128)
+TEST_CASE("int lattice: determinant signs from residues modulo p", "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0xde7);
+  long tally[3] = {};  // positive, negative, zero
+  for (int n = 0; n < 20000; ++n) {
+    const int r = 1 + static_cast<int>(g() % 6);
+    const bool wide = (g() & 1) != 0;
+    // entries below 2^e with lf(r) + r e <= 30 (or 60): |every minor| < 2^30 (2^60)
+    const int e = ((wide ? 60 : 30) - xp::log2_factorial_ceil(r)) / r;
+    const long long bound = (1ll << e) - 1;
+    long long a[36];
+    std::uniform_int_distribution<long long> u(-bound, bound);
+    for (int i = 0; i < r * r; ++i) a[i] = u(g);
+    if (r >= 3 && g() % 3 == 0) {  // singular: row 0 = row 1 - row 2, rows 1 and 2 halved first
+      for (int j = 0; j < r; ++j) {
+        a[r + j] /= 2;
+        a[2 * r + j] /= 2;
+        a[j] = a[r + j] - a[2 * r + j];
+      }
+    }
+    xp::int128_t t[36];
+    unsigned long long m31[36], m61[36];
+    for (int i = 0; i < r * r; ++i) {
+      t[i] = a[i];
+      m31[i] = xp::mod_of<xp::ModP31>(a[i]);
+      m61[i] = xp::mod_of<xp::ModP61>(a[i]);
+    }
+    const xp::int128_t d = xp::int_det_of_order<1, 6, xp::int128_t>(t, r);
+    const int s = (d > 0) - (d < 0);
+    INFO("r " << r << " e " << e);
+    if (!wide) REQUIRE(xp::mod_det_sign<xp::ModP31>(m31, r) == s);
+    REQUIRE(xp::mod_det_sign<xp::ModP61>(m61, r) == s);
+    ++tally[s > 0 ? 0 : s < 0 ? 1 : 2];
+  }
+  std::printf("mod_det_sign: positive %ld negative %ld zero %ld\n", tally[0], tally[1], tally[2]);
+  CHECK(tally[0] > 5000);
+  CHECK(tally[1] > 5000);
+  CHECK(tally[2] > 1000);
+}
+#endif
