@@ -1457,8 +1457,8 @@ FF_HD inline int lattice_sign(const double (&a)[K][K], bool sos) {
 // integer matrix (the same sos_search, the same minors) returns the same sign
 // as every other exact stage.
 // Entry bounds (int64): |X| < 2^mc with mc <= 62 unlifted; lifted mc <= 29,
-// so Σ_j X_j^2 < (K - 2) 2^(2 mc) <= 2^(2 mc + 3) (K - 2 <= 6), shifted by
-// s = 2 gc - gl with 2 mc + 3 + s <= 61, and |w 2^-gl| < 2^(hw - gl) with
+// so Σ_j X_j^2 < (K - 2) 2^(2 mc) <= 2^(2 mc + q), q = 3 for K - 2 <= 8 and
+// 4 up to 16, shifted by s = 2 gc - gl with 2 mc + q + s <= 61, and |w 2^-gl| < 2^(hw - gl) with
 // hw - gl <= 61: |H| < 2^61 + 2^61 = 2^62. Every entry is below 2^62. The
 // scaled values are computed as v 2^-gc (and w 2^-gl) in double, the power of
 // two normal (-1022 <= -gc, -gl <= 1023, else the path is not taken): exact,
@@ -1482,6 +1482,10 @@ FF_HD inline int lattice_sign(const double (&a)[K][K], bool sos) {
 __extension__ typedef __int128 int128_t;  // __extension__: no -Wpedantic warning
 __extension__ typedef unsigned __int128 uint128_t;
 #endif
+
+// Up to 11 rows (predicates.hpp kMaxLambdaK): beyond 7, only the walk by
+// ranks modulo p below decides (int_lattice_sign returns 2 where it cannot).
+inline constexpr int kIntLambdaMaxK = 11;
 
 template <int K>
 struct IntLambda {
@@ -1570,7 +1574,8 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
   }
   const int gl = gw < 2 * gc ? gw : 2 * gc;
   const int s = 2 * gc - gl;
-  if (2 * mc + 3 + s > 61 || gl < -1023 || gl > 1022) return false;
+  constexpr int q = K - 2 <= 8 ? 3 : 4;  // Σ_j X_j^2 < 2^(2 mc + q)
+  if (2 * mc + q + s > 61 || gl < -1023 || gl > 1022) return false;
   if (hw > -100000 && hw - gl > 61) return false;
   const double wscale = XDbl::pow2(-gl);
   for (int i = 0; i < K; ++i) {
@@ -1598,7 +1603,7 @@ FF_HD inline bool int_lambda_build(const double* const* p, const double* w, cons
 // a bound fails (the other stages decide).
 template <int K>
 FF_HD inline bool int_lambda(const double* const* p, const double* w, IntLambda<K>& L) {
-  if constexpr (K > 7) {
+  if constexpr (K > kIntLambdaMaxK) {
     (void)p, (void)w, (void)L;
     return false;
   } else {
@@ -1811,7 +1816,7 @@ FF_HD inline int mod_det_sign(unsigned long long* t, int r) {
 // hold the only 1 of the last column, at cofactor sign +1) — a minor of Λ, so
 // below 2^bits: mod_det_sign gives its sign.
 template <class P, int K>
-FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L) {
+FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L, bool sos = true) {
   constexpr int W = K - 1;  // D's columns: Λ's coordinate columns
   constexpr unsigned kAll = (1u << K) - 1u;
   unsigned long long m[W][W];
@@ -1824,6 +1829,7 @@ FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L) {
     unsigned long long v[W];
     for (int j = 0; j < W; ++j) v[j] = m[r][j];
     if (E.add(v, kc)) continue;  // not perturbed: F + row r independent on kc
+    if (!sos) return 0;            // det Λ = 0 (the rows are dependent)
     bool moved = false;
     for (int c = K - 2; c >= 0 && !moved; --c) {  // options 1 .. K-1: columns K-2 .. 0
       if (!((kc >> c) & 1u)) continue;
@@ -1856,13 +1862,16 @@ FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L) {
   }
   if (n == 0) return sg;  // every row but K-1 perturbed: the minor is the 1-column's 1
   // D's entries are below 2^(b_j + 1) in column j: Laplace's values below
-  // 2^(lf + B + W) <= 2^(bits + W) (int_lambda's bound, one bit per column more)
-  if (L.bits + W <= 63) {
-    long long t[W * W];
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) t[i * n + j] = L.a[ri[i]][ci[j]] - L.a[K - 1][ci[j]];
-    const long long d = int_det_of_order<1, W, long long>(t, n);
-    return sg * ((d > 0) - (d < 0));
+  // 2^(lf + B + W) <= 2^(bits + W) (int_lambda's bound, one bit per column
+  // more); det_by_minors has orders up to 7 (larger leaves: mod_det_sign)
+  if constexpr (W <= 7) {
+    if (L.bits + W <= 63) {
+      long long t[W * W];
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) t[i * n + j] = L.a[ri[i]][ci[j]] - L.a[K - 1][ci[j]];
+      const long long d = int_det_of_order<1, W, long long>(t, n);
+      return sg * ((d > 0) - (d < 0));
+    }
   }
   unsigned long long t[W * W];
   for (int i = 0; i < n; ++i)
@@ -1870,18 +1879,24 @@ FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L) {
   return sg * mod_det_sign<P>(t, n);
 }
 
+// The walk on the prime that holds every minor of L; 2 where none does.
+template <int K>
+FF_HD inline int int_lattice_walk(const IntLambda<K>& L, bool sos) {
+  if (L.bits <= ModP31::kMaxBits) return int_lattice_sos_mod<ModP31, K>(L, sos);
+#if defined(FLIPFLOP_INT128)
+  if (L.bits <= ModP61::kMaxBits) return int_lattice_sos_mod<ModP61, K>(L, sos);
+#endif
+  return 2;
+}
+
 // The exact (sos: SoS) sign of det Λ on the integer matrix; rows sorted by
 // index for sos, as lattice_sign. SoS: the greedy walk by ranks modulo p
 // where every minor fits the prime, else det Λ and sos_search on the exact
-// minors.
+// minors (K <= 7).
 template <class I, int K>
 FF_HD inline int int_lattice_sign_as(const IntLambda<K>& L, bool sos) {
   if (sos) {
-    int g = 2;
-    if (L.bits <= ModP31::kMaxBits) g = int_lattice_sos_mod<ModP31, K>(L);
-#if defined(FLIPFLOP_INT128)
-    else if (L.bits <= ModP61::kMaxBits) g = int_lattice_sos_mod<ModP61, K>(L);
-#endif
+    const int g = int_lattice_walk<K>(L, true);
     if (g != 2) return g;
   }
   auto sign_of = [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); };
@@ -1897,12 +1912,18 @@ template <class I, int K>
 FF_HD inline int int_lattice_sos_search(const IntLambda<K>& L) {
   return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); });
 }
+// K <= 7: always decided (0, 1 or -1). K = 8..11: the walk alone — 2 where
+// the minors exceed 60 bits (the caller's other stages decide).
 template <int K>
 FF_HD inline int int_lattice_sign(const IntLambda<K>& L, bool sos) {
+  if constexpr (K > 7) {
+    return int_lattice_walk<K>(L, sos);
+  } else {
 #if defined(FLIPFLOP_INT128)
-  if (L.wide) return int_lattice_sign_as<int128_t, K>(L, sos);
+    if (L.wide) return int_lattice_sign_as<int128_t, K>(L, sos);
 #endif
-  return int_lattice_sign_as<long long, K>(L, sos);
+    return int_lattice_sign_as<long long, K>(L, sos);
+  }
 }
 
 // Is one of the first m columns of the K rows constant (equal values)?

@@ -63,10 +63,28 @@ int lambda_sign_filter_high(int k, const double* const* p, const double* w) {
 
 }  // namespace
 
+namespace {
+// The integer-lattice stage for k = 9..11 rows (xp::int_lambda, the walk by
+// ranks modulo p: staged.hpp lambda_int_sorted); 2 where it does not apply.
+template <int K>
+int lambda_int_high(const PointId* ids, const double* const* coords, const double* weights) {
+  xp::IntLambda<K> L;
+  if (!xp::int_lambda<K>(coords, weights, L)) return 2;
+  return lambda_int_sorted<K>(ids, L);
+}
+}  // namespace
+
 int lambda_sign_high(const StaticFilter*, int k, const PointId* ids, const double* const* coords,
                      const double* weights) {
   check_k(k, weights, kMaxLambdaK);
   if (repeated_id(k, ids)) return 0;
+  // lattices first (random doubles fail int_lambda's scan within a row): the
+  // filter below cannot decide their zero determinants
+  const int si = k == 9    ? lambda_int_high<9>(ids, coords, weights)
+                 : k == 10 ? lambda_int_high<10>(ids, coords, weights)
+                 : k == 11 ? lambda_int_high<11>(ids, coords, weights)
+                           : 2;
+  if (si != 2) return si;
   if (const int s = lambda_sign_filter_high(k, coords, weights)) return s;
   return gmp_sign(k, ids, coords, weights, ids != nullptr);
 }

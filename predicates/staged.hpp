@@ -105,7 +105,8 @@ FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* co
 // device (FF_DEVICE_NOINLINE): its minors' buffers and the SoS memo stay out
 // of the caller's frame (ptx_stack.py, predicates_cuda.cu, K = 5: the
 // deepest chain 35.9 KB before the integer stage, 37.7 KB with it inlined,
-// 36.4 KB with this call).
+// 36.4 KB with this call). 2 where it cannot decide (K >= 8, minors beyond
+// 60 bits: xp::int_lattice_sign).
 template <int K, class Id>
 FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambda<K>& L) {
   int order[K];
@@ -116,7 +117,8 @@ FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambd
   S.bits = L.bits;
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) S.a[i][j] = L.a[order[i]][j];
-  return parity * xp::int_lattice_sign<K>(S, ids != nullptr);
+  const int s = xp::int_lattice_sign<K>(S, ids != nullptr);
+  return s == 2 ? 2 : parity * s;
 }
 
 // The default path after the static and semi-static filters (fast.hpp calls
@@ -133,7 +135,7 @@ template <int K, class Id, bool Fma = false>
 FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w,
                                                    bool window = false) {
   if (repeated_id(K, ids)) return 0;
-  if constexpr (K <= 7) {
+  if constexpr (K <= xp::kIntLambdaMaxK) {
     // Integer lattices (small integers, dyadic grids: the exactly degenerate
     // inputs): det Λ and the perturbation's minors exactly in int64 /
     // __int128 (xp::int_lambda), cheaper than the filters below, which
@@ -143,7 +145,9 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     // points in [0, 1)) is near-degenerate rather than on a lattice more
     // often than not: the double-double filter, cheaper than 128-bit
     // minors, is tried first there and the integer matrix kept for what it
-    // leaves.
+    // leaves. K = 8 (and 9..11, predicates.cpp lambda_sign_high): only the
+    // walk by ranks modulo p, where every minor is below 2^60; the stages
+    // below take the rest.
     xp::IntScan S;
     if (xp::int_lambda_scan<K>(p, w, S)) {
       if constexpr (K >= 3 && K <= 5) {
@@ -153,8 +157,10 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
         }
       }
       xp::IntLambda<K> L;
-      if (xp::int_lambda_build<K>(p, w, S, L))
-        return lambda_int_sorted<K>(ids, L);
+      if (xp::int_lambda_build<K>(p, w, S, L)) {
+        const int s = lambda_int_sorted<K>(ids, L);
+        if (s != 2) return s;  // (K <= 7 always decides)
+      }
     }
   }
   // A constant coordinate column (points on a plane x_j = c): det Λ = 0

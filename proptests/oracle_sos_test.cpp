@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <sstream>
 #include <string>
@@ -36,6 +37,7 @@
 #include "predicates/fast.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
+#include "predicates/staged.hpp"
 #include "predicates/static_filter.hpp"
 #include "proptests/support/predicate_inputs.hpp"
 #include "proptests/support/rc_scaled.hpp"
@@ -47,6 +49,7 @@ using pred::Mode;
 using pred::Pt;
 using pred::WPt;
 namespace so = flipflop::test::sos_oracle;
+namespace xp = flipflop::pred::xp;
 
 namespace {
 
@@ -456,6 +459,56 @@ TEST_CASE("oracle: lambda_sign k = 2..11 and compare_sos equal the oracle") {
     CHECK(pred::compare_sos(Pt{ia, a}, Pt{ib, b}, c, Mode::filtered) == expect);
     CHECK(pred::compare_sos(Pt{ia, a}, Pt{ib, b}, c, Mode::gmp) == expect);
   }
+}
+
+// ---- the integer walk beyond 7 rows ---------------------------------------------------------
+// k = 8 (staged) and 9..11 (lambda_sign_high) decide lattice calls by the walk
+// of rank tests modulo p (exact_expansion.hpp int_lattice_sos_mod) where every
+// minor is below 2^60 — the path of the 6D..9D grids' triangulations. The
+// lattice families only (grid, integer flat, lattice sphere, lifted
+// hyperplane, identical points, a duplicate), against the oracle; not vacuous:
+// the walk decides most calls (int_lambda accepts, bits <= 60), many of them
+// with det Λ = 0.
+template <int K>
+void walk_high(Det& g, bool lifted, int reps, long (&t)[3]) {
+  const Spec s{lifted ? Kind::power_d : Kind::orient_d, lifted ? K - 2 : K - 1};
+  for (int fam = 0; fam < 6; ++fam)
+    for (int rep = 0; rep < reps; ++rep) {
+      const Instance in = det_instance(s, g, fam, false);
+      const so::Result r = oracle(s, in);
+      std::vector<const double*> p;
+      for (int i = 0; i < K; ++i) p.push_back(in.p(i));
+      const double* w = lifted ? in.w.data() : nullptr;
+      xp::IntLambda<K> L;
+      const bool walked = !pred::repeated_id(K, in.id.data()) && xp::int_lambda<K>(p.data(), w, L) &&
+                          L.bits <= xp::ModP61::kMaxBits;
+      INFO(describe(s, in) << term_text(r));
+      CHECK(pred::lambda_sign(K, in.id.data(), p.data(), w, Mode::filtered) == r.sign);
+      CHECK(pred::lambda_sign_staged<K>(nullptr, in.id.data(), p.data(), w) == r.sign);
+      if (walked) {
+        const int u = pred::lambda_int_sorted<K>(in.id.data(), L);
+        CHECK(u == r.sign);
+        CHECK(u != 2);
+      }
+      ++t[0];
+      t[1] += walked;
+      t[2] += walked && xp::int_lattice_sign<K>(L, false) == 0;
+    }
+}
+
+TEST_CASE("oracle: the integer walk decides lattice calls of 8..11 rows as the oracle") {
+  Det g(811);
+  long t[3] = {};
+  const int reps = std::max(6, static_cast<int>(24 * release_scale()));
+  for (bool lifted : {false, true}) {
+    walk_high<8>(g, lifted, 2 * reps, t);
+    walk_high<9>(g, lifted, reps, t);
+    walk_high<10>(g, lifted, reps / 2, t);
+    walk_high<11>(g, lifted, reps / 3, t);
+  }
+  std::printf("int walk k = 8..11: %ld calls, %ld walked (%ld with det 0)\n", t[0], t[1], t[2]);
+  CHECK(t[1] * 4 > t[0] * 3);
+  CHECK(t[2] * 2 > t[1]);
 }
 
 // ---- mixed rows: an exact centroid (rational_point.hpp) --------------------------------------
