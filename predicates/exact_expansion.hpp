@@ -118,10 +118,21 @@ FF_HD inline int clz64(std::uint64_t x) {
 #endif
 }
 FF_HD FF_FORCEINLINE int bit_length(unsigned long long x) { return x == 0 ? 0 : 64 - clz64(x); }
-// ceil(log2 k!) for k <= 8: the factor of the minor bounds below (a
-// function: a namespace-scope array is not usable in device code).
+// ceil(log2 k!) for k <= 11 (kMaxLambdaK rows): the factor of the minor
+// bounds below (a function: a namespace-scope array is not usable in device
+// code).
 FF_HD constexpr int log2_factorial_ceil(int k) {
-  return k <= 1 ? 0 : k == 2 ? 1 : k == 3 ? 3 : k == 4 ? 5 : k == 5 ? 7 : k == 6 ? 10 : k == 7 ? 13 : 16;
+  return k <= 1    ? 0
+         : k == 2  ? 1
+         : k == 3  ? 3
+         : k == 4  ? 5
+         : k == 5  ? 7
+         : k == 6  ? 10
+         : k == 7  ? 13
+         : k == 8  ? 16
+         : k == 9  ? 19
+         : k == 10 ? 22
+                   : 26;
 }
 FF_HD inline int popcount32(unsigned x) {
 #if defined(__CUDA_ARCH__)
@@ -1636,7 +1647,7 @@ FF_HD inline int int_minor_sign(const IntLambda<K>& L, unsigned rows, unsigned c
   return (m > 0) - (m < 0);
 }
 
-// ---- The SoS search on an integer Λ by ranks modulo p = 2^61 - 1 ----------
+// ---- The SoS search on an integer Λ by ranks modulo a prime p ------------
 // sos_search returns sg · minor(kr, kc) at the first leaf, in its order, whose
 // minor is not 0; on a degenerate lattice it reads ~25 minors and walks
 // hundreds of leaves per call (3^5 grid Delaunay, K = 7: 107,569 calls, 2.7 M
@@ -1662,8 +1673,8 @@ FF_HD inline int int_minor_sign(const IntLambda<K>& L, unsigned rows, unsigned c
 // kc \ {c}, i.e. e_c not in the row space of F on kc. The root passes (F
 // empty) and a passing subtree has a passing option, so the walk reaches a
 // leaf with F square and of full rank: sos_search's first non-zero leaf,
-// with the same sign bookkeeping. One exact minor (int_minor_sign) gives its
-// sign.
+// with the same sign bookkeeping. Only that leaf's minor is evaluated
+// (int_lattice_sos_mod below).
 // Ranks modulo p. Every minor of Λ is below 2^bits (int_lambda's bound lf(K)
 // + B) in magnitude; with bits <= P::kMaxBits < log2 p a minor is 0 iff it is
 // 0 modulo the prime p, so every rank above — the size of the largest
@@ -1889,6 +1900,13 @@ FF_HD inline int int_lattice_walk(const IntLambda<K>& L, bool sos) {
   return 2;
 }
 
+// sos_search on the exact integer minors (det Λ = 0): the fallback of
+// int_lattice_sign_as beyond 60 bits, and the walk's reference in the tests.
+template <class I, int K>
+FF_HD inline int int_lattice_sos_search(const IntLambda<K>& L) {
+  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); });
+}
+
 // The exact (sos: SoS) sign of det Λ on the integer matrix; rows sorted by
 // index for sos, as lattice_sign. SoS: the greedy walk by ranks modulo p
 // where every minor fits the prime, else det Λ and sos_search on the exact
@@ -1899,18 +1917,10 @@ FF_HD inline int int_lattice_sign_as(const IntLambda<K>& L, bool sos) {
     const int g = int_lattice_walk<K>(L, true);
     if (g != 2) return g;
   }
-  auto sign_of = [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); };
   constexpr unsigned kAll = (1u << K) - 1u;
-  const int s = sign_of(kAll, kAll);
+  const int s = int_minor_sign<I, K>(L, kAll, kAll);
   if (s != 0 || !sos) return s;
-  return sos_search<K>(true, sign_of);
-}
-
-// sos_search on the exact integer minors alone (the reference of
-// int_lattice_sos_mod in the tests); det Λ = 0.
-template <class I, int K>
-FF_HD inline int int_lattice_sos_search(const IntLambda<K>& L) {
-  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int { return int_minor_sign<I, K>(L, kr, kc); });
+  return int_lattice_sos_search<I, K>(L);
 }
 // K <= 7: always decided (0, 1 or -1). K = 8..11: the walk alone — 2 where
 // the minors exceed 60 bits (the caller's other stages decide).

@@ -711,3 +711,18 @@ TEST_CASE("int lattice: determinant signs from residues modulo p", "[predicates]
   CHECK(tally[2] > 1000);
 }
 #endif
+
+// The factor of every integer-stage minor bound, lf(k) = ceil(log2 k!), for
+// every row count the stage takes (up to 11), against k! computed here: the
+// smallest b with 2^b >= k!. (It stopped at 8 rows while the stage grew to
+// 11: a bound 3..10 bits short for 9..11 rows.)
+TEST_CASE("int lattice: lf(k) = ceil(log2 k!) for every row count", "[predicates][stages][int_lattice]") {
+  unsigned long long f = 1;
+  for (int k = 1; k <= xp::kIntLambdaMaxK; ++k) {
+    f *= static_cast<unsigned long long>(k);
+    int b = 0;
+    while ((1ull << b) < f) ++b;
+    INFO("k " << k << ", k! " << f);
+    CHECK(xp::log2_factorial_ceil(k) == b);
+  }
+}
