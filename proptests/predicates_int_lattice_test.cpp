@@ -42,12 +42,14 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <random>
 #include <vector>
 
+#include "predicates/exact.hpp"
 #include "predicates/exact_expansion.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/staged.hpp"
@@ -498,6 +500,132 @@ TEST_CASE("small_integer_minor: near-lattice minors equal the exact expansion mi
     CHECK(t[1] > 500);
     CHECK(t[3] > 500);
   }
+}
+
+// Perturbed lattices, whole points moved (the inputs of issue 39's perturbed
+// grids): K points of {0, 1, 2}^d plus an offset (0, 1 or 2^20), some
+// repeated, and each point moved with probability 1/4 by 1..3 ulp in every
+// coordinate (a zero becomes a subnormal: outside the Dbl window), or its
+// weight by 1..3 ulp. Against GMP (pred::exact::minor_sign on the exact
+// integer Λ, pred::stage::gmp_sos):
+//   * MinorLaplace<XDbl> (and <Dbl> inside the window) on the full Λ and on
+//     random row/column subsets — its binary64 levels over the rows of
+//     one-component values (double_levels_exact), the others as expansions,
+//     the rows' permutation sign;
+//   * det_translated<XDbl> / <Dbl> from the narrowest base row, with its
+//     sign (-1)^(K-1-b);
+//   * the SoS sign of the whole path after the filters (staged.hpp: calls
+//     with 1..K-3 moved rows skip the dynamic filter), of lambda_exact_sorted
+//     and of sos_expansions<XDbl> (minor_quick skips the ErrDouble minor for
+//     near-integer minors), rows sorted by id.
+// Not vacuous: the tally counts calls with moved rows and det Λ = 0 (the SoS
+// decides), with moved rows and det Λ != 0, and calls outside the window.
+// Planted errors caught here: the permutation sign of the binary64 prefix
+// dropped, the base row's sign dropped, double_levels_exact's 53 bits raised
+// to 120, minor_quick answering 0 for the near-integer minors it sends past
+// the ErrDouble minor.
+namespace {
+
+template <int K>
+void perturbed_lattice_call(std::mt19937_64& g, long (&tally)[5]) {
+  const bool lifted = K >= 4 && (g() & 1) != 0;
+  const int nc = lifted ? K - 2 : K - 1;
+  auto uni = [&](int lo, int hi) { return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  const double offset = std::vector<double>{0.0, 1.0, 0x1p20}[static_cast<size_t>(uni(0, 2))];
+  double x[K][K], w[K];
+  int moved = 0;
+  for (int i = 0; i < K; ++i) {
+    const int copy = i > 0 && uni(0, 5) == 0 ? uni(0, i - 1) : -1;
+    for (int j = 0; j < nc; ++j) x[i][j] = copy >= 0 ? x[copy][j] : offset + uni(0, 2);
+    w[i] = copy >= 0 ? w[copy] : (uni(0, 2) == 0 ? uni(0, 2) : 0.0);
+    if (copy >= 0 || uni(0, 3) != 0) continue;
+    ++moved;
+    auto move = [&](double& v) {
+      for (int u = uni(1, 3); u > 0; --u) v = std::nextafter(v, (g() & 1) ? 1e9 : -1e9);
+    };
+    if (lifted && uni(0, 4) == 0) {
+      move(w[i]);
+    } else {
+      for (int j = 0; j < nc; ++j) move(x[i][j]);
+    }
+  }
+  const double* p[K];
+  for (int i = 0; i < K; ++i) p[i] = x[i];
+  const double* wp = lifted ? w : nullptr;
+  PointId ids[K];
+  {
+    std::vector<int> perm(static_cast<size_t>(K));
+    for (int i = 0; i < K; ++i) perm[static_cast<size_t>(i)] = i;
+    std::shuffle(perm.begin(), perm.end(), g);
+    for (int i = 0; i < K; ++i) ids[i] = static_cast<PointId>(10 * perm[static_cast<size_t>(i)] + uni(0, 9));
+  }
+  const pred::exact::IntLambda G = pred::exact::build_lambda(K, p, wp);
+  constexpr unsigned kAll = (1u << K) - 1u;
+  const int det = pred::exact::minor_sign(G, kAll, kAll);
+  const bool window = xp::call_range<K>(p, wp).fits(lifted ? K : K - 1);
+  INFO("K " << K << (lifted ? " lifted" : " plain") << " offset " << offset << " moved " << moved << " window "
+            << window);
+  // minors
+  xp::RawLambda<xp::XDbl, K> X;
+  xp::build_lambda<xp::XDbl, K>(p, wp, X);
+  xp::RawLambda<xp::Dbl, K> D;
+  if (window) xp::build_lambda<xp::Dbl, K>(p, wp, D);
+  for (int rep = 0; rep < 4; ++rep) {
+    unsigned rows = kAll, cols = kAll;
+    if (rep > 0) {
+      const int r = uni(1, K);
+      rows = cols = 0;
+      while (__builtin_popcount(rows) < r) rows |= 1u << uni(0, K - 1);
+      while (__builtin_popcount(cols) < r) cols |= 1u << uni(0, K - 1);
+    }
+    const int ref = pred::exact::minor_sign(G, rows, cols);
+    INFO("rows " << rows << " cols " << cols);
+    REQUIRE((xp::MinorLaplace<xp::XDbl, K>::sign(X, rows, cols)) == ref);
+    if (window) REQUIRE((xp::MinorLaplace<xp::Dbl, K>::sign(D, rows, cols)) == ref);
+  }
+  // the exact determinant from the narrowest base row
+  REQUIRE((xp::det_translated<xp::XDbl, K>(p, wp)) == det);
+  if (window) REQUIRE((xp::det_translated<xp::Dbl, K>(p, wp)) == det);
+  // the SoS sign: the staged path after the filters, the exact stage, the
+  // XDbl search (rows sorted by id)
+  const int sos = pred::stage::gmp_sos(K, ids, p, wp);
+  REQUIRE((pred::lambda_sign_after_filters<K, PointId, false>(ids, p, wp)) == sos);
+  REQUIRE(pred::lambda_exact_sorted<K>(ids, p, wp, true) == sos);
+  int order[K];
+  const int parity = pred::sort_rows_by_id(K, ids, order);
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = p[order[i]];
+    sw[i] = w[order[i]];
+  }
+  if (det == 0) REQUIRE(parity * xp::sos_expansions<xp::XDbl, K>(sp, lifted ? sw : nullptr) == sos);
+  ++tally[0];
+  tally[1] += moved > 0 && det == 0;
+  tally[2] += moved > 0 && det != 0;
+  tally[3] += !window;
+  tally[4] += moved >= 1 && moved <= K - 3;
+}
+
+}  // namespace
+
+TEST_CASE("perturbed lattices: binary64 Laplace levels, the narrowest base row and the near-lattice SoS equal GMP",
+          "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x9e3779b9);
+  long t[5] = {};
+  for (int n = 0; n < 400; ++n) {
+    perturbed_lattice_call<4>(g, t);
+    perturbed_lattice_call<5>(g, t);
+    perturbed_lattice_call<6>(g, t);
+    perturbed_lattice_call<7>(g, t);
+  }
+  std::printf("perturbed lattices: calls %ld, moved with det 0 %ld, moved with det != 0 %ld, "
+              "outside the Dbl window %ld, 1..K-3 moved rows %ld\n",
+              t[0], t[1], t[2], t[3], t[4]);
+  CHECK(t[1] > 200);
+  CHECK(t[2] > 200);
+  CHECK(t[3] > 200);
+  CHECK(t[4] > 400);
 }
 
 // xp::int_lattice_sos_mod (the SoS sign of an integer Λ by the greedy walk of
