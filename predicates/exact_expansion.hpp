@@ -402,6 +402,97 @@ FF_HD FF_FORCEINLINE bool double_levels_exact(int l, int g, int m) {
   return l * g >= -1074 && log2_factorial_ceil(l) + l * (m - g) <= 53 && log2_factorial_ceil(l) + l * m <= 1000;
 }
 
+// The binary64 part of MinorLaplace, on the kept entries as doubles (a
+// function of K only: one instantiation per row count, not per component
+// type and capacity). Candidates: the rows of one-component entries
+// (single[t]), narrowest bit span first (bit_span over the row's nonzero
+// values), kept while double_levels_exact holds for all of them together.
+// order: those rows, then the others, each in their kept order; parity: its
+// sign (inversions); rank: each column subset's index among the subsets of
+// its size; level: the level-u minors (by rank) of the prefix rows, exact.
+// run returns u.
+template <int K>
+struct DoublePrefix {
+  static constexpr int kLevel = binom(K, K / 2);
+  int order[K] = {};
+  int parity = 1;
+  unsigned char rank[1u << K];
+  double level[kLevel];
+  FF_HD int run(int r, const double (&val)[K][K], const bool (&single)[K]) {
+    int lo[K], hi[K], cand[K], nc = 0;
+    for (int t = 0; t < r; ++t) {
+      if (!single[t]) continue;
+      int rl = 100000, rh = -100000;
+      for (int q = 0; q < r; ++q) {
+        int vl = 0, vh = 0;
+        if (val[t][q] != 0.0 && bit_span(val[t][q], vl, vh)) {
+          rl = vl < rl ? vl : rl;
+          rh = vh > rh ? vh : rh;
+        }
+      }
+      lo[t] = rl;
+      hi[t] = rh;
+      // insertion by span (an all-zero row: span 0, first)
+      const int span = rh >= rl ? rh - rl : 0;
+      int at = nc++;
+      while (at > 0) {
+        const int o = cand[at - 1];
+        const int ospan = hi[o] >= lo[o] ? hi[o] - lo[o] : 0;
+        if (ospan <= span) break;
+        cand[at] = o;
+        --at;
+      }
+      cand[at] = t;
+    }
+    bool inprefix[K] = {};
+    int u = 0, g = 100000, m = -100000;
+    for (int c = 0; c < nc; ++c) {
+      const int t = cand[c];
+      const int ng = lo[t] < g ? lo[t] : g, nm = hi[t] > m ? hi[t] : m;
+      const bool any = nm >= ng;  // some nonzero value among the rows
+      if (!double_levels_exact(u + 1, any ? ng : 0, any ? nm : 0)) continue;
+      g = ng, m = nm;
+      inprefix[t] = true;
+      ++u;
+    }
+    int n = 0;
+    for (int t = 0; t < r; ++t)
+      if (inprefix[t]) order[n++] = t;
+    for (int t = 0; t < r; ++t)
+      if (!inprefix[t]) order[n++] = t;
+    int inversions = 0;
+    for (int a = 0; a < r; ++a)
+      for (int b = a + 1; b < r; ++b) inversions += order[a] > order[b];
+    parity = (inversions & 1) ? -1 : 1;
+    int counter[K + 1] = {};
+    for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
+    if (u == 0) return 0;
+    const unsigned full = (1u << r) - 1u;
+    double dl[2][kLevel];
+    for (int j = 0; j < r; ++j) dl[1][rank[1u << j]] = val[order[0]][j];
+    for (int l = 2; l <= u; ++l) {
+      double* cur = dl[l & 1];
+      const double* prev = dl[(l - 1) & 1];
+      const double* row = val[order[l - 1]];
+      for (unsigned s = 1; s <= full; ++s) {
+        if (popcount32(s) != l) continue;
+        double d = 0.0;
+        int pos = 0;
+        for (int j = 0; j < r; ++j) {
+          if (!(s & (1u << j))) continue;
+          const double term = row[j] * prev[rank[s & ~(1u << j)]];
+          d = (((l - 1 + pos) & 1) != 0) ? d - term : d + term;  // (-1)^((l-1) + pos)
+          ++pos;
+        }
+        cur[rank[s]] = d;
+      }
+    }
+    for (unsigned s = 1; s <= full; ++s)
+      if (popcount32(s) == u) level[rank[s]] = dl[u & 1][rank[s]];
+    return u;
+  }
+};
+
 template <class A, int K>
 struct MinorLaplace {
   static constexpr int kLevel = binom(K, K / 2);
@@ -430,95 +521,33 @@ struct MinorLaplace {
     const int* ci = kept.ci;
     const int r = kept.r;
     if (r == 0) return 1;
-    // the binary64 prefix: candidates (rows of one-component doubles) by span
+    // the binary64 prefix (DoublePrefix): the kept entries as doubles where
+    // one-component (single[t]: the whole kept row is)
     double val[K][K];
-    int lo[K], hi[K], cand[K], nc = 0;
+    bool single[K];
     for (int t = 0; t < r; ++t) {
       const int i = kept.ri[t];
-      bool single = true;
-      int rl = 100000, rh = -100000;
-      for (int q = 0; q < r && single; ++q) {
-        double v = 0.0;
-        single = entry_double<A>(L.a[i][ci[q]], v);
-        val[t][q] = v;
-        int vl = 0, vh = 0;
-        if (single && v != 0.0 && bit_span(v, vl, vh)) {
-          rl = vl < rl ? vl : rl;
-          rh = vh > rh ? vh : rh;
-        }
-      }
-      if (!single) continue;
-      lo[t] = rl;
-      hi[t] = rh;
-      // insertion by span (an all-zero row: span 0, first)
-      const int span = rh >= rl ? rh - rl : 0;
-      int at = nc++;
-      while (at > 0) {
-        const int o = cand[at - 1];
-        const int ospan = hi[o] >= lo[o] ? hi[o] - lo[o] : 0;
-        if (ospan <= span) break;
-        cand[at] = o;
-        --at;
-      }
-      cand[at] = t;
+      bool one = true;
+      for (int q = 0; q < r && one; ++q) one = entry_double<A>(L.a[i][ci[q]], val[t][q]);
+      single[t] = one;
     }
-    bool inprefix[K] = {};
-    int u = 0, g = 100000, m = -100000;
-    for (int c = 0; c < nc; ++c) {
-      const int t = cand[c];
-      const int ng = lo[t] < g ? lo[t] : g, nm = hi[t] > m ? hi[t] : m;
-      const bool any = nm >= ng;  // some nonzero value among the rows
-      if (!double_levels_exact(u + 1, any ? ng : 0, any ? nm : 0)) continue;
-      g = ng, m = nm;
-      inprefix[t] = true;
-      ++u;
-    }
-    // row order: the prefix rows, then the others, each in their kept order
-    int order[K], n = 0;
-    for (int t = 0; t < r; ++t)
-      if (inprefix[t]) order[n++] = t;
-    for (int t = 0; t < r; ++t)
-      if (!inprefix[t]) order[n++] = t;
-    int inversions = 0;
-    for (int a = 0; a < r; ++a)
-      for (int b = a + 1; b < r; ++b) inversions += order[a] > order[b];
-    const int parity = (inversions & 1) ? -1 : 1;
-
-    // rank of each column subset among the subsets of its size (in increasing order)
-    unsigned char rank[1u << K];
-    int counter[K + 1] = {};
-    for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
+    DoublePrefix<K> pre;
+    int u = pre.run(r, val, single);
+    const int* order = pre.order;
+    const int parity = pre.parity;
+    const unsigned char* rank = pre.rank;
     const unsigned full = (1u << r) - 1u;
     E lev[2][kLevel];
     if (u > 0) {
-      double dl[2][kLevel];
-      for (int j = 0; j < r; ++j) dl[1][rank[1u << j]] = val[order[0]][j];
-      for (int l = 2; l <= u; ++l) {
-        double* cur = dl[l & 1];
-        const double* prev = dl[(l - 1) & 1];
-        const double* row = val[order[l - 1]];
-        for (unsigned s = 1; s <= full; ++s) {
-          if (popcount32(s) != l) continue;
-          double d = 0.0;
-          int pos = 0;
-          for (int j = 0; j < r; ++j) {
-            if (!(s & (1u << j))) continue;
-            const double term = row[j] * prev[rank[s & ~(1u << j)]];
-            d = (((l - 1 + pos) & 1) != 0) ? d - term : d + term;  // (-1)^((l-1) + pos)
-            ++pos;
-          }
-          cur[rank[s]] = d;
-        }
-      }
       if (u == r) {
-        const double d = dl[r & 1][0];
+        const double d = pre.level[0];
         return parity * ((d > 0.0) - (d < 0.0));
       }
       for (unsigned s = 1; s <= full; ++s) {
         if (popcount32(s) != u) continue;
         E& d = lev[u & 1][rank[s]];
         d.n = 1;
-        d.c[0] = A::from_double(dl[u & 1][rank[s]]);
+        d.c[0] = A::from_double(pre.level[rank[s]]);
       }
     } else {
       // level 1: the first row, single columns
