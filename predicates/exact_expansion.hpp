@@ -2195,6 +2195,22 @@ FF_HD inline bool constant_column(const double* const* p, int m) {
   return false;
 }
 
+// Are two of the K points the same point (equal coordinates and, lifted,
+// equal weights: exact copies in the input, a point located at or tested
+// against its copy)? Then two rows of Λ are equal and det Λ = 0 exactly, which
+// no filter decides; the perturbation does.
+template <int K>
+FF_HD inline bool equal_points(const double* const* p, const double* w) {
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int i = 1; i < K; ++i)
+    for (int j = 0; j < i; ++j) {
+      bool same = !w || w[i] == w[j];
+      for (int c = 0; c < ncoord && same; ++c) same = p[i][c] == p[j][c];
+      if (same) return true;
+    }
+  return false;
+}
+
 // How many of the K rows are not small integers (a coordinate or the weight
 // not an integer of magnitude below 2^26)? On a lattice with a few points
 // moved by some ulp: the moved points of the call.
@@ -2221,7 +2237,8 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos,
   // det Λ = 0 at once when a coordinate column is constant (points on a plane
   // x_j = c, e.g. the floors and walls of a building: the column minus c
   // times the 1-column is 0); the perturbation decides.
-  const bool flat = constant_column<K>(p, w ? K - 2 : K - 1);
+  // Likewise when two points are equal (exact copies).
+  const bool flat = constant_column<K>(p, w ? K - 2 : K - 1) || equal_points<K>(p, w);
   if (range.fits(degree)) {
     double a[K][K];
     if constexpr (K <= 7) {

@@ -163,10 +163,12 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
       }
     }
   }
-  // A constant coordinate column (points on a plane x_j = c): det Λ = 0
-  // exactly, which no filter decides; the exact stage goes to the
-  // perturbation at once (xp::lambda_exact tests it again).
-  if (xp::constant_column<K>(p, w ? K - 2 : K - 1)) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
+  // A constant coordinate column (points on a plane x_j = c) or two equal
+  // points (exact copies in the input): det Λ = 0 exactly, which no filter
+  // decides; the exact stage goes to the perturbation at once
+  // (xp::lambda_exact tests both again).
+  if (xp::constant_column<K>(p, w ? K - 2 : K - 1) || xp::equal_points<K>(p, w))
+    return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
   if constexpr (K >= 3 && K <= 5) {
     const int s = dd_filter_sign<K, Fma>(p, w, window);
     if (s == 1 || s == -1) return s;

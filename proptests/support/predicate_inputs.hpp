@@ -280,13 +280,20 @@ inline Instance gen_exact_degenerate(const Spec& s) {
       break;
     }
     case 2: {  // duplicated points (same coordinates and weight)
-      for (double& v : in.x) v = ints(-8, 8);
+      // small integers (the integer stage decides them), or random doubles
+      // of full mantissa (exact copies in real data: only the equal rows
+      // make det Λ = 0, staged.hpp's equal_points shortcut); weighted, the
+      // copy has another weight one time in four (equal coordinates, rows
+      // not equal: the shortcut must not apply)
+      const bool full = *rc::gen::inRange(0, 2) == 1;
+      for (double& v : in.x) v = full ? gen_unit() : ints(-8, 8);
       if (s.weighted())
-        for (double& v : in.w) v = ints(-8, 8);
+        for (double& v : in.w) v = full ? gen_unit() : ints(-8, 8);
       const int a = *rc::gen::inRange(0, in.k);
       const int b = (a + *rc::gen::inRange(1, in.k)) % in.k;
       for (int j = 0; j < d; ++j) in.p(b)[j] = in.p(a)[j];
-      in.w[static_cast<size_t>(b)] = in.w[static_cast<size_t>(a)];
+      const bool other_weight = s.weighted() && *rc::gen::inRange(0, 4) == 0;
+      if (!other_weight) in.w[static_cast<size_t>(b)] = in.w[static_cast<size_t>(a)];
       break;
     }
     case 3: {  // lattice points on a circle / sphere, translated, equal weights
@@ -321,7 +328,9 @@ inline Instance gen_exact_degenerate(const Spec& s) {
   // Exact scaling: coordinates by 2^e, weights by 2^(2e) (heights |x|² - w
   // scale by 2^(2e) too, so the determinant only changes by a positive factor).
   // Integers here are below 2^6 (coordinates) and 2^10 (weights), so every
-  // scaled value is exact, subnormals included.
+  // scaled value is exact, subnormals included (case 2's random doubles may
+  // round when scaled into the subnormals: a copy still rounds as its
+  // original, so the copies stay equal).
   const int e = s.weighted() ? *rc::gen::element(0, 0, 0, -537, -530, -300, 300, 500)
                              : *rc::gen::element(0, 0, 0, -1074, -1060, -1030, -1000, -600, 600,
                                                  1000, 1010);
