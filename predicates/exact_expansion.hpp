@@ -2251,9 +2251,12 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos,
     // near-lattice calls (1..K-3 rows not of small integers): det_translated
     // from an integer base row expands over the other integer rows in
     // binary64 (MinorLaplace) and costs less than the double-double stage
-    const int moved = non_integer_rows<K>(p, w);
-    const bool near_lattice = moved >= 1 && moved <= K - 3;
-    int s = flat ? 0 : (dd_ran || near_lattice) ? 2 : lambda_sign_dd<K>(p, w);
+    int s = 0;
+    if (!flat) {
+      const int moved = dd_ran ? 0 : non_integer_rows<K>(p, w);
+      const bool near_lattice = moved >= 1 && moved <= K - 3;
+      s = (dd_ran || near_lattice) ? 2 : lambda_sign_dd<K>(p, w);
+    }
     if constexpr (K == 3 || K == 4)
       if (!w && s == 2) s = orient_adaptive<K>(p);
     if constexpr (K == 4 || K == 5)

@@ -12,7 +12,9 @@
 //   exact_degenerate  small-integer configurations that are exactly degenerate
 //                     (grids, integer flats, lattice points on x²+y² = 25 or 65
 //                     and on integer spheres, weights w = |x|² - α·x - β,
-//                     duplicated points), optionally scaled by an exact power of
+//                     duplicated points), and of random doubles (points on
+//                     coordinate hyperplanes, duplicated points), optionally
+//                     scaled by an exact power of
 //                     two down to subnormals or up to ~1e300 (coordinates by 2^s,
 //                     weights by 2^(2s), which keeps the degeneracy exact).
 //   extreme           each value independently 0, subnormal (4.9e-324, 1e-310,
@@ -264,6 +266,24 @@ inline Instance gen_exact_degenerate(const Spec& s) {
         for (double& v : in.w) v = ints(-2, 2);
       break;
     case 1: {  // an integer r-flat, r < d (collinear, coplanar, identical points)
+      if (*rc::gen::inRange(0, 2) == 1) {
+        // or points on coordinate hyperplanes x_c = const in random doubles
+        // (the floors and walls of a building: staged.hpp's flat_sign_sorted),
+        // each column constant with probability 1/3, at least one
+        std::vector<int> fixed(static_cast<size_t>(d));
+        for (int& f : fixed) f = *rc::gen::inRange(0, 3) == 0;
+        fixed[static_cast<size_t>(*rc::gen::inRange(0, d))] = 1;
+        for (int j = 0; j < d; ++j) {
+          const double c = gen_unit();
+          for (int i = 0; i < in.k; ++i) in.p(i)[j] = fixed[static_cast<size_t>(j)] ? c : gen_unit();
+        }
+        if (s.weighted()) {
+          const double common = *rc::gen::inRange(0, 2) == 1 ? gen_unit() : 0.0;
+          const bool equal = *rc::gen::inRange(0, 2) == 1;
+          for (double& v : in.w) v = equal ? common : gen_unit();
+        }
+        break;
+      }
       const int r = *rc::gen::inRange(0, d);
       std::vector<double> q(static_cast<size_t>(d)), dir(static_cast<size_t>(r * d));
       for (double& v : q) v = ints(-8, 8);
