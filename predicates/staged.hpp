@@ -85,18 +85,27 @@ FF_HD inline bool repeated_id(int k, const Id* ids) {
 // inlined, on the device (FF_DEVICE_NOINLINE).
 // `dd_ran`: the double-double filter has run on these points and failed
 // (xp::lambda_exact then skips its own double-double stage).
+// The rows (p, w) sorted by id into (sp, sw); returns the permutation's
+// parity, or 0 if an id repeats (sort_rows_by_id). ids null: as given.
 template <int K, class Id>
-FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
-                                     bool sos, bool dd_ran = false) {
+FF_HD inline int sorted_rows(const Id* ids, const double* const* p, const double* w, const double** sp,
+                             double* sw) {
   int order[K];
-  const int parity = sort_rows_by_id(K, sos ? ids : static_cast<const Id*>(nullptr), order);
-  if (parity == 0) return 0;
-  const double* sp[K];
-  double sw[K];
+  const int parity = sort_rows_by_id(K, ids, order);
   for (int i = 0; i < K; ++i) {
     sp[i] = p[order[i]];
     sw[i] = w ? w[order[i]] : 0.0;
   }
+  return parity;
+}
+
+template <int K, class Id>
+FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
+                                     bool sos, bool dd_ran = false) {
+  const double* sp[K];
+  double sw[K];
+  const int parity = sorted_rows<K>(sos ? ids : static_cast<const Id*>(nullptr), p, w, sp, sw);
+  if (parity == 0) return 0;
   return parity * xp::lambda_exact<K>(sp, w ? sw : nullptr, sos, dd_ran);
 }
 
@@ -141,15 +150,10 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
 // search: one frame less on its stack).
 template <int K, class Id>
 FF_HD inline int flat_sign_sorted(const Id* ids, const double* const* p, const double* w) {
-  int order[K];
-  const int parity = sort_rows_by_id(K, ids, order);
-  if (parity == 0) return 0;
   const double* sp[K];
   double sw[K];
-  for (int i = 0; i < K; ++i) {
-    sp[i] = p[order[i]];
-    sw[i] = w ? w[order[i]] : 0.0;
-  }
+  const int parity = sorted_rows<K>(ids, p, w, sp, sw);
+  if (parity == 0) return 0;
 #if !defined(__CUDA_ARCH__)
   if constexpr (K >= 4) {
     const int ncoord = w ? K - 2 : K - 1;
