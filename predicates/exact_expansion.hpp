@@ -2184,15 +2184,20 @@ FF_HD inline int int_lattice_sign(const IntLambda<K>& L, bool sos) {
   }
 }
 
-// Is one of the first m columns of the K rows constant (equal values)?
+// The largest j < m whose column is constant on the K rows (equal values),
+// or -1; constant_column: is there one?
 template <int K>
-FF_HD inline bool constant_column(const double* const* p, int m) {
-  for (int j = 0; j < m; ++j) {
+FF_HD inline int last_constant_column(const double* const* p, int m) {
+  for (int j = m - 1; j >= 0; --j) {
     bool same = true;
     for (int i = 1; i < K; ++i) same = same && p[i][j] == p[0][j];
-    if (same) return true;
+    if (same) return j;
   }
-  return false;
+  return -1;
+}
+template <int K>
+FF_HD inline bool constant_column(const double* const* p, int m) {
+  return last_constant_column<K>(p, m) >= 0;
 }
 
 // Are two of the K points the same point (equal coordinates and, lifted,

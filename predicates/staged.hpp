@@ -80,11 +80,6 @@ FF_HD inline bool repeated_id(int k, const Id* ids) {
   return false;
 }
 
-// Stages 4-5: exact sign (sos = false, may be 0) or SoS sign of det Λ with the
-// rows in the given order (the rows are sorted by id internally). Called, not
-// inlined, on the device (FF_DEVICE_NOINLINE).
-// `dd_ran`: the double-double filter has run on these points and failed
-// (xp::lambda_exact then skips its own double-double stage).
 // The rows (p, w) sorted by id into (sp, sw); returns the permutation's
 // parity, or 0 if an id repeats (sort_rows_by_id). ids null: as given.
 template <int K, class Id>
@@ -99,6 +94,11 @@ FF_HD inline int sorted_rows(const Id* ids, const double* const* p, const double
   return parity;
 }
 
+// Stages 4-5: exact sign (sos = false, may be 0) or SoS sign of det Λ with the
+// rows in the given order (the rows are sorted by id internally). Called, not
+// inlined, on the device (FF_DEVICE_NOINLINE).
+// `dd_ran`: the double-double filter has run on these points and failed
+// (xp::lambda_exact then skips its own double-double stage).
 template <int K, class Id>
 FF_HD FF_DEVICE_NOINLINE int lambda_exact_sorted(const Id* ids, const double* const* p, const double* w,
                                      bool sos, bool dd_ran = false) {
@@ -157,12 +157,7 @@ FF_HD inline int flat_sign_sorted(const Id* ids, const double* const* p, const d
 #if !defined(__CUDA_ARCH__)
   if constexpr (K >= 4) {
     const int ncoord = w ? K - 2 : K - 1;
-    int c = -1;
-    for (int j = ncoord - 1; j >= 0 && c < 0; --j) {
-      bool same = true;
-      for (int i = 1; i < K; ++i) same = same && sp[i][j] == sp[0][j];
-      if (same) c = j;
-    }
+    const int c = xp::last_constant_column<K>(sp, ncoord);
     if (c >= 0) {
       double q[K - 1][K];  // each row's ncoord - 1 coordinates
       const double* qp[K - 1];
