@@ -157,11 +157,16 @@ std::vector<std::uint32_t> lock_cells(const std::vector<std::uint32_t>& key, con
 // Tetrahedron slots above this make a link 4t + i overflow 32 bits.
 constexpr std::size_t kMaxSlots = (std::size_t{1} << 30) - 1;
 
-// kOther[i][j]: the two corners of a tetrahedron other than i and j (i != j)
-constexpr std::uint8_t kOther[4][4][2] = {{{0, 0}, {2, 3}, {1, 3}, {1, 2}},
-                                          {{2, 3}, {0, 0}, {0, 3}, {0, 2}},
-                                          {{1, 3}, {0, 3}, {0, 0}, {0, 1}},
-                                          {{1, 2}, {0, 2}, {0, 1}, {0, 0}}};
+// kFacet[i][k] (i: the apex's corner of a cone tetrahedron, k = 0..2): the
+// corner j of the k-th other facet, opposite j, and the two corners other than
+// i and j — the facet is the apex and the horizon edge between those two.
+struct ConeFacet {
+  std::uint8_t j, a, b;
+};
+constexpr ConeFacet kFacet[4][3] = {{{1, 2, 3}, {2, 1, 3}, {3, 1, 2}},
+                                    {{0, 2, 3}, {2, 0, 3}, {3, 0, 2}},
+                                    {{0, 1, 3}, {1, 0, 3}, {3, 0, 1}},
+                                    {{0, 1, 2}, {1, 0, 2}, {2, 0, 1}}};
 
 // A horizon ridge of an insertion: the new tetrahedron over it.
 struct Horizon {
@@ -448,19 +453,21 @@ bool Builder::link_cone(Worker& w) {
     et.stamp = 1;
   }
   const std::uint32_t st = et.stamp << 8;
+  // Branch-free (callgrind/perf: as branches, "vertex seen before?" and
+  // "which of the four corners is the apex's?" were mispredicted about once
+  // per horizon entry): a vertex's first sight numbers it, the others read
+  // the number; numbers up to kMaxLocal + 2 fit the tag's 8 bits, and a
+  // horizon numbered beyond kMaxLocal - 1 goes to the hash table instead.
   std::uint32_t L = 0;
   for (Horizon& h : w.horizon) {
-    for (std::uint32_t q = 0; q < 4 && L <= kMaxLocal; ++q) {
-      if (q == h.i) continue;
-      std::uint32_t& tag = et.tag[h.v[q]];
-      if ((tag & ~0xFFu) != st) {
-        if (L == kMaxLocal) {
-          L = kMaxLocal + 1;  // too many: the hash table
-          break;
-        }
-        tag = st | L++;
-      }
-      h.loc[q] = tag & 0xFFu;
+    for (const ConeFacet& f : kFacet[h.i]) {
+      std::uint32_t& tag = et.tag[h.v[f.j]];
+      const std::uint32_t old = tag;
+      const bool first = (old & ~0xFFu) != st;
+      const std::uint32_t now = first ? (st | L) : old;
+      tag = now;
+      L += first ? 1u : 0u;
+      h.loc[f.j] = now & 0xFFu;
     }
     if (L > kMaxLocal) break;
   }
@@ -476,28 +483,34 @@ bool Builder::link_cone(Worker& w) {
     std::fill(w.hkey.begin(), w.hkey.begin() + static_cast<std::ptrdiff_t>(cap), ~std::uint64_t{0});
     mask = cap - 1;
   }
-  std::ptrdiff_t open = 0;  // half-matched edges: 0 at the end on a closed horizon
+  // half-matched edges: +1 for a first half, -1 for a second; 0 at the end
+  // on a closed horizon
+  std::ptrdiff_t open = 0;
+  std::uint32_t sink = 0;  // the write a first half makes nowhere (branch-free)
   for (std::size_t k = 0; k < m; ++k) {
     const Horizon& h = w.horizon[k];
     const std::uint32_t s = k < w.cavity.size() ? w.cavity[k] : w.fresh[k - w.cavity.size()];
     put_corners(s, h.v);
-    const std::uint32_t* v = tet(s);
     tn_[4 * static_cast<std::size_t>(s) + h.i] = h.out;
     tn_[h.out] = 4 * s + h.i;
-    for (std::uint32_t j = 0; j < 4; ++j) {
-      if (j == h.i) continue;
-      // the facet opposite corner j: the apex and the two corners other than h.i, j
-      const std::uint32_t qa = kOther[h.i][j][0], qb = kOther[h.i][j][1];
-      const std::uint32_t half = 4 * s + j;
+    for (const ConeFacet& f : kFacet[h.i]) {
+      const std::uint32_t half = 4 * s + f.j;
       std::uint32_t other = kDead;
       if (small) {
-        std::uint32_t la = h.loc[qa], lb = h.loc[qb];
-        if (la > lb) std::swap(la, lb);
-        std::uint32_t& e = et.pending[la * kMaxLocal + lb];
+        // the edge's entry: set by its first half, taken and cleared by
+        // the second; a first half links to kDead until the second comes
+        const std::uint32_t la = h.loc[f.a], lb = h.loc[f.b];
+        const std::uint32_t lo = la < lb ? la : lb, hi = la < lb ? lb : la;
+        std::uint32_t& e = et.pending[lo * kMaxLocal + hi];
         other = e;
-        e = other == kDead ? half : kDead;
+        const bool second = other != kDead;
+        e = second ? kDead : half;
+        tn_[half] = other;
+        *(second ? &tn_[other] : &sink) = half;
+        open += second ? -1 : 1;
+        continue;
       } else {
-        const std::uint32_t a = h.v[qa], b = h.v[qb];
+        const std::uint32_t a = h.v[f.a], b = h.v[f.b];
         const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
         std::uint64_t slot = (key * 0x9E3779B97F4A7C15ull) >> 40 & mask;
         for (;; slot = (slot + 1) & mask) {
@@ -521,7 +534,7 @@ bool Builder::link_cone(Worker& w) {
         tn_[other] = half;
       }
     }
-    if (v[0] != V_ && v[1] != V_ && v[2] != V_ && v[3] != V_) w.remember(s);
+    if (h.v[0] != V_ && h.v[1] != V_ && h.v[2] != V_ && h.v[3] != V_) w.remember(s);
   }
   if (open != 0) throw std::logic_error("rt3 (cpu): the horizon of an insertion is not a closed surface");
   // cavity slots not reused (more visible tetrahedra than horizon ridges)
