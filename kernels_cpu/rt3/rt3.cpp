@@ -462,11 +462,13 @@ bool Builder::link_cone(Worker& w) {
   for (Horizon& h : w.horizon) {
     for (const ConeFacet& f : kFacet[h.i]) {
       std::uint32_t& tag = et.tag[h.v[f.j]];
+      // selects as masks: gcc turned the ?: back into branches
       const std::uint32_t old = tag;
-      const bool first = (old & ~0xFFu) != st;
-      const std::uint32_t now = first ? (st | L) : old;
+      const std::uint32_t first = static_cast<std::uint32_t>((old & ~0xFFu) != st);
+      const std::uint32_t all = 0u - first;  // all ones on a first sight
+      const std::uint32_t now = (old & ~all) | ((st | L) & all);
       tag = now;
-      L += first ? 1u : 0u;
+      L += first;
       h.loc[f.j] = now & 0xFFu;
     }
     if (L > kMaxLocal) break;
@@ -486,7 +488,6 @@ bool Builder::link_cone(Worker& w) {
   // half-matched edges: +1 for a first half, -1 for a second; 0 at the end
   // on a closed horizon
   std::ptrdiff_t open = 0;
-  std::uint32_t sink = 0;  // the write a first half makes nowhere (branch-free)
   for (std::size_t k = 0; k < m; ++k) {
     const Horizon& h = w.horizon[k];
     const std::uint32_t s = k < w.cavity.size() ? w.cavity[k] : w.fresh[k - w.cavity.size()];
@@ -503,11 +504,16 @@ bool Builder::link_cone(Worker& w) {
         const std::uint32_t lo = la < lb ? la : lb, hi = la < lb ? lb : la;
         std::uint32_t& e = et.pending[lo * kMaxLocal + hi];
         other = e;
-        const bool second = other != kDead;
-        e = second ? kDead : half;
+        // as masks (gcc made a branch of the ?: forms): on the second half
+        // e := kDead, tn_[half] := other, tn_[other] := half; on the first
+        // e := half and tn_[half] := kDead twice (the second half's store
+        // links it later)
+        const std::uint32_t second = static_cast<std::uint32_t>(other != kDead);
+        const std::uint32_t all = 0u - second;  // all ones on the second half
+        e = half | all;
         tn_[half] = other;
-        *(second ? &tn_[other] : &sink) = half;
-        open += second ? -1 : 1;
+        tn_[(other & all) | (half & ~all)] = half | ~all;
+        open += 1 - 2 * static_cast<std::ptrdiff_t>(second);
         continue;
       } else {
         const std::uint32_t a = h.v[f.a], b = h.v[f.b];
