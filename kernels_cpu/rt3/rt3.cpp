@@ -271,8 +271,24 @@ class Builder {
   }
   bool live(std::uint32_t t) const { return t < cap_ && tv_[4 * static_cast<std::size_t>(t)] != kDead; }
 
-  // Is tetrahedron t visible from p̂ (header)?
+  // Is tetrahedron t visible from p̂ (header)? Inline only the static
+  // filter of a real tetrahedron's power test, which decides almost every
+  // call (perf: with the whole staged path inline, the ids and pointers its
+  // later stages need were spilled to the stack on every call).
   bool visible(std::uint32_t t, std::uint32_t p) const {
+    const std::uint32_t* v = tet(t);
+    const std::uint32_t a = v[0], b = v[1], c = v[2], d = v[3];
+    if ((a == V_) | (b == V_) | (c == V_) | (d == V_)) return visible_rest(t, p);
+    const Rt3Point &A = P_[a], &B = P_[b], &C = P_[c], &D = P_[d], &E = P_[p];
+    const double* x[5] = {A.xyz, B.xyz, C.xyz, D.xyz, E.xyz};
+    const double w[5] = {A.w, B.w, C.w, D.w, E.w};
+    if (const int s = pred::static_sign<5>(f_, x, w)) return s > 0;
+    return visible_rest(t, p);
+  }
+  // The rest of visible: a virtual tetrahedron's orientation test, or the
+  // power test's stages after the static filter (fast::power3d repeats
+  // that filter on these few calls; same answer).
+  __attribute__((noinline)) bool visible_rest(std::uint32_t t, std::uint32_t p) const {
     const std::uint32_t* v = tet(t);
     for (int i = 0; i < 4; ++i)
       if (v[i] == V_) {
