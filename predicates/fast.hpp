@@ -44,12 +44,20 @@ inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
   return pred::after_filters::power2d(a, b, c, d, f.dd_window());
 }
 
+// power3d's stages after the static filter: for a caller that inlines
+// static_sign<5> alone and keeps the rest out of its hot loop (kernels_cpu/rt3)
+inline int power3d_after_static(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
+  const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
+  const double w[5] = {a.w, b.w, c.w, d.w, e.w};
+  if (const int s = semi_static_sign<5>(p, w)) return s;
+  return pred::after_filters::power3d(a, b, c, d, e, f.dd_window());
+}
+
 inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {
   const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   if (const int s = static_sign<5>(f, p, w)) return s;
-  if (const int s = semi_static_sign<5>(p, w)) return s;
-  return pred::after_filters::power3d(a, b, c, d, e, f.dd_window());
+  return power3d_after_static(f, a, b, c, d, e);
 }
 
 }  // namespace flipflop::pred::fast

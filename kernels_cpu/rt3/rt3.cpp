@@ -286,8 +286,7 @@ class Builder {
     return visible_rest(t, p);
   }
   // The rest of visible: a virtual tetrahedron's orientation test, or the
-  // power test's stages after the static filter (fast::power3d repeats
-  // that filter on these few calls; same answer).
+  // power test's stages after the static filter.
   __attribute__((noinline)) bool visible_rest(std::uint32_t t, std::uint32_t p) const {
     const std::uint32_t* v = tet(t);
     for (int i = 0; i < 4; ++i)
@@ -296,7 +295,7 @@ class Builder {
         u[i] = p;
         return orient(u[0], u[1], u[2], u[3]) > 0;
       }
-    return pred::fast::power3d(f_, wpt(v[0]), wpt(v[1]), wpt(v[2]), wpt(v[3]), wpt(p)) > 0;
+    return pred::fast::power3d_after_static(f_, wpt(v[0]), wpt(v[1]), wpt(v[2]), wpt(v[3]), wpt(p)) > 0;
   }
 
   void grow(std::size_t cap) {
