@@ -1264,7 +1264,9 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   if constexpr (FF_CHECKED)
     FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
   // line 15: flip-flop (Algorithm 6)
-  ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P));
+  // the kernel's filter (over ps and the kernel point): valid for ps, so the
+  // reference's own scan of ps for one is not made
+  ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P), f);
   {
     FlipFlop ff(state, f, st);
     if (use_rounds(run)) ff.run_rounds();

@@ -88,15 +88,19 @@ Index three_one_inner(const State& st, const Quad& q) {
 
 }  // namespace
 
-State make_state(const PointSet& ps, const KernelPoint& s, poly::Polyhedron3 P) {
+State make_state(const PointSet& ps, const KernelPoint& s, poly::Polyhedron3 P, const pred::StaticFilter& filter) {
   State st;
   st.ps = &ps;
   st.s = &s;
   st.labelled.assign(P.n, 0);  // line 1: all vertices "unknown"
   st.removed.assign(P.n, 0);
-  st.filter = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), 3);
+  st.filter = filter;
   st.P = std::move(P);
   return st;
+}
+
+State make_state(const PointSet& ps, const KernelPoint& s, poly::Polyhedron3 P) {
+  return make_state(ps, s, std::move(P), pred::StaticFilter::for_points(ps.coords.data(), ps.size(), 3));
 }
 
 Decision decide(const State& st, Index u, Index w) {
