@@ -516,25 +516,15 @@ bool Builder::link_cone(Worker& w) {
     tn_[h.out] = 4 * s + h.i;
     for (const ConeFacet& f : kFacet[h.i]) {
       const std::uint32_t half = 4 * s + f.j;
+      // the other half of the edge's facet when it came before (then the
+      // entry is cleared), else kDead (then this half is entered)
       std::uint32_t other = kDead;
       if (small) {
-        // the edge's entry: set by its first half, taken and cleared by
-        // the second; a first half links to kDead until the second comes
         const std::uint32_t la = h.loc[f.a], lb = h.loc[f.b];
         const std::uint32_t lo = la < lb ? la : lb, hi = la < lb ? lb : la;
         std::uint32_t& e = et.pending[lo * kMaxLocal + hi];
         other = e;
-        // as masks (gcc made a branch of the ?: forms): on the second half
-        // e := kDead, tn_[half] := other, tn_[other] := half; on the first
-        // e := half and tn_[half] := kDead twice (the second half's store
-        // links it later)
-        const std::uint32_t second = static_cast<std::uint32_t>(other != kDead);
-        const std::uint32_t all = 0u - second;  // all ones on the second half
-        e = half | all;
-        tn_[half] = other;
-        tn_[(other & all) | (half & ~all)] = half | ~all;
-        open += 1 - 2 * static_cast<std::ptrdiff_t>(second);
-        continue;
+        e = half | (0u - static_cast<std::uint32_t>(other != kDead));  // kDead on the second half
       } else {
         const std::uint32_t a = h.v[f.a], b = h.v[f.b];
         const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
@@ -552,13 +542,14 @@ bool Builder::link_cone(Worker& w) {
           }
         }
       }
-      if (other == kDead) {
-        ++open;
-      } else {  // the other half: link both ways
-        --open;
-        tn_[half] = other;
-        tn_[other] = half;
-      }
+      // Linking as masks (gcc made a branch of the ?: forms): on the second
+      // half tn_[half] := other and tn_[other] := half; on the first
+      // tn_[half] := kDead twice (the second half's store links it later)
+      const std::uint32_t second = static_cast<std::uint32_t>(other != kDead);
+      const std::uint32_t all = 0u - second;  // all ones on the second half
+      tn_[half] = other;
+      tn_[(other & all) | (half & ~all)] = half | ~all;
+      open += 1 - 2 * static_cast<std::ptrdiff_t>(second);
     }
     if (h.v[0] != V_ && h.v[1] != V_ && h.v[2] != V_ && h.v[3] != V_) w.remember(s);
   }
