@@ -29,6 +29,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -89,29 +90,63 @@ inline bool better(double key, Index i, const Best& b) {
   if (b.i == kNone) return true;
   return key > b.key || (key == b.key && i < b.i);
 }
-template <class Key>
-Index par_argmax(std::size_t n, const Key& key) {
+// K arg-maxima in one pass: keys(p, k, state) fills k[0 .. K) for point p;
+// entry j of the result is the arg-max of key j (each by the order above).
+// state: the chunk's own State (states[c] for chunk c when states is given,
+// sized here), for a scan of its own that rides on the same pass.
+struct NoChunkState {};
+template <int K, class State = NoChunkState, class Keys>
+std::array<Index, K> par_argmax_multi(std::size_t n, const Keys& keys, std::vector<State>* states = nullptr) {
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<Best> part(chunks);
+  std::vector<std::array<Best, K>> part(chunks);
+  if (states) states->assign(chunks, State{});
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
       // `better` within a chunk, whose indices increase: after the first
       // element only a strictly larger key wins (a NaN key compares false,
-      // like -inf against any best), one comparison an element
+      // like -inf against any best), one comparison per key and element
+      State own{};
+      State& state = states ? (*states)[c] : own;
+      // (in blocks of kB points: the block's maximum per key without a
+      // branch, and only a block that beats the best is searched for the
+      // first point with that key — the same point as one comparison each)
+      constexpr std::size_t kB = 8;
       const std::size_t first = c * kChunk, end = std::min(n, (c + 1) * kChunk);
-      const double k0 = key(static_cast<Index>(first));
-      Best b{std::isnan(k0) ? -HUGE_VAL : k0, static_cast<Index>(first)};
-      for (std::size_t p = first + 1; p < end; ++p) {
-        const double k = key(static_cast<Index>(p));
-        if (k > b.key) b = {k, static_cast<Index>(p)};
+      double k0[K], best[K];
+      Index at[K];
+      keys(static_cast<Index>(first), k0, state);
+      for (int j = 0; j < K; ++j) best[j] = std::isnan(k0[j]) ? -HUGE_VAL : k0[j], at[j] = static_cast<Index>(first);
+      for (std::size_t b = first + 1; b < end; b += kB) {
+        const std::size_t m = std::min(kB, end - b);
+        double kb[kB][K], top[K];
+        for (std::size_t i = 0; i < m; ++i) keys(static_cast<Index>(b + i), kb[i], state);
+        for (int j = 0; j < K; ++j) top[j] = kb[0][j];
+        for (std::size_t i = 1; i < m; ++i)
+          for (int j = 0; j < K; ++j) top[j] = kb[i][j] > top[j] ? kb[i][j] : top[j];
+        for (int j = 0; j < K; ++j) {
+          if (!(top[j] > best[j])) continue;
+          std::size_t i = 0;
+          while (!(kb[i][j] > best[j])) ++i;
+          best[j] = kb[i][j], at[j] = static_cast<Index>(b + i);
+          for (++i; i < m; ++i)
+            if (kb[i][j] > best[j]) best[j] = kb[i][j], at[j] = static_cast<Index>(b + i);
+        }
       }
-      part[c] = b;
+      for (int j = 0; j < K; ++j) part[c][j] = Best{best[j], at[j]};
     }
   });
-  Best b;
-  for (const Best& c : part)
-    if (c.i != kNone && better(c.key, c.i, b)) b = c;
-  return b.i;
+  std::array<Index, K> out;
+  for (int j = 0; j < K; ++j) {
+    Best b;
+    for (const auto& c : part)
+      if (c[j].i != kNone && better(c[j].key, c[j].i, b)) b = c[j];
+    out[j] = b.i;
+  }
+  return out;
+}
+template <class Key>
+Index par_argmax(std::size_t n, const Key& key) {
+  return par_argmax_multi<1>(n, [&](Index p, double* k, NoChunkState&) { k[0] = key(p); })[0];
 }
 
 // ---- work units of segmented point lists ----------------------------------------
@@ -201,55 +236,62 @@ std::vector<Index> par_select(std::size_t n, const Keep& keep) {
 // exponent field e and fraction f, L = e - 1075 + ctz(f + 2^52) for e > 0,
 // -1074 + ctz(f) for subnormals.
 
-// Per chunk of the m values value(0..m): the largest magnitude, a value of
-// the lowest set bit and a non-finite value if any (0 where none).
+// One chunk's representatives: add(x) for each of its values, then put(out)
+// writes the largest magnitude, a value of the lowest set bit and a
+// non-finite value if any (0 where none) to out[0..3).
+struct FilterScan {
+  // on the bits, without a branch but the rare non-finite one: a finite
+  // value's magnitude orders as its bits without the sign; its lowest set bit
+  // is L (above), written with the subnormal case folded in (exponent field
+  // 0: no implicit bit, the scale of field 1), zeros mapped to no bit at all
+  double bad = 0.0;
+  std::uint64_t big_bits = 0;
+  int low_e = std::numeric_limits<int>::max();
+  void add(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    const std::uint64_t mag = b & ~(std::uint64_t{1} << 63);
+    if (mag >= (std::uint64_t{0x7ff} << 52)) {  // inf or NaN
+      bad = x;
+      return;
+    }
+    big_bits = std::max(big_bits, mag);
+    const int e = static_cast<int>(mag >> 52);
+    const std::uint64_t mant = (mag & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{e != 0} << 52);
+    const int lb = std::max(e, 1) - 1075 + __builtin_ctzll(mant | (std::uint64_t{1} << 63));
+    low_e = std::min(low_e, mag != 0 ? lb : std::numeric_limits<int>::max());
+  }
+  // representatives: the largest magnitude and a value of the lowest set bit,
+  // 2^low_e itself (no larger than the value it came from); the filter
+  // depends on magnitudes and that bit only
+  void put(double* out) const {
+    double big;
+    std::memcpy(&big, &big_bits, sizeof big);
+    out[0] = big;
+    out[1] = low_e == std::numeric_limits<int>::max() ? 0.0 : std::ldexp(1.0, low_e);
+    out[2] = bad;
+  }
+};
+
+// Per chunk of the m values value(0..m): FilterScan's three representatives.
 template <class Value>
 std::vector<double> filter_representatives(std::size_t m, const Value& value) {
   const std::size_t chunks = (m + kChunk - 1) / kChunk;
   std::vector<double> reps(chunks * 3, 0.0);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
-      // on the bits, without a branch but the rare non-finite one: a finite
-      // value's magnitude orders as its bits without the sign; its lowest
-      // set bit is L (above), written with the subnormal case folded
-      // in (exponent field 0: no implicit bit, the scale of field 1), zeros
-      // mapped to no bit at all
-      double bad = 0.0;
-      std::uint64_t big_bits = 0;
-      int low_e = std::numeric_limits<int>::max();
-      for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) {
-        const double x = value(i);
-        std::uint64_t b;
-        std::memcpy(&b, &x, sizeof b);
-        const std::uint64_t mag = b & ~(std::uint64_t{1} << 63);
-        if (mag >= (std::uint64_t{0x7ff} << 52)) {  // inf or NaN
-          bad = x;
-          continue;
-        }
-        big_bits = std::max(big_bits, mag);
-        const int e = static_cast<int>(mag >> 52);
-        const std::uint64_t mant = (mag & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{e != 0} << 52);
-        const int lb = std::max(e, 1) - 1075 + __builtin_ctzll(mant | (std::uint64_t{1} << 63));
-        low_e = std::min(low_e, mag != 0 ? lb : std::numeric_limits<int>::max());
-      }
-      // representatives: the largest magnitude and a value of the lowest set
-      // bit, 2^low_e itself (no larger than the value it came from); the
-      // filter depends on magnitudes and that bit only
-      double big;
-      std::memcpy(&big, &big_bits, sizeof big);
-      const double low = low_e == std::numeric_limits<int>::max() ? 0.0 : std::ldexp(1.0, low_e);
-      reps[3 * c] = big, reps[3 * c + 1] = low, reps[3 * c + 2] = bad;
+      FilterScan scan;
+      for (std::size_t i = c * kChunk; i < std::min(m, (c + 1) * kChunk); ++i) scan.add(value(i));
+      scan.put(&reps[3 * c]);
     }
   });
   return reps;
 }
 
-// largest, when given: the largest magnitude among the values and `extra`
-// (from the representatives; no pass of its own)
-template <class Value>
-pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra,
-                                          double* largest = nullptr) {
-  std::vector<double> reps = filter_representatives(m, value);
+// The filter of representatives (filter_representatives, FilterScan) and the
+// extra values; largest, when given: the largest magnitude among them.
+inline pred::StaticFilter static_filter_of(std::vector<double> reps, const std::vector<double>& extra,
+                                           double* largest = nullptr) {
   reps.insert(reps.end(), extra.begin(), extra.end());
   if (largest) {
     *largest = 0.0;
@@ -257,6 +299,14 @@ pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, con
   }
   while (reps.size() % 3) reps.push_back(0.0);
   return pred::StaticFilter::for_points(reps.data(), reps.size() / 3, 3);
+}
+
+// largest, when given: the largest magnitude among the values and `extra`
+// (from the representatives; no pass of its own)
+template <class Value>
+pred::StaticFilter parallel_static_filter(std::size_t m, const Value& value, const std::vector<double>& extra,
+                                          double* largest = nullptr) {
+  return static_filter_of(filter_representatives(m, value), extra, largest);
 }
 
 // The same over the coordinates of ps and `extra`, and ps' weights when it

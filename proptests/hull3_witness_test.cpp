@@ -20,11 +20,15 @@
 // does not hold the point, one turned inside out, a corner that has a record
 // itself, a repeated or out-of-range corner, a record for one of s's points.
 // A record dropped, with no facet and no ball, is witness-facet.
+// The box (round 0's, handed on for uniform cube points): points that rely on
+// it are accepted, and a box grown past a facet, or shrunk so that such a
+// point falls outside, is witness-facet.
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -37,6 +41,7 @@
 #include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/certify/certify_hull3_surface.hpp"
+#include "reference/certify/inner_ball.hpp"
 #include "reference/dimension.hpp"
 
 using namespace flipflop;
@@ -59,6 +64,12 @@ Witnessed run(const PointSet& ps, int threads) {
   return r;
 }
 
+bool same_box(const certify::BoxTest3& a, const certify::BoxTest3& b) {
+  for (int j = 0; j < 3; ++j)
+    if (a.lo[j] != b.lo[j] || a.hi[j] != b.hi[j]) return false;
+  return true;
+}
+
 // The kernel's output and witness at every thread count: the output is the
 // one without a witness, the witness the same, both levels certified, and
 // certify::hull3 agrees. False (nothing checked) for input that does not span
@@ -73,7 +84,7 @@ bool check_accepts(const PointSet& ps, const Check& check) {
     check(r.tris == plain);
     check(r.w.facets == r.tris);
     check(r.w.tet == first.w.tet && r.w.facet == first.w.facet && r.w.beneath == first.w.beneath &&
-          r.w.made == first.w.made && r.w.ball == first.w.ball);
+          r.w.made == first.w.made && r.w.ball == first.w.ball && same_box(r.w.box, first.w.box));
     check(r.w.beneath.size() == ps.size());
     for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
       const certify::Report rep = cpu::certify_hull3_witnessed(ps, r.tris, level, r.w, t);
@@ -528,5 +539,69 @@ TEST_CASE("hull3 witness: an output that is not the witnessed facet set is rejec
     std::vector<Triangle> tris = r.tris;
     std::swap(tris[0], tris[1]);
     REQUIRE(witnessed(ps, tris, r.w, certify::Level::exact).condition == "witness-output");
+  }
+}
+
+// The kernel's inner box (ffhull.cpp: inner_box) on points filling a cube:
+// it is handed on, the points without facet or record that lie outside the
+// ball rely on it, the certifier accepts them, the witness-free certifier
+// agrees — and a box that pokes out of the hull, or that misses one of those
+// points, is rejected with the point named.
+TEST_CASE("hull3 witness: the inner box certifies the points round 0 dropped", "[hull3_witness]") {
+  const PointSet ps = generated("cube", 100000, 11);
+  const Witnessed r = run(ps, 2);
+  REQUIRE(!r.w.box.empty());
+  REQUIRE(witnessed(ps, r.tris, r.w).ok);
+  REQUIRE(witnessed(ps, r.tris, r.w, certify::Level::exact).ok);
+  REQUIRE(certify::hull3(ps, r.tris, certify::Level::canonical).ok);
+  // which points only the box certifies: no facet, no record, strictly inside
+  // the box and, for the ball the certifier builds, not strictly inside it
+  const certify::detail::InnerBall<3> ball =
+      r.w.ball ? certify::detail::InnerBall<3>(ps, r.tris, decltype(certify::Speedups{}.for_range){})
+               : certify::detail::InnerBall<3>();
+  std::vector<char> vertex(ps.size(), 0);
+  for (const Triangle& t : r.tris)
+    for (Index v : t) vertex[v] = 1;
+  std::vector<Index> relying;
+  for (Index p = 0; p < ps.size(); ++p)
+    if (!vertex[p] && r.w.facet[p] == cpu::kNoFacet && !r.w.has_record(p) && !ball.strictly_inside(ps.point(p))) {
+      REQUIRE(r.w.box.strictly_inside(ps.point(p)));
+      relying.push_back(p);
+    }
+  REQUIRE(relying.size() > 2 * r.tris.size());  // what worth_box asks
+  // every vertex of the hull is outside the box (a point strictly inside it
+  // is strictly inside the hull)
+  for (Index p = 0; p < ps.size(); ++p)
+    if (vertex[p]) REQUIRE(!r.w.box.strictly_inside(ps.point(p)));
+  SECTION("a box grown past the hull's facets") {
+    cpu::Hull3Witness w = r.w;
+    for (int j = 0; j < 3; ++j) w.box.lo[j] -= 0.5, w.box.hi[j] += 0.5;
+    const certify::Report rep = witnessed(ps, r.tris, w);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "witness-facet");
+    REQUIRE(rep.detail.find("point " + std::to_string(relying.front()) + " ") == 0);
+    REQUIRE(rep.detail.find("the witness' box is not inside every facet") != std::string::npos);
+  }
+  SECTION("a box that misses a point relying on it") {
+    const Index q = relying[relying.size() / 2];
+    cpu::Hull3Witness w = r.w;
+    // shrink one side to just below q's coordinate: q is then on or outside
+    // the box; every point smaller than q that relied on the box must still
+    // be inside, so pick the side and check the report names q or one before
+    int side = 0;
+    double best = HUGE_VAL;
+    for (int j = 0; j < 3; ++j) {
+      const double x = ps.point(q)[j];
+      if (x - w.box.lo[j] < best) best = x - w.box.lo[j], side = j;
+    }
+    w.box.lo[side] = ps.point(q)[side];
+    const certify::Report rep = witnessed(ps, r.tris, w);
+    INFO(rep.message());
+    REQUIRE(rep.condition == "witness-facet");
+    REQUIRE(rep.detail.find("not strictly inside the witness' box") != std::string::npos);
+    Index named = 0;
+    REQUIRE(std::sscanf(rep.detail.c_str(), "point %u ", &named) == 1);
+    REQUIRE(named <= q);
+    REQUIRE(!w.box.strictly_inside(ps.point(named)));
   }
 }

@@ -1,6 +1,7 @@
 // inner_ball_test.cpp — the floating-point filter of the certifiers' inner ball
 // (reference/certify/inner_ball.hpp): whenever it says a facet clears the ball,
-// the exact rational test agrees.
+// the exact rational test agrees. And the inner box's verification
+// (reference/certify/inner_box.hpp) against an oracle in GMP rationals.
 //
 // Inputs are built at the filter's edge: r2 is the facet's squared distance
 // from the centre, rounded, then moved by a few ulps either way, so that the
@@ -14,7 +15,9 @@
 #include <cmath>
 #include <vector>
 
+#include "reference/certify/certify.hpp"
 #include "reference/certify/inner_ball.hpp"
+#include "reference/certify/inner_box.hpp"
 
 using namespace flipflop;
 
@@ -103,4 +106,95 @@ TEST_CASE("inner ball: the filter decides facets that clear by a relative 1e-6",
     RC_PRE(Ball::clears_exact(k.ps, k.facet, k.c, r * r));  // c on the inner side
     RC_ASSERT(Ball::clears_filtered(k.ps, k.facet, k.c, r * r));
   });
+}
+
+namespace {
+
+// det[a - p; b - p; c - p] in rationals (Shewchuk's orient3d(a, b, c, p)):
+// > 0 when p is below the plane in which a, b, c appear counter-clockwise,
+// i.e. on the inner side of a facet (a, b, c) counter-clockwise from outside
+int rational_side(const double* a, const double* b, const double* c, const double* p) {
+  mpq_class m[3][3];
+  for (int j = 0; j < 3; ++j) {
+    m[0][j] = mpq_class(a[j]) - mpq_class(p[j]);
+    m[1][j] = mpq_class(b[j]) - mpq_class(p[j]);
+    m[2][j] = mpq_class(c[j]) - mpq_class(p[j]);
+  }
+  const mpq_class d = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                      m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return sgn(d);
+}
+
+}  // namespace
+
+TEST_CASE("inner box: verified exactly when every corner is strictly inside every facet", "[certify][inner-box]") {
+  // a tetrahedron of small integers (scaled), its facets oriented by the
+  // rational oracle, and a box of halves near it: box_inside_facets must
+  // agree with the oracle over the eight corners, including corners exactly
+  // on a facet's plane (not strictly inside: rejected)
+  rc::prop("random tetrahedra and boxes", [] {
+    const int scale = *rc::gen::element(0, 0, 600, -600, -1000);
+    PointSet ps;
+    ps.dim = 3;
+    int sum[3] = {0, 0, 0};
+    for (int i = 0; i < 12; ++i) {
+      const int v = *rc::gen::inRange(-16, 17);
+      sum[i % 3] += v;
+      ps.coords.push_back(std::ldexp(v, scale));
+    }
+    const double *p0 = ps.point(0), *p1 = ps.point(1), *p2 = ps.point(2), *p3 = ps.point(3);
+    const int o = rational_side(p0, p1, p2, p3);
+    RC_PRE(o != 0);
+    // facets counter-clockwise from outside: the fourth point on the inner side
+    std::vector<std::array<Index, 3>> facets;
+    const Index q[4][4] = {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 3, 1}, {1, 2, 3, 0}};
+    for (const auto& f : q) {
+      const bool inner = rational_side(ps.point(f[0]), ps.point(f[1]), ps.point(f[2]), ps.point(f[3])) > 0;
+      facets.push_back(inner ? std::array<Index, 3>{f[0], f[1], f[2]} : std::array<Index, 3>{f[0], f[2], f[1]});
+    }
+    certify::BoxTest3 box;
+    for (int j = 0; j < 3; ++j) {  // around the centroid (rounded to an integer), half-extents of halves
+      const int m = sum[j] / 4, a = *rc::gen::inRange(0, 4), b = *rc::gen::inRange(0, 4);
+      box.lo[j] = std::ldexp(m - a / 2.0, scale), box.hi[j] = std::ldexp(m + b / 2.0, scale);
+    }
+    bool oracle = !box.empty();
+    for (int k = 0; k < 8 && oracle; ++k) {
+      double c[3];
+      box.corner(k, c);
+      for (const auto& f : facets)
+        if (rational_side(ps.point(f[0]), ps.point(f[1]), ps.point(f[2]), c) <= 0) oracle = false;
+    }
+    RC_TAG(oracle ? "inside" : "not inside");
+    RC_ASSERT(certify::detail::box_inside_facets(ps, facets, box, decltype(certify::Speedups{}.for_range){}) ==
+              oracle);
+  });
+}
+
+TEST_CASE("inner box: hand-made cases", "[certify][inner-box]") {
+  // the tetrahedron (0,0,0), (4,0,0), (0,4,0), (0,0,4): inside is x, y, z > 0
+  // and x + y + z < 4
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = {0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4};
+  const std::vector<std::array<Index, 3>> facets = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const auto check = [&](std::array<double, 3> lo, std::array<double, 3> hi) {
+    certify::BoxTest3 b;
+    for (int j = 0; j < 3; ++j) b.lo[j] = lo[static_cast<std::size_t>(j)], b.hi[j] = hi[static_cast<std::size_t>(j)];
+    return certify::detail::box_inside_facets(ps, facets, b, decltype(certify::Speedups{}.for_range){});
+  };
+  CHECK(check({0.5, 0.5, 0.5}, {1, 1, 1}));          // corner sum 3 < 4
+  CHECK(!check({0.5, 0.5, 0.5}, {1.5, 1.5, 1.0}));   // a corner on x + y + z = 4
+  CHECK(!check({0, 0.5, 0.5}, {1, 1, 1}));           // a corner on x = 0
+  CHECK(!check({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}));   // a corner outside
+  CHECK(!check({1, 1, 1}, {0.5, 0.5, 0.5}));         // empty
+  CHECK(!check({0.5, 0.5, 0.5}, {1, 1, HUGE_VAL}));  // not finite
+  // a facet of zero area (collinear points, as SoS hulls of degenerate input
+  // have) bounds nothing: skipped
+  ps.coords.insert(ps.coords.end(), {2, 0, 0});
+  std::vector<std::array<Index, 3>> with_flat = facets;
+  with_flat.push_back({0, 4, 1});
+  certify::BoxTest3 b;
+  for (int j = 0; j < 3; ++j) b.lo[j] = 0.5, b.hi[j] = 1;
+  CHECK(certify::detail::box_inside_facets(ps, with_flat, b, decltype(certify::Speedups{}.for_range){}));
 }

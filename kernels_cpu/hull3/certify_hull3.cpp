@@ -9,6 +9,7 @@
 #include "reference/certify/certify_detail.hpp"
 #include "reference/certify/certify_hull3_surface.hpp"
 #include "reference/certify/inner_ball.hpp"
+#include "reference/certify/inner_box.hpp"
 
 namespace flipflop::cpu {
 
@@ -69,6 +70,8 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
     // the surface certified convex, does that put it inside the hull
     const certify::detail::InnerBall<3> ball =
         w.ball ? certify::detail::InnerBall<3>(ps, tris, sp.for_range) : certify::detail::InnerBall<3>();
+    // the witness' box, likewise: every corner strictly inside every facet
+    const bool box = !w.box.empty() && certify::detail::box_inside_facets(ps, tris, w.box, sp.for_range);
     const std::size_t n = ps.size();
     // witness-tetrahedron: p strictly inside the tetrahedron (s, a, b, c) of
     // its record under the perturbation (four orient3d; that s is on the
@@ -98,7 +101,7 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
         if (ck.side(t[k], t[(k + 1) % 3], p) >= 0)
           return fail("does not hold the point: it is not strictly inside the plane through s and edge " +
                       certify::detail::edge_str(t[k], t[(k + 1) % 3]) + " (under the perturbation)");
-      if (pred::orient3d(ck.f, ck.pt(t[0]), ck.pt(t[1]), ck.pt(t[2]), ck.pt(p)) <= 0)
+      if (pred::fast::orient3d(ck.f, ck.pt(t[0]), ck.pt(t[1]), ck.pt(t[2]), ck.pt(p)) <= 0)
         return fail("does not hold the point: it is not strictly on the inner side of the record's plane (under "
                     "the perturbation)");
       return Report::pass();
@@ -108,12 +111,17 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
       const std::uint32_t f = w.facet[p];
       if (f == kNoFacet && w.has_record(p)) return check_record(p);
       if (f == kNoFacet) {
-        if (ball.strictly_inside(ps.point(p))) return Report::pass();
+        const double* x = ps.point(p);
+        if ((box && w.box.strictly_inside(x)) || ball.strictly_inside(x)) return Report::pass();
+        const std::string why_box = w.box.empty() ? "the witness has no box"
+                                    : !box         ? "the witness' box is not inside every facet"
+                                                   : "it is not strictly inside the witness' box";
         return Report::fail("witness-facet", "point " + std::to_string(p) +
                                                  " is not a vertex, the witness names no facet and no record " +
-                                                 "for it, and " +
+                                                 "for it, " +
                                                  (w.ball ? "it is not strictly inside the verified inner ball"
-                                                         : "the witness asks for no inner ball"));
+                                                         : "the witness asks for no inner ball") +
+                                                 ", and " + why_box);
       }
       if (f >= tris.size())
         return Report::fail("witness-facet", "the witness names facet " + std::to_string(f) + " for point " +

@@ -31,7 +31,11 @@
 //                        four perturbed orient3d, at both levels, as many as
 //                        for a facet
 //   witness-facet        (neither) strictly inside the exactly verified inner
-//                        ball; (a facet) the facet index is in range
+//                        ball, or strictly inside the witness' box when that
+//                        box is verified exactly against every facet (all
+//                        eight corners strictly on the inner side:
+//                        reference/certify/inner_box.hpp); (a facet) the
+//                        facet index is in range
 //   witness-cone         the named facet's cone from s contains the point
 //                        (three perturbed orient3d with s)
 //   point-inside         the point is beneath the named facet (one orient3d:
@@ -47,8 +51,9 @@
 // (Thm 6.2), with input points as vertices: P ⊆ conv(S). A point p in C_s(F)
 // on the inner side of F's plane lies in C_s(F) ∩ {inner half-space of F} =
 // conv(s, F) ⊆ P (s is on the inner side, facet-orientation); a point strictly
-// inside the inner ball lies in P (the ball is verified inside every facet's
-// inner half-space, and P, convex, is their intersection); a vertex is in P.
+// inside the inner ball or the verified box lies in P (ball and box are
+// verified inside every facet's inner half-space, and P, convex, is their
+// intersection); a vertex is in P.
 // So S ⊆ P, conv(S) ⊆ P, and P = conv(S). At the canonical level the point
 // tests are strict under the perturbation, so no non-vertex is extreme, and
 // with strictly convex edges every vertex is: the output is the SoS hull, in
@@ -57,7 +62,7 @@
 // cones still cover p): a correct hull of the exact input.
 // The records (the kernel's early removals, thesis §6.4 Algorithm 7 line 14)
 // fit the same argument. Call a point anchored when it is a vertex, has a
-// facet, or lies strictly inside the ball: by the above an anchored point is
+// facet, or lies strictly inside the ball or the verified box: by the above an anchored point is
 // in P (at the canonical level, in P's interior unless a vertex). s is in P:
 // it is strictly inside the tetrahedron of its four points, which carry no
 // record (checked), hence are anchored. A record's corners a, b, c carry no

@@ -33,6 +33,7 @@
 #include "reference/certify/certify_detail.hpp"
 #include "reference/certify/certify_hull3_surface.hpp"
 #include "reference/certify/inner_ball.hpp"
+#include "reference/certify/inner_box.hpp"
 #include "reference/checked.hpp"
 #include "reference/default_init.hpp"
 #include "reference/hull3/ffhull.hpp"
@@ -128,32 +129,152 @@ struct Plane {
   }
 };
 
+// ---- one pass over the input: extreme points and the static filter's scan --------
+// The input's extreme points in 14 directions (par_argmax_multi: the largest
+// rounded key, ties the smaller index): entries 0..6 maximise x, y, z,
+// x+y+z, x+y-z, x-y+z, -x+y+z, entries 7..13 minimise them. They serve line
+// 1 (its first two points) and the inner box. The same pass takes the static
+// filter's representatives of the coordinates (parallel.hpp: FilterScan), so
+// that the filter (with the kernel point, known only after line 1) needs no
+// pass of its own.
+constexpr int kDirs = 14;
+struct InputScan {
+  std::array<Index, kDirs> ext;
+  std::vector<double> reps;  // filter_representatives' form
+};
+InputScan scan_input(const PointSet& ps) {
+  std::vector<FilterScan> chunk;
+  InputScan in;
+  in.ext = par_argmax_multi<kDirs, FilterScan>(
+      ps.size(),
+      [&](Index p, double* k, FilterScan& f) {
+        const double* x = ps.point(p);
+        f.add(x[0]), f.add(x[1]), f.add(x[2]);
+        const double g[7] = {x[0], x[1], x[2], x[0] + x[1] + x[2], x[0] + x[1] - x[2], x[0] - x[1] + x[2],
+                             -x[0] + x[1] + x[2]};
+        for (int j = 0; j < 7; ++j) k[j] = g[j], k[7 + j] = -g[j];
+      },
+      &chunk);
+  in.reps.resize(3 * chunk.size());
+  for (std::size_t c = 0; c < chunk.size(); ++c) chunk[c].put(&in.reps[3 * c]);
+  return in;
+}
+
 // ---- line 1: the initial tetrahedron --------------------------------------------
-// Approximately extreme points (parallel arg-max of double keys), accepted when
-// exactly affinely independent; otherwise the reference's rule (which also
-// rejects lower-dimensional input with its message).
-std::array<Index, 4> initial_tetrahedron(const PointSet& ps) {
+// Approximately extreme points, accepted when exactly affinely independent:
+// a, b the extremes in x; c the point farthest from the line ab and d the
+// one farthest from the plane abc (rounded keys, ties the smaller index),
+// first among the 14 extreme points (no pass over the input), then, when
+// those are coplanar, over all points (two parallel arg-max passes);
+// otherwise the reference's rule (which also rejects lower-dimensional input
+// with its message).
+std::array<Index, 4> initial_tetrahedron(const PointSet& ps, const std::array<Index, kDirs>& ext) {
   const std::size_t n = ps.size();
   const auto P = [&](Index i) { return ps.point(i); };
-  const Index a = par_argmax(n, [&](Index p) { return -P(p)[0]; });
-  const Index b = par_argmax(n, [&](Index p) { return P(p)[0]; });
+  const Index a = ext[7], b = ext[0];  // min x, max x
   const double* A = P(a);
   const double u[3] = {P(b)[0] - A[0], P(b)[1] - A[1], P(b)[2] - A[2]};
-  const Index c = par_argmax(n, [&](Index p) {
+  const auto from_line = [&](Index p) {
     const double w[3] = {P(p)[0] - A[0], P(p)[1] - A[1], P(p)[2] - A[2]};
     const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
     return x * x + y * y + z * z;
-  });
-  const double v[3] = {P(c)[0] - A[0], P(c)[1] - A[1], P(c)[2] - A[2]};
-  const double N[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  const Index d = par_argmax(n, [&](Index p) {
-    return std::fabs(N[0] * (P(p)[0] - A[0]) + N[1] * (P(p)[1] - A[1]) + N[2] * (P(p)[2] - A[2]));
-  });
-  const int o = pred::orient3d_exact(P(a), P(b), P(c), P(d));
-  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // distinct, independent points not found
-  // (a, b, c) counter-clockwise seen from outside: d on its inner side (orient3d > 0)
-  if (o < 0) return {a, c, b, d};
-  return {a, b, c, d};
+  };
+  const auto among = [&](const auto& key) {  // the arg-max over ext, par_argmax's order
+    Best best;
+    for (Index p : ext)
+      if (better(key(p), p, best)) best = {key(p), p};
+    return best.i;
+  };
+  for (const bool all : {false, true}) {
+    const Index c = all ? par_argmax(n, from_line) : among(from_line);
+    const double v[3] = {P(c)[0] - A[0], P(c)[1] - A[1], P(c)[2] - A[2]};
+    const double N[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const auto from_plane = [&](Index p) {
+      return std::fabs(N[0] * (P(p)[0] - A[0]) + N[1] * (P(p)[1] - A[1]) + N[2] * (P(p)[2] - A[2]));
+    };
+    const Index d = all ? par_argmax(n, from_plane) : among(from_plane);
+    const int o = pred::orient3d_exact(P(a), P(b), P(c), P(d));
+    if (o == 0) continue;  // distinct, independent points not found
+    // (a, b, c) counter-clockwise seen from outside: d on its inner side (orient3d > 0)
+    if (o < 0) return {a, c, b, d};
+    return {a, b, c, d};
+  }
+  return ref::ffhull::initial_tetrahedron(ps);
+}
+
+// ---- a box inside the hull, for round 0 -------------------------------------------
+// Q = the hull of the extreme points E (up to 14, extreme_points) lies in
+// conv(S), so a point strictly inside a box strictly inside Q is strictly
+// inside conv(S) — exactly, hence under every small enough perturbation: not a
+// vertex of the SoS hull (thesis §6.4 Algorithm 7 line 14's removal, decided
+// before any cone). Round 0 drops such points without a record (construct);
+// the witness hands the box on (make_witness) and the certifier verifies it
+// against the final facets itself (certify_hull3.hpp: witness-facet), so
+// nothing here is trusted. Q by brute force over E's triples: (i, j, k) is a
+// facet when every other point of E is strictly on one side of its plane
+// (exact orient3d), oriented so that they are on its inner side; Q is used
+// only when those facets close up (every directed edge once, and its
+// reverse once) — E in general position, a simplicial polytope; otherwise
+// (a grid's coplanar corners, duplicates) no box. The box: centre m, the
+// middle of E's bounding box, half-extents t h (h: half of that box's
+// extents) with t the largest value keeping every corner inside every facet
+// in floating point, shrunk by 2^-20 (then by 1 %), and accepted only when all
+// eight corners are strictly inside every facet of Q exactly.
+// 10^6 uniform cube points: the box holds about 95 % of them, which the
+// rounds then never classify (the initial tetrahedron leaves 82 % to them).
+certify::BoxTest3 inner_box(const PointSet& ps, const std::array<Index, kDirs>& ext) {
+  std::vector<Index> e(ext.begin(), ext.end());
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  const std::size_t m = e.size();
+  if (m < 4) return {};
+  std::vector<std::array<Index, 3>> facets;
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j)
+      for (std::size_t k = j + 1; k < m; ++k) {
+        int side = 0;
+        bool facet = true;
+        for (std::size_t q = 0; q < m && facet; ++q) {
+          if (q == i || q == j || q == k) continue;
+          const int o = pred::orient3d_exact(ps.point(e[i]), ps.point(e[j]), ps.point(e[k]), ps.point(e[q]));
+          if (o == 0 || (side != 0 && o != side)) facet = false;
+          side = o;
+        }
+        if (!facet) continue;
+        if (side > 0) facets.push_back({e[i], e[j], e[k]});
+        else facets.push_back({e[i], e[k], e[j]});
+      }
+  if (facets.size() < 4) return {};
+  std::vector<std::pair<Index, Index>> edges, reversed;
+  for (const auto& f : facets)
+    for (int k = 0; k < 3; ++k) edges.push_back({f[k], f[(k + 1) % 3]}), reversed.push_back({f[(k + 1) % 3], f[k]});
+  std::sort(edges.begin(), edges.end());
+  std::sort(reversed.begin(), reversed.end());
+  if (std::adjacent_find(edges.begin(), edges.end()) != edges.end() || edges != reversed) return {};
+  double lo[3], hi[3], mid[3], h[3];
+  for (int j = 0; j < 3; ++j) {
+    lo[j] = HUGE_VAL, hi[j] = -HUGE_VAL;
+    for (Index p : e) lo[j] = std::min(lo[j], ps.point(p)[j]), hi[j] = std::max(hi[j], ps.point(p)[j]);
+    mid[j] = lo[j] / 2 + hi[j] / 2;
+    h[j] = hi[j] / 2 - lo[j] / 2;
+  }
+  double t = HUGE_VAL;
+  for (const auto& f : facets) {
+    const double *a = ps.point(f[0]), *b = ps.point(f[1]), *c = ps.point(f[2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double off = n[0] * (mid[0] - a[0]) + n[1] * (mid[1] - a[1]) + n[2] * (mid[2] - a[2]);
+    const double reach = std::fabs(n[0]) * h[0] + std::fabs(n[1]) * h[1] + std::fabs(n[2]) * h[2];
+    if (!(off < 0) || !(reach > 0)) return {};  // the centre not inside (or NaN)
+    t = std::min(t, -off / reach);
+  }
+  if (!(t > 0) || !std::isfinite(t)) return {};
+  for (const double shrink : {1 - 0x1p-20, 0.99}) {
+    certify::BoxTest3 box;
+    for (int j = 0; j < 3; ++j) box.lo[j] = mid[j] - shrink * t * h[j], box.hi[j] = mid[j] + shrink * t * h[j];
+    if (certify::detail::box_inside_facets(ps, facets, box, decltype(certify::Speedups{}.for_range){})) return box;
+  }
+  return {};
 }
 
 // ---- lines 2-14: the star-shaped polyhedron, in rounds --------------------------
@@ -501,7 +622,7 @@ struct Made {
 
 template <class Kernel>
 Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s, const double* sd,
-               const std::array<Index, 4>& tet, ref::Hull3Stats& st, Made* rec) {
+               const std::array<Index, 4>& tet, const certify::BoxTest3& box, ref::Hull3Stats& st, Made* rec) {
   std::uint32_t* const record = rec ? rec->record.data() : nullptr;
   const std::size_t n = ps.size();
   const bool fast = sd != nullptr && f.bound(4, false) < HUGE_VAL;
@@ -560,6 +681,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
     const auto classify0 = [&](std::size_t, Index p, const double* x, Key& key) -> std::uint32_t {
+      if (box.strictly_inside(x)) return kNone;  // line 14 before any cone (inner_box), no record
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -1163,7 +1285,8 @@ std::vector<Triangle> canonical_with_ranks(const ref::poly::Polyhedron3& P, std:
 template <class Kernel>
 void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedron3& P,
                   const std::vector<Triangle>& out, const std::vector<std::uint32_t>& rank,
-                  const std::array<Index, 4>& tet, const double* s_approx, Hull3Witness& w, StageClock& clock) {
+                  const std::array<Index, 4>& tet, const certify::BoxTest3& box, const double* s_approx,
+                  Hull3Witness& w, StageClock& clock) {
   const std::size_t n = ps.size();
   w.tet = tet;
   w.facets = out;
@@ -1205,14 +1328,36 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   };
   // a point inside the ball drops its record (the ball test is the
   // certifier's cheapest); a point removed early keeps it and walks no more;
-  // the rest — the points flip-flop removed (3-1 flips) — walk
-  par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t p = lo; p < hi; ++p) {
-      if (P.deg[p] != 0) continue;
-      if (ball.strictly_inside(ps.point(static_cast<Index>(p)))) w.beneath[p] = kNoFacet;
-      else if (!w.has_record(p)) w.facet[p] = rank[locate(static_cast<Index>(p))];
-    }
+  // a point strictly inside round 0's box has no record (construct) and waits
+  // for the decision on the box; the rest — the points flip-flop removed (3-1
+  // flips) — walk. The box goes to the certifier when it pays there
+  // (worth_box); otherwise its points walk too.
+  std::vector<std::size_t> pending((n + kChunk - 1) / kChunk, 0);
+  par_for(pending.size(), 1, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t c = lo; c < hi; ++c)
+      for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
+        if (P.deg[p] != 0) continue;
+        const double* x = ps.point(static_cast<Index>(p));
+        if (w.has_record(p)) {
+          if (ball.strictly_inside(x)) w.beneath[p] = kNoFacet;
+        } else if (box.strictly_inside(x)) {
+          pending[c] += !ball.strictly_inside(x);
+        } else if (!ball.strictly_inside(x)) {
+          w.facet[p] = rank[locate(static_cast<Index>(p))];
+        }
+      }
   });
+  std::size_t in_box = 0;
+  for (std::size_t c : pending) in_box += c;
+  w.box = worth_box(in_box, out.size()) ? box : certify::BoxTest3{};
+  if (in_box > 0 && w.box.empty())
+    par_for(n, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t p = lo; p < hi; ++p) {
+        const double* x = ps.point(static_cast<Index>(p));
+        if (P.deg[p] == 0 && !ball.strictly_inside(x) && !w.has_record(p) && box.strictly_inside(x))
+          w.facet[p] = rank[locate(static_cast<Index>(p))];
+      }
+    });
   clock.mark("witness: walks");
 }
 
@@ -1232,11 +1377,12 @@ bool use_rounds(FlipFlopRun run) {
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s,
                                        const double* sd,
-                                       const std::array<Index, 4>& tet, ref::Hull3Stats& st, StageClock& clock,
-                                       const double* s_approx, Hull3Witness* witness, FlipFlopRun run) {
+                                       const std::array<Index, 4>& tet, const certify::BoxTest3& box,
+                                       ref::Hull3Stats& st, StageClock& clock, const double* s_approx,
+                                       Hull3Witness* witness, FlipFlopRun run) {
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
-  Mesh M = construct(ps, f, largest, s, sd, tet, st, made ? &*made : nullptr);
+  Mesh M = construct(ps, f, largest, s, sd, tet, box, st, made ? &*made : nullptr);
   if (witness) {  // the records as they are: indices into the triangles made
     witness->beneath = std::move(made->record);
     witness->made = std::move(made->made);
@@ -1277,7 +1423,7 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
   clock.mark("canonical output");
   if (witness) {
-    make_witness(ps, s, state.P, out, rank, tet, s_approx, *witness, clock);
+    make_witness(ps, s, state.P, out, rank, tet, box, s_approx, *witness, clock);
   }
   return out;
 }
@@ -1288,19 +1434,23 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
     throw std::invalid_argument("hull3 (cpu): too many points for 32-bit indices");
   }
-  const std::array<Index, 4> tet = initial_tetrahedron(ps);  // line 1
+  InputScan scan = scan_input(ps);
+  const std::array<Index, 4> tet = initial_tetrahedron(ps, scan.ext);  // line 1
+  const certify::BoxTest3 box = inner_box(ps, scan.ext);
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
   double largest = 0.0;  // the largest coordinate magnitude, the kernel point's included when inside
   const StaticFilter f =
-      parallel_static_filter(ps.coords.size(), [c = ps.coords.data()](std::size_t i) { return c[i]; },
-                             inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{}, &largest);
-  clock.mark("initial tetrahedron and static filter");
-  if (inside) return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, st, clock, s.data(), witness, run);
+      static_filter_of(std::move(scan.reps), inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{},
+                       &largest);
+  clock.mark("initial tetrahedron, inner box and static filter");
+  if (inside)
+    return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, box, st, clock, s.data(), witness,
+                            run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, st, clock, s.data(), witness, run);
+  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, box, st, clock, s.data(), witness, run);
 }
 
 }  // namespace

@@ -7,14 +7,16 @@
 // this order): a final facet (`facet`), a tetrahedron (s, a, b, c) that holds
 // it (`beneath`: the record of its early removal in the construction rounds,
 // thesis §6.4 Algorithm 7 line 14), or none when it lies strictly inside the
-// inner ball. Only the points with neither a record nor the ball are located
-// by a walk over the final hull's cones (ffhull.cpp: make_witness).
+// inner ball or the witness' box. Only the points with neither a record nor
+// the ball or box are located by a walk over the final hull's cones
+// (ffhull.cpp: make_witness).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "reference/certify/inner_box.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::cpu {
@@ -59,11 +61,23 @@ struct Hull3Witness {
   // inner_ball.hpp, verified exactly) and accepts a non-vertex without a
   // facet when it lies strictly inside that ball.
   bool ball = false;
+  // An axis-aligned box (empty: none) that the certifier verifies exactly
+  // against every facet (reference/certify/inner_box.hpp) and then accepts a
+  // non-vertex without a facet or record in when the point lies strictly
+  // inside it. The kernel drops the points strictly inside its box in round 0
+  // without a record (ffhull.cpp: inner_box, construct) and hands the box on
+  // when it certifies enough points to pay for its 8 tests per facet
+  // (worth_box).
+  certify::BoxTest3 box;
 };
 
 // The rule the kernel and the witnessed certifier share for `ball`
 // (certify::hull3's: the ball's exact set-up, one GMP test per facet, pays
 // when the points to locate outnumber the facets eightfold).
 inline bool worth_inner_ball(std::size_t non_vertices, std::size_t facets) { return non_vertices >= 8 * facets; }
+// The rule for handing on the box: its verification is 8 exact orient3d per
+// facet; a point it certifies would otherwise cost a record's or a facet's
+// four (or a walk), so it pays from two such points per facet on.
+inline bool worth_box(std::size_t certified, std::size_t facets) { return certified >= 2 * facets; }
 
 }  // namespace flipflop::cpu

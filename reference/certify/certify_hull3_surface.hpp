@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "predicates/fast.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/rational_point.hpp"
 #include "predicates/static_filter.hpp"
@@ -44,7 +45,7 @@ struct Hull3Surface {
 
   // orient3d(a, b, c, s) under the perturbation
   int facet_vs_s(const Triangle& t) const {
-    if (s_is_double) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), {s_id, sd});
+    if (s_is_double) return pred::fast::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), {s_id, sd});
     pred::MixedRow r[4] = {row(t[0]), row(t[1]), row(t[2]), srow()};
     return pred::mixed_sign(4, r, true);
   }
@@ -52,14 +53,14 @@ struct Hull3Surface {
   // plane (s, a, b) from the third vertex of a facet (a, b, c) facing away
   // from s, i.e. outside the facet's cone across its edge (a, b)
   int side(Index a, Index b, Index p) const {
-    if (s_is_double) return pred::orient3d(f, {s_id, sd}, pt(a), pt(b), pt(p));
+    if (s_is_double) return pred::fast::orient3d(f, {s_id, sd}, pt(a), pt(b), pt(p));
     pred::MixedRow r[4] = {srow(), row(a), row(b), row(p)};
     return pred::mixed_sign(4, r, true);
   }
   // geometric orientation of p against facet (a, b, c): > 0 inner side
   // (perturbed at the canonical level, exact at the exact level)
   int facet_vs_point(const Triangle& t, Index p) const {
-    if (canonical) return pred::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), pt(p));
+    if (canonical) return pred::fast::orient3d(f, pt(t[0]), pt(t[1]), pt(t[2]), pt(p));
     return pred::orient3d_exact(P(t[0]), P(t[1]), P(t[2]), P(p));
   }
   // p on the wrong side of facet t for the level (canonical: not strictly
