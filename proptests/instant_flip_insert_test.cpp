@@ -13,14 +13,17 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <string>
 
+#include "proptests/support/rc_scaled.hpp"
 #include "proptests/support/rtd_inputs.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/certify_rtd.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
+#include "reference/rtd/failure_time.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "reference/rtd/perturbation_order.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -218,4 +221,59 @@ TEST_CASE("instant flip: every order of simultaneous events reaches the same tri
     }
     CHECK(instant_flips > 0);
   }
+}
+
+// The moving model's filtered stage (failure_time.cpp: filter_motion, the
+// Laplace expansion in ErrDouble with the last row set exactly) against its
+// exact stage (GMP): whenever the filter is certain of a sign — Orient at
+// t = 0 and t = 1, and the direction B - A — it is the exact one, and the
+// approximate failure time lies within its proven relative bound of the exact
+// ratio A / (A - B). On random points and weights, and on integer lattices
+// with integer weights (exact zeros everywhere: translated coordinates, equal
+// weights, flat sets, where the filter must say "uncertain").
+TEST_CASE("moving model: the filtered stage's certain signs and times are the exact stage's", "[instant_flip]") {
+  test::prop_scaled("random and lattice tuples, d = 2..5", 1, [] {
+    const int d = *rc::gen::inRange(2, 6);
+    const bool lattice = *rc::gen::arbitrary<bool>();
+    const int k = d + 2;
+    const std::size_t n = static_cast<std::size_t>(k) + 3;
+    PointSet ps;
+    ps.dim = d;
+    std::vector<double> w(n), u(n);
+    for (std::size_t p = 0; p < n; ++p) {
+      for (int j = 0; j < d; ++j)
+        ps.coords.push_back(lattice ? *rc::gen::inRange(0, 3) : *rc::gen::inRange(0, 1 << 20) / double(1 << 20));
+      w[p] = lattice ? *rc::gen::inRange(0, 2) : *rc::gen::inRange(0, 1000) * 1e-4;
+      u[p] = lattice ? *rc::gen::inRange(0, 2) : *rc::gen::inRange(0, 1000) * 1e-4;
+    }
+    std::vector<Index> id(n);
+    std::iota(id.begin(), id.end(), Index{0});
+    std::shuffle(id.begin(), id.end(), std::mt19937(*rc::gen::arbitrary<unsigned>()));
+    const ref::MovingModel mm(ps, w, u);
+    ref::RidgeMotion m;
+    try {
+      m = ref::ridge_motion(mm, id.data(), id[static_cast<std::size_t>(d)], id[static_cast<std::size_t>(d) + 1]);
+    } catch (const std::invalid_argument&) {  // C1 flat, found by the exact stage the filter deferred to
+      RC_TAG("flat simplex");
+      return;
+    }
+    RC_TAG(m.filtered ? "filtered" : "exact at once");
+    if (!m.filtered) return;
+    ref::RidgeMotion x = m;
+    try {
+      x.ensure_exact();
+    } catch (const std::invalid_argument&) {  // a zero-volume C1: the filter must not have been certain of it
+      RC_FAIL("the filter was certain of a simplex the exact stage finds flat");
+    }
+    const int a0 = sgn(x.a0), a1 = sgn(x.a1), dir = sgn(mpz_class(x.a1 - x.a0));
+    if (const int s = pred::sign_if_certain(m.fa0)) RC_ASSERT(s == a0);
+    if (const int s = pred::sign_if_certain(m.fa1)) RC_ASSERT(s == a1);
+    if (const int s = pred::sign_if_certain(m.fd)) RC_ASSERT(s == dir);
+    if (std::isfinite(m.t_rel) && dir != 0) {
+      mpq_class t(x.a0, mpz_class(x.a0 - x.a1));  // A / (A - B), exactly
+      t.canonicalize();
+      const double te = t.get_d();
+      RC_ASSERT(std::fabs(m.t_approx - te) <= std::fabs(te) * m.t_rel * (1 + 0x1p-40) + 1e-300);
+    }
+  });
 }
