@@ -239,8 +239,10 @@ TEST_CASE("hull3 witness: a corrupted early-removal record is rejected", "[hull3
   const PointSet ps = generated("ball", 2000, 3);
   const Witnessed r = run(ps, 2);
   REQUIRE(witnessed(ps, r.tris, r.w).ok);
-  REQUIRE(!r.w.ball);  // every early removal keeps its record
-  REQUIRE(records(r.w) > ps.size() / 2);
+  REQUIRE(!r.w.ball);  // every removal in the rounds keeps its record
+  // (round 0's inner ball — ffhull.cpp: inner_region — drops about half of
+  // the points before any cone, without a record; the rest are many)
+  REQUIRE(records(r.w) > ps.size() / 4);
   const auto expect = [&](const cpu::Hull3Witness& w, Index p, const std::string& what,
                           certify::Level level = certify::Level::canonical) {
     const certify::Report rep = witnessed(ps, r.tris, w, level);

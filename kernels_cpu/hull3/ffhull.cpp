@@ -202,27 +202,37 @@ std::array<Index, 4> initial_tetrahedron(const PointSet& ps, const std::array<In
   return ref::ffhull::initial_tetrahedron(ps);
 }
 
-// ---- a box inside the hull, for round 0 -------------------------------------------
-// Q = the hull of the extreme points E (up to 14, extreme_points) lies in
-// conv(S), so a point strictly inside a box strictly inside Q is strictly
-// inside conv(S) — exactly, hence under every small enough perturbation: not a
-// vertex of the SoS hull (thesis §6.4 Algorithm 7 line 14's removal, decided
-// before any cone). Round 0 drops such points without a record (construct);
-// the witness hands the box on (make_witness) and the certifier verifies it
-// against the final facets itself (certify_hull3.hpp: witness-facet), so
-// nothing here is trusted. Q by brute force over E's triples: (i, j, k) is a
-// facet when every other point of E is strictly on one side of its plane
-// (exact orient3d), oriented so that they are on its inner side; Q is used
-// only when those facets close up (every directed edge once, and its
-// reverse once) — E in general position, a simplicial polytope; otherwise
-// (a grid's coplanar corners, duplicates) no box. The box: centre m, the
-// middle of E's bounding box, half-extents t h (h: half of that box's
-// extents) with t the largest value keeping every corner inside every facet
-// in floating point, shrunk by 2^-20 (then by 1 %), and accepted only when all
-// eight corners are strictly inside every facet of Q exactly.
-// 10^6 uniform cube points: the box holds about 95 % of them, which the
-// rounds then never classify (the initial tetrahedron leaves 82 % to them).
-certify::BoxTest3 inner_box(const PointSet& ps, const std::array<Index, kDirs>& ext) {
+// ---- a box and a ball inside the hull, for round 0 ------------------------------
+// Q = the hull of the extreme points E (up to 14, scan_input) lies in
+// conv(S), so a point strictly inside a box or a ball strictly inside Q is
+// strictly inside conv(S) — exactly, hence under every small enough
+// perturbation: not a vertex of the SoS hull (thesis §6.4 Algorithm 7 line
+// 14's removal, decided before any cone). Round 0 drops such points without a
+// record (construct); the witness hands the box on (make_witness), and a
+// dropped point that neither the box nor the certifier's own inner ball
+// holds is located by a walk, so the certifier trusts nothing here. Q by
+// brute force over E's triples: (i, j, k) is a facet when every other point
+// of E is strictly on one side of its plane (exact orient3d), oriented so
+// that they are on its inner side; Q is used only when those facets close up
+// (every directed edge once, and its reverse once) — E in general position, a
+// simplicial polytope; otherwise (a grid's coplanar corners, duplicates) no
+// box and no ball. Both are centred at m, the middle of E's bounding box. The
+// box: half-extents t h (h: half of that box's extents) with t the largest
+// value keeping every corner inside every facet in floating point, shrunk by
+// 2^-20 (then by 1 %), accepted only when all eight corners are strictly
+// inside every facet of Q exactly. The ball: radius 0.999999 times m's
+// smallest floating distance to a facet, each facet verified exactly as the
+// certifier's inner ball is (inner_ball.hpp: clears_filtered, clears_exact).
+// Only the one of larger volume is kept. 10^6 uniform cube points: the box
+// holds about 95 % of them, which the rounds then never classify (the
+// initial tetrahedron leaves 82 % to them); 10^6 ball points: the ball about
+// half (the box would hold a quarter).
+struct InnerRegion {
+  certify::BoxTest3 box;
+  certify::BallTest<3> ball;  // limit 0: none
+  bool strictly_inside(const double* x) const { return box.strictly_inside(x) || ball.strictly_inside(x); }
+};
+InnerRegion inner_region(const PointSet& ps, const std::array<Index, kDirs>& ext) {
   std::vector<Index> e(ext.begin(), ext.end());
   std::sort(e.begin(), e.end());
   e.erase(std::unique(e.begin(), e.end()), e.end());
@@ -258,7 +268,7 @@ certify::BoxTest3 inner_box(const PointSet& ps, const std::array<Index, kDirs>& 
     mid[j] = lo[j] / 2 + hi[j] / 2;
     h[j] = hi[j] / 2 - lo[j] / 2;
   }
-  double t = HUGE_VAL;
+  double t = HUGE_VAL, dmin = HUGE_VAL;
   for (const auto& f : facets) {
     const double *a = ps.point(f[0]), *b = ps.point(f[1]), *c = ps.point(f[2]);
     const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
@@ -267,14 +277,37 @@ certify::BoxTest3 inner_box(const PointSet& ps, const std::array<Index, kDirs>& 
     const double reach = std::fabs(n[0]) * h[0] + std::fabs(n[1]) * h[1] + std::fabs(n[2]) * h[2];
     if (!(off < 0) || !(reach > 0)) return {};  // the centre not inside (or NaN)
     t = std::min(t, -off / reach);
+    dmin = std::min(dmin, -off / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
   }
-  if (!(t > 0) || !std::isfinite(t)) return {};
-  for (const double shrink : {1 - 0x1p-20, 0.99}) {
-    certify::BoxTest3 box;
-    for (int j = 0; j < 3; ++j) box.lo[j] = mid[j] - shrink * t * h[j], box.hi[j] = mid[j] + shrink * t * h[j];
-    if (certify::detail::box_inside_facets(ps, facets, box, decltype(certify::Speedups{}.for_range){})) return box;
+  InnerRegion in;
+  if (t > 0 && std::isfinite(t))
+    for (const double shrink : {1 - 0x1p-20, 0.99}) {
+      certify::BoxTest3 box;
+      for (int j = 0; j < 3; ++j) box.lo[j] = mid[j] - shrink * t * h[j], box.hi[j] = mid[j] + shrink * t * h[j];
+      if (certify::detail::box_inside_facets(ps, facets, box, decltype(certify::Speedups{}.for_range){})) {
+        in.box = box;
+        break;
+      }
+    }
+  const double r = dmin * 0.999999, r2 = r * r;
+  if (r > 0 && std::isfinite(r2) && r2 >= 0x1p-900) {
+    using Ball = certify::detail::InnerBall<3>;
+    bool clear = true;
+    for (const auto& f : facets)
+      clear = clear && (Ball::clears_filtered(ps, f, mid, r2) || Ball::clears_exact(ps, f, mid, r2));
+    if (clear) {
+      for (int j = 0; j < 3; ++j) in.ball.s[j] = mid[j];
+      in.ball.limit = r2 * (1 - 0x1p-40);  // inner_ball.hpp's per-point test
+    }
   }
-  return {};
+  // only the larger of the two is tested (the other adds little and costs a
+  // test per point: the ball on uniform cube points 2.3 ms of 18 ms)
+  const double vbox = in.box.empty() ? 0.0 : (in.box.hi[0] - in.box.lo[0]) * (in.box.hi[1] - in.box.lo[1]) *
+                                                  (in.box.hi[2] - in.box.lo[2]);
+  const double vball = 4.18879 * in.ball.limit * std::sqrt(in.ball.limit);  // 4/3 pi r^3
+  if (vball > vbox) in.box = certify::BoxTest3{};
+  else in.ball = certify::BallTest<3>{};
+  return in;
 }
 
 // ---- lines 2-14: the star-shaped polyhedron, in rounds --------------------------
@@ -622,7 +655,7 @@ struct Made {
 
 template <class Kernel>
 Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s, const double* sd,
-               const std::array<Index, 4>& tet, const certify::BoxTest3& box, ref::Hull3Stats& st, Made* rec) {
+               const std::array<Index, 4>& tet, const InnerRegion& inner, ref::Hull3Stats& st, Made* rec) {
   std::uint32_t* const record = rec ? rec->record.data() : nullptr;
   const std::size_t n = ps.size();
   const bool fast = sd != nullptr && f.bound(4, false) < HUGE_VAL;
@@ -681,7 +714,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
     for (int t = 0; t < 4; ++t) X.face_plane(face[t], &M.v[3 * t]);
     const Units U = make_units(S.lo);
     const auto classify0 = [&](std::size_t, Index p, const double* x, Key& key) -> std::uint32_t {
-      if (box.strictly_inside(x)) return kNone;  // line 14 before any cone (inner_box), no record
+      if (inner.strictly_inside(x)) return kNone;  // line 14 before any cone (inner_region), no record
       std::uint32_t t;
       if (X.side(da, d, a, p, x) > 0) {
         if (X.side(dc, d, c, p, x) < 0) t = X.side(ac, a, c, p, x) > 0 ? 1 : 0;  // wedge (a, c, d)
@@ -1330,7 +1363,8 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
   // certifier's cheapest); a point removed early keeps it and walks no more;
   // a point strictly inside round 0's box has no record (construct) and waits
   // for the decision on the box; the rest — the points flip-flop removed (3-1
-  // flips) — walk. The box goes to the certifier when it pays there
+  // flips), and those round 0's ball dropped that the certifier's ball does
+  // not hold — walk. The box goes to the certifier when it pays there
   // (worth_box); otherwise its points walk too.
   std::vector<std::size_t> pending((n + kChunk - 1) / kChunk, 0);
   par_for(pending.size(), 1, [&](std::size_t lo, std::size_t hi) {
@@ -1377,12 +1411,12 @@ bool use_rounds(FlipFlopRun run) {
 template <class Kernel>
 std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f, double largest, const Kernel& s,
                                        const double* sd,
-                                       const std::array<Index, 4>& tet, const certify::BoxTest3& box,
+                                       const std::array<Index, 4>& tet, const InnerRegion& inner,
                                        ref::Hull3Stats& st, StageClock& clock, const double* s_approx,
                                        Hull3Witness* witness, FlipFlopRun run) {
   std::optional<Made> made;
   if (witness) made.emplace().record.assign(ps.size(), kNoFacet);
-  Mesh M = construct(ps, f, largest, s, sd, tet, box, st, made ? &*made : nullptr);
+  Mesh M = construct(ps, f, largest, s, sd, tet, inner, st, made ? &*made : nullptr);
   if (witness) {  // the records as they are: indices into the triangles made
     witness->beneath = std::move(made->record);
     witness->made = std::move(made->made);
@@ -1423,7 +1457,7 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
   clock.mark("canonical output");
   if (witness) {
-    make_witness(ps, s, state.P, out, rank, tet, box, s_approx, *witness, clock);
+    make_witness(ps, s, state.P, out, rank, tet, inner.box, s_approx, *witness, clock);
   }
   return out;
 }
@@ -1436,7 +1470,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   }
   InputScan scan = scan_input(ps);
   const std::array<Index, 4> tet = initial_tetrahedron(ps, scan.ext);  // line 1
-  const certify::BoxTest3 box = inner_box(ps, scan.ext);
+  const InnerRegion inner = inner_region(ps, scan.ext);
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
@@ -1444,13 +1478,13 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   const StaticFilter f =
       static_filter_of(std::move(scan.reps), inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{},
                        &largest);
-  clock.mark("initial tetrahedron, inner box and static filter");
+  clock.mark("initial tetrahedron, inner box and ball, static filter");
   if (inside)
-    return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, box, st, clock, s.data(), witness,
+    return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, inner, st, clock, s.data(), witness,
                             run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
-  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, box, st, clock, s.data(), witness, run);
+  return hull_with_kernel(ps, f, largest, exact, nullptr, tet, inner, st, clock, s.data(), witness, run);
 }
 
 }  // namespace
