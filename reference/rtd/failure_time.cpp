@@ -405,6 +405,16 @@ int compare_times(const RidgeMotion& f, const RidgeMotion& g, const Perturbation
   const int df = f.direction(), dg = g.direction();
   if (df == 0 || dg == 0) throw std::logic_error("compare_times: a ridge has no changing time");
   const int orient = df * dg;  // sign of D_F D_G
+  // Filter: t ∈ [t~ - |t~| r, t~ + |t~| r] for both (r = t_rel, proven).
+  // First: disjoint intervals are different times, so the two sets below
+  // cannot be the same (the heap's comparisons mostly end here, without the
+  // two sorts).
+  if (std::isfinite(f.t_rel) && std::isfinite(g.t_rel)) {
+    const double tf = f.t_approx, tg = g.t_approx;
+    const double rf = std::fabs(tf) * f.t_rel * (1 + 0x1p-40), rg = std::fabs(tg) * g.t_rel * (1 + 0x1p-40);
+    if (tf + rf < tg - rg) return -1;
+    if (tg + rg < tf - rf) return 1;
+  }
   // The same d+2 points: the same (perturbed) determinant up to sign, the
   // same flip — equal times (§9.2.2), decided combinatorially.
   {
@@ -416,13 +426,6 @@ int compare_times(const RidgeMotion& f, const RidgeMotion& g, const Perturbation
       for (int j = i; j > 0 && sg[static_cast<std::size_t>(j)] < sg[static_cast<std::size_t>(j) - 1]; --j)
         std::swap(sg[static_cast<std::size_t>(j)], sg[static_cast<std::size_t>(j) - 1]);
     if (sf == sg) return 0;
-  }
-  // Filter: t ∈ [t~ - |t~| r, t~ + |t~| r] for both (r = t_rel, proven).
-  if (std::isfinite(f.t_rel) && std::isfinite(g.t_rel)) {
-    const double tf = f.t_approx, tg = g.t_approx;
-    const double rf = std::fabs(tf) * f.t_rel * (1 + 0x1p-40), rg = std::fabs(tg) * g.t_rel * (1 + 0x1p-40);
-    if (tf + rf < tg - rg) return -1;
-    if (tg + rg < tf - rf) return 1;
   }
   f.ensure_exact();
   g.ensure_exact();
