@@ -43,6 +43,7 @@
 #include "reference/certify/certify_hull3_surface.hpp"
 #include "reference/certify/inner_ball.hpp"
 #include "reference/dimension.hpp"
+#include "reference/hull3/ffhull.hpp"
 
 using namespace flipflop;
 
@@ -606,4 +607,35 @@ TEST_CASE("hull3 witness: the inner box certifies the points round 0 dropped", "
     REQUIRE(named <= q);
     REQUIRE(!w.box.strictly_inside(ps.point(named)));
   }
+}
+
+// From 2^17 points on, round 0 may drop the points inside the inner ball of
+// a sample's hull (ffhull.cpp: sample_ball, after a probe of 4096 points):
+// a spherical shell of thickness 0.01, a ball and a controlled ball take
+// that path, a cube keeps its box, a thin shell (1e-4) keeps the probe's
+// ball. Each output is the reference's, and the witness is certified at both
+// levels, the witness-free certifier agreeing.
+TEST_CASE("hull3 witness: inputs large enough for the sample hull's ball equal the reference and are certified",
+          "[hull3_witness][long]") {
+  for (const char* fam : {"sphere", "ball", "cball", "cube"}) {
+    gen::Options o;
+    o.seed = 21;
+    const PointSet ps = gen::generate(fam, 150000, o);
+    INFO(fam);
+    const Witnessed r = run(ps, 2);
+    REQUIRE(r.tris == ref::hull3_ffhull(ps));
+    for (certify::Level level : {certify::Level::canonical, certify::Level::exact}) {
+      const certify::Report rep = witnessed(ps, r.tris, r.w, level);
+      INFO(rep.message());
+      REQUIRE(rep.ok);
+    }
+    REQUIRE(certify::hull3(ps, r.tris, certify::Level::canonical).ok);
+  }
+  gen::Options o;
+  o.seed = 22;
+  o.thickness = 1e-4;
+  const PointSet thin = gen::generate("sphere", 150000, o);
+  const Witnessed r = run(thin, 2);
+  REQUIRE(r.tris == ref::hull3_ffhull(thin));
+  REQUIRE(witnessed(thin, r.tris, r.w).ok);
 }

@@ -231,6 +231,16 @@ struct InnerRegion {
   certify::BoxTest3 box;
   certify::BallTest<3> ball;  // limit 0: none
   bool strictly_inside(const double* x) const { return box.strictly_inside(x) || ball.strictly_inside(x); }
+  double box_volume() const {
+    return box.empty() ? 0.0 : (box.hi[0] - box.lo[0]) * (box.hi[1] - box.lo[1]) * (box.hi[2] - box.lo[2]);
+  }
+  double ball_volume() const { return 4.18879 * ball.limit * std::sqrt(ball.limit); }  // 4/3 pi r^3
+  // only the larger of the two is tested (the other adds little and costs a
+  // test per point: the ball on uniform cube points 2.3 ms of 18 ms)
+  void keep_larger() {
+    if (ball_volume() > box_volume()) box = certify::BoxTest3{};
+    else ball = certify::BallTest<3>{};
+  }
 };
 InnerRegion inner_region(const PointSet& ps, const std::array<Index, kDirs>& ext) {
   std::vector<Index> e(ext.begin(), ext.end());
@@ -300,13 +310,6 @@ InnerRegion inner_region(const PointSet& ps, const std::array<Index, kDirs>& ext
       in.ball.limit = r2 * (1 - 0x1p-40);  // inner_ball.hpp's per-point test
     }
   }
-  // only the larger of the two is tested (the other adds little and costs a
-  // test per point: the ball on uniform cube points 2.3 ms of 18 ms)
-  const double vbox = in.box.empty() ? 0.0 : (in.box.hi[0] - in.box.lo[0]) * (in.box.hi[1] - in.box.lo[1]) *
-                                                  (in.box.hi[2] - in.box.lo[2]);
-  const double vball = 4.18879 * in.ball.limit * std::sqrt(in.ball.limit);  // 4/3 pi r^3
-  if (vball > vbox) in.box = certify::BoxTest3{};
-  else in.ball = certify::BallTest<3>{};
   return in;
 }
 
@@ -1463,6 +1466,80 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
 }
 
 std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock, Hull3Witness* witness,
+                              FlipFlopRun run);
+
+// ---- a ball inside the hull of a sample, for round 0 ------------------------------
+// The hull of every k-th input point (sample_size of them, by this kernel) lies in
+// conv(S); the inner ball of its facets (inner_ball.hpp: centred where the
+// facets are farthest, 0.999999 of the smallest floating distance, every
+// facet verified exactly) is then strictly inside conv(S), and round 0 drops
+// the points strictly inside it like those of the extreme points' box and
+// ball (inner_region) — when it is the largest of the three. It serves input
+// that packs its points just inside its hull: 10^6 points in a spherical
+// shell of thickness 0.01 have none within 0.49 of the centre, where the 14
+// extreme points' ball ends (0.40), but about two thirds within the sample
+// hull's inner ball. The sample hull is this kernel's output and is not
+// certified here: were its ball wrong, a dropped hull vertex would be missing
+// from the output, and the certifier — which locates every dropped point
+// itself unless its own ball or the verified box holds it (make_witness,
+// certify_hull3.hpp) — would reject the result; no answer rests on it.
+// (n / 16 points, at most 2^16, from n = 2^17 on)
+constexpr std::size_t kSampleMax = std::size_t{1} << 16, kSampleFrom = std::size_t{1} << 17;
+std::size_t sample_size(std::size_t n) { return std::min(n / 16, kSampleMax); }
+// The inner ball of the hull of m points, every (n / m)-th from 0; none when
+// the sample is flat or the ball would not pay (worth_inner_ball).
+certify::BallTest<3> ball_of_sample(const PointSet& ps, FlipFlopRun run, std::size_t m) {
+  const std::size_t n = ps.size(), k = n / m;
+  PointSet sample;
+  sample.dim = 3;
+  std::vector<double> xyz(3 * m);
+  for (std::size_t i = 0; i < m; ++i)
+    for (int j = 0; j < 3; ++j) xyz[3 * i + static_cast<std::size_t>(j)] = ps.point(i * k)[j];
+  sample.coords = std::move(xyz);
+  ref::Hull3Stats st;
+  StageClock quiet(nullptr);
+  std::vector<Triangle> tris;
+  try {
+    tris = compute(sample, st, quiet, nullptr, run);
+  } catch (const std::invalid_argument&) {  // a flat sample (of input that is not): no ball
+    return {};
+  }
+  if (!worth_inner_ball(n - m, tris.size())) return {};
+  return certify::detail::InnerBall<3>(sample, tris, par_for_range()).test();
+}
+
+// The fraction of m sample points (every (n / m)-th) strictly inside b.
+double held_fraction(const certify::BallTest<3>& b, const PointSet& ps, std::size_t m) {
+  const std::size_t k = ps.size() / m;
+  std::size_t held = 0;
+  for (std::size_t i = 0; i < m; ++i) held += b.strictly_inside(ps.point(i * k + k / 2));
+  return static_cast<double>(held) / static_cast<double>(m);
+}
+
+// First a probe of kProbe points: its ball, when it holds at least a tenth
+// of the input (estimated on other points), says the input packs points just
+// inside its hull, and the sample of sample_size(n) points gives a closer
+// ball; otherwise the probe's ball is kept (a thin shell, thickness 1e-4:
+// almost every point of a sample is a vertex of its hull, whose 2^16 points
+// cost more than the ball saves).
+constexpr std::size_t kProbe = 4096;
+certify::BallTest<3> sample_ball(const PointSet& ps, FlipFlopRun run) {
+  const certify::BallTest<3> probe = ball_of_sample(ps, run, kProbe);
+  const double f = held_fraction(probe, ps, kProbe);
+  if (f < 0.1) return probe;
+  return ball_of_sample(ps, run, sample_size(ps.size()));
+}
+
+// Whether the region already holds 90 % of kProbe sample points (uniform cube
+// points: the box about 95 %): then no sample hull is made.
+bool holds_most(const InnerRegion& in, const PointSet& ps) {
+  const std::size_t k = ps.size() / kProbe;
+  std::size_t held = 0;
+  for (std::size_t i = 0; i < kProbe; ++i) held += in.strictly_inside(ps.point(i * k + k / 2));
+  return held >= kProbe / 10 * 9;
+}
+
+std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageClock& clock, Hull3Witness* witness,
                               FlipFlopRun run) {
   if (ps.dim != 3 || ps.size() < 4 || ps.size() >= kNone / 2) {
     ref::ffhull::initial_tetrahedron(ps);  // throws the reference's message
@@ -1470,7 +1547,13 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   }
   InputScan scan = scan_input(ps);
   const std::array<Index, 4> tet = initial_tetrahedron(ps, scan.ext);  // line 1
-  const InnerRegion inner = inner_region(ps, scan.ext);
+  InnerRegion inner = inner_region(ps, scan.ext);
+  if (ps.size() >= kSampleFrom && !holds_most(inner, ps)) {
+    InnerRegion sampled;
+    sampled.ball = sample_ball(ps, run);
+    if (sampled.ball_volume() > std::max(inner.ball_volume(), inner.box_volume())) inner = sampled;
+  }
+  inner.keep_larger();
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
