@@ -5,7 +5,7 @@
 # one run: the timings are not the point here.
 #   cmake -DFLIPFLOP=<path to flipflop> -P check_stages_csv.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/bench_csv.cmake)
-foreach(job "hull3;ball;read .xyz;read .npy;compute: initial tetrahedron and static filter;compute: construction rounds;compute: flip-flop;compute: canonical output;compute: witness: inner ball;compute: witness: walks;certify;certify without witness (not in the total);write;total (.npy)"
+foreach(job "hull3;ball;read .xyz;read .npy;compute: initial tetrahedron, inner box and ball, static filter;compute: construction rounds;compute: flip-flop;compute: canonical output;compute: witness: inner ball;compute: witness: walks;certify;certify without witness (not in the total);write;total (.npy)"
             "hull2;disk;read .xyz;read .npy;compute: throw-away;compute: sort by x;compute: split and flip-pop;compute: output;certify;write;total (.npy)")
   list(GET job 0 kind)
   list(GET job 1 dist)

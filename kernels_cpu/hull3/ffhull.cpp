@@ -228,6 +228,7 @@ std::array<Index, 4> initial_tetrahedron(const PointSet& ps, const std::array<In
 // initial tetrahedron leaves 82 % to them); 10^6 ball points: the ball about
 // half (the box would hold a quarter).
 struct InnerRegion {
+  bool closed = false;  // Q was found (its facets close up)
   certify::BoxTest3 box;
   certify::BallTest<3> ball;  // limit 0: none
   bool strictly_inside(const double* x) const { return box.strictly_inside(x) || ball.strictly_inside(x); }
@@ -290,6 +291,7 @@ InnerRegion inner_region(const PointSet& ps, const std::array<Index, kDirs>& ext
     dmin = std::min(dmin, -off / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
   }
   InnerRegion in;
+  in.closed = true;
   if (t > 0 && std::isfinite(t))
     for (const double shrink : {1 - 0x1p-20, 0.99}) {
       certify::BoxTest3 box;
@@ -1548,12 +1550,6 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   InputScan scan = scan_input(ps);
   const std::array<Index, 4> tet = initial_tetrahedron(ps, scan.ext);  // line 1
   InnerRegion inner = inner_region(ps, scan.ext);
-  if (ps.size() >= kSampleFrom && !holds_most(inner, ps)) {
-    InnerRegion sampled;
-    sampled.ball = sample_ball(ps, run);
-    if (sampled.ball_volume() > std::max(inner.ball_volume(), inner.box_volume())) inner = sampled;
-  }
-  inner.keep_larger();
   // line 4: the kernel point
   std::array<double, 3> s{};
   const bool inside = rounded_centroid(ps, tet, s);
@@ -1561,6 +1557,17 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
   const StaticFilter f =
       static_filter_of(std::move(scan.reps), inside ? std::vector<double>(s.begin(), s.end()) : std::vector<double>{},
                        &largest);
+  // the sample's ball only where the static filter is on: at extreme
+  // magnitudes (1e±300) the sample hull runs on the exact stages and an inner
+  // ball cannot be verified (inner_ball.hpp: r2 >= 2^-900, finite)
+  // (and only where the 14 extreme points are in general position: a grid's
+  // or duplicates' degenerate sample costs its SoS stages for little)
+  if (ps.size() >= kSampleFrom && f.bound(4, false) < HUGE_VAL && inner.closed && !holds_most(inner, ps)) {
+    InnerRegion sampled;
+    sampled.ball = sample_ball(ps, run);
+    if (sampled.ball_volume() > std::max(inner.ball_volume(), inner.box_volume())) inner = sampled;
+  }
+  inner.keep_larger();
   clock.mark("initial tetrahedron, inner box and ball, static filter");
   if (inside)
     return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, inner, st, clock, s.data(), witness,

@@ -104,8 +104,9 @@ enum class FlipFlopRun { automatic, fifo, rounds };
 struct Hull3Options {
   int threads = 0;  // worker threads; 0: the runtime's default
   FlipFlopRun flip_flop = FlipFlopRun::automatic;
-  // when set, filled with the seconds of each stage: initial tetrahedron and
-  // static filter, construction rounds, flip-flop, canonical output
+  // when set, filled with the seconds of each stage: initial tetrahedron,
+  // inner box and ball (ffhull.cpp: inner_region, sample_ball) and static
+  // filter, construction rounds, flip-flop, canonical output
   StageTimes* times = nullptr;
   // when set, filled with the witness for cpu::certify_hull3_witnessed
   // (hull3_witness.hpp): s's tetrahedron, the output, and per point the
