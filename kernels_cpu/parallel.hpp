@@ -120,8 +120,9 @@ std::array<Index, K> par_argmax_multi(std::size_t n, const Keys& keys, std::vect
         const std::size_t m = std::min(kB, end - b);
         double kb[kB][K], top[K];
         for (std::size_t i = 0; i < m; ++i) keys(static_cast<Index>(b + i), kb[i], state);
-        for (int j = 0; j < K; ++j) top[j] = kb[0][j];
-        for (std::size_t i = 1; i < m; ++i)
+        // (from -inf, so that a NaN key, which compares false, never hides the block's others)
+        for (int j = 0; j < K; ++j) top[j] = -HUGE_VAL;
+        for (std::size_t i = 0; i < m; ++i)
           for (int j = 0; j < K; ++j) top[j] = kb[i][j] > top[j] ? kb[i][j] : top[j];
         for (int j = 0; j < K; ++j) {
           if (!(top[j] > best[j])) continue;

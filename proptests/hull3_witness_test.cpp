@@ -545,7 +545,7 @@ TEST_CASE("hull3 witness: an output that is not the witnessed facet set is rejec
   }
 }
 
-// The kernel's inner box (ffhull.cpp: inner_box) on points filling a cube:
+// The kernel's inner box (ffhull.cpp: inner_region) on points filling a cube:
 // it is handed on, the points without facet or record that lie outside the
 // ball rely on it, the certifier accepts them, the witness-free certifier
 // agrees — and a box that pokes out of the hull, or that misses one of those

@@ -65,7 +65,7 @@ struct Hull3Witness {
   // against every facet (reference/certify/inner_box.hpp) and then accepts a
   // non-vertex without a facet or record in when the point lies strictly
   // inside it. The kernel drops the points strictly inside its box in round 0
-  // without a record (ffhull.cpp: inner_box, construct) and hands the box on
+  // without a record (ffhull.cpp: inner_region, construct) and hands the box on
   // when it certifies enough points to pay for its 8 tests per facet
   // (worth_box).
   certify::BoxTest3 box;

@@ -18,8 +18,9 @@
 // the facets bound a convex region (certify_hull3_surface.hpp), as for the
 // inner ball. A facet of zero area (three collinear points, which SoS hulls of
 // degenerate input have) bounds nothing and is skipped, as the ball skips it:
-// it is the one facet that gives 0 at all eight corners. Where the box comes from does not matter (kernels_cpu/hull3
-// proposes one from the extreme points of the input, ffhull.cpp: inner_box).
+// it is the one facet that gives 0 at all eight corners. Where the box comes
+// from does not matter (kernels_cpu/hull3 proposes one from the extreme points
+// of the input, ffhull.cpp: inner_region).
 #pragma once
 
 #include <cmath>
@@ -52,8 +53,8 @@ namespace detail {
 
 // Whether every corner of the (non-empty, finite) box lies strictly on the
 // inner side of every facet (a, b, c) of non-zero area, counter-clockwise
-// seen from outside: orient3d(a, b, c, corner) > 0 exactly. Facets run through for_range
-// (Speedups::for_range; may be empty: sequential).
+// seen from outside: orient3d(a, b, c, corner) > 0 exactly. Facets run
+// through for_range (Speedups::for_range; may be empty: sequential).
 template <class Facet, class ForRange>
 bool box_inside_facets(const PointSet& ps, const std::vector<Facet>& facets, const BoxTest3& box,
                        const ForRange& for_range) {

@@ -155,12 +155,7 @@ bool filter_motion(const MovingModel& mm, RidgeMotion& m) {
   const Index last = m.pts[static_cast<std::size_t>(k - 1)];
   ErrDouble X[kMaxRidgeRows * (kMaxRidgeRows - 1)];
   ErrDouble h0[kMaxRidgeRows], h1[kMaxRidgeRows];
-  // The last row, translated to itself, is exactly (0, .., 0, 1) with
-  // heights 0: set so, not computed (0 - 0 carries the underflow allowance
-  // 2^-1072 as its error, and every product with such a subnormal error took
-  // a floating-point assist: 2.5 us a call, 20 ms of the 10^5-point 3D
-  // update's ridge scan).
-  for (int r = 0; r < k - 1; ++r) {
+  for (int r = 0; r < k; ++r) {
     const Index p = m.pts[static_cast<std::size_t>(r)];
     ErrDouble sq;
     for (int j = 0; j < d; ++j) {
@@ -172,23 +167,13 @@ bool filter_motion(const MovingModel& mm, RidgeMotion& m) {
     h0[r] = sq - (ErrDouble(mm.w()[p]) - ErrDouble(mm.w()[last]));
     h1[r] = sq - (ErrDouble(mm.u()[p]) - ErrDouble(mm.u()[last]));
   }
-  for (int j = 0; j < d; ++j) X[(k - 1) * cols + j] = ErrDouble(0.0);
-  X[(k - 1) * cols + d] = ErrDouble(1.0);
-  h0[k - 1] = h1[k - 1] = ErrDouble(0.0);
-  // maximal minors by the subset expansion of maximal_minors(); a subset
-  // with the last row is exactly 0 below k - 1 rows (a zero row in columns
-  // 0 .. size-1) and, at k - 1 rows (the 1-column last), exactly the subset
-  // without it (the last row's only term, at an even position)
+  // maximal minors by the subset expansion of maximal_minors()
   ErrDouble D[1u << kMaxRidgeRows];
-  const unsigned full = (1u << k) - 1u, lastbit = 1u << (k - 1);
+  const unsigned full = (1u << k) - 1u;
   for (int i = 0; i < k; ++i) D[1u << i] = X[i * cols + 0];
   const auto& by_size = subsets_by_size(k);
   for (int size = 2; size <= k - 1; ++size)
     for (unsigned s : by_size[static_cast<std::size_t>(size)]) {
-      if (s & lastbit) {
-        D[s] = size < k - 1 ? ErrDouble(0.0) : D[s ^ lastbit];
-        continue;
-      }
       ErrDouble acc;
       int pos = 0;
       for (int i = 0; i < k; ++i) {
@@ -208,7 +193,8 @@ bool filter_motion(const MovingModel& mm, RidgeMotion& m) {
     const bool negate = (orient_c1 > 0) == (((r + d) & 1) == 0);
     const ErrDouble c = negate ? -minor : minor;
     const Index p = m.pts[static_cast<std::size_t>(r)];
-    if (r < k - 1) a0 = a0 + c * h0[r], a1 = a1 + c * h1[r];  // (the last row's heights are 0)
+    a0 = a0 + c * h0[r];
+    a1 = a1 + c * h1[r];
     dd = dd + c * (ErrDouble(mm.w()[p]) - ErrDouble(mm.u()[p]));  // h(1) - h(0) = w - u
   }
   m.fa0 = a0;
