@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -952,8 +953,8 @@ class FlipFlop {
         }
         case Action::flip31_v:
         case Action::flip31_d: {  // lines 8-9
-          const std::vector<Index> L = ref::poly::link(P_, d.inner);
           const std::uint32_t t = ref::poly::flip31(P_, d.inner);
+          const Triangle L = P_.tri[t];  // the link of d.inner, in ref::poly::link's order (flip31 keeps it)
           st_.removed[d.inner] = 1;
           ++stats_.flips_3_1;
           Q.push_back({L[0], L[1], t});
@@ -972,8 +973,7 @@ class FlipFlop {
           break;
       }
     }
-    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left.
-    if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
+    final_check();
   }
 
   // Flip-flop in rounds (§6.4.1, with the labelling of §3.3.1). A round:
@@ -1120,8 +1120,7 @@ class FlipFlop {
         if (won[i] && ck[i].ns == 3) P_.free_slots.push_back(ck[i].slot[1]), P_.free_slots.push_back(ck[i].slot[2]);
       cand.swap(next);
     }
-    // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left.
-    if (std::string p = ref::ff3::final_problem(st_); !p.empty()) throw std::logic_error("hull3 (cpu): " + p);
+    final_check();
   }
 
  private:
@@ -1132,6 +1131,22 @@ class FlipFlop {
     Index u, w;
     std::uint32_t hint;  // a slot near the edge when it was queued
   };
+  // Theorems 6.2 and 6.12: all edges convex and no non-extreme vertex left —
+  // ref::ff3::final_problem, in the same order with the same message, reading
+  // each edge's far apex through the adjacency instead of finding the edge
+  void final_check() const {
+    for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
+      if (P_.alive[t])
+        for (int k = 0; k < 3; ++k) {
+          const Index u = P_.tri[t][k], w = P_.tri[t][(k + 1) % 3];
+          if (u < w && orient3(u, w, P_.tri[t][(k + 2) % 3], P_.apex(P_.twin({t, k}))) < 0)
+            throw std::logic_error("hull3 (cpu): flip-flop ended with the reflex edge " + std::to_string(u) + " " +
+                                   std::to_string(w));
+        }
+    for (Index v = 0; v < P_.n; ++v)
+      if (st_.labelled[v] && P_.is_vertex(v))
+        throw std::logic_error("hull3 (cpu): flip-flop ended with the non-extreme vertex " + std::to_string(v));
+  }
   // every edge, in the order of ref::poly::edges, with its slot as the hint
   // every edge once (line 2), in slot order, into `to` (a container with push_back)
   template <class To>
@@ -1246,7 +1261,23 @@ class FlipFlop {
     if (hint < P_.tri.size() && P_.alive[hint])
       for (int j = 0; j < 3; ++j)
         if (ref::poly::DEdge e = in_slot(P_.adj[hint][j], u, w); e.valid()) return e;
-    return ref::poly::find_edge(P_, u, w);
+    return find_edge(u, w);
+  }
+  // ref::poly::find_edge(P_, u, w) around the endpoint of smaller degree: 3
+  // in 4 of the edges that miss their hint were flipped away since they were
+  // queued (10^6 sphere-shell points), and proving that walks a whole star.
+  ref::poly::DEdge find_edge(Index u, Index w) const {
+    if (u >= P_.n || w >= P_.n || P_.deg[u] == 0 || P_.deg[w] == 0) return {};
+    const bool from_u = P_.deg[u] <= P_.deg[w];
+    const Index v = from_u ? u : w;  // walk around v's triangles
+    std::uint32_t t = P_.corner[v];
+    for (std::uint32_t steps = 0; steps < P_.deg[v]; ++steps) {
+      const int k = pos(t, v);
+      // around u: u -> w is (k, k + 1); around w: u -> w is (k + 2, k)
+      if (from_u ? P_.tri[t][(k + 1) % 3] == w : P_.tri[t][(k + 2) % 3] == u) return {t, from_u ? k : (k + 2) % 3};
+      t = P_.adj[t][(k + 2) % 3];
+    }
+    return {};
   }
   int orient3(Index a, Index b, Index c, Index p) const {
     const PointSet& ps = *st_.ps;
@@ -1254,7 +1285,27 @@ class FlipFlop {
   }
   bool in_cone(Index a, Index b, Index c, Index p) const { return ref::poly::in_cone(*st_.s, a, b, c, p); }
 
-  // ff3::decide, line by line (flip_flop_3d.cpp)
+  // ff3::decide, line by line (flip_flop_3d.cpp), with its cone tests reduced
+  // to two orientations. Every triangle of the polyhedron has s beneath it
+  // (§6.4.1's first technique; Lemma 6.1: the polyhedron stays star-shaped
+  // w.r.t. s through every flip), i.e. s.side(x, y, z) = +1 for each of its
+  // triangles (x, y, z) — the fact ff3's `reflex` already rests on. The quad's
+  // triangles are (a, b, c) and (b, a, d), so of the twelve signs that
+  // in_cone(b, c, d, a), in_cone(a, c, d, b) and s_in_tetrahedron compare,
+  // all but X = s.side(b, c, d) and Y = s.side(a, c, d) (the two planes
+  // through s and the link cd) are known (a swap of two vertices negates):
+  //   in_cone(b, c, d, a): X == side(b, c, a) = +1, Y = side(c, d, a) == X,
+  //                        side(d, b, a) = side(b, a, d) = +1 == X;
+  //   in_cone(a, c, d, b): Y == side(a, c, b) = -1, X = side(c, d, b) == Y,
+  //                        side(d, a, b) = -side(b, a, d) = -1 == Y;
+  //   s_in_tetrahedron:    side(a, b, c) = +1 == o, -side(a, b, d) = +1 == o,
+  //                        Y == o, -X == o.
+  // So a is inside the cone of bcd exactly when X = Y = +1, b inside that of
+  // acd exactly when X = Y = -1, the cone C_s(T_e) is convex (neither)
+  // exactly when X != Y, and s lies in abcd exactly when o = Y = +1 = -X:
+  // the same decisions as the reference's from 2 kernel-point orientations
+  // instead of up to 8 (10^6 points of the sphere shell, the sample hull's
+  // run included: 1.81 M -> 0.63 M; flip-flop stage 0.121 -> 0.088 s).
   ref::ff3::Decision decide(const Quad& q) const {
     using Action = ref::ff3::Action;
     constexpr Index kNo = ~Index{0};
@@ -1264,26 +1315,26 @@ class FlipFlop {
     const int o = orient3(q.a, q.b, q.c, q.d);
     const bool is_reflex = o < 0;
     if (!is_reflex && x == kNo) return {};
+    const ref::KernelPoint& s = *st_.s;
+    const int X = s.side(q.b, q.c, q.d), Y = s.side(q.a, q.c, q.d);
+    const bool a_in = X > 0 && Y > 0, b_in = X < 0 && Y < 0;
+    assert(a_in == in_cone(q.b, q.c, q.d, q.a) && b_in == in_cone(q.a, q.c, q.d, q.b));
     // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
-    int a_in = -1;  // in_cone(b, c, d, a), when computed
     Index inner = kNo;
-    if (P_.deg[q.a] == 3) {
-      a_in = in_cone(q.b, q.c, q.d, q.a);
-      if (a_in) inner = q.a;
-    }
-    if (inner == kNo && P_.deg[q.b] == 3 && in_cone(q.a, q.c, q.d, q.b)) inner = q.b;
+    if (P_.deg[q.a] == 3 && a_in) inner = q.a;
+    else if (P_.deg[q.b] == 3 && b_in) inner = q.b;
     if (inner != kNo) {  // line 8
       if (st_.labelled[inner]) return {Action::flip31_d, inner};
       if (is_reflex) return {Action::flip31_v, inner};
       return {};
     }
     // line 11: C_s(T_e) convex
-    if (a_in < 0) a_in = in_cone(q.b, q.c, q.d, q.a);
-    const bool b_in = !a_in && in_cone(q.a, q.c, q.d, q.b);
     if (!a_in && !b_in) {
       if (x == kNo) return is_reflex ? ref::ff3::Decision{Action::flip22_v, 0} : ref::ff3::Decision{};
       // lines 14-15: D-criterion, flippable when s is not inside abcd
-      if ((x == q.a || x == q.b) && !s_in_tetrahedron(q, o)) return {Action::flip22_d, 0};
+      const bool s_in = o > 0 && Y > 0 && X < 0;
+      assert(s_in == s_in_tetrahedron(q, o));
+      if ((x == q.a || x == q.b) && !s_in) return {Action::flip22_d, 0};
       return {};
     }
     // lines 16-18: label the inner endpoint (Lemma 6.5)
@@ -1291,8 +1342,9 @@ class FlipFlop {
     if (!st_.labelled[in] && is_reflex) return {Action::label, in};
     return {};
   }
-  // s inside the tetrahedron abcd, o = orient3d(a, b, c, d) (ff3's s_in_tetrahedron)
-  bool s_in_tetrahedron(const Quad& q, int o) const {
+  // s inside the tetrahedron abcd, o = orient3d(a, b, c, d) (ff3's
+  // s_in_tetrahedron; decide's assertion compares its shortcut with it)
+  [[maybe_unused]] bool s_in_tetrahedron(const Quad& q, int o) const {
     const ref::KernelPoint& s = *st_.s;
     return s.side(q.a, q.b, q.c) == o && -s.side(q.a, q.b, q.d) == o && s.side(q.a, q.c, q.d) == o &&
            -s.side(q.b, q.c, q.d) == o;

@@ -64,13 +64,7 @@ struct UnionFind {
 
 }  // namespace
 
-DEdge Polyhedron3::twin(DEdge e) const {
-  const std::uint32_t o = adj[e.t][e.k];
-  const Index a = tail(e), b = head(e);
-  for (int k = 0; k < 3; ++k)
-    if (tri[o][k] == b && tri[o][(k + 1) % 3] == a) return {o, k};
-  throw std::logic_error("polyhedron3: adjacency without the twin edge");
-}
+void Polyhedron3::no_twin() { throw std::logic_error("polyhedron3: adjacency without the twin edge"); }
 
 std::string surface_problem(std::size_t n, const std::vector<Triangle>& tris) {
   if (tris.size() < 4)

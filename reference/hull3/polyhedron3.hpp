@@ -55,7 +55,17 @@ struct Polyhedron3 {
   Index head(DEdge e) const { return tri[e.t][(e.k + 1) % 3]; }
   Index apex(DEdge e) const { return tri[e.t][(e.k + 2) % 3]; }
   // the same edge, directed the other way, in the neighbouring triangle
-  DEdge twin(DEdge e) const;
+  // (inline: flip-flop asks for it at every step)
+  DEdge twin(DEdge e) const {
+    const std::uint32_t o = adj[e.t][e.k];
+    const Index a = tail(e), b = head(e);
+    for (int k = 0; k < 3; ++k)
+      if (tri[o][k] == b && tri[o][(k + 1) % 3] == a) return {o, k};
+    no_twin();
+  }
+
+ private:
+  [[noreturn]] static void no_twin();
 };
 
 // Why `tris` is not a closed, coherently oriented 2-manifold of genus 0 over
