@@ -157,6 +157,32 @@ TEST_CASE("hull3 cpu: points in the plane of a face are inserted furthest first 
   }
 }
 
+// The exact kernel point (§6.4.2: the rounded centroid of an almost flat
+// initial tetrahedron is not strictly inside it): flip-flop's side tests go
+// through the rational point by input index (FlipFlop::side without
+// coordinates). Points of [0, 1]^2 at two heights one ulp apart, or 0 and
+// 2^-1074, many of them coplanar; each input counted must take that path, and
+// some must.
+TEST_CASE("hull3 cpu: almost flat inputs on the exact kernel point equal the reference", "[hull3_cpu]") {
+  std::size_t runs = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+    for (const bool subnormal : {false, true}) {
+      const PointSet ps = test::almost_flat_slab(seed, subnormal, seed <= 3 ? 40 : 3000);
+      const std::string expect = ref_text(ps);
+      INFO("seed " << seed << " subnormal " << subnormal << ": " << expect.substr(0, 80));
+      if (is_error(expect)) continue;  // all points on one plane: rejected by both
+      bool exact = false;
+      for (const Run& run : kRuns) {
+        ref::Hull3Stats st;
+        REQUIRE(cpu_text(ps, run.threads, &st, run.flip_flop) == expect);
+        exact = st.exact_kernel_point == 1;
+      }
+      runs += exact;
+    }
+  std::cout << "hull3 cpu: " << runs << " of 12 almost flat inputs on the exact kernel point\n";
+  REQUIRE(runs >= 4);
+}
+
 TEST_CASE("hull3 cpu: large ball, sphere and box inputs equal the reference, certified", "[hull3_cpu][long]") {
   for (const char* fam : {"ball", "sphere", "box", "cball", "sphere-lattice", "grid3"}) {
     gen::Options o;

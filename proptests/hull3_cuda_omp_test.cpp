@@ -213,17 +213,7 @@ TEST_CASE("hull3 cuda-omp: almost flat slabs on the exact kernel point equal the
   std::size_t runs = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed)
     for (const bool subnormal : {false, true}) {
-      std::mt19937_64 rng(seed);
-      std::uniform_real_distribution<double> unit(0.0, 1.0);
-      std::uniform_int_distribution<int> level(0, 1);
-      PointSet ps;
-      ps.dim = 3;
-      const std::size_t n = seed <= 3 ? 40 : 2000;
-      for (std::size_t i = 0; i < n; ++i) {
-        const int l = level(rng);
-        const double z = subnormal ? l * 4.9406564584124654e-324 : (l ? std::nextafter(1.0, 2.0) : 1.0);
-        ps.coords.insert(ps.coords.end(), {std::round(unit(rng) * 64) / 64, std::round(unit(rng) * 64) / 64, z});
-      }
+      const PointSet ps = test::almost_flat_slab(seed, subnormal, seed <= 3 ? 40 : 2000);
       const std::string expect = ref_text(ps);
       INFO("seed " << seed << " subnormal " << subnormal << ": " << expect.substr(0, 80));
       if (is_error(expect)) continue;  // all points on one plane: rejected by both

@@ -916,9 +916,21 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
 // triangle that had it when it was queued, or a neighbour of that slot)
 // before walking around its tail, and orient3d of input points goes through
 // the per-input static filter first.
+// A vertex of the polyhedron during flip-flop: its coordinates and its input
+// index (the SoS id of every predicate) in one 32-byte line.
+struct alignas(32) FlipVertex {
+  double x[3];
+  Index id;
+};
+
 class FlipFlop {
  public:
-  FlipFlop(ref::ff3::State& st, const StaticFilter& f, ref::Hull3Stats& stats) : st_(st), P_(st.P), f_(f), stats_(stats) {}
+  // P over the local vertex numbers 0..P.n-1 of v (P.n of them); s: the
+  // kernel point over input indices, sd its coordinates when it is a double
+  // point (DoubleKernel, SoS id sid), else null
+  FlipFlop(ref::poly::Polyhedron3& P, const FlipVertex* v, const ref::KernelPoint& s, const double* sd, PointId sid,
+           const StaticFilter& f, ref::Hull3Stats& stats)
+      : P_(P), v_(v), s_(s), sd_(sd), sid_(sid), f_(f), stats_(stats), labelled_(P.n, 0) {}
 
   void run() {
     using Action = ref::ff3::Action;
@@ -937,7 +949,7 @@ class FlipFlop {
       switch (d.action) {
         case Action::none: break;
         case Action::label: {  // lines 16-19: the edges around the labelled vertex
-          st_.labelled[d.inner] = 1;
+          labelled_[d.inner] = 1;
           ++stats_.labelled_non_extreme;
           const Index a = d.inner;
           const std::uint32_t t0 = P_.corner[a];
@@ -955,7 +967,6 @@ class FlipFlop {
         case Action::flip31_d: {  // lines 8-9
           const std::uint32_t t = ref::poly::flip31(P_, d.inner);
           const Triangle L = P_.tri[t];  // the link of d.inner, in ref::poly::link's order (flip31 keeps it)
-          st_.removed[d.inner] = 1;
           ++stats_.flips_3_1;
           Q.push_back({L[0], L[1], t});
           Q.push_back({L[1], L[2], t});
@@ -1139,22 +1150,24 @@ class FlipFlop {
       if (P_.alive[t])
         for (int k = 0; k < 3; ++k) {
           const Index u = P_.tri[t][k], w = P_.tri[t][(k + 1) % 3];
-          if (u < w && orient3(u, w, P_.tri[t][(k + 2) % 3], P_.apex(P_.twin({t, k}))) < 0)
-            throw std::logic_error("hull3 (cpu): flip-flop ended with the reflex edge " + std::to_string(u) + " " +
-                                   std::to_string(w));
+          if (v_[u].id < v_[w].id && orient3(u, w, P_.tri[t][(k + 2) % 3], P_.apex(P_.twin({t, k}))) < 0)
+            throw std::logic_error("hull3 (cpu): flip-flop ended with the reflex edge " + std::to_string(v_[u].id) +
+                                   " " + std::to_string(v_[w].id));
         }
     for (Index v = 0; v < P_.n; ++v)
-      if (st_.labelled[v] && P_.is_vertex(v))
-        throw std::logic_error("hull3 (cpu): flip-flop ended with the non-extreme vertex " + std::to_string(v));
+      if (labelled_[v] && P_.is_vertex(v))
+        throw std::logic_error("hull3 (cpu): flip-flop ended with the non-extreme vertex " + std::to_string(v_[v].id));
   }
-  // every edge, in the order of ref::poly::edges, with its slot as the hint
-  // every edge once (line 2), in slot order, into `to` (a container with push_back)
+  // every edge once (line 2), in the order of ref::poly::edges (slot order,
+  // from the endpoint of smaller input index), with its slot as the hint,
+  // into `to` (a container with push_back)
   template <class To>
   void all_edges(To& to) const {
     for (std::uint32_t t = 0; t < P_.tri.size(); ++t)
       if (P_.alive[t])
         for (int k = 0; k < 3; ++k)
-          if (P_.tri[t][k] < P_.tri[t][(k + 1) % 3]) to.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
+          if (v_[P_.tri[t][k]].id < v_[P_.tri[t][(k + 1) % 3]].id)
+            to.push_back({P_.tri[t][k], P_.tri[t][(k + 1) % 3], t});
   }
   struct Checked {  // a candidate of a round: its edge (e, twin f), quad, decision, claimed slots
     ref::poly::DEdge e, f;
@@ -1183,7 +1196,7 @@ class FlipFlop {
   void apply(const Checked& c) {
     using Action = ref::ff3::Action;
     if (c.d.action == Action::label) {
-      __atomic_store_n(&st_.labelled[c.d.inner], std::uint8_t{1}, __ATOMIC_RELAXED);
+      __atomic_store_n(&labelled_[c.d.inner], std::uint8_t{1}, __ATOMIC_RELAXED);
     } else if (c.ns == 2) {  // (a, b, c), (b, a, d) -> (a, d, c), (d, b, c) in the slots of e and its twin
       const std::uint32_t t1 = c.e.t, t2 = c.f.t;
       const Index a = c.q.a, b = c.q.b, cc = c.q.c, d = c.q.d;
@@ -1211,7 +1224,6 @@ class FlipFlop {
       for (Index v : L) set_corner(v, t), add_deg(v, -1);
       P_.corner[a] = kNone;
       P_.deg[a] = 0;
-      st_.removed[a] = 1;
     }
   }
   // The outer edges of winner i's new triangles: adj entries pointing at the
@@ -1280,10 +1292,18 @@ class FlipFlop {
     return {};
   }
   int orient3(Index a, Index b, Index c, Index p) const {
-    const PointSet& ps = *st_.ps;
-    return orient(f_, a, ps.point(a), b, ps.point(b), c, ps.point(c), p, ps.point(p));
+    return orient(f_, v_[a].id, v_[a].x, v_[b].id, v_[b].x, v_[c].id, v_[c].x, v_[p].id, v_[p].x);
   }
-  bool in_cone(Index a, Index b, Index c, Index p) const { return ref::poly::in_cone(*st_.s, a, b, c, p); }
+  // s.side(a, b, c) = orient3d(a, b, c, s) (DoubleKernel::side, from the local copies)
+  int side(Index a, Index b, Index c) const {
+    if (sd_) return orient(f_, v_[a].id, v_[a].x, v_[b].id, v_[b].x, v_[c].id, v_[c].x, sid_, sd_);
+    return s_.side(v_[a].id, v_[b].id, v_[c].id);
+  }
+  // ref::poly::in_cone over side()
+  [[maybe_unused]] bool in_cone(Index a, Index b, Index c, Index p) const {
+    const int o = side(a, b, c);
+    return side(a, b, p) == o && side(b, c, p) == o && side(c, a, p) == o;
+  }
 
   // ff3::decide, line by line (flip_flop_3d.cpp), with its cone tests reduced
   // to two orientations. Every triangle of the polyhedron has s beneath it
@@ -1309,14 +1329,13 @@ class FlipFlop {
   ref::ff3::Decision decide(const Quad& q) const {
     using Action = ref::ff3::Action;
     constexpr Index kNo = ~Index{0};
-    Index x = kNo;  // line 5: the labelled vertex of smallest index
+    Index x = kNo, x_id = kNo;  // line 5: the labelled vertex of smallest (input) index
     for (Index v : {q.a, q.b, q.c, q.d})
-      if (st_.labelled[v] && v < x) x = v;
+      if (labelled_[v] && v_[v].id < x_id) x = v, x_id = v_[v].id;
     const int o = orient3(q.a, q.b, q.c, q.d);
     const bool is_reflex = o < 0;
     if (!is_reflex && x == kNo) return {};
-    const ref::KernelPoint& s = *st_.s;
-    const int X = s.side(q.b, q.c, q.d), Y = s.side(q.a, q.c, q.d);
+    const int X = side(q.b, q.c, q.d), Y = side(q.a, q.c, q.d);
     const bool a_in = X > 0 && Y > 0, b_in = X < 0 && Y < 0;
     assert(a_in == in_cone(q.b, q.c, q.d, q.a) && b_in == in_cone(q.a, q.c, q.d, q.b));
     // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
@@ -1324,7 +1343,7 @@ class FlipFlop {
     if (P_.deg[q.a] == 3 && a_in) inner = q.a;
     else if (P_.deg[q.b] == 3 && b_in) inner = q.b;
     if (inner != kNo) {  // line 8
-      if (st_.labelled[inner]) return {Action::flip31_d, inner};
+      if (labelled_[inner]) return {Action::flip31_d, inner};
       if (is_reflex) return {Action::flip31_v, inner};
       return {};
     }
@@ -1339,21 +1358,24 @@ class FlipFlop {
     }
     // lines 16-18: label the inner endpoint (Lemma 6.5)
     const Index in = a_in ? q.a : q.b;
-    if (!st_.labelled[in] && is_reflex) return {Action::label, in};
+    if (!labelled_[in] && is_reflex) return {Action::label, in};
     return {};
   }
   // s inside the tetrahedron abcd, o = orient3d(a, b, c, d) (ff3's
   // s_in_tetrahedron; decide's assertion compares its shortcut with it)
   [[maybe_unused]] bool s_in_tetrahedron(const Quad& q, int o) const {
-    const ref::KernelPoint& s = *st_.s;
-    return s.side(q.a, q.b, q.c) == o && -s.side(q.a, q.b, q.d) == o && s.side(q.a, q.c, q.d) == o &&
-           -s.side(q.b, q.c, q.d) == o;
+    return side(q.a, q.b, q.c) == o && -side(q.a, q.b, q.d) == o && side(q.a, q.c, q.d) == o &&
+           -side(q.b, q.c, q.d) == o;
   }
 
-  ref::ff3::State& st_;
   ref::poly::Polyhedron3& P_;
+  const FlipVertex* v_;
+  const ref::KernelPoint& s_;
+  const double* sd_;
+  PointId sid_;
   const StaticFilter& f_;
   ref::Hull3Stats& stats_;
+  std::vector<std::uint8_t> labelled_;  // line 1: all vertices "unknown"
 };
 
 // The canonical output (canonical.hpp: each triangle rotated, the list
@@ -1481,40 +1503,70 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   }
   clock.mark("construction rounds");
   st.flips_1_3 = st.insertions;
-  // the reference's polyhedron structure, filled from the flat arrays (same
-  // conventions: adj[t][k] is the triangle across edge k of t)
+  // Flip-flop on the polyhedron's own vertices, numbered 0..V-1 in the order
+  // the slots first name them, each with its coordinates and input index in
+  // one line (FlipVertex): the queue visits edges in slot order, and the
+  // input's order of the points is arbitrary — 10^6 points in a shell of
+  // thickness 1e-4 left 415k vertices spread over the 24 MB of coordinates,
+  // and the same points in Morton order made the flip-flop stage 30 % faster.
+  // The predicates take the input indices (the SoS ids), so every decision
+  // and the output are the same. The reference's polyhedron structure, from
+  // the flat arrays (same conventions: adj[t][k] is the triangle across edge
+  // k of t).
+  std::vector<FlipVertex> verts;
   ref::poly::Polyhedron3 P;
-  P.n = ps.size();
-  P.tri.resize(M.size());
-  P.adj.resize(M.size());
-  P.alive.assign(M.size(), 1);
+  {
+    std::vector<Index> local(ps.size(), kNone);
+    P.tri.resize(M.size());
+    P.adj.resize(M.size());
+    P.alive.assign(M.size(), 1);
+    for (std::uint32_t t = 0; t < M.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const Index g = M.v[3 * t + k];
+        if (local[g] == kNone) {
+          local[g] = static_cast<Index>(verts.size());
+          const double* x = ps.point(g);
+          verts.push_back({{x[0], x[1], x[2]}, g});
+        }
+        P.tri[t][k] = local[g];
+        P.adj[t][k] = M.nb[3 * t + k];
+      }
+  }
+  P.n = verts.size();
   P.corner.assign(P.n, kNone);
   P.deg.assign(P.n, 0);
-  for (std::uint32_t t = 0; t < M.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      P.tri[t][k] = M.v[3 * t + k];
-      P.adj[t][k] = M.nb[3 * t + k];
-      P.corner[M.v[3 * t + k]] = t;
-      ++P.deg[M.v[3 * t + k]];
-    }
+  for (std::uint32_t t = 0; t < P.tri.size(); ++t)
+    for (Index v : P.tri[t]) P.corner[v] = t, ++P.deg[v];
   M = Mesh{};  // copied into P: 24 bytes a slot less during flip-flop and the witness
   if constexpr (FF_CHECKED)
     FF_CHECK(ref::poly::structure_problem(P).empty(), "hull3 (cpu): inconsistent polyhedron after construction");
-  // line 15: flip-flop (Algorithm 6)
-  // the kernel's filter (over ps and the kernel point): valid for ps, so the
-  // reference's own scan of ps for one is not made
-  ref::ff3::State state = ref::ff3::make_state(ps, s, std::move(P), f);
+  // line 15: flip-flop (Algorithm 6), with the kernel's filter (valid for ps
+  // and the kernel point)
   {
-    FlipFlop ff(state, f, st);
+    FlipFlop ff(P, verts.data(), s, sd, static_cast<PointId>(ps.size()), f, st);
     if (use_rounds(run)) ff.run_rounds();
     else ff.run();
   }
+  // back to input indices
+  ref::poly::Polyhedron3 G;
+  G.n = ps.size();
+  G.corner.assign(G.n, kNone);
+  G.deg.assign(G.n, 0);
+  for (Index v = 0; v < P.n; ++v) G.corner[verts[v].id] = P.corner[v], G.deg[verts[v].id] = P.deg[v];
+  for (Triangle& T : P.tri)
+    for (Index& v : T) v = verts[v].id;
+  G.tri = std::move(P.tri);
+  G.adj = std::move(P.adj);
+  G.alive = std::move(P.alive);
+  G.free_slots = std::move(P.free_slots);
+  P = ref::poly::Polyhedron3{};
+  verts = {};
   clock.mark("flip-flop");
   std::vector<std::uint32_t> rank;
-  std::vector<Triangle> out = canonical_with_ranks(state.P, rank);
+  std::vector<Triangle> out = canonical_with_ranks(G, rank);
   clock.mark("canonical output");
   if (witness) {
-    make_witness(ps, s, state.P, out, rank, tet, inner.box, s_approx, *witness, clock);
+    make_witness(ps, s, G, out, rank, tet, inner.box, s_approx, *witness, clock);
   }
   return out;
 }
@@ -1625,6 +1677,7 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, StageCloc
     return hull_with_kernel(ps, f, largest, DoubleKernel(ps, s, f), s.data(), tet, inner, st, clock, s.data(), witness,
                             run);
   // §6.4.2: the rounded centroid is not strictly inside; the exact one is
+  ++st.exact_kernel_point;
   const ref::RationalKernel exact = ref::centroid_kernel(ps, tet[0], tet[1], tet[2], tet[3]);
   return hull_with_kernel(ps, f, largest, exact, nullptr, tet, inner, st, clock, s.data(), witness, run);
 }

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -46,6 +47,26 @@ inline PointSet lattice_pyramid(std::size_t n, double apex_z, std::uint64_t seed
   for (std::size_t i = 0; i < n; ++i) c.insert(c.end(), {double(u(rng)), double(u(rng)), 0.0});
   PointSet ps;
   ps.dim = 3;
+  ps.coords = Values(std::move(c));
+  return ps;
+}
+
+// An almost flat slab for the exact kernel point (§6.4.2): n points of the
+// 1/64 grid of [0, 1]^2 at two heights one ulp apart (z = 1 or 1 + 2^-52:
+// the centroid's z, 1 + 2^-54 or 1 + 2^-53, rounds onto a face plane), or 0
+// and 2^-1074 (subnormal), many of them coplanar (the SoS decides the faces).
+inline PointSet almost_flat_slab(std::uint64_t seed, bool subnormal, std::size_t n) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> level(0, 1);
+  PointSet ps;
+  ps.dim = 3;
+  std::vector<double> c;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int l = level(rng);
+    const double z = subnormal ? l * 4.9406564584124654e-324 : (l ? std::nextafter(1.0, 2.0) : 1.0);
+    c.insert(c.end(), {std::round(unit(rng) * 64) / 64, std::round(unit(rng) * 64) / 64, z});
+  }
   ps.coords = Values(std::move(c));
   return ps;
 }
