@@ -160,7 +160,14 @@ int bench_stages(const Args& a) {
     std::printf("stage,median_s,min_s,max_s,size\n");
     for (const std::string& name : order) {
       const auto [lo, hi] = std::minmax_element(times[name].begin(), times[name].end());
-      std::printf("%s,%.6f,%.6f,%.6f,%zu\n", name.c_str(), median(times[name]), *lo, *hi, size);
+      // RFC 4180: a name with a comma is quoted (hull3's first stage has two)
+      std::string field = name;
+      if (name.find_first_of(",\"") != std::string::npos) {
+        field = "\"";
+        for (char c : name) field += c == '"' ? std::string("\"\"") : std::string(1, c);
+        field += '"';
+      }
+      std::printf("%s,%.6f,%.6f,%.6f,%zu\n", field.c_str(), median(times[name]), *lo, *hi, size);
     }
     return 0;
   }
