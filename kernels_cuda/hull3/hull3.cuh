@@ -385,13 +385,6 @@ struct OnGeo {
   FF_HD ExactSigns exact() const { return ExactSigns{g}; }
 };
 
-// p inside the cone C_s(abc) (polyhedron3.hpp's in_cone)
-template <class S>
-FF_HD bool in_cone(S& sg, Index a, Index b, Index c, Index p) {
-  const int o = sg.side(a, b, c);
-  return sg.side(a, b, p) == o && sg.side(b, c, p) == o && sg.side(c, a, p) == o;
-}
-
 // p beyond the triangle t (orient3d(t0, t1, t2, p) < 0, never 0 under SoS);
 // key: the rounded (p - t0) · ((t1 - t0) × (t2 - t0)), > 0 beyond, the
 // volume |orient(p, t)| of §6.4.1's furthest point (NaN: -inf)
@@ -907,11 +900,6 @@ struct Decide : OnGeo {
   Index* inner;
   Claim claim;  // reads action[i] and inner[i]
   template <class S>
-  FF_HD static bool s_in_tetrahedron(S& sg, const Quad& q, int o) {
-    return sg.side(q.a, q.b, q.c) == o && -sg.side(q.a, q.b, q.d) == o && sg.side(q.a, q.c, q.d) == o &&
-           -sg.side(q.b, q.c, q.d) == o;
-  }
-  template <class S>
   FF_HD Decision decide(std::size_t i, S& sg) const {  // i: the edge slot e
     if (!candidate(static_cast<uint32_t>(i))) return {kNoAction, kNone};
     const Quad q = quad_of(tv, tn, static_cast<uint32_t>(i));
@@ -922,24 +910,28 @@ struct Decide : OnGeo {
     const int o = sg.orient(q.a, q.b, q.c, q.d);
     const bool reflex = o < 0;  // §6.1: d beyond abc (s is beneath every triangle)
     if (!reflex && x == kNone) return {kNoAction, kNone};
+    // The cone tests of lines 6-7 and 11 and the tetrahedron test of line 14
+    // from two orientations with s (kernels_cpu/hull3/ffhull.cpp,
+    // FlipFlop::decide, has the derivation): s is beneath every triangle, so
+    // in_cone(b, c, d, a) holds exactly when X = Y = +1, in_cone(a, c, d, b)
+    // exactly when X = Y = -1, and s lies in abcd exactly when o = Y = +1 = -X,
+    // for X = side(b, c, d) and Y = side(a, c, d). (The first pass also no
+    // longer defers a decision for a sign that was known all along.)
+    const int X = sg.side(q.b, q.c, q.d), Y = sg.side(q.a, q.c, q.d);
+    const bool a_in = X > 0 && Y > 0, b_in = X < 0 && Y < 0;
     // lines 6-7: an endpoint of degree 3 inside the cone of its link's triangle
-    int a_in = -1;
     Index in31 = kNone;
-    if (deg[q.a] == 3) {
-      a_in = in_cone(sg, q.b, q.c, q.d, q.a);
-      if (a_in) in31 = q.a;
-    }
-    if (in31 == kNone && deg[q.b] == 3 && in_cone(sg, q.a, q.c, q.d, q.b)) in31 = q.b;
+    if (deg[q.a] == 3 && a_in) in31 = q.a;
+    else if (deg[q.b] == 3 && b_in) in31 = q.b;
     if (in31 != kNone) {  // line 8
       if (labelled[in31]) return {kFlip31D, in31};
       return {reflex ? kFlip31V : kNoAction, in31};
     }
     // line 11: C_s(T_e) convex
-    if (a_in < 0) a_in = in_cone(sg, q.b, q.c, q.d, q.a);
-    const bool b_in = !a_in && in_cone(sg, q.a, q.c, q.d, q.b);
     if (!a_in && !b_in) {
       if (x == kNone) return {reflex ? kFlip22V : kNoAction, kNone};  // lines 12-13
-      if ((x == q.a || x == q.b) && !s_in_tetrahedron(sg, q, o)) return {kFlip22D, kNone};  // lines 14-15
+      const bool s_in = o > 0 && Y > 0 && X < 0;
+      if ((x == q.a || x == q.b) && !s_in) return {kFlip22D, kNone};  // lines 14-15
       return {kNoAction, kNone};
     }
     // lines 16-18: label the inner endpoint (Lemma 6.5)
