@@ -1513,25 +1513,31 @@ std::vector<Triangle> hull_with_kernel(const PointSet& ps, const StaticFilter& f
   // and the output are the same. The reference's polyhedron structure, from
   // the flat arrays (same conventions: adj[t][k] is the triangle across edge
   // k of t).
+  // (M.v renumbered in place, and verts reserved at its size: a closed
+  // surface of F triangles has F / 2 + 2 vertices; growing it by doubling
+  // raised the 10^6 ball's peak RSS from 49.3 to 53.4 MB)
   std::vector<FlipVertex> verts;
-  ref::poly::Polyhedron3 P;
+  verts.reserve(M.size() / 2 + 2);
   {
     std::vector<Index> local(ps.size(), kNone);
-    P.tri.resize(M.size());
-    P.adj.resize(M.size());
-    P.alive.assign(M.size(), 1);
-    for (std::uint32_t t = 0; t < M.size(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        const Index g = M.v[3 * t + k];
-        if (local[g] == kNone) {
-          local[g] = static_cast<Index>(verts.size());
-          const double* x = ps.point(g);
-          verts.push_back({{x[0], x[1], x[2]}, g});
-        }
-        P.tri[t][k] = local[g];
-        P.adj[t][k] = M.nb[3 * t + k];
+    for (Index& g : M.v) {
+      if (local[g] == kNone) {
+        local[g] = static_cast<Index>(verts.size());
+        const double* x = ps.point(g);
+        verts.push_back({{x[0], x[1], x[2]}, g});
       }
+      g = local[g];
+    }
   }
+  ref::poly::Polyhedron3 P;
+  P.tri.resize(M.size());
+  P.adj.resize(M.size());
+  P.alive.assign(M.size(), 1);
+  for (std::uint32_t t = 0; t < M.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      P.tri[t][k] = M.v[3 * t + k];
+      P.adj[t][k] = M.nb[3 * t + k];
+    }
   P.n = verts.size();
   P.corner.assign(P.n, kNone);
   P.deg.assign(P.n, 0);
