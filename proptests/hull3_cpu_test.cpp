@@ -18,6 +18,7 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <vector>
 #include <array>
 #include <cmath>
 #include <iostream>
@@ -171,13 +172,14 @@ TEST_CASE("hull3 cpu: almost flat inputs on the exact kernel point equal the ref
       const std::string expect = ref_text(ps);
       INFO("seed " << seed << " subnormal " << subnormal << ": " << expect.substr(0, 80));
       if (is_error(expect)) continue;  // all points on one plane: rejected by both
-      bool exact = false;
+      std::vector<std::uint64_t> exact;  // per run: whether it took the exact kernel point
       for (const Run& run : kRuns) {
         ref::Hull3Stats st;
         REQUIRE(cpu_text(ps, run.threads, &st, run.flip_flop) == expect);
-        exact = st.exact_kernel_point == 1;
+        exact.push_back(st.exact_kernel_point);
       }
-      runs += exact;
+      REQUIRE(std::count(exact.begin(), exact.end(), exact[0]) == static_cast<long>(exact.size()));  // the same path
+      runs += exact[0] == 1;
     }
   std::cout << "hull3 cpu: " << runs << " of 12 almost flat inputs on the exact kernel point\n";
   REQUIRE(runs >= 4);

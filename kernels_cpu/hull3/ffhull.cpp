@@ -914,7 +914,7 @@ Mesh construct(const PointSet& ps, const StaticFilter& f, double largest, const 
 // operation — but cheaper: the edge is located once per step (the reference
 // locates it in run, decide, apply and flip22), from a hint (the slot of a
 // triangle that had it when it was queued, or a neighbour of that slot)
-// before walking around its tail, and orient3d of input points goes through
+// before walking around a star, and orient3d of input points goes through
 // the per-input static filter first.
 // A vertex of the polyhedron during flip-flop: its coordinates and its input
 // index (the SoS id of every predicate) in one 32-byte line.
@@ -1273,23 +1273,7 @@ class FlipFlop {
     if (hint < P_.tri.size() && P_.alive[hint])
       for (int j = 0; j < 3; ++j)
         if (ref::poly::DEdge e = in_slot(P_.adj[hint][j], u, w); e.valid()) return e;
-    return find_edge(u, w);
-  }
-  // ref::poly::find_edge(P_, u, w) around the endpoint of smaller degree: 3
-  // in 4 of the edges that miss their hint were flipped away since they were
-  // queued (10^6 sphere-shell points), and proving that walks a whole star.
-  ref::poly::DEdge find_edge(Index u, Index w) const {
-    if (u >= P_.n || w >= P_.n || P_.deg[u] == 0 || P_.deg[w] == 0) return {};
-    const bool from_u = P_.deg[u] <= P_.deg[w];
-    const Index v = from_u ? u : w;  // walk around v's triangles
-    std::uint32_t t = P_.corner[v];
-    for (std::uint32_t steps = 0; steps < P_.deg[v]; ++steps) {
-      const int k = pos(t, v);
-      // around u: u -> w is (k, k + 1); around w: u -> w is (k + 2, k)
-      if (from_u ? P_.tri[t][(k + 1) % 3] == w : P_.tri[t][(k + 2) % 3] == u) return {t, from_u ? k : (k + 2) % 3};
-      t = P_.adj[t][(k + 2) % 3];
-    }
-    return {};
+    return ref::poly::find_edge(P_, u, w);
   }
   int orient3(Index a, Index b, Index c, Index p) const {
     return orient(f_, v_[a].id, v_[a].x, v_[b].id, v_[b].x, v_[c].id, v_[c].x, v_[p].id, v_[p].x);
@@ -1299,10 +1283,14 @@ class FlipFlop {
     if (sd_) return orient(f_, v_[a].id, v_[a].x, v_[b].id, v_[b].x, v_[c].id, v_[c].x, sid_, sd_);
     return s_.side(v_[a].id, v_[b].id, v_[c].id);
   }
-  // ref::poly::in_cone over side()
+  // the kernel point over the local numbers, for ref::poly::in_cone
+  struct LocalKernel final : ref::KernelPoint {
+    const FlipFlop* ff;
+    explicit LocalKernel(const FlipFlop* f) : ff(f) {}
+    int side(Index a, Index b, Index c) const override { return ff->side(a, b, c); }
+  };
   [[maybe_unused]] bool in_cone(Index a, Index b, Index c, Index p) const {
-    const int o = side(a, b, c);
-    return side(a, b, p) == o && side(b, c, p) == o && side(c, a, p) == o;
+    return ref::poly::in_cone(LocalKernel(this), a, b, c, p);
   }
 
   // ff3::decide, line by line (flip_flop_3d.cpp), with its cone tests reduced

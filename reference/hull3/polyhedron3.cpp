@@ -158,11 +158,17 @@ std::vector<Triangle> triangles(const Polyhedron3& P) {
 
 DEdge find_edge(const Polyhedron3& P, Index u, Index w) {
   if (!P.is_vertex(u) || !P.is_vertex(w)) return {};
-  const std::uint32_t t0 = P.corner[u];
+  // around the endpoint of smaller degree: proving that two vertices are not
+  // adjacent walks a whole star (flip-flop asks for edges flipped away since
+  // they were queued: 3 in 4 of its searches on 10^6 sphere-shell points)
+  const bool from_u = P.deg[u] <= P.deg[w];
+  const Index v = from_u ? u : w;
+  const std::uint32_t t0 = P.corner[v];
   std::uint32_t t = t0;
   do {
-    const int k = position(P.tri[t], u);
-    if (P.tri[t][(k + 1) % 3] == w) return {t, k};
+    const int k = position(P.tri[t], v);
+    // around u: u -> w is (k, k + 1); around w: u -> w is (k + 2, k)
+    if (from_u ? P.tri[t][(k + 1) % 3] == w : P.tri[t][(k + 2) % 3] == u) return {t, from_u ? k : (k + 2) % 3};
     t = P.adj[t][(k + 2) % 3];
   } while (t != t0);
   return {};

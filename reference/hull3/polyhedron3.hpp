@@ -82,7 +82,7 @@ Polyhedron3 build(std::size_t n, const std::vector<Triangle>& tris);
 std::vector<Triangle> triangles(const Polyhedron3& P);
 
 // The directed edge u -> w (in the triangle having it), or an invalid one
-// when u and w are not adjacent. O(deg u).
+// when u and w are not adjacent. O(min(deg u, deg w)).
 DEdge find_edge(const Polyhedron3& P, Index u, Index w);
 
 // The link of v: its neighbours counter-clockwise seen from outside.
