@@ -23,6 +23,7 @@
 #include "kernels_cpu/rt2/certify_rt2.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #include "kernels_cpu/rt2/rt2.hpp"
+#include "kernels_cpu/rtd/certify_rtd.hpp"
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
 #include "kernels_cuda/gpu.hpp"
 #endif
@@ -430,8 +431,8 @@ int certify_rtd_file(const CertifyArgs& a) {
   }
   // --strict: the exact level, which refuses every simplex of zero volume
   // (the strict view's defining property) — the same check, named as asked
-  const certify::Report r =
-      certify::rtd(ps, simplices, a.canonical ? certify::Level::canonical : certify::Level::exact);
+  const certify::Report r = cpu::certify_rtd(ps, simplices, a.canonical ? certify::Level::canonical : certify::Level::exact,
+                                             false, a.threads);
   const char* level = a.canonical ? "canonical" : a.strict ? "strict" : "exact";
   if (r.condition == "input-dimension") throw UsageError(a.points + ": " + r.detail);
   if (!r.ok) {
@@ -447,7 +448,6 @@ int certify_rtd_file(const CertifyArgs& a) {
 
 int run_certify(const CertifyArgs& a) {
   const bool rtd_kind = a.kind == "rtd" || a.kind == "rt3" || a.kind == "dt3";
-  if (a.threads != 0 && rtd_kind) throw UsageError("--threads applies to certify hull2, hull3, rt2 and dt2");
   if (rtd_kind && a.strict && a.canonical)
     throw UsageError("--canonical does not apply to the strict views (certified at the exact level)");
   if (rtd_kind) return certify_rtd_file(a);

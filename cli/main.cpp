@@ -4,12 +4,12 @@
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
 //   flipflop rt3|dt3 IN [-o OUT] [--backend cpu|reference] [--threads N] [--strict] [--stats]
-//   flipflop rtd IN --dim d [-o OUT] [--backend cpu|reference] [--threads N (d = 3)] [--strict] [--stats]
+//   flipflop rtd IN --dim d [-o OUT] [--backend cpu|reference] [--threads N (cpu backend)] [--strict] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
 //                    [--strict (hull3, rt2, dt2) [--triangulate (hull3)]]
-//   flipflop certify rtd POINTS OUTPUT --dim d [--canonical | --strict]
-//   flipflop certify rt3|dt3 POINTS OUTPUT [--canonical | --strict]   (certify rtd --dim 3)
+//   flipflop certify rtd POINTS OUTPUT --dim d [--canonical | --strict] [--threads N]
+//   flipflop certify rt3|dt3 POINTS OUTPUT [--canonical | --strict] [--threads N]   (certify rtd --dim 3)
 //   flipflop bench ...
 //   flipflop demo
 //
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
                   "cavity insertion on one thread; the default for d = 3, 4, 5) or reference (RT+1, the default "
                   "for d = 2); the same answer byte for byte")
       ->check(CLI::IsMember({"cpu", "reference"}));
-  rtd->add_option("--threads", r.threads, "d = 3, cpu backend: worker threads (default: all cores)")
+  rtd->add_option("--threads", r.threads, "cpu backend: worker threads (d = 3: the whole kernel; other d: the BRIO sort and the certifier, the insertion on one; default: all cores)")
       ->check(CLI::PositiveNumber);
   rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
   rtd->add_flag("--strict", r.strict,
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
   cert->add_option("POINTS", v.points, "input point file")->required();
   cert->add_option("OUTPUT", v.output, "index output to check (flipflop's or another program's, e.g. qhull i Qt)")
       ->required();
-  cert->add_option("--threads", v.threads, "hull2, hull3, rt2, dt2: worker threads of the parallel checks (default: all cores)")
+  cert->add_option("--threads", v.threads, "worker threads of the parallel checks (default: all cores; same verdict and message)")
       ->check(CLI::Range(1, 1024));
   cert->add_flag("--strict", v.strict,
                  "the output is a strict view (hull3 --strict: extreme points and polygons; rt2|dt2 --strict: "

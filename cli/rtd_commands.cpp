@@ -16,6 +16,7 @@
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
+#include "kernels_cpu/rtd/certify_rtd.hpp"
 #include "kernels_cpu/rtd/instant_flip.hpp"
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
@@ -74,9 +75,11 @@ void write_result(const std::string& path, io::Format f, const PointSet& ps,
       redundant, ascii);
 }
 
+// certify::rtd's checks on `threads` workers (kernels_cpu/rtd/certify_rtd.hpp;
+// 0: the runtime's default): the same verdict and message at any count
 void certify_or_throw(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
-                      const std::string& what) {
-  const certify::Report r = ref::certify_rtd(ps, simplices);
+                      const std::string& what, int threads = 0) {
+  const certify::Report r = cpu::certify_rtd(ps, simplices, certify::Level::canonical, false, threads);
   if (!r.ok) throw InternalError(what + " failed certification: " + r.message());
 }
 
@@ -100,12 +103,13 @@ void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
 int run_rtd(const RtdArgs& a) {
   check_dim(a.dim, ref::rtd::kMaxDim);
   // the backend: cpu — kernels_cpu/rt3 for d = 3 (multithreaded), the cavity
-  // kernel kernels_cpu/rtd for d = 2, 4, 5 (sequential insertion); both
-  // return the reference's answer byte for byte and are the default for
-  // d = 3, 4, 5 — or the reference (RT+1) itself, the default for d = 2
+  // kernel kernels_cpu/rtd for d = 2, 4..9 (BRIO sort and certification on
+  // --threads workers, the insertion on one); both return the reference's
+  // answer byte for byte and are the default for d = 3..9 — or the reference
+  // (RT+1) itself, the default for d = 2, sequential throughout
   const std::string backend = !a.backend.empty() ? a.backend : a.dim == 2 ? "reference" : "cpu";
-  if (a.threads != 0 && (backend != "cpu" || a.dim != 3))
-    throw UsageError("--threads applies to the multithreaded backend (--backend cpu, d = 3); rtd --dim " +
+  if (a.threads != 0 && backend != "cpu")
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu); rtd --dim " +
                      std::to_string(a.dim) + " --backend " + backend + " runs on one thread");
   if (backend == "cpu" && a.dim == 3) {
     Rt3Args r;
@@ -126,18 +130,24 @@ int run_rtd(const RtdArgs& a) {
   ref::RtdStats st;
   cpu::RtdCavityStats cst;
   const ref::Rtd rt = with_input_errors(a.in, [&] {
-    return backend == "cpu" ? cpu::rtd_cavity(ps, &cst) : ref::rtd_incremental(ps, &st);
+    cpu::RtdCavityOptions o;
+    o.threads = a.threads;
+    return backend == "cpu" ? cpu::rtd_cavity(ps, &cst, o) : ref::rtd_incremental(ps, &st);
   });
   const double t_compute = seconds_since(t0);
   const auto t1 = Clock::now();
-  certify_or_throw(ps, rt.simplices, "the rtd result");
+  // the reference backend is certified by the sequential certifier
+  if (backend == "cpu") certify_or_throw(ps, rt.simplices, "the rtd result", a.threads);
+  else if (const certify::Report r = certify::rtd(ps, rt.simplices); !r.ok)
+    throw InternalError("the rtd result failed certification: " + r.message());
   const double t_certify = seconds_since(t1);
   if (a.strict) {
     // derived from the certified canonical answer, certified in turn at the
     // exact level (no simplex of zero volume, a regular triangulation of the
     // exact input)
     const std::vector<std::vector<Index>> view = ref::strict_rtd(ps, rt.simplices);
-    const certify::Report r = certify::rtd(ps, view, certify::Level::exact);
+    const certify::Report r = backend == "cpu" ? cpu::certify_rtd(ps, view, certify::Level::exact, false, a.threads)
+                                               : certify::rtd(ps, view, certify::Level::exact);
     if (!r.ok) throw InternalError("the strict view of the rtd result failed certification: " + r.message());
     const std::vector<Index> missing = non_vertices(ps.size(), view);
     write_result(a.out, fmt, ps, view, missing, a.ascii);

@@ -164,9 +164,6 @@ TEST_CASE("cli: certify accepts Qhull's output and rejects a broken one", "[cli]
     CHECK(par.code == 1);
     CHECK(par.out == bad.out);
   }
-  Run misuse = run(t, "certify rtd " + pts.string() + " " + qout.string() + " --dim 2 --threads 2");
-  CHECK(misuse.code == 2);
-  CHECK(misuse.err.find("--threads applies to certify hull2, hull3, rt2 and dt2") != std::string::npos);
 }
 
 TEST_CASE("cli: certify rt2|dt2 --threads N gives the verdict and message of the sequential checks", "[cli]") {

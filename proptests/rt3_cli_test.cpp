@@ -316,13 +316,10 @@ TEST_CASE("rt3 cli: bad input and bad usage give one line and exit code 2", "[cl
         {"rt3 " + in + " -o " + (t.dir / "x.svg").string(), "x.svg"},
         {"rt3 " + in + " -o " + (t.dir / "no" / "such" / "dir.txt").string(), "dir.txt"},
         {"rt3", "IN"},
-        {"rtd " + in + " --dim 4 --threads 2", "--threads applies"},
-        {"rtd " + in + " --dim 2 --backend cpu --threads 2", "--threads applies"},
         {"rtd " + in + " --dim 5 --backend gpu", "--backend"},
         {"rtd " + in + " --dim 2 --threads 2", "--threads applies"},
         {"rtd " + in + " --dim 3 --backend reference --threads 2", "--threads applies"},
         {"rtd " + in + " --dim 3 --backend gpu", "--backend"},
-        {"certify rt3 " + in + " " + in + " --threads 2", "--threads applies"},
         {"certify dt3 " + in + " " + in + " --dim 4", "3D"},
         {"certify rt3 " + in + " " + in + " --strict --canonical", "--canonical"},
     };

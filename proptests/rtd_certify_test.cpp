@@ -8,6 +8,9 @@
 //                               redundant by a huge negative weight)  missing-point-redundant
 //   a reversed / unsorted / repeated simplex                         canonical-form / simplex-orientation
 //   the triangulation of a subset of the hull                        boundary-is-hull or missing-point-redundant
+// and that the certifier on oneTBB (kernels_cpu/rtd/certify_rtd.hpp) gives the
+// sequential verdict and message at 1, 2 and 8 threads on outputs with
+// several violations (the first in the sequential order must be named).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -15,6 +18,7 @@
 #include <iostream>
 #include <random>
 
+#include "kernels_cpu/rtd/certify_rtd.hpp"
 #include "peers/cgal_regular_d.hpp"
 #include "proptests/support/rtd_inputs.hpp"
 #include "reference/rtd/bistellar_flip.hpp"
@@ -278,4 +282,73 @@ TEST_CASE("rtd certify: the linear boundary check rejects a double cover and a r
     INFO(rep.message());
     REQUIRE((rep.ok || rep.condition == "locally-regular"));
   }
+}
+
+TEST_CASE("rtd certify on oneTBB: the sequential verdict and message at 1, 2 and 8 threads, several violations") {
+  using certify::Level;
+  std::size_t failures = 0, passes = 0, items = 0;
+  std::vector<std::string> conditions;
+  auto same = [&](const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level) {
+    const certify::Report seq = certify::rtd(ps, S, level);
+    for (int threads : {1, 2, 8}) {
+      const certify::Report par = cpu::certify_rtd(ps, S, level, false, threads);
+      INFO("threads " << threads << ", sequential: " << seq.message() << "; parallel: " << par.message());
+      REQUIRE(par.ok == seq.ok);
+      REQUIRE(par.message() == seq.message());
+    }
+    seq.ok ? ++passes : ++failures;
+    items += S.size();
+    if (!seq.ok) conditions.push_back(seq.condition);
+  };
+  for (std::uint64_t s = 1; s <= 24 / test::kRtdSanitizerDivisor + 2; ++s) {
+    const std::uint64_t seed = s * 0xA24BAED4963EE407ull;
+    const int d = 2 + static_cast<int>(s % 3);
+    // enough simplices for many 64-simplex pieces
+    const PointSet ps = s % 4 == 0 ? test::rtd_lattice(d, d == 4 ? 90 : 160, seed, 3, 1)
+                                   : test::rtd_uniform(d, d == 4 ? 90 : 300, seed, 0.05);
+    std::mt19937_64 g(seed);
+    TriangulationD T = ref::build_rtd(ps);
+    const auto good = real_simplices(T);
+    same(ps, good, Level::canonical);
+    same(ps, good, Level::exact);
+    // several flipped ridges: non-regular facets all over the list
+    for (int k = 0; k < 4; ++k) {
+      std::vector<RidgeD> fr;
+      for (const RidgeD& r : ridges(T))
+        if (interior(T, r) && flip_shape(T, r).flippable) fr.push_back(r);
+      if (fr.empty()) break;
+      flip(T, fr[g() % fr.size()]);
+    }
+    same(ps, real_simplices(T), Level::canonical);
+    same(ps, real_simplices(T), Level::exact);
+    // several reversed simplices (the exact level checks no canonical form:
+    // simplex-orientation names the first), several holes
+    auto rev = good, holed = good;
+    for (int k = 0; k < 3; ++k) {
+      auto& t = rev[g() % rev.size()];
+      std::swap(t[static_cast<std::size_t>(d - 1)], t[static_cast<std::size_t>(d)]);
+      if (holed.size() > 1) holed.erase(holed.begin() + static_cast<long>(g() % holed.size()));
+    }
+    same(ps, rev, Level::exact);
+    same(ps, holed, Level::canonical);
+    // several dropped non-redundant points (huge negative weights)
+    PointSet heavy = ps;
+    heavy.weighted = true;
+    heavy.weights.resize(ps.size(), 0.0);
+    for (std::size_t i = 0; i < ps.size(); ++i) heavy.weights[i] = ps.weight(i);
+    for (int k = 0; k < 4; ++k) heavy.weights[g() % ps.size()] = -1e6;
+    const auto without = ref::rtd_incremental(heavy).simplices;
+    same(ps, without, Level::canonical);
+    same(ps, without, Level::exact);
+  }
+  std::sort(conditions.begin(), conditions.end());
+  conditions.erase(std::unique(conditions.begin(), conditions.end()), conditions.end());
+  std::string names;
+  for (const auto& c : conditions) names += " " + c;
+  std::cout << "rtd certify on oneTBB: " << passes << " accepted, " << failures << " rejected outputs ("
+            << items << " simplices) with the sequential message at 1, 2, 8 threads; conditions:" << names << "\n";
+  // every class of violation above was met
+  for (const char* c : {"locally-regular", "simplex-orientation", "missing-point-redundant"})
+    CHECK(std::find(conditions.begin(), conditions.end(), c) != conditions.end());
+  CHECK(passes >= 2);
 }

@@ -72,6 +72,7 @@
 #include "reference/rtd/dynamic_rt.hpp"
 #include "reference/rtd/instant_flip.hpp"
 #include "kernels_cpu/rtd/hull_d.hpp"
+#include "kernels_cpu/rtd/certify_rtd.hpp"
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "reference/rtd/rt_incremental.hpp"
 #include "reference/rtd/triangulation_d.hpp"
@@ -619,18 +620,19 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 // ---- triangulations ------------------------------------------------------------
 
 // The canonical RT(S ⊕ W) r (any d; furthest: the furthest-site one)
-// certified by certify::rtd (throws if it fails), then, with strict, its
-// strict view (`rtd --strict`: certified at the exact level, no zero-volume
-// simplex), into (simplices, redundant).
-void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest,
+// certified by certify::rtd's checks on `threads` workers (cpu::certify_rtd;
+// throws if it fails), then, with strict, its strict view (`rtd --strict`:
+// certified at the exact level, no zero-volume simplex), into (simplices,
+// redundant).
+void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest, int threads,
                    std::vector<std::vector<Index>>& simplices, std::vector<Index>& redundant) {
-  check_certified(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest),
+  check_certified(cpu::certify_rtd(ps, r.simplices, certify::Level::canonical, furthest, threads),
                   furthest ? "furthest-site Delaunay" : "Delaunay");
   simplices = std::move(r.simplices);
   redundant = std::move(r.redundant);
   if (strict) {
     simplices = ref::strict_rtd(ps, simplices);
-    check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
+    check_certified(cpu::certify_rtd(ps, simplices, certify::Level::exact, false, threads), "strict Delaunay");
     redundant = non_vertices(ps.size(), simplices);
   }
 }
@@ -640,7 +642,7 @@ void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest,
 // backend (kernels_cpu/rt3, certified from its witness by cpu::certify_rt3,
 // as `flipflop rt3|dt3`) or RT+1, d = 4, 5 by the cpu backend (the cavity
 // kernel kernels_cpu/rtd, as `flipflop rtd --dim 4|5`) or RT+1, certified by
-// certify::rtd; all canonical. The strict views are derived from the
+// cpu::certify_rtd (certify::rtd on oneTBB); all canonical. The strict views are derived from the
 // certified canonical answer by the reference's rules (strict_rt2,
 // strict_rtd), whichever backend computed it. furthest: the furthest-site
 // triangulation (any d, every power sign negated: the cavity kernel's or
@@ -672,7 +674,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       o.furthest = true;
       o.threads = threads;
       certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps, nullptr, true),
-                    false, true, simplices, redundant);
+                    false, true, threads, simplices, redundant);
     } else if (d == 2) {
       cpu::Rt2Options o;
       o.threads = threads;
@@ -709,7 +711,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
         for (const cpu::Tet& t : r.tets) canonical.push_back({t[0], t[1], t[2], t[3]});
         r.tets = {};
         simplices = ref::strict_rtd(ps, canonical);
-        check_certified(certify::rtd(ps, simplices, certify::Level::exact), "strict Delaunay");
+        check_certified(cpu::certify_rtd(ps, simplices, certify::Level::exact, false, threads), "strict Delaunay");
         redundant = non_vertices(ps.size(), simplices);
       } else {
         tets = std::move(r.tets);
@@ -720,7 +722,7 @@ std::pair<IndexArray, IndexArray> triangulate(const Points& p, const std::option
       cpu::RtdCavityOptions o;
       o.threads = threads;
       certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps), strict, false,
-                    simplices, redundant);
+                    threads, simplices, redundant);
     }
   }
   return {d == 2 && !furthest ? cells_array(tris, 3)
@@ -747,6 +749,7 @@ class IncrementalTriangulation {
     cpu::RtdCavityOptions o;
     o.threads = threads;
     o.furthest = furthest;
+    threads_ = threads;
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     kernel_ = std::make_unique<cpu::RtdCavityIncremental>(ps, o);
@@ -768,9 +771,12 @@ class IncrementalTriangulation {
   std::size_t size() const { return kernel_->size(); }
 
  private:
-  void finish(const PointSet& ps) { certified_rtd(ps, kernel_->result(), strict_, furthest_, simplices_, redundant_); }
+  void finish(const PointSet& ps) {
+    certified_rtd(ps, kernel_->result(), strict_, furthest_, threads_, simplices_, redundant_);
+  }
 
   bool strict_, furthest_;
+  int threads_ = 0;
   std::unique_ptr<cpu::RtdCavityIncremental> kernel_;
   std::vector<std::vector<Index>> simplices_;
   std::vector<Index> redundant_;
@@ -1280,7 +1286,7 @@ std::pair<bool, std::pair<std::string, std::string>> certify_cells(const std::st
     } else if (kind == "delaunay" && ps.dim == 2) {
       r = certify::rt2(ps, triangles_of(cells), level);
     } else if (kind == "delaunay") {
-      r = certify::rtd(ps, cells, level);
+      r = cpu::certify_rtd(ps, cells, level);
     } else {
       throw std::invalid_argument("kind must be 'hull2', 'hull3' or 'delaunay'; got '" + kind + "'");
     }
@@ -1356,7 +1362,7 @@ std::pair<IndexArray, std::uint64_t> instant_flip(const Points& p, const Vector&
     ref::DynamicRegularTriangulation rt(pts, pw.weights.to_vector());
     flips = cpu::set_weights(rt, pu.weights.to_vector(), 0).total_flips();
     result = rt.simplices();
-    check_certified(certify::rtd(pu, result), "instant flip");
+    check_certified(cpu::certify_rtd(pu, result), "instant flip");
   }
   return {cells_array(result, static_cast<std::size_t>(p.shape(1) + 1)), flips};
 }

@@ -10,6 +10,7 @@
 #include <gmpxx.h>
 
 #include "predicates/lambda_filter.hpp"
+#include "reference/certify/certify_detail.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/convex_surface.hpp"
@@ -179,7 +180,7 @@ struct FacetForm {
 // then tests every boundary vertex against every boundary facet).
 std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<std::vector<Index>>& S,
                                            const std::vector<std::pair<std::uint32_t, int>>& boundary,
-                                           const std::vector<Index>& bverts) {
+                                           const std::vector<Index>& bverts, const ForRange& for_range) {
   const int d = ck.d;
   // facet k: the simplex in the predicates' convention without vertex i,
   // orient_d(facet, t_i) = (-1)^(d - i) orient_d(t) > 0: an even d - i swaps
@@ -203,7 +204,7 @@ std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<
   for (Index x : bverts) is_vertex[x] = 0;
   Index v = 0;
   while (v < is_vertex.size() && !is_vertex[v]) ++v;
-  const SurfaceCheck r = convex_surface(ck.ps, facets, v < is_vertex.size() ? v : kAuxiliaryCentre);
+  const SurfaceCheck r = convex_surface(ck.ps, facets, v < is_vertex.size() ? v : kAuxiliaryCentre, nullptr, for_range);
   const std::string who =
       r.auxiliary ? "auxiliary point (the boundary vertices' average)" : "interior vertex";
   auto outside = [&](std::size_t k, Index x, const std::string& what) {
@@ -232,16 +233,21 @@ std::optional<std::string> convex_boundary(const Checker& ck, const std::vector<
 // Conditions simplex-orientation, facet-manifold, boundary-is-hull (header).
 // Fills `F` for the later conditions. Facets are matched by sorting their
 // keys (sorted vertices, unused entries ~0), not by a hash map of vectors.
-std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, Facets& F) {
+// The per-simplex and per-facet checks run through for_range (Speedups;
+// empty: sequentially); the first failure in the sequential order is the one
+// reported.
+std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, Facets& F, const ForRange& for_range) {
   const int d = ck.d;
   const std::size_t w = static_cast<std::size_t>(d + 1);
-  for (const auto& t : S) {
-    const int o = ck.orient(t.data());
-    if (o == 0)  // only at Level::exact (SoS signs are never 0)
+  if (const std::size_t bad =
+          detail::smallest_failing(S.size(), for_range, [&](std::size_t k) { return ck.orient(S[k].data()) <= 0; });
+      bad < S.size()) {
+    const auto& t = S[bad];
+    if (ck.orient(t.data()) == 0)  // only at Level::exact (SoS signs are never 0)
       return "simplex-orientation: simplex " + simplex_str(t) +
              " has zero volume (the exact level accepts none; a canonical answer with zero-volume simplices is "
              "certified at the canonical level)";
-    if (o < 0) return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
+    return "simplex-orientation: simplex " + simplex_str(t) + " is negatively oriented";
   }
   // every (simplex, position): its facet's key and induced orientation
   struct Half {
@@ -251,7 +257,8 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
     bool odd;
   };
   std::vector<Half> halves(S.size() * w);
-  for (std::uint32_t s = 0; s < S.size(); ++s) {
+  detail::for_pieces(S.size(), for_range, [&](std::size_t lo, std::size_t hi) {
+  for (std::uint32_t s = static_cast<std::uint32_t>(lo); s < hi; ++s) {
     for (int i = 0; i <= d; ++i) {
       Half& h = halves[s * w + static_cast<std::size_t>(i)];
       h.key.fill(~Index{0});
@@ -270,6 +277,7 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
       h.odd = odd;
     }
   }
+  });
   // the same order as a global sort by (key, simplex, position), without
   // one: a counting sort by the facet's smallest vertex (a stable pass in
   // (simplex, position) order), then each bucket — the facets whose smallest
@@ -290,16 +298,18 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
           return x.key[static_cast<std::size_t>(j)] < y.key[static_cast<std::size_t>(j)];
       return false;
     };
-    for (std::size_t v = 0; v < n; ++v) {
-      Half* lo = sorted.data() + start[v];
-      Half* hi = sorted.data() + start[v + 1];
-      if (hi - lo <= 32) {
-        for (Half* x = lo + 1; x < hi; ++x)
-          for (Half* y = x; y > lo && rest_less(*y, *(y - 1)); --y) std::swap(*y, *(y - 1));
-      } else {
-        std::stable_sort(lo, hi, rest_less);
+    detail::for_pieces(n, for_range, [&](std::size_t first, std::size_t last) {  // buckets apart
+      for (std::size_t v = first; v < last; ++v) {
+        Half* lo = sorted.data() + start[v];
+        Half* hi = sorted.data() + start[v + 1];
+        if (hi - lo <= 32) {
+          for (Half* x = lo + 1; x < hi; ++x)
+            for (Half* y = x; y > lo && rest_less(*y, *(y - 1)); --y) std::swap(*y, *(y - 1));
+        } else {
+          std::stable_sort(lo, hi, rest_less);
+        }
       }
-    }
+    });
     halves.swap(sorted);
   }
   const auto same_key = [d](const Half& x, const Half& y) {
@@ -337,23 +347,32 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
   std::sort(bverts.begin(), bverts.end());
   bverts.erase(std::unique(bverts.begin(), bverts.end()), bverts.end());
   if (!ck.exact)
-    if (const std::optional<std::string> why = convex_boundary(ck, S, boundary, bverts)) return *why;
-  for (const auto& [s, i] : boundary) {
+    if (const std::optional<std::string> why = convex_boundary(ck, S, boundary, bverts, for_range)) return *why;
+  // the quadratic test: per boundary facet, the first boundary vertex not
+  // (strictly) on its inner side
+  auto first_outside = [&](std::size_t k) -> long {
+    const auto& [s, i] = boundary[k];
     const auto& t = S[s];
     const FacetForm form(ck, t, i);
     for (Index x : bverts) {
       if (std::find(t.begin(), t.end(), x) != t.end()) continue;  // on f, or the simplex's own apex
       int o = form.sign(ck.ps.point(x));
       if (o == 0) o = ck.orient_with(t, i, x);
-      if (o < 0 || (o == 0 && !ck.exact)) {
-        std::vector<Index> f;
-        for (int j = 0; j <= d; ++j)
-          if (j != i) f.push_back(t[static_cast<std::size_t>(j)]);
-        return "boundary-is-hull: boundary vertex " + std::to_string(x) + " is not " +
-               (ck.exact ? "on the inner side of" : "strictly inside") + " the boundary facet " +
-               simplex_str(f) + " of simplex " + simplex_str(t);
-      }
+      if (o < 0 || (o == 0 && !ck.exact)) return static_cast<long>(x);
     }
+    return -1;
+  };
+  if (const std::size_t bad = detail::smallest_failing(boundary.size(), for_range,
+                                                       [&](std::size_t k) { return first_outside(k) >= 0; });
+      bad < boundary.size()) {
+    const auto& [s, i] = boundary[bad];
+    const auto& t = S[s];
+    std::vector<Index> f;
+    for (int j = 0; j <= d; ++j)
+      if (j != i) f.push_back(t[static_cast<std::size_t>(j)]);
+    return "boundary-is-hull: boundary vertex " + std::to_string(first_outside(bad)) + " is not " +
+           (ck.exact ? "on the inner side of" : "strictly inside") + " the boundary facet " + simplex_str(f) +
+           " of simplex " + simplex_str(t);
   }
   return {};
 }
@@ -406,11 +425,17 @@ std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Ind
   if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
   Checker ck{ps, ps.dim, Orientation::orient_d};
   Facets F;
-  return tiling(ck, positive_simplices, F);
+  return tiling(ck, positive_simplices, F, ForRange{});
 }
 }  // namespace rtd_detail
 
 Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest) {
+  return rtd(ps, S, level, furthest, Speedups{});
+}
+
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest,
+           const Speedups& speedups) {
+  const ForRange& for_range = speedups.for_range;
   const int d = ps.dim;
   const bool exact = level == Level::exact;
   if (d < 2 || d > kMaxD) return Report::fail("input-dimension", "rtd needs points of dimension 2.." + std::to_string(kMaxD));
@@ -429,12 +454,13 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
   Checker ck{ps, d, Orientation::volume, exact};
   ck.furthest = furthest;
   Facets F;
-  if (std::string why = tiling(ck, S, F); !why.empty()) return fail_from(why);
+  if (std::string why = tiling(ck, S, F, for_range); !why.empty()) return fail_from(why);
   // (the tiling covers a full-dimensional convex region, so the input spans R^d)
 
   // Theorem 2.2: every interior facet locally regular
-  const std::size_t w = static_cast<std::size_t>(d + 1);
-  for (std::size_t s = 0; s < S.size(); ++s)
+  // (per simplex s, its facets toward later simplices, in position order:
+  // the first failing (s, i) of the sequential order)
+  auto irregular = [&](std::size_t s) -> int {  // the first failing position, or -1
     for (int i = 0; i <= d; ++i) {
       const std::int64_t o = F.nb(s, i);
       if (o < static_cast<std::int64_t>(s)) continue;  // boundary, or checked from the other side
@@ -443,66 +469,93 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
       for (Index x : u)
         if (std::find(S[s].begin(), S[s].end(), x) == S[s].end()) b = x;
       const int pw = ck.power(S[s], b);
-      if (pw > 0 || (pw == 0 && !exact))
-        return Report::fail("locally-regular", "the facet between " + simplex_str(S[s]) + " and " + simplex_str(u) +
-                                                   " is not locally regular: the lifted point of " + std::to_string(b) +
-                                                   " is not " + (exact ? "on or above" : "strictly above") +
-                                                   " the lifted " + simplex_str(S[s]) +
-                                                   (furthest ? " (furthest site: the heights negated)" : ""));
+      if (pw > 0 || (pw == 0 && !exact)) return i;
     }
+    return -1;
+  };
+  if (const std::size_t s = detail::smallest_failing(S.size(), for_range, [&](std::size_t k) { return irregular(k) >= 0; });
+      s < S.size()) {
+    const auto& u = S[static_cast<std::size_t>(F.nb(s, irregular(s)))];
+    Index b = 0;
+    for (Index x : u)
+      if (std::find(S[s].begin(), S[s].end(), x) == S[s].end()) b = x;
+    return Report::fail("locally-regular", "the facet between " + simplex_str(S[s]) + " and " + simplex_str(u) +
+                                               " is not locally regular: the lifted point of " + std::to_string(b) +
+                                               " is not " + (exact ? "on or above" : "strictly above") +
+                                               " the lifted " + simplex_str(S[s]) +
+                                               (furthest ? " (furthest site: the heights negated)" : ""));
+  }
 
   // every missing point redundant: locate it (visibility walk, perturbed),
-  // compare with the lifted simplex containing it
+  // compare with the lifted simplex containing it. Through for_range each
+  // piece of points walks from its own start; a failure anywhere is then
+  // reported by the sequential pass (one walk carried from point to point),
+  // so the message names the simplex that pass finds.
   std::vector<char> is_vertex(n, 0);
   for (const auto& t : S)
     for (Index x : t) is_vertex[x] = 1;
-  std::uint64_t rng = 0x9E3779B97F4A7C15ull;
-  std::size_t cur = 0;
   const std::size_t cap = 4 * S.size() + 100;
-  for (Index p = 0; p < n; ++p) {
-    if (is_vertex[p]) continue;
+  // the simplex containing p (walk from cur, then a scan), -1 when none
+  auto locate = [&](Index p, std::size_t cur, std::uint64_t& rng) -> long {
     std::size_t steps = 0;
-    long found = -1;
-    bool outside = false;
     while (steps++ < cap) {
       int cand[kMaxD + 1], nc = 0;
       for (int i = 0; i <= d; ++i)
         if (ck.orient_with(S[cur], i, p) < 0) cand[nc++] = i;
-      if (nc == 0) {
-        found = static_cast<long>(cur);
-        break;
-      }
+      if (nc == 0) return static_cast<long>(cur);
       rng ^= rng << 13;
       rng ^= rng >> 7;
       rng ^= rng << 17;
       const int i = cand[nc == 1 ? 0 : static_cast<int>((rng >> 11) % static_cast<std::uint64_t>(nc))];
       const std::int64_t next = F.nb(cur, i);
-      if (next < 0) {  // strictly beyond a boundary facet: outside the tiled hull
-        outside = true;
-        break;
-      }
+      if (next < 0) return -1;  // strictly beyond a boundary facet: outside the tiled hull
       cur = static_cast<std::size_t>(next);
     }
-    if (found < 0 && !outside) {  // the walk did not settle (cannot happen after regularity): scan
-      for (std::size_t s = 0; s < S.size() && found < 0; ++s) {
-        bool in = true;
-        for (int i = 0; i <= d && in; ++i) in = exact ? ck.orient_with(S[s], i, p) >= 0 : ck.orient_with(S[s], i, p) > 0;
-        if (in) found = static_cast<long>(s);
-      }
+    // the walk did not settle (cannot happen after regularity): scan
+    for (std::size_t s = 0; s < S.size(); ++s) {
+      bool in = true;
+      for (int i = 0; i <= d && in; ++i) in = exact ? ck.orient_with(S[s], i, p) >= 0 : ck.orient_with(S[s], i, p) > 0;
+      if (in) return static_cast<long>(s);
     }
-    if (found < 0)
-      return Report::fail("missing-point-redundant", "point " + std::to_string(p) +
-                                                         " is not a vertex and lies outside every simplex (under the perturbation)");
+    return -1;
+  };
+  auto not_redundant = [&](Index p, long found) {
     const int pw = ck.power(S[static_cast<std::size_t>(found)], p);
-    if (pw > 0 || (pw == 0 && !exact))
-      return Report::fail("missing-point-redundant",
-                          "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is " +
-                              (exact ? "strictly below" : "not strictly above") + " the lifted simplex " +
-                              simplex_str(S[static_cast<std::size_t>(found)]) +
-                              (furthest ? " (furthest site: the heights negated)" : ""));
-    cur = static_cast<std::size_t>(found);
+    return pw > 0 || (pw == 0 && !exact);
+  };
+  struct Walker {
+    std::uint64_t rng = 0x9E3779B97F4A7C15ull;
+    std::size_t cur = 0;
+  };
+  bool any_fails = false;
+  if (for_range) {
+    any_fails = detail::smallest_failing_by_piece(n, for_range, [&](std::size_t) {
+                  return [&, wk = Walker{}](std::size_t p) mutable {
+                    if (is_vertex[p]) return false;
+                    const long found = locate(static_cast<Index>(p), wk.cur, wk.rng);
+                    if (found < 0 || not_redundant(static_cast<Index>(p), found)) return true;
+                    wk.cur = static_cast<std::size_t>(found);
+                    return false;
+                  };
+                }) < n;
   }
-  (void)w;
+  if (!for_range || any_fails) {
+    Walker wk;
+    for (Index p = 0; p < n; ++p) {
+      if (is_vertex[p]) continue;
+      const long found = locate(p, wk.cur, wk.rng);
+      if (found < 0)
+        return Report::fail("missing-point-redundant", "point " + std::to_string(p) +
+                                                           " is not a vertex and lies outside every simplex (under the perturbation)");
+      if (not_redundant(p, found))
+        return Report::fail("missing-point-redundant",
+                            "point " + std::to_string(p) + " is not a vertex but is not redundant: its lifted point is " +
+                                (exact ? "strictly below" : "not strictly above") + " the lifted simplex " +
+                                simplex_str(S[static_cast<std::size_t>(found)]) +
+                                (furthest ? " (furthest site: the heights negated)" : ""));
+      wk.cur = static_cast<std::size_t>(found);
+    }
+  }
   if (exact) {
     // covers-hull-once (header): the simplices tile conv(P) k times, k >= 1;
     // their exact total volume equals that of conv(P) — taken from the

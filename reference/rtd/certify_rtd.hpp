@@ -131,6 +131,12 @@ namespace flipflop::certify {
 // the argument above holds for any heights.
 Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level = Level::canonical,
            bool furthest = false);
+// The same verdict and message, the per-simplex checks (orientation, the
+// facet table, local regularity), the quadratic boundary test's facets and
+// the missing points' walks through speedups.for_range (certify.hpp;
+// kernels_cpu/rtd/certify_rtd.hpp runs them on oneTBB).
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level, bool furthest,
+           const Speedups& speedups);
 
 namespace rtd_detail {
 // The structural part (conditions simplex-indices, simplex-orientation,

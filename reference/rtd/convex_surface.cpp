@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <utility>
 
 #include "predicates/predicates.hpp"
 #include "predicates/static_filter.hpp"
+#include "reference/certify/certify_detail.hpp"
 
 namespace flipflop::certify {
 
@@ -37,7 +39,7 @@ struct Orient {
 }  // namespace
 
 SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<Index>>& facets, Index centre,
-                            std::vector<std::uint32_t>* across) {
+                            std::vector<std::uint32_t>* across, const ForRange& for_range) {
   const int d = ps.dim;
   SurfaceCheck out;
   // (a) ridges: sorted d-1 vertices, the facet and its vertex off the ridge
@@ -76,9 +78,38 @@ SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<In
   auto at = [&](std::size_t i) -> const Ridge& { return ridges[order[i].second]; };
   const Orient plain{ps, d, pred::StaticFilter::for_points(ps.coords.data(), ps.size(), d)};
   if (across) across->assign(facets.size() * static_cast<std::size_t>(d), 0);
+  // the groups of equal keys (starts), then each group checked — through
+  // for_range, the first failing group in sorted order reported
+  std::vector<std::size_t> group;
   for (std::size_t a = 0; a < nr;) {
     std::size_t b = a + 1;
     while (b < nr && order[b].first == order[a].first && at(b).key == at(a).key) ++b;
+    group.push_back(a);
+    a = b;
+  }
+  group.push_back(nr);
+  const std::size_t ng = group.size() - 1;
+  // the failing side of a two-facet group (0, 1), or -1
+  auto concave_side = [&](std::size_t a) {
+    for (int side = 0; side < 2; ++side) {
+      const Ridge &f = at(a + static_cast<std::size_t>(side)), &g = at(a + 1 - static_cast<std::size_t>(side));
+      if (plain.facet_and(facets[f.f], facets[g.f][static_cast<std::size_t>(g.j)]) >= 0) return side;
+    }
+    return -1;
+  };
+  if (const std::size_t bad = detail::smallest_failing(ng, for_range, [&](std::size_t k) {
+        const std::size_t a = group[k];
+        if (group[k + 1] - a != 2) return true;
+        if (concave_side(a) >= 0) return true;
+        if (across)
+          for (int side = 0; side < 2; ++side) {
+            const Ridge &f = at(a + static_cast<std::size_t>(side)), &g = at(a + 1 - static_cast<std::size_t>(side));
+            (*across)[f.f * static_cast<std::size_t>(d) + static_cast<std::size_t>(f.j)] = g.f;
+          }
+        return false;
+      });
+      bad < ng) {
+    const std::size_t a = group[bad], b = group[bad + 1];
     if (b - a != 2) {
       out.kind = SurfaceCheck::Kind::not_closed;
       out.count = b - a;
@@ -86,17 +117,11 @@ SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<In
       out.ridge.assign(at(a).key.begin(), at(a).key.begin() + (d - 1));
       return out;
     }
-    for (int side = 0; side < 2; ++side) {
-      const Ridge &f = at(a + static_cast<std::size_t>(side)), &g = at(a + 1 - static_cast<std::size_t>(side));
-      const Index x = facets[g.f][static_cast<std::size_t>(g.j)];
-      if (plain.facet_and(facets[f.f], x) >= 0) {
-        out.kind = SurfaceCheck::Kind::not_convex;
-        out.facet = f.f, out.other = g.f, out.point = x;
-        return out;
-      }
-      if (across) (*across)[f.f * static_cast<std::size_t>(d) + static_cast<std::size_t>(f.j)] = g.f;
-    }
-    a = b;
+    const int side = concave_side(a);
+    const Ridge &f = at(a + static_cast<std::size_t>(side)), &g = at(a + 1 - static_cast<std::size_t>(side));
+    out.kind = SurfaceCheck::Kind::not_convex;
+    out.facet = f.f, out.other = g.f, out.point = facets[g.f][static_cast<std::size_t>(g.j)];
+    return out;
   }
   // (b) the centre: the given point, or the auxiliary one in a copy of the input
   PointSet ext;
@@ -122,17 +147,20 @@ SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<In
   const Orient o{*cps, d, out.auxiliary ? pred::StaticFilter::for_points(cps->coords.data(), cps->size(), d)
                                         : plain.filter};
   out.point = c;
-  std::size_t crossed = 0;
-  for (std::size_t k = 0; k < facets.size(); ++k) {
-    if (o.facet_and(facets[k], c) >= 0) {
-      out.kind = out.auxiliary ? SurfaceCheck::Kind::no_centre : SurfaceCheck::Kind::outside;
-      out.facet = k;
-      return out;
-    }
-    // (c) the vertical ray up from c. A facet whose projection's bounding
-    // box (first d-1 coordinates) misses c's projection by a positive gap is
-    // not crossed, under any infinitesimal perturbation: only comparisons
-    // of input doubles, no rounding
+  // (b) through for_range, the first facet not strictly beyond c reported
+  if (const std::size_t bad =
+          detail::smallest_failing(facets.size(), for_range, [&](std::size_t k) { return o.facet_and(facets[k], c) >= 0; });
+      bad < facets.size()) {
+    out.kind = out.auxiliary ? SurfaceCheck::Kind::no_centre : SurfaceCheck::Kind::outside;
+    out.facet = bad;
+    return out;
+  }
+  // (c) the vertical ray up from c, the crossings counted per piece
+  auto crosses = [&](std::size_t k) {
+    // a facet whose projection's bounding box (first d-1 coordinates)
+    // misses c's projection by a positive gap is not crossed, under any
+    // infinitesimal perturbation: only comparisons of input doubles, no
+    // rounding
     bool apart = false;
     for (int i = 0; i + 1 < d && !apart; ++i) {
       const double x = cps->point(c)[i];
@@ -144,7 +172,7 @@ SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<In
       }
       apart = below || above;
     }
-    if (apart) continue;
+    if (apart) return false;
     Index t[kMaxD + 1];
     for (int j = 0; j < d; ++j) t[j] = facets[k][static_cast<std::size_t>(j)];
     const int s = o(t, d);
@@ -156,8 +184,14 @@ SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<In
       t[j] = keep;
     }
     t[d] = c;
-    if (inside && o(t, d + 1) == s) ++crossed;
-  }
+    return inside && o(t, d + 1) == s;
+  };
+  std::atomic<std::size_t> crossed{0};
+  detail::for_pieces(facets.size(), for_range, [&](std::size_t lo, std::size_t hi) {
+    std::size_t here = 0;
+    for (std::size_t k = lo; k < hi; ++k) here += crosses(k) ? 1 : 0;
+    crossed += here;
+  });
   if (crossed != 1) {
     out.kind = SurfaceCheck::Kind::winds;
     out.count = crossed;

@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "reference/certify/certify.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::certify {
@@ -56,9 +57,13 @@ struct SurfaceCheck {
 // centre: a point index, or kAuxiliaryCentre for the auxiliary point. Every
 // facet must hold d distinct in-range indices (the callers check). across
 // (optional): receives, where (a) holds, the facet across the ridge opposite
-// vertex j of facet k at k * d + j.
+// vertex j of facet k at k * d + j. for_range (Speedups, certify.hpp;
+// optional): the per-ridge and per-facet predicates run through it, the
+// result the same (the first failing ridge group or facet in the sequential
+// order is reported).
 inline constexpr Index kAuxiliaryCentre = ~Index{0};
+using ForRange = decltype(Speedups::for_range);
 SurfaceCheck convex_surface(const PointSet& ps, const std::vector<std::vector<Index>>& facets, Index centre,
-                            std::vector<std::uint32_t>* across = nullptr);
+                            std::vector<std::uint32_t>* across = nullptr, const ForRange& for_range = {});
 
 }  // namespace flipflop::certify
