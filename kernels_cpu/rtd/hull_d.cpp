@@ -586,7 +586,7 @@ std::string tuple_str(const Index* t, int k) {
 // by the thread that claims it (an atomic state per form; a thread that
 // finds one being built asks the predicate itself) and shared by the walks
 // of every point; an undecided form falls back to the exact SoS predicate.
-// The points are walked in pieces of kChunk in parallel (par_for: the
+// The points are walked in pieces (at most kChunk) in parallel (par_for: the
 // caller's thread count), each piece from cone 0 with its own random
 // sequence; the first failing point in `order` is reported, so the message
 // does not depend on the thread count. Without forms (more than 2^21 of
@@ -634,7 +634,11 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
     }
     return ck.orient(t, q);
   };
-  const std::size_t pieces = (order.size() + kChunk - 1) / kChunk;
+  // pieces of at most kChunk points, at least 16 of them down to 256 points
+  // each: 2x10^4 points in kChunk pieces made three, two of them on one
+  // of two threads
+  const std::size_t chunk = std::clamp<std::size_t>(order.size() / 16, 256, kChunk);
+  const std::size_t pieces = (order.size() + chunk - 1) / chunk;
   std::vector<std::size_t> failed_at(pieces, order.size());
   std::vector<std::string> why(pieces);
   const std::size_t cap = 4 * h + 100;
@@ -642,7 +646,7 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
     for (std::size_t piece = plo; piece < phi; ++piece) {
       std::uint64_t rng = brio::splitmix64(piece) | 1;
       std::size_t cur = 0;
-      for (std::size_t at = piece * kChunk; at < std::min(order.size(), (piece + 1) * kChunk); ++at) {
+      for (std::size_t at = piece * chunk; at < std::min(order.size(), (piece + 1) * chunk); ++at) {
         const Index q = order[at];
         long found = -1;
         for (std::size_t steps = 0; steps < cap && found < 0; ++steps) {
