@@ -1,0 +1,72 @@
+"""Issue 39's rows against scipy.spatial (Qhull) from Python: whole calls in one process,
+flipflop and scipy alternating, medians of R runs (argv[1], default 3):
+
+    build/python-venv/bin/python docs/bench/measure_scipy_rows.py 3
+
+Rows: Delaunay on integer grids k^d and on the same grids with 20 % of the points moved by
+2 ulp per coordinate (each coordinate stepped twice by np.nextafter in a random direction,
+seed 7: a moved 0 becomes a subnormal), the perturbed grids plus 1.0 (no subnormals),
+Delaunay of random points in 4D and 5D, ConvexHull of standard normal points in 4D and 5D,
+find_simplex of 18,000 queries on the perturbed 3^5 grid. flipflop's calls include
+certification; both libraries' attributes are those computed eagerly."""
+import itertools, os, statistics, sys, time
+import numpy as np, scipy, scipy.spatial as ss, flipflop
+
+R = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+
+
+def grid(k, d):
+    return np.array(list(itertools.product(range(k), repeat=d)), dtype=float)
+
+
+def perturbed(p, seed=7):
+    p = p.copy()
+    rng = np.random.default_rng(seed)
+    moved = rng.choice(len(p), len(p) // 5, replace=False)
+    for i in moved:
+        for j in range(p.shape[1]):
+            to = np.inf if rng.random() < 0.5 else -np.inf
+            p[i, j] = np.nextafter(np.nextafter(p[i, j], to), to)
+    return p
+
+
+def timed(f):
+    t = time.perf_counter(); out = f(); return time.perf_counter() - t, out
+
+
+rng = np.random.default_rng(1)
+g35p = perturbed(grid(3, 5))
+queries = rng.random((18_000, 5)) * 2.0
+cases = [
+    ("Delaunay, 3^5 grid", grid(3, 5), flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 3^5 grid, 20 % moved by 2 ulp", g35p, flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 3^5 grid, 20 % moved by 2 ulp, + 1", g35p + 1.0, flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 6^4 grid", grid(6, 4), flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 6^4 grid, 20 % moved by 2 ulp", perturbed(grid(6, 4)), flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 20^3 grid, 20 % moved by 2 ulp", perturbed(grid(20, 3)), flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 2x10^4 random 4D", rng.random((20_000, 4)), flipflop.Delaunay, ss.Delaunay),
+    ("Delaunay, 5000 random 5D", rng.random((5000, 5)), flipflop.Delaunay, ss.Delaunay),
+    ("ConvexHull, 10^5 normal 4D", rng.standard_normal((100_000, 4)), flipflop.ConvexHull, ss.ConvexHull),
+    ("ConvexHull, 2x10^4 normal 5D", rng.standard_normal((20_000, 5)), flipflop.ConvexHull, ss.ConvexHull),
+]
+ff_g, sp_g = flipflop.Delaunay(g35p), ss.Delaunay(g35p)
+cases.append(("find_simplex, 18,000 queries, perturbed 3^5 grid", None,
+              lambda _: ff_g.find_simplex(queries), lambda _: sp_g.find_simplex(queries)))
+load0 = os.getloadavg()
+rows = []
+for name, pts, ff, sp in cases:
+    tf, ts = [], []
+    for _ in range(R):
+        t, a = timed(lambda: ff(pts)); tf.append(t)
+        t, b = timed(lambda: sp(pts)); ts.append(t)
+    f, s = statistics.median(tf), statistics.median(ts)
+    size = lambda x: len(x.simplices) if hasattr(x, "simplices") else int((np.asarray(x) >= 0).sum())
+    rows.append((name, f, s, size(a), size(b)))
+load1 = os.getloadavg()
+print(f"numpy {np.__version__}, scipy {scipy.__version__}, flipflop {flipflop.__version__}, median of {R}, "
+      f"alternating; load average {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f} before, "
+      f"{load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f} after, {os.cpu_count()} cores")
+print("| call | flipflop | scipy.spatial | flipflop / scipy | simplices or found (flipflop, scipy) |")
+print("| --- | ---: | ---: | ---: | --- |")
+for n, f, s, ka, kb in rows:
+    print(f"| {n} | {f:.4f} s | {s:.4f} s | {f / s:.2f} | {ka}, {kb} |")
