@@ -151,6 +151,8 @@ struct Witnessed {
   }
 };
 
+constexpr std::size_t kAhead = 8;  // slots of look-ahead for the main pass's prefetches
+
 void record_min(std::atomic<std::size_t>& first, std::size_t x) {
   std::size_t cur = first.load(std::memory_order_relaxed);
   while (x < cur && !first.compare_exchange_weak(cur, x)) {
@@ -197,6 +199,18 @@ Report certify_witnessed(const PointSet& ps, const Rt3Witness& w, const std::vec
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t ch = lo; ch < hi; ++ch)
       for (std::size_t t = ch * per; t < std::min(slots, (ch + 1) * per); ++t) {
+        // the slot kAhead further on: its neighbours' corners and links and
+        // its corners' points and witness slots, requested now (each a
+        // scattered load that the tests below wait for)
+        if (t + kAhead < slots) {
+          const std::size_t u = t + kAhead;
+          for (int i = 0; i < 4; ++i) {
+            const std::uint32_t f = w.tn[4 * u + static_cast<std::size_t>(i)];
+            if (f < 4 * slots) __builtin_prefetch(&w.tv[f & ~3u]), __builtin_prefetch(&w.tn[f & ~3u]);
+            const std::uint32_t k = w.tv[4 * u + static_cast<std::size_t>(i)];
+            if (k < n) __builtin_prefetch(&w.pts[k]), __builtin_prefetch(&w.at[k]);
+          }
+        }
         if (!W.used(t)) continue;
         const bool real = W.real(t);
         const std::uint32_t* c = W.corners(t);
