@@ -103,6 +103,33 @@ std::optional<certify::Report> witness_problem(const PointSet& ps, const std::ve
   return std::nullopt;
 }
 
+// Positions in a canonical output T (simplices strictly increasing, every
+// index below n, the smallest first in each): find(x) is x's index in T, or
+// T.size() when x is not there. first[m]: the first simplex whose smallest
+// index is >= m (built in parallel, each m written by one i: race-free); a
+// lookup is a binary search among the simplices with x's smallest index, so
+// a vertex that is the smallest index of very many simplices (a fan of flat
+// ones over coplanar points) costs O(log), not O(run).
+template <class Simplex>
+struct OutputIndex {
+  const std::vector<Simplex>& T;
+  std::vector<std::uint32_t> first;
+  OutputIndex(std::size_t n, const std::vector<Simplex>& t) : T(t), first(n + 1) {
+    par_for(T.size() + 1, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t i = lo; i < hi; ++i) {
+        const std::size_t from = i == 0 ? 0 : std::size_t{T[i - 1][0]} + 1, to = i == T.size() ? n : T[i][0];
+        for (std::size_t m = from; m <= to; ++m) first[m] = static_cast<std::uint32_t>(i);
+      }
+    });
+  }
+  std::size_t find(const Simplex& x) const {
+    if (std::size_t{x[0]} + 1 >= first.size()) return T.size();
+    const auto b = T.begin() + first[x[0]], e = T.begin() + first[x[0] + 1];
+    const auto it = std::lower_bound(b, e, x);
+    return it != e && *it == x ? static_cast<std::size_t>(it - T.begin()) : T.size();
+  }
+};
+
 // The smallest slot t < slots with real(t) whose canonical simplex
 // simplex_of(t) is not in T, or `slots` when every witnessed simplex is in T.
 // n: the number of points (every index of T below n); B, bucket: the buckets
@@ -113,24 +140,8 @@ std::size_t first_unwitnessed_slot(std::size_t n, const std::vector<Simplex>& T,
                                    std::size_t B, const Bucket& bucket, std::size_t slots, const ForRange& for_range,
                                    const Real& real, const SimplexOf& simplex_of) {
   const std::size_t chunks = part.size();
-  // first[m]: the first output simplex whose smallest index is >= m (each m
-  // written by one i: race-free)
-  std::vector<std::uint32_t> first(n + 1);
-  par_for(T.size() + 1, kChunk, [&](std::size_t lo, std::size_t hi) {
-    for (std::size_t i = lo; i < hi; ++i) {
-      const std::size_t from = i == 0 ? 0 : std::size_t{T[i - 1][0]} + 1, to = i == T.size() ? n : T[i][0];
-      for (std::size_t m = from; m <= to; ++m) first[m] = static_cast<std::uint32_t>(i);
-    }
-  });
-  // binary search among the output simplices with x's smallest index (T is
-  // strictly increasing): a vertex that is the smallest index of very many
-  // simplices (a fan of flat ones over coplanar points) costs O(log), not
-  // O(run) per lookup
-  auto in_output = [&](const Simplex& x) {
-    const auto b = T.begin() + first[x[0]], e = T.begin() + first[x[0] + 1];
-    const auto it = std::lower_bound(b, e, x);
-    return it != e && *it == x;
-  };
+  const OutputIndex<Simplex> index(n, T);
+  auto in_output = [&](const Simplex& x) { return index.find(x) < T.size(); };
   // bucket-major write positions: bucket b of chunk ch after all of bucket
   // b's earlier chunks and all smaller buckets
   std::size_t total = 0;

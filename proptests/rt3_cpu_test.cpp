@@ -20,6 +20,9 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -391,4 +394,64 @@ TEST_CASE("rt3 cpu: extreme magnitudes (1e±300, subnormals) equal the reference
     INFO("scale " << s);
     check_req(ps);
   }
+}
+
+// cpu::rt3_neighbors (scipy's `neighbors`, read off the witness) against the
+// neighbours found by matching facets: a map from each facet's sorted
+// vertices to the (tetrahedron, opposite position) pairs that hold it —
+// independent of the kernel's links. Every 3D family, weighted or not, with
+// its flat tetrahedra, at 1 and 2 threads; a corrupted witness link must be
+// refused or change the answer the matching gives.
+TEST_CASE("rt3 cpu: neighbours read off the witness equal those found by matching facets", "[rt3_cpu]") {
+  std::size_t inputs = 0, tets = 0, hull_sides = 0;
+  for (const std::string& fam : test::families(3))
+    for (std::size_t n : {5, 60, 700})
+      for (bool weighted : {false, true}) {
+        const PointSet ps = test::family_input(fam, n, 3, weighted, 1e-3);
+        if (!dimension_problem(ps).empty()) continue;
+        INFO(fam << " n=" << n << (weighted ? " weighted" : ""));
+        std::map<std::array<Index, 3>, std::vector<std::pair<std::size_t, int>>> facets;
+        for (int threads : {1, 2}) {
+          cpu::Rt3Options o;
+          o.threads = threads;
+          cpu::Rt3Witness w;
+          const cpu::Rt3Result r = cpu::rt3(ps, o, nullptr, &w);
+          const std::vector<std::int64_t> nb = cpu::rt3_neighbors(w, r.tets, threads);
+          REQUIRE(nb.size() == 4 * r.tets.size());
+          if (threads == 1) {
+            facets.clear();
+            for (std::size_t k = 0; k < r.tets.size(); ++k)
+              for (int j = 0; j < 4; ++j) {
+                std::array<Index, 3> f;
+                int c = 0;
+                for (int q = 0; q < 4; ++q)
+                  if (q != j) f[static_cast<std::size_t>(c++)] = r.tets[k][static_cast<std::size_t>(q)];
+                std::sort(f.begin(), f.end());
+                facets[f].push_back({k, j});
+              }
+          }
+          for (const auto& [f, holders] : facets) {
+            REQUIRE(holders.size() <= 2);
+            const auto [k, j] = holders[0];
+            if (holders.size() == 1) {
+              CHECK(nb[4 * k + static_cast<std::size_t>(j)] == -1);
+              hull_sides += threads == 1;
+            } else {
+              const auto [k2, j2] = holders[1];
+              CHECK(nb[4 * k + static_cast<std::size_t>(j)] == static_cast<std::int64_t>(k2));
+              CHECK(nb[4 * k2 + static_cast<std::size_t>(j2)] == static_cast<std::int64_t>(k));
+            }
+          }
+          if (threads == 1) {
+            ++inputs;
+            tets += r.tets.size();
+            // a dropped output tetrahedron: the pair no longer agrees
+            std::vector<cpu::Tet> fewer(r.tets.begin() + 1, r.tets.end());
+            CHECK_THROWS_AS(cpu::rt3_neighbors(w, fewer), std::logic_error);
+          }
+        }
+      }
+  std::cout << "rt3 neighbours from the witness: " << inputs << " inputs, " << tets << " tetrahedra (" << hull_sides
+            << " hull sides) equal to facet matching at 1 and 2 threads\n";
+  REQUIRE(inputs >= 20);
 }

@@ -63,6 +63,7 @@
 
 #include "kernels_cpu/brio.hpp"
 #include "kernels_cpu/parallel.hpp"
+#include "kernels_cpu/witnessed_output.hpp"
 #include "predicates/fast.hpp"
 #include "reference/dimension.hpp"
 
@@ -1075,6 +1076,63 @@ void Builder::witness(Rt3Witness& w, std::vector<std::uint32_t> at) {
 }
 
 }  // namespace
+
+std::vector<std::int64_t> rt3_neighbors(const Rt3Witness& w, const std::vector<Tet>& tets, int threads) {
+  const std::size_t n = w.pts.size(), slots = w.tv.size() / 4, m = tets.size();
+  constexpr std::uint32_t kNo = Rt3Witness::kNoSlot;
+  std::vector<std::int64_t> nb(4 * m, -1);
+  std::atomic<bool> inconsistent{false};
+  with_threads(threads, [&] {
+    const OutputIndex<Tet> index(n, tets);
+    auto real = [&](std::size_t t) {
+      const std::uint32_t* c = &w.tv[4 * t];
+      return c[0] != kNo && c[0] != n && c[1] != n && c[2] != n && c[3] != n;
+    };
+    // per real slot, its tetrahedron's index in tets
+    std::vector<std::uint32_t> at(slots, kNo);
+    std::atomic<std::size_t> found{0};
+    par_for(slots, kChunk, [&](std::size_t lo, std::size_t hi) {
+      std::size_t here = 0;
+      for (std::size_t t = lo; t < hi; ++t) {
+        if (!real(t)) continue;
+        const std::uint32_t* c = &w.tv[4 * t];
+        const std::size_t k = index.find(canonical_tet(w.pts[c[0]].id, w.pts[c[1]].id, w.pts[c[2]].id, w.pts[c[3]].id));
+        if (k == m) {
+          inconsistent.store(true, std::memory_order_relaxed);
+          continue;
+        }
+        at[t] = static_cast<std::uint32_t>(k);
+        ++here;
+      }
+      found += here;
+    });
+    if (found.load() != m) inconsistent.store(true);
+    if (inconsistent.load()) return;
+    // the link across corner i of slot t is the neighbour opposite the
+    // vertex of tets[at[t]] that is corner i's point
+    par_for(slots, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t t = lo; t < hi; ++t) {
+        if (at[t] == kNo) continue;
+        const std::size_t k = at[t];
+        const Tet& x = tets[k];
+        for (std::size_t i = 0; i < 4; ++i) {
+          const Index id = w.pts[w.tv[4 * t + i]].id;
+          std::size_t j = 0;
+          while (j < 4 && x[j] != id) ++j;
+          const std::uint32_t l = w.tn[4 * t + i];
+          if (j == 4 || l / 4 >= slots) {
+            inconsistent.store(true, std::memory_order_relaxed);
+            continue;
+          }
+          const std::uint32_t u = at[l / 4];
+          nb[4 * k + j] = u == kNo ? -1 : static_cast<std::int64_t>(u);
+        }
+      }
+    });
+  });
+  if (inconsistent.load()) throw std::logic_error("rt3_neighbors: the witness and the output disagree");
+  return nb;
+}
 
 Rt3Result rt3(const PointSet& ps, const Rt3Options& opt, Rt3Stats* stats, Rt3Witness* witness) {
   if (ps.dim != 3) throw std::invalid_argument("rt3 (cpu): the points must be 3D, got dimension " + std::to_string(ps.dim));

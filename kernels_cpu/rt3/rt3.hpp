@@ -170,4 +170,15 @@ struct Rt3Result {
 Rt3Result rt3(const PointSet& ps, const Rt3Options& opt = {}, Rt3Stats* stats = nullptr,
               Rt3Witness* witness = nullptr);
 
+// scipy's `neighbors` of rt3's canonical output `tets`, read off the witness
+// the same call filled (its links) instead of matching facets: nb[4k + j] is
+// the index in tets of the tetrahedron across the facet opposite vertex
+// tets[k][j], -1 on the hull. Each real slot's canonical tuple is looked up
+// in tets (OutputIndex, witnessed_output.hpp), then each of its links is
+// read; parallel, O(m) apart from the short binary searches. Call it on a
+// certified pair (certify_rt3 with this witness): a witnessed tetrahedron
+// missing from tets, or one missing from the witness, throws
+// std::logic_error.
+std::vector<std::int64_t> rt3_neighbors(const Rt3Witness& witness, const std::vector<Tet>& tets, int threads = 0);
+
 }  // namespace flipflop::cpu

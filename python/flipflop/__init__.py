@@ -872,16 +872,18 @@ class Delaunay(_QhullUser):
         if keep is not None:
             sub = np.ascontiguousarray(a[keep])
             sw = None if w is None else np.ascontiguousarray(w[keep])
+        neighbors = None  # the 3D cpu kernel's, read off its certified witness; else matched below
         if self._incremental and self._backend == "cpu":
             simplices, redundant = _kept_triangulation(self, "Delaunay", sub, sw, self._strict, self._threads,
                                                        self.furthest_site)
         else:
-            simplices, redundant = _native("Delaunay", _flipflop.triangulate, sub, sw, self._backend, self._strict,
-                                           self._threads, self.furthest_site)
+            simplices, redundant, neighbors = _native("Delaunay", _flipflop.triangulate_with_neighbors, sub, sw,
+                                                      self._backend, self._strict, self._threads, self.furthest_site)
         if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
             simplices, redundant = keep[simplices], keep[redundant]
         d = a.shape[1]
-        neighbors = _flipflop.neighbors(simplices)
+        if neighbors is None:
+            neighbors = _flipflop.neighbors(simplices)
         # the boundary facets: each simplex side without a neighbour, its
         # vertices in order with the opposite one left out
         i, j = np.nonzero(neighbors < 0)

@@ -124,6 +124,24 @@ def test_counts_bounds_and_simplices(pair):
     assert np.array_equal(t.good, np.ones(t.nsimplex)) and np.array_equal(s.good, np.ones(s.nsimplex))
 
 
+def test_3d_neighbors_from_the_kernel_witness_equal_facet_matching():
+    """In 3D the cpu backend's neighbors are read off the kernel's certified
+    witness (cpu::rt3_neighbors); they must equal the facet matching every
+    other path uses (_flipflop.neighbors), on degenerate input too: a grid
+    (flat tetrahedra), exact duplicates, weights with redundant points."""
+    from flipflop import _flipflop
+    rng = np.random.default_rng(11)
+    g = np.array([[i, j, k] for i in range(6) for j in range(6) for k in range(6)], dtype=float)
+    dup = np.concatenate([g, g[::3]])
+    inputs = [(rng.random((2000, 3)), None), (g, None), (dup, None),
+              (rng.random((1500, 3)), rng.random(1500) * 0.05)]
+    for pts, w in inputs:
+        for threads in (1, 2):
+            t = flipflop.Delaunay(pts, weights=w, threads=threads)
+            assert np.array_equal(t.neighbors, _flipflop.neighbors(t.simplices.astype(np.int64)))
+            assert t.neighbors.dtype == np.intc and t.neighbors.shape == t.simplices.shape
+
+
 def test_neighbors_vertex_to_simplex_and_vertex_neighbor_vertices(pair):
     p, t, s = pair
     where = index_of(s.simplices)
