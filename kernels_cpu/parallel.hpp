@@ -76,6 +76,28 @@ void par_for(std::size_t n, std::size_t grain, const Body& body) {
   fj.joined();
 }
 
+// Bucket-major write positions for a parallel scatter into buckets: at[c *
+// B + b] holds piece c's number of items in bucket b and becomes the
+// position of its first one — bucket b's pieces in piece order, after every
+// smaller bucket — so that pieces writing their items in order keep each
+// bucket in piece order. Returns the buckets' starts (B + 1 entries, the
+// last the total).
+template <class Count>
+std::vector<std::size_t> bucket_major_positions(std::vector<Count>& at, std::size_t pieces, std::size_t B) {
+  std::vector<std::size_t> start(B + 1, 0);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < B; ++b) {
+    start[b] = total;
+    for (std::size_t c = 0; c < pieces; ++c) {
+      const std::size_t k = at[c * B + b];
+      at[c * B + b] = static_cast<Count>(total);
+      total += k;
+    }
+  }
+  start[B] = total;
+  return start;
+}
+
 // ---- deterministic parallel arg-max ------------------------------------------
 // A candidate (key, index); the larger key wins, equal keys the smaller index,
 // NaN keys count as -inf. A strict total order, so the result does not depend

@@ -142,15 +142,7 @@ std::size_t first_unwitnessed_slot(std::size_t n, const std::vector<Simplex>& T,
   const std::size_t chunks = part.size();
   const OutputIndex<Simplex> index(n, T);
   auto in_output = [&](const Simplex& x) { return index.find(x) < T.size(); };
-  // bucket-major write positions: bucket b of chunk ch after all of bucket
-  // b's earlier chunks and all smaller buckets
-  std::size_t total = 0;
-  for (std::size_t b = 0; b < B; ++b)
-    for (std::size_t ch = 0; ch < chunks; ++ch) {
-      const std::size_t k = pos[ch * B + b];
-      pos[ch * B + b] = total;
-      total += k;
-    }
+  const std::size_t total = bucket_major_positions(pos, chunks, B)[B];
   std::vector<Simplex> by_bucket(total);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t ch = lo; ch < hi; ++ch) {

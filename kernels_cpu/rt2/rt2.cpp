@@ -1005,18 +1005,8 @@ std::vector<Triangle> Builder::output() const {
       }
     }
   });
-  std::vector<std::size_t> first(B + 1, 0);
-  std::size_t total = 0;
-  for (std::size_t b = 0; b < B; ++b) {
-    first[b] = total;
-    for (std::size_t c = 0; c < chunks; ++c) {
-      const std::size_t k = at[c * B + b];
-      at[c * B + b] = total;
-      total += k;
-    }
-  }
-  first[B] = total;
-  std::vector<Triangle> out(total);
+  const std::vector<std::size_t> first = bucket_major_positions(at, chunks, B);
+  std::vector<Triangle> out(first[B]);
   par_for(chunks, 1, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t c = lo; c < hi; ++c) {
       for (const Triangle& x : part[c]) out[at[c * B + bucket(x[0])]++] = x;

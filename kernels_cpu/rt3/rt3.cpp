@@ -946,25 +946,16 @@ std::vector<Tet> Builder::output() const {
       for (std::size_t t = c * kChunk; t < std::min(slots, (c + 1) * kChunk); ++t)
         if (canonical(t, c4)) ++at[c * B + (c4[0] >> shift)];
   });
-  std::vector<std::size_t> bucket(B + 1, 0);
-  std::size_t sum = 0;
-  for (std::size_t b = 0; b < B; ++b) {
-    bucket[b] = sum;
-    for (std::size_t c = 0; c < pieces; ++c) {
-      const std::uint32_t k = at[c * B + b];
-      at[c * B + b] = static_cast<std::uint32_t>(sum - bucket[b]);  // offset within the bucket
-      sum += k;
-    }
-  }
-  bucket[B] = sum;
-  std::vector<Tet> out(sum);
+  // (positions below the slot count, < 2^30: 32 bits hold them)
+  const std::vector<std::size_t> bucket = bucket_major_positions(at, pieces, B);
+  std::vector<Tet> out(bucket[B]);
   par_for(pieces, 1, [&](std::size_t lo, std::size_t hi) {
     Tet c4;
     for (std::size_t c = lo; c < hi; ++c)
       for (std::size_t t = c * kChunk; t < std::min(slots, (c + 1) * kChunk); ++t)
         if (canonical(t, c4)) {
           const std::size_t b = c4[0] >> shift;
-          out[bucket[b] + at[c * B + b]++] = c4;
+          out[at[c * B + b]++] = c4;
         }
   });
   par_for(B, 1, [&](std::size_t lo, std::size_t hi) {

@@ -231,12 +231,14 @@ std::vector<Triangle> triangles_of(const std::vector<std::vector<Index>>& cells)
 // not, gets the same answer as that sort. The buckets hold a few entries each
 // (a vertex's facets where it is the smallest), so this is linear in m * k in
 // practice; 2 * 10^6 triangles of a 2D triangulation: about 0.1 s, where the
-// global sort of (facet, slot) records took 3.8 s.
+// global sort of (facet, slot) records took 3.8 s (sequential; in parallel
+// below).
 template <std::size_t K, class Slot, class Vertex>
 std::vector<std::int64_t> facet_neighbors_in(std::size_t m, std::size_t buckets, const Vertex& vertex) {
   constexpr std::size_t R = K - 2;
   struct Entry {
     std::array<std::uint32_t, R> rest;  // the facet's vertices after the smallest, sorted
+    std::uint32_t first;                // the smallest
     Slot slot;                          // i * K + j
   };
   // the facet of simplex i opposite vertex j, sorted
@@ -250,23 +252,40 @@ std::vector<std::int64_t> facet_neighbors_in(std::size_t m, std::size_t buckets,
       std::sort(f.begin(), f.end());
     }
   };
-  std::vector<Slot> start(buckets + 1, 0);
-  std::array<std::uint32_t, K - 1> f;
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = 0; j < K; ++j) {
-      facet(i, j, f);
-      ++start[f[0] + 1];
-    }
-  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-  std::vector<Slot> cursor(start.begin(), start.end() - 1);
+  // In parallel (oneTBB), with the sequential order kept: pieces of
+  // simplices count their entries per coarse bucket (the top bits of the
+  // smallest vertex, at most 1024 buckets) and write them to their own
+  // stretch of each (bucket-major offsets: within a coarse bucket, slot
+  // order); each coarse bucket is then counting-sorted on the rest of its
+  // smallest vertex (stable), and each run of one smallest vertex sorted
+  // stably and paired, all buckets apart.
+  int shift = 0;
+  while ((buckets >> shift) > 1024) ++shift;
+  const std::size_t B = ((buckets + (std::size_t{1} << shift) - 1) >> shift) + 1;
+  const std::size_t per = std::max<std::size_t>(std::size_t{1} << 12, (m + 63) / 64), pieces = (m + per - 1) / per;
+  // fn(c, slot, f) for every facet f of piece c's simplices, in slot order,
+  // the pieces in parallel
+  const auto each_facet = [&](const auto& fn) {
+    cpu::par_for(pieces, 1, [&](std::size_t lo, std::size_t hi) {
+      std::array<std::uint32_t, K - 1> f;
+      for (std::size_t c = lo; c < hi; ++c)
+        for (std::size_t i = c * per; i < std::min(m, (c + 1) * per); ++i)
+          for (std::size_t j = 0; j < K; ++j) {
+            facet(i, j, f);
+            fn(c, i * K + j, f);
+          }
+    });
+  };
+  std::vector<std::size_t> at(pieces * B, 0);  // counts, then write positions
+  each_facet([&](std::size_t c, std::size_t, const auto& f) { ++at[c * B + (f[0] >> shift)]; });
+  const std::vector<std::size_t> bucket = cpu::bucket_major_positions(at, pieces, B);
   std::vector<Entry> e(m * K);
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = 0; j < K; ++j) {
-      facet(i, j, f);
-      Entry& x = e[cursor[f[0]]++];
-      for (std::size_t r = 0; r < R; ++r) x.rest[r] = f[r + 1];
-      x.slot = static_cast<Slot>(i * K + j);
-    }
+  each_facet([&](std::size_t c, std::size_t slot, const auto& f) {
+    Entry& x = e[at[c * B + (f[0] >> shift)]++];
+    for (std::size_t r = 0; r < R; ++r) x.rest[r] = f[r + 1];
+    x.first = f[0];
+    x.slot = static_cast<Slot>(slot);
+  });
   std::vector<std::int64_t> out(m * K, -1);
   // written out: std::array's operators call memcmp (11 % of the time)
   const auto by_rest = [](const Entry& a, const Entry& b) {
@@ -279,22 +298,39 @@ std::vector<std::int64_t> facet_neighbors_in(std::size_t m, std::size_t buckets,
       if (a.rest[r] != b.rest[r]) return false;
     return true;
   };
-  for (std::size_t b = 0; b < buckets; ++b) {
-    Entry* lo = e.data() + start[b];
-    Entry* hi = e.data() + start[b + 1];
-    if (hi - lo <= 16) {  // insertion sort (stable), the common case
-      for (Entry* x = lo + 1; x < hi; ++x)
-        for (Entry* y = x; y > lo && by_rest(*y, *(y - 1)); --y) std::swap(*y, *(y - 1));
-    } else {
-      std::stable_sort(lo, hi, by_rest);
-    }
-    for (Entry* x = lo; x + 1 < hi; ++x)
-      if (same(*x, *(x + 1))) {
-        out[x->slot] = static_cast<std::int64_t>((x + 1)->slot / K);
-        out[(x + 1)->slot] = static_cast<std::int64_t>(x->slot / K);
-        ++x;  // a facet of a valid triangulation has at most two simplices
+  cpu::par_for(B, 1, [&](std::size_t blo, std::size_t bhi) {
+    std::vector<std::size_t> cnt;
+    std::vector<Entry> tmp;
+    for (std::size_t b = blo; b < bhi; ++b) {
+      const std::size_t first = bucket[b], n = bucket[b + 1] - first;
+      if (n == 0) continue;
+      const std::size_t base = b << shift;
+      cnt.assign((std::size_t{1} << shift) + 1, 0);
+      for (std::size_t q = 0; q < n; ++q) ++cnt[e[first + q].first - base + 1];
+      for (std::size_t v = 1; v < cnt.size(); ++v) cnt[v] += cnt[v - 1];
+      tmp.resize(n);
+      for (std::size_t q = 0; q < n; ++q) tmp[cnt[e[first + q].first - base]++] = e[first + q];
+      for (std::size_t run = 0; run < n;) {
+        std::size_t end = run + 1;
+        while (end < n && tmp[end].first == tmp[run].first) ++end;
+        Entry* lo = tmp.data() + run;
+        Entry* hi = tmp.data() + end;
+        if (hi - lo <= 16) {  // insertion sort (stable), the common case
+          for (Entry* x = lo + 1; x < hi; ++x)
+            for (Entry* y = x; y > lo && by_rest(*y, *(y - 1)); --y) std::swap(*y, *(y - 1));
+        } else {
+          std::stable_sort(lo, hi, by_rest);
+        }
+        for (Entry* x = lo; x + 1 < hi; ++x)
+          if (same(*x, *(x + 1))) {
+            out[x->slot] = static_cast<std::int64_t>((x + 1)->slot / K);
+            out[(x + 1)->slot] = static_cast<std::int64_t>(x->slot / K);
+            ++x;  // a facet of a valid triangulation has at most two simplices
+          }
+        run = end;
       }
-  }
+    }
+  });
   return out;
 }
 

@@ -124,6 +124,40 @@ def test_counts_bounds_and_simplices(pair):
     assert np.array_equal(t.good, np.ones(t.nsimplex)) and np.array_equal(s.good, np.ones(s.nsimplex))
 
 
+def _neighbors_by_global_sort(simplices):
+    """scipy's neighbors by the definition _flipflop.neighbors documents: the
+    (sorted facet, slot) records sorted globally, equal neighbours paired."""
+    m, k = simplices.shape
+    rec = sorted((tuple(sorted(np.delete(simplices[i], j).tolist())), i * k + j) for i in range(m) for j in range(k))
+    out = -np.ones(m * k, dtype=np.int64)
+    x = 0
+    while x + 1 < len(rec):
+        if rec[x][0] == rec[x + 1][0]:
+            out[rec[x][1]], out[rec[x + 1][1]] = rec[x + 1][1] // k, rec[x][1] // k
+            x += 2
+        else:
+            x += 1
+    return out.reshape(m, k)
+
+
+def test_neighbors_in_parallel_pieces_equal_the_global_sort():
+    """_flipflop.neighbors files facets in parallel pieces and coarse buckets;
+    its answer must be the global sort's, on triangulations (2D, 3D via the
+    reference backend, 4D) large enough for several pieces and buckets, and on
+    arbitrary index lists where a facet lies in one, two or three simplices."""
+    from flipflop import _flipflop
+    rng = np.random.default_rng(12)
+    cases = [flipflop.Delaunay(rng.random((6000, 2))).simplices,
+             flipflop.Delaunay(rng.random((1500, 3)), backend="reference").simplices,
+             flipflop.Delaunay(rng.random((700, 4))).simplices,
+             # several pieces of 4096 simplices, facets in three or more of them
+             rng.integers(0, 40, size=(3000, 3)), rng.integers(0, 60, size=(10000, 3)),
+             rng.integers(0, 5000, size=(9000, 3)), rng.integers(0, 25, size=(9000, 4))]
+    for s in cases:
+        s = np.ascontiguousarray(s, dtype=np.int64)
+        assert np.array_equal(_flipflop.neighbors(s), _neighbors_by_global_sort(s))
+
+
 def test_3d_neighbors_from_the_kernel_witness_equal_facet_matching():
     """In 3D the cpu backend's neighbors are read off the kernel's certified
     witness (cpu::rt3_neighbors); they must equal the facet matching every
