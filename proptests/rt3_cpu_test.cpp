@@ -448,6 +448,22 @@ TEST_CASE("rt3 cpu: neighbours read off the witness equal those found by matchin
             // a dropped output tetrahedron: the pair no longer agrees
             std::vector<cpu::Tet> fewer(r.tets.begin() + 1, r.tets.end());
             CHECK_THROWS_AS(cpu::rt3_neighbors(w, fewer), std::logic_error);
+            // a real slot witnessed twice (copied over another real slot)
+            cpu::Rt3Witness twice = w;
+            std::size_t a = 0, b = 0;
+            const std::size_t slots = w.tv.size() / 4;
+            auto real = [&](std::size_t t) {
+              for (int i = 0; i < 4; ++i)
+                if (w.tv[4 * t + static_cast<std::size_t>(i)] >= w.pts.size()) return false;
+              return true;
+            };
+            while (a < slots && !real(a)) ++a;
+            b = a + 1;
+            while (b < slots && !real(b)) ++b;
+            if (b < slots) {
+              for (int i = 0; i < 4; ++i) twice.tv[4 * b + static_cast<std::size_t>(i)] = w.tv[4 * a + static_cast<std::size_t>(i)];
+              CHECK_THROWS_AS(cpu::rt3_neighbors(twice, r.tets), std::logic_error);
+            }
           }
         }
       }

@@ -1079,8 +1079,13 @@ std::vector<std::int64_t> rt3_neighbors(const Rt3Witness& w, const std::vector<T
       const std::uint32_t* c = &w.tv[4 * t];
       return c[0] != kNo && c[0] != n && c[1] != n && c[2] != n && c[3] != n;
     };
-    // per real slot, its tetrahedron's index in tets
+    // per real slot, its tetrahedron's index in tets (each index taken once:
+    // two slots with one tetrahedron are refused)
     std::vector<std::uint32_t> at(slots, kNo);
+    std::unique_ptr<std::atomic<std::uint8_t>[]> taken(new std::atomic<std::uint8_t>[m]);
+    par_for(m, kChunk, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) taken[k].store(0, std::memory_order_relaxed);
+    });
     std::atomic<std::size_t> found{0};
     par_for(slots, kChunk, [&](std::size_t lo, std::size_t hi) {
       std::size_t here = 0;
@@ -1088,7 +1093,7 @@ std::vector<std::int64_t> rt3_neighbors(const Rt3Witness& w, const std::vector<T
         if (!real(t)) continue;
         const std::uint32_t* c = &w.tv[4 * t];
         const std::size_t k = index.find(canonical_tet(w.pts[c[0]].id, w.pts[c[1]].id, w.pts[c[2]].id, w.pts[c[3]].id));
-        if (k == m) {
+        if (k == m || taken[k].exchange(1, std::memory_order_relaxed) != 0) {
           inconsistent.store(true, std::memory_order_relaxed);
           continue;
         }

@@ -177,7 +177,7 @@ Rt3Result rt3(const PointSet& ps, const Rt3Options& opt = {}, Rt3Stats* stats = 
 // in tets (OutputIndex, witnessed_output.hpp), then each of its links is
 // read; parallel, O(m) apart from the short binary searches. Call it on a
 // certified pair (certify_rt3 with this witness): a witnessed tetrahedron
-// missing from tets, or one missing from the witness, throws
+// missing from tets, one missing from the witness or witnessed twice throws
 // std::logic_error.
 std::vector<std::int64_t> rt3_neighbors(const Rt3Witness& witness, const std::vector<Tet>& tets, int threads = 0);
 
