@@ -350,24 +350,25 @@ inline pred::StaticFilter parallel_static_filter(const PointSet& ps, const std::
   return pred::StaticFilter::for_points(reps.data(), points, 3, ps.weighted ? w.data() : nullptr);
 }
 
-// par_for over pieces of kChunk as certify::Speedups::for_range (the
+// par_for over pieces of `grain` items as certify::Speedups::for_range (the
 // certifiers' shared helpers in certify_detail.hpp take it)
-inline decltype(certify::Speedups::for_range) par_for_range() {
-  return [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) { par_for(n, kChunk, body); };
+inline decltype(certify::Speedups::for_range) par_for_range(std::size_t grain = kChunk) {
+  return [grain](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body) { par_for(n, grain, body); };
 }
 
 // Runs certify(speedups) (a certifier of reference/certify taking
 // certify::Speedups) inside an arena of `threads` workers (0: the runtime's
-// default), the per-point checks split into kChunk pieces, the static filter
-// of the input (its coordinates, its weights if any, and the certifier's
-// extra values) from a parallel scan.
+// default), the per-point checks split into pieces of `grain` (kChunk by
+// default), the static filter of the input (its coordinates, its weights if
+// any, and the certifier's extra values) from a parallel scan.
 template <class Certify>
-certify::Report certify_in_parallel(const PointSet& ps, int threads, const Certify& certify) {
+certify::Report certify_in_parallel(const PointSet& ps, int threads, const Certify& certify,
+                                    std::size_t grain = kChunk) {
   certify::Report r;
   with_threads(threads, [&] {
     certify::Speedups s;
     s.make_filter = [&](const std::vector<double>& extra) { return parallel_static_filter(ps, extra); };
-    s.for_range = par_for_range();
+    s.for_range = par_for_range(grain);
     r = certify(s);
   });
   return r;

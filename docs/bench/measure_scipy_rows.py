@@ -9,8 +9,9 @@ seed 7: a moved 0 becomes a subnormal), the perturbed grids plus 1.0 (no subnorm
 Delaunay of random points in 4D and 5D, ConvexHull of standard normal points in 4D and 5D,
 find_simplex of 18,000 queries on the perturbed 3^5 grid. flipflop's calls include
 certification; both libraries' attributes are those computed eagerly."""
-import itertools, os, statistics, sys, time
+import itertools, os, sys
 import numpy as np, scipy, scipy.spatial as ss, flipflop
+from alternate import alternate
 
 R = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 
@@ -28,10 +29,6 @@ def perturbed(p, seed=7):
             to = np.inf if rng.random() < 0.5 else -np.inf
             p[i, j] = np.nextafter(np.nextafter(p[i, j], to), to)
     return p
-
-
-def timed(f):
-    t = time.perf_counter(); out = f(); return time.perf_counter() - t, out
 
 
 rng = np.random.default_rng(1)
@@ -52,17 +49,9 @@ cases = [
 ff_g, sp_g = flipflop.Delaunay(g35p), ss.Delaunay(g35p)
 cases.append(("find_simplex, 18,000 queries, perturbed 3^5 grid", None,
               lambda _: ff_g.find_simplex(queries), lambda _: sp_g.find_simplex(queries)))
-load0 = os.getloadavg()
-rows = []
-for name, pts, ff, sp in cases:
-    tf, ts = [], []
-    for _ in range(R):
-        t, a = timed(lambda: ff(pts)); tf.append(t)
-        t, b = timed(lambda: sp(pts)); ts.append(t)
-    f, s = statistics.median(tf), statistics.median(ts)
-    size = lambda x: len(x.simplices) if hasattr(x, "simplices") else int((np.asarray(x) >= 0).sum())
-    rows.append((name, f, s, size(a), size(b)))
-load1 = os.getloadavg()
+load0, load1, timed_rows = alternate(cases, R)
+size = lambda x: len(x.simplices) if hasattr(x, "simplices") else int((np.asarray(x) >= 0).sum())
+rows = [(name, f, s, size(a), size(b)) for name, f, s, a, b in timed_rows]
 print(f"numpy {np.__version__}, scipy {scipy.__version__}, flipflop {flipflop.__version__}, median of {R}, "
       f"alternating; load average {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f} before, "
       f"{load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f} after, {os.cpu_count()} cores")

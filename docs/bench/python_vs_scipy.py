@@ -6,16 +6,13 @@ vertices, equations, volume, area). The two libraries' runs alternate (flipflop,
 flipflop, ...), so that load from other processes, which changes over seconds on a shared
 machine, weighs on both alike; the load average is printed before and after. With "hull"
 as argv[2] only the ConvexHull rows run."""
-import os, statistics, sys, time
+import os, sys
 import numpy as np, scipy, scipy.spatial as ss, flipflop
+from alternate import alternate
 
 R = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 only_hull = len(sys.argv) > 2 and sys.argv[2] == "hull"
 rng = np.random.default_rng(1)
-
-
-def timed(f):
-    t = time.perf_counter(); out = f(); return time.perf_counter() - t, out
 
 
 cube, ball = rng.random((1_000_000, 3)), np.array(flipflop.generate("ball", 1_000_000, seed=1))
@@ -30,16 +27,8 @@ cases = [
 ]
 if not only_hull:
     cases.append(("Delaunay 2D, 10^6 uniform square", rng.random((1_000_000, 2)), flipflop.Delaunay, ss.Delaunay))
-load0 = os.getloadavg()
-rows = []
-for name, pts, ff, sp in cases:
-    tf, ts = [], []
-    for _ in range(R):
-        t, a = timed(lambda: ff(pts)); tf.append(t)
-        t, b = timed(lambda: sp(pts)); ts.append(t)
-    f, s = statistics.median(tf), statistics.median(ts)
-    rows.append((name, f, s, s / f, len(a.simplices), len(b.simplices)))
-load1 = os.getloadavg()
+load0, load1, timed_rows = alternate(cases, R)
+rows = [(name, f, s, s / f, len(a.simplices), len(b.simplices)) for name, f, s, a, b in timed_rows]
 print(f"numpy {np.__version__}, scipy {scipy.__version__}, flipflop {flipflop.__version__}, median of {R}, "
       f"alternating; load average (1, 5, 15 min) {load0[0]:.2f} {load0[1]:.2f} {load0[2]:.2f} before, "
       f"{load1[0]:.2f} {load1[1]:.2f} {load1[2]:.2f} after, {os.cpu_count()} cores")

@@ -164,9 +164,7 @@ Report certify_witnessed(const PointSet& ps, const Rt3Witness& w, const std::vec
   if (ps.dim != 3) return Report::fail("input-dimension", "rt3 needs 3D points");
   if (std::string why = dimension_problem(ps); !why.empty()) return Report::fail("input-dimension", why);
   const std::size_t n = ps.size();
-  auto for_range = [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) {
-    par_for(m, kChunk, body);
-  };
+  const auto for_range = par_for_range();
   const pred::StaticFilter filter = parallel_static_filter(ps, {});
   const bool canonical = level == certify::Level::canonical;
   const Witnessed W{w, filter, canonical, static_cast<std::uint32_t>(n), w.tv.size() / 4};

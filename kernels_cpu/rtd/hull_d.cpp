@@ -829,9 +829,8 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
   while (v < n && vertex[v]) ++v;
   std::vector<std::uint32_t> nb;  // nb[k * d + j]: the facet across the ridge opposite vertex j of facet k
   // (its per-ridge and per-facet predicates in parallel pieces of 512)
-  const certify::SurfaceCheck r = certify::convex_surface(
-      ps, facets, v < n ? v : certify::kAuxiliaryCentre, &nb,
-      [](std::size_t m, const std::function<void(std::size_t, std::size_t)>& body) { par_for(m, 512, body); });
+  const certify::SurfaceCheck r =
+      certify::convex_surface(ps, facets, v < n ? v : certify::kAuxiliaryCentre, &nb, par_for_range(512));
   const std::string who = r.auxiliary ? "the vertices' average (auxiliary point " + std::to_string(n) + ")"
                                       : "point " + std::to_string(v) + " (not a vertex)";
   const Certifier ck{ps, d, pred::StaticFilter::for_points(ps.coords.data(), n, d)};

@@ -258,25 +258,25 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
   };
   std::vector<Half> halves(S.size() * w);
   detail::for_pieces(S.size(), for_range, [&](std::size_t lo, std::size_t hi) {
-  for (std::uint32_t s = static_cast<std::uint32_t>(lo); s < hi; ++s) {
-    for (int i = 0; i <= d; ++i) {
-      Half& h = halves[s * w + static_cast<std::size_t>(i)];
-      h.key.fill(~Index{0});
-      int c = 0;
-      for (int j = 0; j <= d; ++j)
-        if (j != i) h.key[static_cast<std::size_t>(c++)] = S[s][static_cast<std::size_t>(j)];
-      // induced orientation of the facet: (-1)^i (t without t_i); compare
-      // with its sorted order
-      bool odd = i % 2 != 0;
-      for (int a = 0; a < d; ++a)
-        for (int b = a + 1; b < d; ++b)
-          if (h.key[static_cast<std::size_t>(b)] < h.key[static_cast<std::size_t>(a)]) odd = !odd;
-      std::sort(h.key.begin(), h.key.begin() + d);
-      h.s = s;
-      h.i = i;
-      h.odd = odd;
+    for (std::uint32_t s = static_cast<std::uint32_t>(lo); s < hi; ++s) {
+      for (int i = 0; i <= d; ++i) {
+        Half& h = halves[s * w + static_cast<std::size_t>(i)];
+        h.key.fill(~Index{0});
+        int c = 0;
+        for (int j = 0; j <= d; ++j)
+          if (j != i) h.key[static_cast<std::size_t>(c++)] = S[s][static_cast<std::size_t>(j)];
+        // induced orientation of the facet: (-1)^i (t without t_i); compare
+        // with its sorted order
+        bool odd = i % 2 != 0;
+        for (int a = 0; a < d; ++a)
+          for (int b = a + 1; b < d; ++b)
+            if (h.key[static_cast<std::size_t>(b)] < h.key[static_cast<std::size_t>(a)]) odd = !odd;
+        std::sort(h.key.begin(), h.key.begin() + d);
+        h.s = s;
+        h.i = i;
+        h.odd = odd;
+      }
     }
-  }
   });
   // the same order as a global sort by (key, simplex, position), without
   // one: a counting sort by the facet's smallest vertex (a stable pass in
