@@ -47,6 +47,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "predicates/exact.hpp"
@@ -709,7 +710,7 @@ xp::IntLambda<K> degenerate_int_lambda(std::mt19937_64& g) {
 }
 
 template <class I, int K>
-void greedy_against_search(const xp::IntLambda<K>& L, long (&tally)[6]) {
+void greedy_against_search(const xp::IntLambda<K>& L, long (&tally)[7]) {
   constexpr unsigned kAll = (1u << K) - 1u;
   const int det = xp::int_minor_sign<I, K>(L, kAll, kAll);
   int asked = 0;
@@ -729,6 +730,13 @@ void greedy_against_search(const xp::IntLambda<K>& L, long (&tally)[6]) {
     ++tally[4];
   }
 #endif
+  // the walk in binary64 (Bareiss), where its bound on the minors holds
+  const int by_double = xp::int_lattice_sos_dbl<K>(L, true);
+  if (by_double != 2) {
+    REQUIRE(by_double == ref);
+    REQUIRE((xp::int_lattice_sos_dbl<K>(L, false)) == det);
+    ++tally[6];
+  }
   REQUIRE((xp::int_lattice_sign_as<I, K>(L, true)) == ref);
   REQUIRE((xp::int_lattice_sign_as<I, K>(L, false)) == det);
   ++tally[0];
@@ -738,7 +746,7 @@ void greedy_against_search(const xp::IntLambda<K>& L, long (&tally)[6]) {
 }
 
 template <int K>
-void greedy_property(std::mt19937_64& g, long (&tally)[6]) {
+void greedy_property(std::mt19937_64& g, long (&tally)[7]) {
   const xp::IntLambda<K> L = degenerate_int_lambda<K>(g);
 #if defined(FLIPFLOP_INT128)
   if (L.wide) return greedy_against_search<xp::int128_t, K>(L, tally);
@@ -753,7 +761,7 @@ void greedy_property(std::mt19937_64& g, long (&tally)[6]) {
 TEST_CASE("int lattice: the SoS walk by ranks modulo p equals sos_search on the exact minors",
           "[predicates][stages][int_lattice]") {
   std::mt19937_64 g(0x31e7);
-  long t[6] = {};
+  long t[7] = {};
   for (int n = 0; n < 3000; ++n) {
     greedy_property<2>(g, t);
     greedy_property<3>(g, t);
@@ -762,14 +770,93 @@ TEST_CASE("int lattice: the SoS walk by ranks modulo p equals sos_search on the 
     greedy_property<6>(g, t);
     greedy_property<7>(g, t);
   }
-  std::printf("int lattice SoS walk: calls %ld det 0 %ld deep %ld (P31 %ld, P61 %ld, beyond 60 bits %ld)\n", t[0],
-              t[1], t[2], t[3], t[4], t[5]);
+  std::printf("int lattice SoS walk: calls %ld det 0 %ld deep %ld (P31 %ld, P61 %ld, beyond 60 bits %ld, binary64 %ld)\n",
+              t[0], t[1], t[2], t[3], t[4], t[5], t[6]);
   CHECK(t[1] * 2 > t[0]);
+  CHECK(t[6] > 2000);          // the binary64 walk decided many calls
+  CHECK(t[6] < t[0] - 1000);   // and its bound sent many to the primes
   CHECK(t[2] * 5 > t[1]);
   CHECK(t[3] > 2000);
   CHECK(t[4] > t[3] + 1000);
   CHECK(t[5] > 100);
 }
+
+// xp::int_lattice_sos_dbl at the edge of its bound: matrices whose
+// Hadamard product H^2 (exact_expansion.hpp, the binary64 walk) lies within
+// a factor 8 below 2^51, where products of two minors come within a few bits
+// of 2^53 and a rounded product or quotient would flip a zero test or a
+// sign; half of them with a row an affine combination of two others (det Λ
+// = 0: the SoS search), against the exact integer minors. A quotient taken
+// without the rounding to an integer (plain product with the reciprocal)
+// was caught here.
+#if defined(FLIPFLOP_INT128)
+TEST_CASE("int lattice: the binary64 walk at the edge of its bound", "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x5e1d);
+  long decided = 0, near = 0, zero = 0;
+  auto edge = [&](auto k_tag) {
+    constexpr int K = decltype(k_tag)::value, W = K - 1;
+    // entries up to M: H^2 about (W M^2 / 3)^W, aimed just below 2^51
+    const double target = std::pow(2.0, 51.0 / W);
+    const long long M = static_cast<long long>(std::sqrt(3.0 * target / W)) + 1;
+    for (int rep = 0; rep < 3000; ++rep) {
+      const long long m = M - static_cast<long long>(g() % static_cast<std::uint64_t>(M / 4 + 1));
+      xp::IntLambda<K> L;
+      for (int i = 0; i < K; ++i) {
+        for (int j = 0; j < W; ++j)
+          L.a[i][j] = static_cast<long long>(g() % static_cast<std::uint64_t>(2 * m + 1)) - m;
+        L.a[i][K - 1] = 1;
+      }
+      if (g() % 2) {  // row r = 2 row a - row b (coefficients summing to 1)
+        const int r = static_cast<int>(g() % K), a = static_cast<int>(g() % K), b = static_cast<int>(g() % K);
+        if (r != a && r != b && a != b)
+          for (int j = 0; j < W; ++j) L.a[r][j] = 2 * L.a[a][j] - L.a[b][j];
+      }
+      int bits = xp::log2_factorial_ceil(K);
+      for (int j = 0; j < K; ++j) {
+        unsigned long long any = 0;
+        for (int i = 0; i < K; ++i)
+          any |= static_cast<unsigned long long>(L.a[i][j] < 0 ? -L.a[i][j] : L.a[i][j]);
+        bits += bit_len(any);
+      }
+      L.bits = bits;
+      L.wide = bits > 63;
+      double h2 = 1.0;
+      for (int j = 0; j < W; ++j) {
+        double sq = 0.0;
+        for (int i = 0; i < W; ++i) {
+          const double d = static_cast<double>(L.a[i][j] - L.a[K - 1][j]);
+          sq += d * d;
+        }
+        h2 *= std::max(1.0, sq);
+      }
+      constexpr unsigned kAll = (1u << K) - 1u;
+      const int det = xp::int_minor_sign<xp::int128_t, K>(L, kAll, kAll);
+      const int ref = det != 0 ? det : xp::int_lattice_sos_search<xp::int128_t, K>(L);
+      const int by_double = xp::int_lattice_sos_dbl<K>(L, true);
+      INFO("K " << K << " h2 " << h2 << " det " << det);
+      if (h2 >= 0x1p51) {
+        REQUIRE(by_double == 2);
+        continue;
+      }
+      REQUIRE(by_double == ref);
+      REQUIRE((xp::int_lattice_sos_dbl<K>(L, false)) == det);
+      ++decided;
+      near += h2 >= 0x1p48;
+      zero += det == 0;
+    }
+  };
+  edge(std::integral_constant<int, 3>{});
+  edge(std::integral_constant<int, 4>{});
+  edge(std::integral_constant<int, 5>{});
+  edge(std::integral_constant<int, 6>{});
+  edge(std::integral_constant<int, 7>{});
+  std::printf("int lattice binary64 walk at its bound: %ld decided, %ld with H^2 >= 2^48, %ld with det 0\n", decided,
+              near, zero);
+  CHECK(decided > 4000);
+  CHECK(near > 2000);
+  CHECK(zero > 400);
+}
+#endif
 
 // The prime must exceed every minor: here det Λ = 0 (three collinear points,
 // columns x, y, 1) and sos_search's first non-zero leaf is the minor on rows
