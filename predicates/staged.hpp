@@ -130,6 +130,23 @@ FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambd
   return s == 2 ? 2 : parity * s;
 }
 
+// The same sign with Λ built from the rows already sorted by id (after
+// xp::int_lambda_scan(p, w, S)): lambda_int_sorted without building Λ in the
+// given order and copying it. 2 where int_lambda_build's bound fails or the
+// walk cannot decide (the caller's other stages then decide).
+template <int K, class Id>
+FF_HD FF_DEVICE_NOINLINE int lambda_int_build_sorted(const Id* ids, const double* const* p, const double* w,
+                                                     const xp::IntScan& S) {
+  const double* sp[K];
+  double sw[K];
+  const int parity = sorted_rows<K>(ids, p, w, sp, sw);
+  if (parity == 0) return 0;
+  xp::IntLambda<K> L;
+  if (!xp::int_lambda_build<K>(sp, w ? sw : nullptr, S, L)) return 2;
+  const int s = xp::int_lattice_sign<K>(L, ids != nullptr);
+  return s == 2 ? 2 : parity * s;
+}
+
 template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p, const double* w);
 
@@ -211,11 +228,8 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
           if (s == 1 || s == -1) return s;
         }
       }
-      xp::IntLambda<K> L;
-      if (xp::int_lambda_build<K>(p, w, S, L)) {
-        const int s = lambda_int_sorted<K>(ids, L);
-        if (s != 2) return s;  // (K <= 7 always decides)
-      }
+      const int s = lambda_int_build_sorted<K>(ids, p, w, S);
+      if (s != 2) return s;  // (K <= 7 always decides where the build's bound holds)
     }
   }
   // A constant coordinate column (points on a plane x_j = c) or two equal
@@ -275,9 +289,7 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
         return lambda_sign_after_filters<K>(ids, p, w, f->dd_window());
       }
     }
-    if (f)
-      if (const int s = static_sign<K>(*f, p, w)) return s;
-    if (const int s = semi_static_sign<K>(p, w)) return s;
+    if (const int s = static_semi_static_sign<K>(f, p, w)) return s;
     return lambda_sign_after_filters<K>(ids, p, w, f && f->dd_window());
   }
 }

@@ -274,6 +274,16 @@ void filter_property(Shape sh, Family fam) {
     RC_ASSERT(s_static == 0 || s_static == g);
     RC_ASSERT(s_semi == 0 || s_semi == g);
     RC_ASSERT(s_dyn == 0 || s_dyn == g);
+    // the default path's one evaluation of both (static_semi_static_sign):
+    // exactly the static filter's answer, else the semi-static one's
+    const int s_both = pred::with_k(c.k, [&](auto K) {
+      return pred::static_semi_static_sign<decltype(K)::value>(&f, c.p, c.w);
+    });
+    const int s_both_no_static = pred::with_k(c.k, [&](auto K) {
+      return pred::static_semi_static_sign<decltype(K)::value>(nullptr, c.p, c.w);
+    });
+    RC_ASSERT(s_both == (s_static != 0 ? s_static : s_semi));
+    RC_ASSERT(s_both_no_static == s_semi);
     // fast.hpp's orient2d/orient3d filters (the permanent bound where the
     // static one is enabled) and the typed default path with this filter
     const int s_plain = plain_filters_of(f, c);
