@@ -2236,19 +2236,15 @@ struct DblEchelon {
   }
 };
 
+// The walk in binary64 on D given as doubles (integer entries): 2 where
+// Hadamard's bound fails.
 template <int K>
-FF_HD inline int int_lattice_sos_dbl(const IntLambda<K>& L, bool sos = true) {
-  constexpr int W = K - 1;  // D's columns: Λ's coordinate columns
-  if (L.bits > 62) return 2;  // entries below 2^62: their differences fit int64
-  double m[W][W];
+FF_HD inline int int_lattice_sos_dbl_rows(const double (&m)[K - 1][K - 1], bool sos) {
+  constexpr int W = K - 1;
   double h2 = 1.0;
   for (int j = 0; j < W; ++j) {
     double s = 0.0;
-    for (int i = 0; i < W; ++i) {
-      const double d = static_cast<double>(L.a[i][j] - L.a[K - 1][j]);
-      m[i][j] = d;
-      s += d * d;
-    }
+    for (int i = 0; i < W; ++i) s += m[i][j] * m[i][j];
     h2 *= s > 1.0 ? s : 1.0;
   }
   if (!(h2 < 0x1p51)) return 2;
@@ -2264,6 +2260,57 @@ FF_HD inline int int_lattice_sos_dbl(const IntLambda<K>& L, bool sos = true) {
   const double g = E.row[n - 1][E.piv[n - 1]];
   const int s = (g > 0.0) - (g < 0.0);
   return (swaps & 1) ? -sg * s : sg * s;
+}
+
+// The walk in binary64 on an integer Λ (D's entries converted exactly where
+// they are below 2^53; a larger one fails the bound anyway).
+template <int K>
+FF_HD inline int int_lattice_sos_dbl(const IntLambda<K>& L, bool sos = true) {
+  constexpr int W = K - 1;  // D's columns: Λ's coordinate columns
+  if (L.bits > 62) return 2;  // entries below 2^62: their differences fit int64
+  double m[W][W];
+  for (int i = 0; i < W; ++i)
+    for (int j = 0; j < W; ++j) m[i][j] = static_cast<double>(L.a[i][j] - L.a[K - 1][j]);
+  return int_lattice_sos_dbl_rows<K>(m, sos);
+}
+
+// D straight from the doubles where every coordinate and weight of the call
+// is an integer below 2^20 in magnitude (the usual lattice: no int_lambda
+// scan and build): the coordinates' differences (below 2^21) and the lifted
+// column's (|x|^2 - w below 2^44 + 2^20, its differences below 2^46) are
+// then computed exactly. False (m unspecified) otherwise, NaN and infinities
+// included.
+template <int K>
+FF_HD inline bool small_integer_differences(const double* const* p, const double* w, double (&m)[K - 1][K - 1]) {
+  constexpr int W = K - 1;
+  const int ncoord = w ? K - 2 : K - 1;
+  auto small = [](double v) {
+    return v > -0x1p20 && v < 0x1p20 && v == static_cast<double>(static_cast<long long>(v));
+  };
+  const double* base = p[K - 1];
+  double lb = 0.0;
+  for (int j = 0; j < ncoord; ++j) {
+    if (!small(base[j])) return false;
+    lb += base[j] * base[j];
+  }
+  if (w) {
+    if (!small(w[K - 1])) return false;
+    lb -= w[K - 1];
+  }
+  for (int i = 0; i < W; ++i) {
+    double l = 0.0;
+    for (int j = 0; j < ncoord; ++j) {
+      const double v = p[i][j];
+      if (!small(v)) return false;
+      m[i][j] = v - base[j];
+      l += v * v;
+    }
+    if (w) {
+      if (!small(w[i])) return false;
+      m[i][K - 2] = (l - w[i]) - lb;
+    }
+  }
+  return true;
 }
 
 // The walk in binary64 where every minor is small, else on the prime that

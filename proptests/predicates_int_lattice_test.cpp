@@ -174,7 +174,7 @@ LatticeCall gen_lattice_call(int k, bool lifted) {
 }
 
 struct Tally {
-  long calls = 0, accepted = 0, wide = 0, zero_det = 0, minors = 0;
+  long calls = 0, accepted = 0, wide = 0, zero_det = 0, minors = 0, small_int = 0;
 };
 
 template <int K>
@@ -242,6 +242,16 @@ void check_call(const LatticeCall& c, Tally& t) {
     RC_ASSERT(parity * xp::int_lattice_sign<K>(S, true) == sos_g);
     RC_ASSERT(pred::lambda_int_sorted<K>(ids, L) == sos_g);
   }
+  // (d) integers below 2^20 straight from the doubles (staged.hpp
+  // lambda_small_int_sorted, the walk in binary64): where it applies, the SoS
+  // sign; without ids, the exact sign of the rows in the given order
+  const int small = pred::lambda_small_int_sorted<K>(ids, p, w);
+  if (small != 2) {
+    RC_ASSERT(small == sos_g);
+    ++t.small_int;
+  }
+  const int small_exact = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, w);
+  if (small_exact != 2) RC_ASSERT(small_exact == pred::stage::gmp(K, p, w));
   // (c) the whole path after the filters, both instantiations, and the exact stage
   RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids, p, w)) == sos_g);
   RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(ids, p, w)) == sos_g);
@@ -283,8 +293,8 @@ void lattice_property(bool lifted) {
     check_call<K>(c, t);
   });
   if (t.calls == 0) return;  // Catch ran another section this time
-  std::printf("int lattice %-14s calls %6ld accepted %6ld (__int128 %5ld) det 0 %6ld minors %6ld\n",
-              name.c_str(), t.calls, t.accepted, t.wide, t.zero_det, t.minors);
+  std::printf("int lattice %-14s calls %6ld accepted %6ld (__int128 %5ld) det 0 %6ld minors %6ld small integers %6ld\n",
+              name.c_str(), t.calls, t.accepted, t.wide, t.zero_det, t.minors, t.small_int);
   CHECK(t.accepted * 2 > t.calls);
   CHECK(t.zero_det * 4 > t.calls);
   CHECK(t.wide > 0);
@@ -779,6 +789,82 @@ TEST_CASE("int lattice: the SoS walk by ranks modulo p equals sos_search on the 
   CHECK(t[3] > 2000);
   CHECK(t[4] > t[3] + 1000);
   CHECK(t[5] > 100);
+}
+
+// staged.hpp lambda_small_int_sorted (integer coordinates and weights below
+// 2^20 in magnitude, the walk in binary64 straight from the doubles) against
+// GMP with SoS (stage::gmp_sos) and, without ids, GMP's exact sign: calls of
+// k = 3..8 rows on small grids (coordinates in -s..s, many exactly
+// degenerate), integer weights or none, distinct random ids; then values at
+// the edge of its domain (2^20 - 1 accepted; 2^20, 0.5, NaN, infinity
+// refused: 2, the int64 stage decides those).
+namespace {
+std::vector<PointId> distinct_ids(std::mt19937_64& g, int k) {
+  std::vector<PointId> ids;
+  while (static_cast<int>(ids.size()) < k) {
+    const PointId v = static_cast<PointId>(g() % 1000);
+    if (std::find(ids.begin(), ids.end(), v) == ids.end()) ids.push_back(v);
+  }
+  return ids;
+}
+template <int K>
+void small_int_calls(std::mt19937_64& g, bool lifted, long (&t)[3]) {
+  constexpr int kMaxD = K - 1;
+  const int d = lifted ? K - 2 : K - 1;
+  for (int rep = 0; rep < 400; ++rep) {
+    const long long side = 1 + static_cast<long long>(g() % 3);
+    const bool big = g() % 8 == 0;  // some coordinates near the domain's edge
+    double x[K][kMaxD], w[K];
+    const double* p[K];
+    const std::vector<PointId> ids = distinct_ids(g, K);
+    for (int i = 0; i < K; ++i) {
+      for (int j = 0; j < d; ++j) {
+        x[i][j] = static_cast<double>(static_cast<long long>(g() % static_cast<std::uint64_t>(2 * side + 1)) - side);
+        if (big && j == 0) x[i][j] += 0x1p20 - 1 - static_cast<double>(side);
+      }
+      w[i] = lifted && g() % 2 ? static_cast<double>(static_cast<long long>(g() % 5) - 2) : 0.0;
+      p[i] = x[i];
+    }
+    const double* wp = lifted ? w : nullptr;
+    const int s = pred::lambda_small_int_sorted<K>(ids.data(), p, wp);
+    const int e = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, wp);
+    INFO("k " << K << (lifted ? " lifted" : " plain") << " side " << side << " big " << big);
+    ++t[0];
+    if (s != 2) {
+      REQUIRE(s == pred::stage::gmp_sos(K, ids.data(), p, wp));
+      ++t[1];
+    }
+    if (e != 2) {
+      const int ge = pred::stage::gmp(K, p, wp);
+      REQUIRE(e == ge);
+      t[2] += ge == 0;
+    }
+    // out of the domain: refused
+    const double saved = x[0][0];
+    for (double v : {0x1p20, -0x1p20, 0.5, std::nan(""), HUGE_VAL}) {
+      x[0][0] = v;
+      REQUIRE(pred::lambda_small_int_sorted<K>(ids.data(), p, wp) == 2);
+    }
+    x[0][0] = saved;
+  }
+}
+}  // namespace
+
+TEST_CASE("int lattice: small integers straight from the doubles equal GMP", "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x5a11);
+  long t[3] = {};
+  for (bool lifted : {false, true}) {
+    small_int_calls<3>(g, lifted, t);
+    small_int_calls<4>(g, lifted, t);
+    small_int_calls<5>(g, lifted, t);
+    small_int_calls<6>(g, lifted, t);
+    small_int_calls<7>(g, lifted, t);
+    small_int_calls<8>(g, lifted, t);
+  }
+  std::printf("int lattice small integers: %ld calls, %ld decided with SoS, %ld exactly degenerate\n", t[0], t[1],
+              t[2]);
+  CHECK(t[1] * 5 > t[0] * 4);  // the bound refuses only some of the near-2^20 coordinates' calls
+  CHECK(t[2] * 20 > t[0]);  // about a tenth of the calls: det 0 exactly
 }
 
 // xp::int_lattice_sos_dbl at the edge of its bound: matrices whose
