@@ -872,9 +872,7 @@ TEST_CASE("int lattice: small integers straight from the doubles equal GMP", "[p
 // a factor 8 below 2^51, where products of two minors come within a few bits
 // of 2^53 and a rounded product or quotient would flip a zero test or a
 // sign; half of them with a row an affine combination of two others (det Λ
-// = 0: the SoS search), against the exact integer minors. A quotient taken
-// without the rounding to an integer (plain product with the reciprocal)
-// was caught here.
+// = 0: the SoS search), against the exact integer minors.
 #if defined(FLIPFLOP_INT128)
 TEST_CASE("int lattice: the binary64 walk at the edge of its bound", "[predicates][stages][int_lattice]") {
   std::mt19937_64 g(0x5e1d);
