@@ -184,7 +184,7 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
 // power3d 295 -> 59 ns, orient3d 172 -> 60 ns. Host only (the device runs the
 // search: one frame less on its stack).
 template <int K, class Id>
-FF_HD inline int flat_sign_sorted(const Id* ids, const double* const* p, const double* w) {
+FF_HD int flat_sign_sorted(const Id* ids, const double* const* p, const double* w) {
   const double* sp[K];
   double sw[K];
   const int parity = sorted_rows<K>(ids, p, w, sp, sw);
@@ -288,6 +288,27 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
 
 // The whole default path for K points. `f` may be null (no static filter);
 // `ids` may be null (exact sign, may be 0).
+#if !defined(__CUDACC__) && !defined(THRUST_DEVICE_SYSTEM)
+// Host builds: lambda_sign_after_filters<K> for PointId rows, K = 2..8, out
+// of line in predicates.cpp (after_filters_any: its FMA instantiation where
+// the host has FMA, the same signs), compiled once there instead of in every
+// translation unit that calls lambda_sign_staged. The kernels' thrust/OpenMP
+// build (THRUST_DEVICE_SYSTEM) keeps the device's inline path, so that it
+// runs the code the GPU runs.
+template <int K>
+int lambda_sign_after_filters_host(const PointId* ids, const double* const* p, const double* w, bool window);
+#endif
+
+// lambda_sign_staged's call of the stages after the filters: out of line on
+// the host for PointId rows (above), inline otherwise (the device, other ids).
+template <int K, class Id>
+FF_HD FF_FORCEINLINE int after_filters_call(const Id* ids, const double* const* p, const double* w, bool window) {
+#if !defined(__CUDACC__) && !defined(THRUST_DEVICE_SYSTEM)
+  if constexpr (std::is_same_v<Id, PointId>) return lambda_sign_after_filters_host<K>(ids, p, w, window);
+#endif
+  return lambda_sign_after_filters<K>(ids, p, w, window);
+}
+
 template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p,
                                     const double* w) {
@@ -305,11 +326,11 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
       // evaluation (static_filter.hpp, plain_filters)
       if (f && !w) {
         if (const int s = plain_filters<K>(*f, p)) return s;
-        return lambda_sign_after_filters<K>(ids, p, w, f->dd_window());
+        return after_filters_call<K>(ids, p, w, f->dd_window());
       }
     }
     if (const int s = static_semi_static_sign<K>(f, p, w)) return s;
-    return lambda_sign_after_filters<K>(ids, p, w, f && f->dd_window());
+    return after_filters_call<K>(ids, p, w, f && f->dd_window());
   }
 }
 
@@ -328,5 +349,31 @@ inline auto with_k(int k, F&& f) {
     default: return f(std::integral_constant<int, 8>{});
   }
 }
+
+// Host builds: the exact stages above (4-5 and the integer lattice's, the
+// bulk of the code a K instantiates) are compiled once, for PointId rows and
+// K = 2..8, at the end of predicates/predicates.cpp; every other host
+// translation unit calls them there (explicit instantiation declarations:
+// none of these templates is inline). nvcc instantiates them where they are
+// used, as before.
+#define FF_STAGED_EXACT(EXT, K)                                                                             \
+  EXT template int flat_sign_sorted<K, PointId>(const PointId*, const double* const*, const double*);         \
+  EXT template int lambda_exact_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool, \
+                                                   bool);                                                     \
+  EXT template int lambda_small_int_sorted<K, PointId>(const PointId*, const double* const*, const double*);  \
+  EXT template int lambda_int_build_sorted<K, PointId>(const PointId*, const double* const*, const double*,   \
+                                                       const xp::IntScan&);
+// EXT = extern: the declarations; empty: the definitions (predicates.cpp)
+#define FF_STAGED_EXACT_ALL(EXT)                                                                         \
+  FF_STAGED_EXACT(EXT, 2)                                                                                \
+  FF_STAGED_EXACT(EXT, 3)                                                                                \
+  FF_STAGED_EXACT(EXT, 4)                                                                                \
+  FF_STAGED_EXACT(EXT, 5)                                                                                \
+  FF_STAGED_EXACT(EXT, 6)                                                                                \
+  FF_STAGED_EXACT(EXT, 7)                                                                                \
+  FF_STAGED_EXACT(EXT, 8)
+#if !defined(__CUDACC__) && !defined(FLIPFLOP_STAGED_INSTANTIATE)
+FF_STAGED_EXACT_ALL(extern)
+#endif
 
 }  // namespace flipflop::pred
