@@ -286,8 +286,6 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
   return lambda_exact_sorted<K>(ids, p, w, ids != nullptr);
 }
 
-// The whole default path for K points. `f` may be null (no static filter);
-// `ids` may be null (exact sign, may be 0).
 #if !defined(__CUDACC__) && !defined(THRUST_DEVICE_SYSTEM)
 // Host builds: lambda_sign_after_filters<K> for PointId rows, K = 2..8, out
 // of line in predicates.cpp (after_filters_any: its FMA instantiation where
@@ -309,6 +307,8 @@ FF_HD FF_FORCEINLINE int after_filters_call(const Id* ids, const double* const* 
   return lambda_sign_after_filters<K>(ids, p, w, window);
 }
 
+// The whole default path for K points. `f` may be null (no static filter);
+// `ids` may be null (exact sign, may be 0).
 template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p,
                                     const double* w) {
