@@ -1,7 +1,9 @@
 // inner_ball_test.cpp — the floating-point filter of the certifiers' inner ball
 // (reference/certify/inner_ball.hpp): whenever it says a facet clears the ball,
 // the exact rational test agrees. And the inner box's verification
-// (reference/certify/inner_box.hpp) against an oracle in GMP rationals.
+// (reference/certify/inner_box.hpp) against an oracle in GMP rationals: in
+// 3D (every corner exactly) and in 4D..6D with plane forms (only the corners
+// that can maximise a facet's orientation).
 //
 // Inputs are built at the filter's edge: r2 is the facet's squared distance
 // from the centre, rounded, then moved by a few ulps either way, so that the
@@ -18,6 +20,8 @@
 #include "reference/certify/certify.hpp"
 #include "reference/certify/inner_ball.hpp"
 #include "reference/certify/inner_box.hpp"
+#include "predicates/plane_form.hpp"
+#include "proptests/support/mpq_det.hpp"
 
 using namespace flipflop;
 
@@ -197,4 +201,130 @@ TEST_CASE("inner box: hand-made cases", "[certify][inner-box]") {
   certify::BoxTest3 b;
   for (int j = 0; j < 3; ++j) b.lo[j] = 0.5, b.hi[j] = 1;
   CHECK(certify::detail::box_inside_facets(ps, with_flat, b, decltype(certify::Speedups{}.for_range){}));
+}
+
+// d-dimensional boxes, the hull certifier's test (NegativeInsideFormTest: a
+// facet's plane form names the signs of its normal it knows, and only the
+// corners that can maximise the orientation are tested) against GMP over all
+// 2^D corners: a simplex of small integers (scaled), its facets oriented with
+// the opposite vertex negative by the rational oracle, a box of halves about
+// its centroid; some simplices have axis-parallel facets (normal components
+// exactly 0: those signs unknown, several corners tested), and some boxes
+// touch a facet's plane (rejected).
+namespace {
+template <int D>
+int q_orient(const std::vector<const double*>& rows) {  // sign det[r_1 - r_0, ..., r_D - r_0]
+  std::vector<std::vector<mpq_class>> m(D, std::vector<mpq_class>(D));
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) m[i][j] = mpq_class(rows[i + 1][j]) - mpq_class(rows[0][j]);
+  return test::mpq_det_sign(std::move(m));
+}
+
+template <int D>
+void box_property() {
+  rc::prop("random " + std::to_string(D) + "D simplices and boxes", [] {
+    const int scale = *rc::gen::element(0, 0, 500, -500, -1000);
+    const bool axis = *rc::gen::arbitrary<bool>();
+    PointSet ps;
+    ps.dim = D;
+    std::vector<long> sum(D, 0);
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j < D; ++j) {
+        // axis: the corner simplex 0, 8 e_1, ..., 8 e_D (D facets on
+        // coordinate planes)
+        const int v = axis ? (i == j + 1 ? 8 : 0) : *rc::gen::inRange(-16, 17);
+        sum[static_cast<std::size_t>(j)] += v;
+        ps.coords.push_back(std::ldexp(v, scale));
+      }
+    std::vector<const double*> all;
+    for (int i = 0; i <= D; ++i) all.push_back(ps.point(static_cast<Index>(i)));
+    RC_PRE(q_orient<D>(all) != 0);
+    // facet i: every vertex but i, ordered so that vertex i is on the negative side
+    std::vector<std::array<const double*, D>> facets;
+    for (int i = 0; i <= D; ++i) {
+      std::array<const double*, D> f{};
+      int c = 0;
+      for (int k = 0; k <= D; ++k)
+        if (k != i) f[static_cast<std::size_t>(c++)] = ps.point(static_cast<Index>(k));
+      std::vector<const double*> rows(f.begin(), f.end());
+      rows.push_back(ps.point(static_cast<Index>(i)));
+      // orient_d = (-1)^D det[...] (plane_form.hpp): negative wanted
+      if ((D % 2 == 0 ? 1 : -1) * q_orient<D>(rows) > 0) std::swap(f[0], f[1]);
+      facets.push_back(f);
+    }
+    certify::BoxTest<D> box;
+    for (int j = 0; j < D; ++j) {  // about the centroid (rounded to an integer), half-extents of halves
+      const long m = sum[static_cast<std::size_t>(j)] / (D + 1);
+      const int a = *rc::gen::inRange(0, 4), b = *rc::gen::inRange(0, 4);
+      box.lo[j] = std::ldexp(static_cast<double>(m) - a / 2.0, scale);
+      box.hi[j] = std::ldexp(static_cast<double>(m) + b / 2.0, scale);
+    }
+    bool oracle = !box.empty();
+    for (unsigned k = 0; k < (1u << D) && oracle; ++k) {
+      double c[D];
+      box.corner(k, c);
+      for (const auto& f : facets) {
+        std::vector<const double*> rows(f.begin(), f.end());
+        rows.push_back(c);
+        if ((D % 2 == 0 ? 1 : -1) * q_orient<D>(rows) >= 0) oracle = false;
+      }
+    }
+    std::vector<pred::PlaneForm<D>> forms;
+    for (const auto& f : facets) forms.emplace_back(f.data());
+    RC_TAG(oracle ? "inside" : "not inside");
+    RC_ASSERT(certify::detail::box_inside<D>(forms.size(), box, decltype(certify::Speedups{}.for_range){},
+                                             [&](std::size_t k) {
+                                               return certify::detail::NegativeInsideFormTest<D>(forms[k],
+                                                                                                 facets[k].data());
+                                             }) == oracle);
+  });
+}
+}  // namespace
+
+TEST_CASE("inner box: d-dimensional, with plane forms, verified exactly as every corner", "[certify][inner-box]") {
+  box_property<4>();
+  box_property<5>();
+  box_property<6>();
+}
+
+TEST_CASE("inner box: a facet of zero volume is skipped, a corner on a plane rejected (4D)", "[certify][inner-box]") {
+  // the simplex 0, 4 e_j in R^4: inside is x_j > 0 and Σ x_j < 4
+  PointSet ps;
+  ps.dim = 4;
+  ps.coords = {0, 0, 0, 0, 4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 4,
+               2, 0, 0, 0};  // point 5: on the edge between 0 and 1
+  std::vector<std::array<Index, 4>> facets;
+  for (int i = 0; i <= 4; ++i) {
+    std::array<Index, 4> f{};
+    int c = 0;
+    for (int k = 0; k <= 4; ++k)
+      if (k != i) f[static_cast<std::size_t>(c++)] = static_cast<Index>(k);
+    const double* p[5] = {ps.point(f[0]), ps.point(f[1]), ps.point(f[2]), ps.point(f[3]), ps.point(static_cast<Index>(i))};
+    if (pred::lambda_sign(nullptr, 5, nullptr, p, nullptr) > 0) std::swap(f[0], f[1]);
+    facets.push_back(f);
+  }
+  const auto check = [&](const std::vector<std::array<Index, 4>>& fs, double lo, double hi, int max_free = 4) {
+    std::vector<pred::PlaneForm<4>> forms;
+    std::vector<std::array<const double*, 4>> rows;
+    for (const auto& f : fs) {
+      rows.push_back({ps.point(f[0]), ps.point(f[1]), ps.point(f[2]), ps.point(f[3])});
+      forms.emplace_back(rows.back().data());
+    }
+    certify::BoxTest<4> b;
+    for (int j = 0; j < 4; ++j) b.lo[j] = lo, b.hi[j] = hi;
+    return certify::detail::box_inside<4>(
+        fs.size(), b, decltype(certify::Speedups{}.for_range){},
+        [&](std::size_t k) { return certify::detail::NegativeInsideFormTest<4>(forms[k], rows[k].data()); }, max_free);
+  };
+  CHECK(check(facets, 0.5, 0.75));   // corner sum 3 < 4
+  CHECK(!check(facets, 0.5, 1.0));   // a corner on Σ x_j = 4
+  CHECK(!check(facets, 0.0, 0.75));  // corners on x_j = 0
+  CHECK(!check(facets, 0.5, 1.5));   // a corner outside
+  std::vector<std::array<Index, 4>> with_flat = facets;
+  with_flat.push_back({0, 5, 1, 2});  // 0, 5, 1 on one line: zero volume
+  CHECK(check(with_flat, 0.5, 0.75));
+  // more than 2^max_free corners to test (the flat facet knows no sign, a
+  // facet on a coordinate plane one): rejected, never wrongly accepted
+  CHECK(check(facets, 0.5, 0.75, 3));
+  CHECK(!check(with_flat, 0.5, 0.75, 3));
 }

@@ -17,6 +17,7 @@
 #include "predicates/staged.hpp"
 #include "kernels_cpu/rtd/ridge_table.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
+#include "reference/certify/inner_box.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/convex_surface.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -27,6 +28,50 @@ namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr int kMaxHullDim = 9;  // orientations of up to 10 points (predicates.hpp: lambda_sign; k > 8 host-only)
+
+// An axis-aligned box strictly inside the convex region the facets bound
+// (hull_d's convention: orient_d(facet, x) < 0 inside), or an empty box: the
+// bounding box half-extents `half` about `centre`, scaled by the largest
+// factor (at most 1, times 0.99) that the facets' plane forms, read in
+// floating point, leave inside every facet; then verified exactly
+// (certify::detail::box_inside: per facet, the corners that can maximise its
+// orientation, by its form and, where undecided, the exact unperturbed
+// predicate; a facet with more than 2^6 corners to test, none). Where the
+// verification fails: no box. forms: the facets' plane
+// forms (built here, in parallel). That the facets bound a convex region is
+// the caller's to know (a certified surface).
+template <int D>
+certify::BoxTest<D> propose_box(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
+                                const double* centre, const double* half, std::vector<pred::PlaneForm<D>>& forms) {
+  const std::size_t h = facets.size();
+  forms.resize(h);
+  par_for(h, 512, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t k = lo; k < hi; ++k) {
+      const double* t[D];
+      for (int c = 0; c < D; ++c) t[c] = ps.point(facets[k][static_cast<std::size_t>(c)]);
+      forms[k] = pred::PlaneForm<D>(t);
+    }
+  });
+  // inside a facet: N . (centre - t_0) + scale Σ |N_j| half_j < 0
+  double scale = 1.0;
+  for (std::size_t k = 0; k < h && scale > 0; ++k) {
+    const pred::PlaneForm<D>& f = forms[k];
+    double at = 0.0, reach = 0.0;
+    for (int c = 0; c < D; ++c) at += f.n[c] * (centre[c] - f.base[c]), reach += std::fabs(f.n[c]) * half[c];
+    if (reach == 0.0) continue;  // a flat facet (or underflow): box_inside decides
+    scale = at < 0.0 ? std::min(scale, -at / reach) : 0.0;
+  }
+  scale *= 0.99;
+  certify::BoxTest<D> box;
+  if (!(scale > 0.0) || !std::isfinite(scale)) return box;
+  for (int c = 0; c < D; ++c) box.lo[c] = centre[c] - scale * half[c], box.hi[c] = centre[c] + scale * half[c];
+  const bool inside = certify::detail::box_inside<D>(h, box, par_for_range(512), [&](std::size_t k) {
+    const double* t[D];
+    for (int c = 0; c < D; ++c) t[c] = ps.point(facets[k][static_cast<std::size_t>(c)]);
+    return certify::detail::NegativeInsideFormTest<D>(forms[k], t);
+  }, std::min(D, 6));
+  return inside ? box : certify::BoxTest<D>{};
+}
 
 template <int D>
 class HullBuilder {
@@ -591,10 +636,12 @@ std::string tuple_str(const Index* t, int k) {
 // sequence; the first failing point in `order` is reported, so the message
 // does not depend on the thread count. Without forms (more than 2^21 of
 // them), the predicate alone.
+// facet_forms (may be empty): the facets' own plane forms, built already
+// (certify_points: the inner box's), used for the slots j = D.
 template <int D>
 std::string points_inside(const Certifier& ck, const std::vector<std::vector<Index>>& facets,
                           const std::vector<std::uint32_t>& nb, Index v,
-                          const std::vector<Index>& order) {
+                          const std::vector<Index>& order, const std::vector<pred::PlaneForm<D>>& facet_forms) {
   const std::size_t h = facets.size();
   const std::size_t slots = h * (D + 1);  // slot k (D+1) + j: side j of cone k; j = D: facet k itself
   const bool cache = slots <= (std::size_t{1} << 21);
@@ -614,7 +661,9 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   auto orient = [&](std::size_t k, int j, Index q) {
     Index t[D];
     for (int c = 0; c < D; ++c) t[c] = c == j ? v : facets[k][static_cast<std::size_t>(c)];
-    if (cache) {
+    if (j == D && !facet_forms.empty()) {
+      if (const int s = facet_forms[k].sign(ck.ps.point(q))) return s;
+    } else if (cache) {
       const std::size_t slot = k * (D + 1) + static_cast<std::size_t>(j);
       std::uint8_t st = state[slot].load(std::memory_order_acquire);
       if (st + 1 < lazy) {
@@ -689,6 +738,51 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   for (std::size_t piece = 0; piece < pieces; ++piece)
     if (failed_at[piece] < order.size()) return why[piece];
   return {};
+}
+
+// hull_d_problem's "points-inside" condition for every point that is not a
+// vertex (nor v): after the surface is certified closed, convex and
+// star-shaped from v. An inner box first (reference/certify/inner_box.hpp):
+// a point strictly inside a box that lies strictly inside every facet is
+// strictly inside the hull, exactly and under the perturbation, and needs no
+// walk. The box: propose_box's, from the points' bounding box about the
+// vertices' mean. Only where the points outnumber the facets: the facets'
+// forms are built for it (and passed on to the walks, which would build most
+// of them anyway).
+template <int D>
+std::string certify_points(const Certifier& ck, const std::vector<std::vector<Index>>& facets,
+                           const std::vector<std::uint32_t>& nb, Index v, const std::vector<char>& vertex,
+                           HullDCertifyStats* stats) {
+  const PointSet& ps = ck.ps;
+  const std::size_t n = ps.size(), h = facets.size();
+  std::size_t vertices = 0;
+  for (char x : vertex) vertices += x != 0;
+  std::vector<pred::PlaneForm<D>> forms;
+  certify::BoxTest<D> box;
+  if (n - vertices >= h) {
+    double mean[D] = {}, lo[D], hi[D], half[D];
+    for (int c = 0; c < D; ++c) lo[c] = HUGE_VAL, hi[c] = -HUGE_VAL;
+    for (Index q = 0; q < n; ++q) {
+      const double* x = ps.point(q);
+      for (int c = 0; c < D; ++c) {
+        lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);
+        if (vertex[q]) mean[c] += x[c];
+      }
+    }
+    for (int c = 0; c < D; ++c) mean[c] /= static_cast<double>(vertices), half[c] = 0.5 * (hi[c] - lo[c]);
+    box = propose_box<D>(ps, facets, mean, half, forms);
+  }
+  // the other points: a visibility walk in the cones (v, f) (points_inside),
+  // in Morton order of their bounding box so that consecutive walks start
+  // near their target
+  std::vector<Index> order =
+      par_select(n, [&](std::size_t q) { return !vertex[q] && q != v && !box.strictly_inside(ps.point(q)); });
+  if (stats) {
+    stats->box = !box.empty();
+    stats->walked = order.size();
+  }
+  certify::detail::morton_sort(ps, order, par_for_range());
+  return points_inside<D>(ck, facets, nb, v, order, forms);
 }
 
 }  // namespace
@@ -804,7 +898,7 @@ std::size_t HullDIncremental::size() const { return impl_->size; }
 
 HullDStats HullDIncremental::stats() const { return impl_->stats; }
 
-std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets) {
+std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets, HullDCertifyStats* stats) {
   const int d = ps.dim;
   const std::size_t n = ps.size();
   if (d < 2 || d > kMaxHullDim) return "input-dimension: d must be 2.." + std::to_string(kMaxHullDim);
@@ -858,20 +952,16 @@ std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Ind
       return {};
   }
   if (v == n) return {};  // every point a vertex
-  // every other non-vertex point: a visibility walk in the cones (v, f)
-  // (points_inside, below), the points in Morton order of their bounding
-  // box so that consecutive walks start near their target
-  std::vector<Index> order = par_select(n, [&](std::size_t q) { return !vertex[q] && q != v; });
-  certify::detail::morton_sort(ps, order, par_for_range());
+  // every other non-vertex point: strictly inside the hull (certify_points)
   switch (d) {
-    case 2: return points_inside<2>(ck, facets, nb, v, order);
-    case 3: return points_inside<3>(ck, facets, nb, v, order);
-    case 4: return points_inside<4>(ck, facets, nb, v, order);
-    case 5: return points_inside<5>(ck, facets, nb, v, order);
-    case 6: return points_inside<6>(ck, facets, nb, v, order);
-    case 7: return points_inside<7>(ck, facets, nb, v, order);
-    case 8: return points_inside<8>(ck, facets, nb, v, order);
-    default: return points_inside<9>(ck, facets, nb, v, order);
+    case 2: return certify_points<2>(ck, facets, nb, v, vertex, stats);
+    case 3: return certify_points<3>(ck, facets, nb, v, vertex, stats);
+    case 4: return certify_points<4>(ck, facets, nb, v, vertex, stats);
+    case 5: return certify_points<5>(ck, facets, nb, v, vertex, stats);
+    case 6: return certify_points<6>(ck, facets, nb, v, vertex, stats);
+    case 7: return certify_points<7>(ck, facets, nb, v, vertex, stats);
+    case 8: return certify_points<8>(ck, facets, nb, v, vertex, stats);
+    default: return certify_points<9>(ck, facets, nb, v, vertex, stats);
   }
 }
 

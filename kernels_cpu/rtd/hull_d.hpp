@@ -124,14 +124,22 @@ class HullDIncremental {
 //                   with certify::rtd; certify_rtd.hpp, "The boundary in
 //                   linear time": then the facets are those of a convex
 //                   polytope P star-shaped from v, and of conv(their vertices))
-//   points-inside   every other point that is not a vertex strictly inside P,
-//                   by a visibility walk in the cone triangulation {(v, f)}
-//                   (a scan of every facet where the walk does not settle)
+//   points-inside   every other point that is not a vertex strictly inside P:
+//                   strictly inside an axis-aligned box verified strictly
+//                   inside every facet (reference/certify/inner_box.hpp;
+//                   tried where the points outnumber the facets), or by a
+//                   visibility walk in the cone triangulation {(v, f)} (a
+//                   scan of every facet where the walk does not settle)
 // When every point is a vertex (no such v), v is an auxiliary point: the
 // vertices' average rounded to doubles, with the SoS index n (after every
 // input, predicates.hpp), used when it is strictly inside every facet; only
 // where it is not (a hull too thin for the rounding) is every vertex tested
 // against every facet (quadratic).
-std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets);
+struct HullDCertifyStats {
+  bool box = false;          // an inner box was verified
+  std::size_t walked = 0;    // points that took the walk (not vertices, not in the box)
+};
+std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
+                           HullDCertifyStats* stats = nullptr);
 
 }  // namespace flipflop::cpu
