@@ -917,7 +917,14 @@ HullTuple hull_d_attributes(const Points& p, const Cells& f) {
       for (std::size_t j = 0; j < d; ++j) big = std::max(big, std::fabs(a[static_cast<std::size_t>(v) * d + j]));
     int e = 0;
     std::frexp(big > 0 ? big : 1.0, &e);
-    auto P = [&](std::int64_t v, std::size_t j) { return std::ldexp(a[static_cast<std::size_t>(v) * d + j], -e); };
+    // x 2^-e: a multiplication by the power of two where 2^-e is a normal
+    // double (the same correctly rounded value as ldexp, which was a sixth of
+    // this call's time in 5D), ldexp beyond
+    const double pow2 = (e > -1000 && e < 1000) ? std::ldexp(1.0, -e) : 0.0;
+    auto P = [&](std::int64_t v, std::size_t j) {
+      const double x = a[static_cast<std::size_t>(v) * d + j];
+      return pow2 != 0.0 ? x * pow2 : std::ldexp(x, -e);
+    };
     double fact = 1.0;  // (d-1)!
     for (std::size_t k = 2; k < d; ++k) fact *= static_cast<double>(k);
     double sa = 0.0, ca = 0.0, sv = 0.0, cv = 0.0;  // Neumaier sums of the sizes and cones
@@ -926,34 +933,39 @@ HullTuple hull_d_attributes(const Points& p, const Cells& f) {
       c += std::fabs(sum) >= std::fabs(x) ? (sum - t) + x : (x - t) + sum;
       sum = t;
     };
-    for (std::size_t k = 0; k < m; ++k) {
-      const std::int64_t* r = facets.data() + k * d;
-      double U[8][9];  // rows f_i - f_0, i = 1..d-1
-      for (std::size_t i = 1; i < d; ++i)
-        for (std::size_t j = 0; j < d; ++j) U[i - 1][j] = P(r[i], j) - P(r[0], j);
-      double nrm[9], size2 = 0.0;
-      for (std::size_t c = 0; c < d; ++c) {  // (-1)^(d-1+c) det(U without column c)
-        double M[64];
-        const std::size_t s = d - 1;
-        for (std::size_t i = 0; i < s; ++i)
-          for (std::size_t j = 0, q = 0; j < d; ++j)
-            if (j != c) M[i * s + q++] = U[i][j];
-        const double det = cpu::det_gauss_double(M, static_cast<int>(s));
-        nrm[c] = (d - 1 + c) % 2 == 0 ? det : -det;
-        size2 += nrm[c] * nrm[c];
+    // per facet (in parallel pieces): its equation, its size and its cone's
+    // (then summed in facet order, as one loop would)
+    std::vector<double> sizes(m), cones(m);
+    cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) {
+        const std::int64_t* r = facets.data() + k * d;
+        double U[8][9];  // rows f_i - f_0, i = 1..d-1
+        for (std::size_t i = 1; i < d; ++i)
+          for (std::size_t j = 0; j < d; ++j) U[i - 1][j] = P(r[i], j) - P(r[0], j);
+        double nrm[9], size2 = 0.0;
+        for (std::size_t c = 0; c < d; ++c) {  // (-1)^(d-1+c) det(U without column c)
+          double M[64];
+          const std::size_t s = d - 1;
+          for (std::size_t i = 0; i < s; ++i)
+            for (std::size_t j = 0, q = 0; j < d; ++j)
+              if (j != c) M[i * s + q++] = U[i][j];
+          const double det = cpu::det_gauss_double(M, static_cast<int>(s));
+          nrm[c] = (d - 1 + c) % 2 == 0 ? det : -det;
+          size2 += nrm[c] * nrm[c];
+        }
+        const double size = std::sqrt(size2);
+        double* eq = equations.data() + k * (d + 1);
+        double off = 0.0, cone = 0.0;
+        for (std::size_t c = 0; c < d; ++c) {
+          eq[c] = nrm[c] / size;
+          off -= eq[c] * a[static_cast<std::size_t>(r[0]) * d + c];
+          cone += nrm[c] * (P(r[0], c) - P(vertices[0], c));
+        }
+        eq[d] = off;
+        sizes[k] = size, cones[k] = cone;
       }
-      const double size = std::sqrt(size2);
-      double* eq = equations.data() + k * (d + 1);
-      double off = 0.0, cone = 0.0;
-      for (std::size_t c = 0; c < d; ++c) {
-        eq[c] = nrm[c] / size;
-        off -= eq[c] * a[static_cast<std::size_t>(r[0]) * d + c];
-        cone += nrm[c] * (P(r[0], c) - P(vertices[0], c));
-      }
-      eq[d] = off;
-      add(sa, ca, size);
-      add(sv, cv, cone);
-    }
+    });
+    for (std::size_t k = 0; k < m; ++k) add(sa, ca, sizes[k]), add(sv, cv, cones[k]);
     area = std::ldexp((sa + ca) / fact, static_cast<int>(d - 1) * e);
     volume = std::ldexp((sv + cv) / (fact * static_cast<double>(d)), static_cast<int>(d) * e);
   }
