@@ -530,6 +530,12 @@ class HullBuilder {
     // stops, the one place it decides something (it was tested at every
     // step before: 16-19 % of a 5D build's tests, 8-11 % in 4D)
     bool beyond_known = true;
+    // the side just crossed (-1: none yet): cur's side `from` is the same
+    // hyperplane (its ridge and p) as the side of the facet left behind that
+    // q was beyond, with the opposite orientation (adjacent facets orient
+    // their common ridge oppositely), so q is behind it: not tested, as the
+    // cavity kernel's walk does
+    int from = -1;
     for (std::size_t steps = 0; steps < 64; ++steps) {
       rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
       const int r = static_cast<int>((rng >> 32) % static_cast<std::uint64_t>(D));
@@ -537,6 +543,7 @@ class HullBuilder {
       const std::uint32_t at = vis_form_at_[cur];
       for (int k = 0; k < D && exit < 0; ++k) {
         const int j = (r + k) % D;
+        if (j == from) continue;
         Index t[D];
         for (int c = 0; c < D; ++c) t[c] = c == j ? p : fv_[cur * D + static_cast<std::uint32_t>(c)];
         if (test(at == kNone ? kNone : at + static_cast<std::uint32_t>(j), t) > 0) exit = j;
@@ -549,6 +556,7 @@ class HullBuilder {
       const std::uint32_t g = l / D;
       if (mark_[g] != in) return fn_[l] / D;  // a horizon ridge: the new facet over it
       cur = g;
+      from = static_cast<int>(l % D);
       beyond_known = false;
     }
     return kUndecided;
