@@ -113,9 +113,11 @@ class HullBuilder {
     const std::size_t cap = 4 * live.size() + 100;
     for (Index q = static_cast<Index>(first); q < n_; ++q) {
       long found = -1;
+      int from = -1;  // the side just crossed: q behind it (walk_orphan says why), not tested
       for (std::size_t steps = 0; inner_ != kNone && steps < cap && found < 0; ++steps) {
         int cand[D], nc = 0;
         for (int j = 0; j < D; ++j) {
+          if (j == from) continue;
           Index t[D];
           for (int c = 0; c < D; ++c) t[c] = c == j ? inner_ : fv_[cur * D + static_cast<std::uint32_t>(c)];
           if (orient_of(t, q) < 0) cand[nc++] = j;
@@ -125,7 +127,9 @@ class HullBuilder {
           break;
         }
         rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
-        cur = fn_[cur * D + static_cast<std::uint32_t>(cand[(rng_ >> 32) % static_cast<std::uint64_t>(nc)])] / D;
+        const std::uint32_t l = fn_[cur * D + static_cast<std::uint32_t>(cand[(rng_ >> 32) % static_cast<std::uint64_t>(nc)])];
+        cur = l / D;
+        from = static_cast<int>(l % D);
       }
       if (found < 0) {
         if (!assign(q, live)) discard(q);
