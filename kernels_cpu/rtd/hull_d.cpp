@@ -774,16 +774,13 @@ std::string certify_points(const Certifier& ck, const std::vector<std::vector<In
   std::vector<pred::PlaneForm<D>> forms;
   certify::BoxTest<D> box;
   if (n - vertices >= h) {
-    double mean[D] = {}, lo[D], hi[D], half[D];
-    for (int c = 0; c < D; ++c) lo[c] = HUGE_VAL, hi[c] = -HUGE_VAL;
-    for (Index q = 0; q < n; ++q) {
-      const double* x = ps.point(q);
-      for (int c = 0; c < D; ++c) {
-        lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);
-        if (vertex[q]) mean[c] += x[c];
-      }
-    }
-    for (int c = 0; c < D; ++c) mean[c] /= static_cast<double>(vertices), half[c] = 0.5 * (hi[c] - lo[c]);
+    const std::array<double, 2 * D> bb = brio::bounding_box<D>(ps);  // lo, then hi
+    double mean[D] = {}, half[D];
+    for (Index q = 0; q < n; ++q)
+      if (vertex[q])
+        for (int c = 0; c < D; ++c) mean[c] += ps.point(q)[c];
+    for (int c = 0; c < D; ++c)
+      mean[c] /= static_cast<double>(vertices), half[c] = 0.5 * (bb[static_cast<std::size_t>(D + c)] - bb[static_cast<std::size_t>(c)]);
     box = propose_box<D>(ps, facets, mean, half, forms);
   }
   // the other points: a visibility walk in the cones (v, f) (points_inside),
