@@ -46,6 +46,7 @@
 
 #include "predicates/err_double.hpp"
 #include "predicates/lambda_filter.hpp"
+#include "predicates/static_filter.hpp"
 
 namespace flipflop::pred {
 
@@ -105,6 +106,54 @@ struct PlaneForm {
     if (s > bound) return 1;
     if (-s > bound) return -1;
     return 0;  // also for NaN and infinities
+  }
+};
+
+// The same orientation against the per-input static bound instead of a
+// per-tuple one: cheaper to build (one determinant's top levels in plain
+// doubles, where PlaneForm takes D minors in ErrDouble), and it decides
+// only where |det Λ| exceeds StaticFilter::bound(D + 1, false).
+//
+// Why the static bound holds. Reorder Λ's rows as (t_1, ..., t_{D-1}, x,
+// t_0): moving t_0 last is D transpositions, so orient_d(t, x) = (-1)^D sign
+// det Λ', and det Λ' = det T' with T' the differences against t_0 (rows
+// fl(t_i - t_0), then fl(x - t_0): lambda_filter.hpp). The form keeps
+// top_minors<D> of T''s first D-1 rows and finishes with with_last_row<D>
+// against x's row: det_plain<D>(T')'s operations in its order
+// (static_filter.hpp), so its computed value is det_plain's bit for bit and
+// the static bound for D + 1 plain points bounds its error (its entries are
+// rounded differences of input coordinates, as the bound's derivation
+// requires). D <= 7: the static filter's bounds stop at 8 points (beyond,
+// bound() is +inf and nothing is decided).
+template <int D>
+struct StaticPlaneForm {
+  static_assert(D >= 2 && D <= 7, "StaticPlaneForm: D in 2..7");
+  double minor[D];  // top_minors<D> of the rows t_1 - t_0, ..., t_{D-1} - t_0
+  const double* base = nullptr;  // t_0
+
+  StaticPlaneForm() = default;
+  // t: the D points of the tuple, in order
+  explicit StaticPlaneForm(const double* const* t) {
+    base = t[0];
+    double rows[D * D];  // row D-1 is not read by top_minors
+    for (int i = 1; i < D; ++i)
+      for (int j = 0; j < D; ++j) rows[(i - 1) * D + j] = t[i][j] - base[j];
+    for (int j = 0; j < D; ++j) rows[(D - 1) * D + j] = 0.0;
+    filter_detail::top_minors<D>(rows, minor);
+  }
+
+  // orient_d(t, x) against `bound` (StaticFilter::bound(D + 1, false) of an
+  // input holding t and x): +1 / -1 when certain, 0 when undecided (NaN and
+  // an infinite bound included)
+  int sign(const double* x, double bound) const {
+    const int s = filter_detail::sign_beyond(det(x), bound);
+    return D % 2 == 0 ? s : -s;
+  }
+  // the computed det T' (above; orient_d's sign times (-1)^D)
+  double det(const double* x) const {
+    double last[D];
+    for (int j = 0; j < D; ++j) last[j] = x[j] - base[j];
+    return filter_detail::with_last_row<D>(minor, last);
   }
 };
 

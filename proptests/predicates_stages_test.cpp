@@ -64,6 +64,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <random>
 #include <string>
@@ -1268,6 +1269,26 @@ TEST_CASE("stages: det_plain and its split at the last row equal the exact deter
 // value.
 namespace {
 
+// A plane form's answer on 200 draws of D + 1 points uniform in [-1, 1]^D
+// (fixed seed): call(rows, x) checks it and returns its sign, x the D + 1
+// points' coordinates; it must decide at least 190 (the bound is not
+// vacuous).
+template <int D, class Call>
+void decides_uniform_calls(std::uint64_t seed, Call&& call) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int decided = 0;
+  for (int r = 0; r < 200; ++r) {
+    double x[(D + 1) * D];
+    for (double& c : x) c = u(g);
+    const double* rows[D + 1];
+    for (int i = 0; i <= D; ++i) rows[i] = x + i * D;
+    decided += call(rows, static_cast<const double*>(x)) != 0;
+  }
+  INFO("D = " << D << ": decided " << decided << " of 200 uniform calls (seed " << seed << ")");
+  CHECK(decided >= 190);
+}
+
 template <int D>
 void check_plane_form() {
   prop_scaled("PlaneForm<" + std::to_string(D) + ">: 0 or the exact sign of orient_d, every family",
@@ -1283,22 +1304,11 @@ void check_plane_form() {
                       RC_ASSERT(s == 0 || s == exact);
                       if (s != 0) RC_ASSERT((form.value(in.p(D)) > 0 ? 1 : -1) == exact);
                     });
-  std::mt19937_64 g(0x5EED0000u + D);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  int decided = 0;
-  for (int r = 0; r < 200; ++r) {
-    double x[(D + 1) * D];
-    for (double& c : x) c = u(g);
-    const double* t[D];
-    for (int i = 0; i < D; ++i) t[i] = x + i * D;
-    const double* rows[D + 1];
-    for (int i = 0; i <= D; ++i) rows[i] = x + i * D;
-    const int s = pred::PlaneForm<D>(t).sign(x + D * D);
+  decides_uniform_calls<D>(0x5EED0000u + D, [](const double* const* rows, const double* x) {
+    const int s = pred::PlaneForm<D>(rows).sign(x + D * D);
     REQUIRE((s == 0 || s == pred::stage::gmp(D + 1, rows, nullptr)));
-    decided += s != 0;
-  }
-  INFO("D = " << D << ": decided " << decided << " of 200 uniform calls (seed " << (0x5EED0000u + D) << ")");
-  CHECK(decided >= 190);
+    return s;
+  });
 }
 
 }  // namespace
@@ -1312,6 +1322,68 @@ TEST_CASE("stages: PlaneForm answers 0 or the exact orientation in 2D..9D (shrin
   check_plane_form<7>();
   check_plane_form<8>();
   check_plane_form<9>();
+}
+
+// ---- StaticPlaneForm (predicates/plane_form.hpp) ------------------------------------
+// The same orientation against the static filter's per-input bound. Its
+// soundness rests on one claim: the form's floating value is det_plain<D>
+// of the reordered points' differences (t_1..t_{D-1}, x, t_0), bit for bit,
+// which the static bound covers (its own soundness: properties (a), (e) and
+// filter_sensitivity_test). Checked on every family of orient_d inputs in
+// 2D..7D with the bound of a StaticFilter over the instance's coordinates:
+// the value equals that det_plain (both NaN, or the same double), and the
+// sign is 0 or the exact sign of det Λ (GMP, no perturbation); on the uniform
+// family of a fixed seed it decides nearly every call.
+namespace {
+
+template <int D>
+void check_static_plane_form() {
+  // the form of rows 0..D-1 at row D: whether its value is det_plain's bit
+  // for bit, its sign, the exact sign
+  struct Seen {
+    bool same_value;
+    int sign, exact;
+  };
+  auto check = [](const double* const* rows, const pred::StaticFilter& f) {
+    const pred::StaticPlaneForm<D> form(rows);
+    const double* reordered[D + 1];
+    for (int i = 1; i < D; ++i) reordered[i - 1] = rows[i];
+    reordered[D - 1] = rows[D];
+    reordered[D] = rows[0];
+    double t[D * D];
+    pred::filter_detail::differences<D + 1, false>(reordered, nullptr, t, nullptr);
+    const double whole = pred::filter_detail::det_plain<D>(t), split = form.det(rows[D]);
+    const bool same = (std::isnan(whole) && std::isnan(split)) || std::memcmp(&whole, &split, sizeof whole) == 0;
+    return Seen{same, form.sign(rows[D], f.bound(D + 1, false)), pred::stage::gmp(D + 1, rows, nullptr)};
+  };
+  prop_scaled("StaticPlaneForm<" + std::to_string(D) + ">: det_plain's value, 0 or the exact sign, every family",
+              D <= 5 ? 4 : 10, [&] {
+                const Instance in = gen_any(Spec{Kind::orient_d, D});
+                const double* rows[D + 1];
+                std::vector<double> all;
+                for (int i = 0; i <= D; ++i) rows[i] = in.p(i), all.insert(all.end(), in.p(i), in.p(i) + D);
+                const Seen r = check(rows, pred::StaticFilter::for_points(all.data(), D + 1, D));
+                RC_ASSERT(r.same_value);
+                RC_ASSERT((r.sign == 0 || r.sign == r.exact));
+              });
+  decides_uniform_calls<D>(0x5EED0100u + D, [&](const double* const* rows, const double* x) {
+    const Seen seen = check(rows, pred::StaticFilter::for_points(x, D + 1, D));
+    REQUIRE(seen.same_value);
+    REQUIRE((seen.sign == 0 || seen.sign == seen.exact));
+    return seen.sign;
+  });
+}
+
+}  // namespace
+
+TEST_CASE("stages: StaticPlaneForm is det_plain's value and answers 0 or the exact orientation in 2D..7D (shrinking)",
+          "[predicates][stages]") {
+  check_static_plane_form<2>();
+  check_static_plane_form<3>();
+  check_static_plane_form<4>();
+  check_static_plane_form<5>();
+  check_static_plane_form<6>();
+  check_static_plane_form<7>();
 }
 
 // The bound is what keeps the form from answering on exactly degenerate

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 
 #include "kernels_cpu/brio.hpp"
 #include "kernels_cpu/parallel.hpp"
@@ -78,6 +79,7 @@ class HullBuilder {
  public:
   HullBuilder(const PointSet& ps, HullDStats& st) : ps_(&ps), st_(&st), n_(ps.size()) {
     f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D);
+    sbound_ = f_.bound(D + 1, false);
   }
 
   void run() {
@@ -106,9 +108,16 @@ class HullBuilder {
     const std::size_t first = n_;
     n_ = ps.size();
     f_ = pred::StaticFilter::for_points(ps.coords.data(), n_, D);
+    // the union's bound: no smaller, so still valid for the forms built
+    // before (their entries are differences of its coordinates)
+    sbound_ = f_.bound(D + 1, false);
     std::vector<std::uint32_t> live;
     for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
       if (alive(f)) live.push_back(f);
+    // the facets' forms point into the previous call's coordinates: to the
+    // same values in ps (the points given so far come first in it)
+    if constexpr (kStatic)
+      for (std::uint32_t f : live) ff_[f].base = ps.point(fv_[static_cast<std::size_t>(f) * D]);
     std::uint32_t cur = live.front();
     const std::size_t cap = 4 * live.size() + 100;
     for (Index q = static_cast<Index>(first); q < n_; ++q) {
@@ -160,6 +169,17 @@ class HullBuilder {
   std::vector<std::uint32_t> fn_;              // D links per slot: D t + k across the ridge opposite vertex j
   std::vector<std::vector<Index>> out_;        // outside set per slot
   std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
+  // Plane forms (plane_form.hpp: an orientation against a fixed tuple as a
+  // dot product and a bound). For D <= 7, where the static filter has
+  // bounds, StaticPlaneForm: one determinant's top levels in plain doubles to
+  // build, so every facet gets its own (ff_, built with the facet) and every
+  // visible facet with a few orphans its cone sides. Beyond, PlaneForm (D
+  // minors in ErrDouble to build): only for visible facets with many
+  // orphans. An undecided form asks the predicate.
+  static constexpr bool kStatic = D <= 7;
+  using Form = std::conditional_t<kStatic, pred::StaticPlaneForm<(kStatic ? D : 2)>, pred::PlaneForm<D>>;
+  double sbound_ = HUGE_VAL;  // f_.bound(D + 1, false): the static forms' bound
+  std::vector<Form> ff_;      // kStatic: per slot, the facet's form
   std::vector<std::uint32_t> mark_, free_, work_;
   std::uint32_t stamp_ = 0;
   Index inner_ = kNone;  // a point found inside the hull (discard())
@@ -171,10 +191,15 @@ class HullBuilder {
   // the noise)
   static constexpr std::size_t kParallelOrphans = 4096, kOrphanPiece = 1024;
   // during one insertion: per visible facet slot, the first of its D+1 plane
-  // forms in vis_forms_ (kNone: none); insert() says when it has them
-  static constexpr std::size_t kFormMin = 32 * D;  // measured: 4D 10^5 and 5D 2x10^4 normal points, 2..64 D
+  // forms in vis_forms_ (kNone: none); insert() says when it has them.
+  // Measured (callgrind, the build's instructions, one thread): PlaneForm
+  // from 32 D orphans, among 2..64 D (4D 10^5, 5D 2x10^4 normal points);
+  // static forms from 2 orphans, among 1, 2, 4, 8, 16 and static forms only
+  // from 32 D on with PlaneForm beyond (5D normal 276 M, 4D normal 301 M):
+  // 5D normal 2x10^4 270 M, 4D normal 10^5 268 M, 5D cube 10^5 1982 M.
+  static constexpr std::size_t kFormMin = kStatic ? 2 : 32 * D;
   std::vector<std::uint32_t> vis_form_at_;
-  std::vector<pred::PlaneForm<D>> vis_forms_;
+  std::vector<Form> vis_forms_;
   std::uint64_t rng_ = 0x2545F4914F6CDD1Dull;
 
   bool alive(std::uint32_t f) const { return fv_[static_cast<std::size_t>(f) * D] != kNone; }
@@ -213,22 +238,45 @@ class HullBuilder {
     p[D] = ps_->point(q);
     return pred::lambda_sign_staged<D + 1>(&f_, id, p, static_cast<const double*>(nullptr));
   }
-  // q strictly beyond facet f
-  bool sees(std::uint32_t f, Index q) { return orient_of(&fv_[static_cast<std::size_t>(f) * D], q) > 0; }
+  // q strictly beyond facet f (by its form first, kStatic)
+  bool sees(std::uint32_t f, Index q) {
+    if constexpr (kStatic) {
+      ++st_->tests;
+      return form_sign(&ff_[f], &fv_[static_cast<std::size_t>(f) * D], q) > 0;
+    }
+    return orient_of(&fv_[static_cast<std::size_t>(f) * D], q) > 0;
+  }
 
-  // The plane form (plane_form.hpp) of facet f's tuple with vertex j
-  // replaced by p (j = kNone: the facet itself).
-  pred::PlaneForm<D> facet_form(std::uint32_t f, std::uint32_t j, Index p) const {
+  // The plane form of facet f's tuple with vertex j replaced by p (j =
+  // kNone: the facet itself).
+  Form facet_form(std::uint32_t f, std::uint32_t j, Index p) const {
     const double* t[D];
     for (int c = 0; c < D; ++c)
       t[c] = ps_->point(static_cast<std::uint32_t>(c) == j ? p : fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(c)]);
-    return pred::PlaneForm<D>(t);
+    return Form(t);
+  }
+  // the form of the same points with the opposite orientation: every term
+  // of its value negated, exactly (so the same bound holds)
+  static Form negated(Form f) {
+    if constexpr (kStatic) {
+      for (double& m : f.minor) m = -m;
+    } else {
+      for (double& m : f.n) m = -m;
+    }
+    return f;
   }
   // orient_d(t, q) by the form of the tuple t (null: none), the predicate
   // where it is undecided; uncounted, safe from parallel pieces
-  int form_sign(const pred::PlaneForm<D>* form, const Index* t, Index q) const {
-    if (form)
-      if (const int s = form->sign(ps_->point(q))) return s;
+  int form_sign(const Form* form, const Index* t, Index q) const {
+    if (form) {
+      int s;
+      if constexpr (kStatic) {
+        s = form->sign(ps_->point(q), sbound_);
+      } else {
+        s = form->sign(ps_->point(q));
+      }
+      if (s) return s;
+    }
     return orient_tuple(t, q);
   }
 
@@ -273,6 +321,7 @@ class HullBuilder {
     fn_.resize((s + 1) * D, kNone);
     out_.emplace_back();
     nrm_.emplace_back();
+    if constexpr (kStatic) ff_.emplace_back();
     mark_.push_back(0);
     return static_cast<std::uint32_t>(s);
   }
@@ -382,10 +431,11 @@ class HullBuilder {
     match(fs, skip);
     std::vector<char> used(n_, 0);
     for (Index x : s) used[x] = 1;
-    // every point is tested against these D+1 facets: their orientations
-    // as plane forms (plane_form.hpp; an undecided form asks the predicate)
-    std::vector<pred::PlaneForm<D>> form;
+    // every point is tested against these D+1 facets: by their plane forms
+    std::vector<Form> form;
     for (std::uint32_t f : fs) form.push_back(facet_form(f, kNone, 0));
+    if constexpr (kStatic)
+      for (std::size_t k = 0; k < fs.size(); ++k) ff_[fs[k]] = form[k];
     // in parallel pieces (a point's facet depends on that point alone: the
     // first of fs it sees), then the outside sets filled in index order, as
     // the sequential loop would
@@ -464,6 +514,7 @@ class HullBuilder {
       fn_[u * D + static_cast<std::uint32_t>(h.i)] = h.link;
       fn_[h.link] = u * D + static_cast<std::uint32_t>(h.i);
       mark_[u] = 0;
+      if constexpr (kStatic) ff_[u] = facet_form(u, kNone, 0);
       fresh.push_back(u);
       skip.push_back(h.i);
     }
@@ -472,17 +523,42 @@ class HullBuilder {
     // the points of the visible facets (p aside): each inside the grown hull
     // or beyond one of the new facets (header). A visible facet with at
     // least kFormMin orphans gets the plane forms of its D cone sides f[j:=p]
-    // and of itself, which its orphans' walks test again and again (a form
-    // costs about D determinants of D-1 rows in ErrDouble, a test with it a
-    // dot product).
+    // and of itself, which its orphans' walks test again and again (a test
+    // with a form is a dot product; to build one costs a determinant's top
+    // levels, or D determinants of D-1 rows in ErrDouble for a PlaneForm).
+    // A side over a horizon ridge is the tuple of the new facet over it (the
+    // same vertices in the same order): a copy of that facet's form. A side
+    // over a ridge between two visible facets is the other's side over it
+    // with the opposite orientation (walk_orphan: adjacent facets orient
+    // their common ridge oppositely): its form negated, where built before.
+    // (callgrind, the build's instructions: 5D normal 2x10^4 272 -> 268 M,
+    // 5D cube 10^5 1994 -> 1968 M; most forms built are the facets' own)
     if (vis_form_at_.size() < mark_.size()) vis_form_at_.resize(mark_.size(), kNone);
     vis_forms_.clear();
+    for (std::uint32_t f : vis) vis_form_at_[f] = kNone;
     for (std::uint32_t f : vis) {
-      vis_form_at_[f] = kNone;
       if (out_[f].size() < kFormMin) continue;
-      vis_form_at_[f] = static_cast<std::uint32_t>(vis_forms_.size());
-      for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(D); ++j) vis_forms_.push_back(facet_form(f, j, p));
-      vis_forms_.push_back(facet_form(f, kNone, 0));
+      const auto at = static_cast<std::uint32_t>(vis_forms_.size());
+      for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(D); ++j) {
+        const std::uint32_t l = fn_[f * D + j], g = l / D;
+        if (mark_[g] != stamp_) {
+          if constexpr (kStatic) {
+            vis_forms_.push_back(ff_[fn_[l] / D]);
+          } else {
+            vis_forms_.push_back(facet_form(f, j, p));
+          }
+        } else if (vis_form_at_[g] != kNone) {
+          vis_forms_.push_back(negated(vis_forms_[vis_form_at_[g] + l % D]));
+        } else {
+          vis_forms_.push_back(facet_form(f, j, p));
+        }
+      }
+      vis_form_at_[f] = at;
+      if constexpr (kStatic) {
+        vis_forms_.push_back(ff_[f]);
+      } else {
+        vis_forms_.push_back(facet_form(f, kNone, 0));
+      }
     }
     std::size_t orphans = 0;
     for (std::uint32_t f : vis) orphans += out_[f].size();
@@ -525,9 +601,14 @@ class HullBuilder {
   static constexpr std::uint32_t kInside = kNone, kUndecided = kNone - 1;
   std::uint32_t walk_orphan(Index q, std::uint32_t f, Index p, std::uint64_t& rng, std::uint64_t& tests) const {
     const std::uint32_t in = stamp_;
-    auto test = [&](std::uint32_t at, const Index* t) {
+    // cur's cone side j (j = D: cur itself) by a form where there is one
+    auto test = [&](std::uint32_t cur, int j, const Index* t) {
       ++tests;
-      return form_sign(at == kNone ? nullptr : &vis_forms_[at], t, q);
+      const std::uint32_t at = vis_form_at_[cur];
+      if (at != kNone) return form_sign(&vis_forms_[at + static_cast<std::uint32_t>(j)], t, q);
+      if constexpr (kStatic)
+        if (j == D) return form_sign(&ff_[cur], t, q);
+      return orient_tuple(t, q);
     };
     std::uint32_t cur = f;
     // whether q is beyond cur (known for f): asked only where the walk
@@ -544,16 +625,15 @@ class HullBuilder {
       rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
       const int r = static_cast<int>((rng >> 32) % static_cast<std::uint64_t>(D));
       int exit = -1;
-      const std::uint32_t at = vis_form_at_[cur];
       for (int k = 0; k < D && exit < 0; ++k) {
         const int j = (r + k) % D;
         if (j == from) continue;
         Index t[D];
         for (int c = 0; c < D; ++c) t[c] = c == j ? p : fv_[cur * D + static_cast<std::uint32_t>(c)];
-        if (test(at == kNone ? kNone : at + static_cast<std::uint32_t>(j), t) > 0) exit = j;
+        if (test(cur, j, t) > 0) exit = j;
       }
       if (exit < 0) {
-        if (!beyond_known && test(at == kNone ? kNone : at + static_cast<std::uint32_t>(D), &fv_[cur * D]) <= 0) break;
+        if (!beyond_known && test(cur, D, &fv_[cur * D]) <= 0) break;
         return kInside;  // inside conv(cur ∪ p): inside the grown hull
       }
       const std::uint32_t l = fn_[cur * D + static_cast<std::uint32_t>(exit)];
@@ -659,18 +739,35 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   const std::size_t h = facets.size();
   const std::size_t slots = h * (D + 1);  // slot k (D+1) + j: side j of cone k; j = D: facet k itself
   const bool cache = slots <= (std::size_t{1} << 21);
-  std::vector<pred::PlaneForm<D>> form(cache ? slots : 0);
+  // the forms: static ones (plane_form.hpp: StaticPlaneForm, v and the
+  // facets' vertices are input points) where the static filter has bounds,
+  // D <= 7; PlaneForm beyond
+  constexpr bool kStatic = D <= 7;
+  using Form = std::conditional_t<kStatic, pred::StaticPlaneForm<(kStatic ? D : 2)>, pred::PlaneForm<D>>;
+  const double sbound = ck.filter.bound(D + 1, false);
+  std::vector<Form> form(cache ? slots : 0);
   std::unique_ptr<std::atomic<std::uint8_t>[]> state(cache ? new std::atomic<std::uint8_t>[slots] : nullptr);
   for (std::size_t i = 0; cache && i < slots; ++i) state[i].store(0, std::memory_order_relaxed);
   // A slot's state: below `lazy` - 1 the number of its uses so far (each
-  // asks the predicate); the next use builds its form. Built at once where
+  // asks the predicate); the next use builds its form. A static form costs
+  // about one predicate call to build: at once. A PlaneForm: at once where
   // the points are many per cone (10^5 normal 4D points: 82), from the 16th
   // use on where they are few (2x10^4 normal 5D points: 2.8 per cone, 37,000
   // forms had been built for 20,000 walks). Measured on 2 cores, certifier
   // CPU time: 5D 17 % less with the threshold 16 (8: 14 %, never: 19 %); 4D
-  // within the noise with 16, 25 % more without forms.
+  // within the noise with 16, 25 % more without forms. Static forms at once
+  // instead (callgrind, hull_d_problem's instructions, one thread): 2x10^4
+  // normal 5D points 213 -> 139 M, 10^5 in the 5D cube 1705 -> 1036 M,
+  // 10^5 normal 4D points 92 -> 79 M.
   constexpr std::uint8_t kBuilding = 254, kReady = 255;
-  const int lazy = order.size() >= 16 * h ? 1 : 16;
+  const int lazy = kStatic || order.size() >= 16 * h ? 1 : 16;
+  auto decide = [&](const Form& f, const double* x) {
+    if constexpr (kStatic) {
+      return f.sign(x, sbound);
+    } else {
+      return f.sign(x);
+    }
+  };
   // orient_d of cone k's side j (j < D) or facet k (j = D) and point q
   auto orient = [&](std::size_t k, int j, Index q) {
     Index t[D];
@@ -685,14 +782,14 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
       } else if (st + 1 == lazy && state[slot].compare_exchange_strong(st, kBuilding, std::memory_order_acq_rel)) {
         const double* p[D];
         for (int c = 0; c < D; ++c) p[c] = ck.ps.point(t[c]);
-        form[slot] = pred::PlaneForm<D>(p);
+        form[slot] = Form(p);
         tsan::released(&state[slot]);  // std::atomic is not instrumented here (.ci/tsan.ignorelist)
         state[slot].store(kReady, std::memory_order_release);
         st = kReady;
       }
       if (st == kReady) {
         tsan::acquired(&state[slot]);
-        if (const int s = form[slot].sign(ck.ps.point(q))) return s;
+        if (const int s = decide(form[slot], ck.ps.point(q))) return s;
       }
     }
     return ck.orient(t, q);
