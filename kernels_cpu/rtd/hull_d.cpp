@@ -255,14 +255,11 @@ class HullBuilder {
       t[c] = ps_->point(static_cast<std::uint32_t>(c) == j ? p : fv_[static_cast<std::size_t>(f) * D + static_cast<std::size_t>(c)]);
     return Form(t);
   }
-  // the form of the same points with the opposite orientation: every term
-  // of its value negated, exactly (so the same bound holds)
+  // the static form of the same points with the opposite orientation:
+  // every term of its value negated, exactly (so the same bound holds)
   static Form negated(Form f) {
-    if constexpr (kStatic) {
+    if constexpr (kStatic)
       for (double& m : f.minor) m = -m;
-    } else {
-      for (double& m : f.n) m = -m;
-    }
     return f;
   }
   // orient_d(t, q) by the form of the tuple t (null: none), the predicate
@@ -531,6 +528,8 @@ class HullBuilder {
     // over a ridge between two visible facets is the other's side over it
     // with the opposite orientation (walk_orphan: adjacent facets orient
     // their common ridge oppositely): its form negated, where built before.
+    // Static forms only: PlaneForm's sides (8D, 9D, visible facets of 32 D
+    // orphans or more, which no test input reaches) are each built, as before.
     // (callgrind, the build's instructions: 5D normal 2x10^4 272 -> 268 M,
     // 5D cube 10^5 1994 -> 1968 M; most forms built are the facets' own)
     if (vis_form_at_.size() < mark_.size()) vis_form_at_.resize(mark_.size(), kNone);
@@ -547,7 +546,7 @@ class HullBuilder {
           } else {
             vis_forms_.push_back(facet_form(f, j, p));
           }
-        } else if (vis_form_at_[g] != kNone) {
+        } else if (kStatic && vis_form_at_[g] != kNone) {
           vis_forms_.push_back(negated(vis_forms_[vis_form_at_[g] + l % D]));
         } else {
           vis_forms_.push_back(facet_form(f, j, p));
