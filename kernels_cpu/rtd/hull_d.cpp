@@ -30,6 +30,27 @@ namespace {
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr int kMaxHullDim = 9;  // orientations of up to 10 points (predicates.hpp: lambda_sign; k > 8 host-only)
 
+// The plane forms the builder and the certifier's walks use (plane_form.hpp:
+// an orientation against a fixed tuple as a dot product and a bound): where
+// the static filter has bounds, D <= 7, StaticPlaneForm (one determinant's
+// top levels in plain doubles to build, decided against the per-input static
+// bound `sbound`); beyond, PlaneForm (D minors in ErrDouble to build, its own
+// running bound). form_decides: the form's sign of orient_d(tuple, x), 0
+// where it cannot tell.
+template <int D>
+inline constexpr bool kStaticForm = D <= 7;
+template <int D>
+using FormOf = std::conditional_t<kStaticForm<D>, pred::StaticPlaneForm<(kStaticForm<D> ? D : 2)>, pred::PlaneForm<D>>;
+template <int D>
+int form_decides(const FormOf<D>& form, const double* x, double sbound) {
+  if constexpr (kStaticForm<D>) {
+    return form.sign(x, sbound);
+  } else {
+    (void)sbound;
+    return form.sign(x);
+  }
+}
+
 // An axis-aligned box strictly inside the convex region the facets bound
 // (hull_d's convention: orient_d(facet, x) < 0 inside), or an empty box: the
 // bounding box half-extents `half` about `centre`, scaled by the largest
@@ -169,15 +190,12 @@ class HullBuilder {
   std::vector<std::uint32_t> fn_;              // D links per slot: D t + k across the ridge opposite vertex j
   std::vector<std::vector<Index>> out_;        // outside set per slot
   std::vector<std::array<double, D + 1>> nrm_; // floating-point hyperplane per slot (heuristic)
-  // Plane forms (plane_form.hpp: an orientation against a fixed tuple as a
-  // dot product and a bound). For D <= 7, where the static filter has
-  // bounds, StaticPlaneForm: one determinant's top levels in plain doubles to
-  // build, so every facet gets its own (ff_, built with the facet) and every
-  // visible facet with a few orphans its cone sides. Beyond, PlaneForm (D
-  // minors in ErrDouble to build): only for visible facets with many
-  // orphans. An undecided form asks the predicate.
-  static constexpr bool kStatic = D <= 7;
-  using Form = std::conditional_t<kStatic, pred::StaticPlaneForm<(kStatic ? D : 2)>, pred::PlaneForm<D>>;
+  // Plane forms (FormOf above). Static ones (D <= 7) are cheap to build:
+  // every facet gets its own (ff_, built with the facet) and every visible
+  // facet with a few orphans its cone sides. PlaneForms (beyond): only for
+  // visible facets with many orphans. An undecided form asks the predicate.
+  static constexpr bool kStatic = kStaticForm<D>;
+  using Form = FormOf<D>;
   double sbound_ = HUGE_VAL;  // f_.bound(D + 1, false): the static forms' bound
   std::vector<Form> ff_;      // kStatic: per slot, the facet's form
   std::vector<std::uint32_t> mark_, free_, work_;
@@ -265,15 +283,8 @@ class HullBuilder {
   // orient_d(t, q) by the form of the tuple t (null: none), the predicate
   // where it is undecided; uncounted, safe from parallel pieces
   int form_sign(const Form* form, const Index* t, Index q) const {
-    if (form) {
-      int s;
-      if constexpr (kStatic) {
-        s = form->sign(ps_->point(q), sbound_);
-      } else {
-        s = form->sign(ps_->point(q));
-      }
-      if (s) return s;
-    }
+    if (form)
+      if (const int s = form_decides<D>(*form, ps_->point(q), sbound_)) return s;
     return orient_tuple(t, q);
   }
 
@@ -738,11 +749,9 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   const std::size_t h = facets.size();
   const std::size_t slots = h * (D + 1);  // slot k (D+1) + j: side j of cone k; j = D: facet k itself
   const bool cache = slots <= (std::size_t{1} << 21);
-  // the forms: static ones (plane_form.hpp: StaticPlaneForm, v and the
-  // facets' vertices are input points) where the static filter has bounds,
-  // D <= 7; PlaneForm beyond
-  constexpr bool kStatic = D <= 7;
-  using Form = std::conditional_t<kStatic, pred::StaticPlaneForm<(kStatic ? D : 2)>, pred::PlaneForm<D>>;
+  // the forms (FormOf above; static ones are sound here: v and the facets'
+  // vertices are input points)
+  using Form = FormOf<D>;
   const double sbound = ck.filter.bound(D + 1, false);
   std::vector<Form> form(cache ? slots : 0);
   std::unique_ptr<std::atomic<std::uint8_t>[]> state(cache ? new std::atomic<std::uint8_t>[slots] : nullptr);
@@ -759,14 +768,7 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
   // normal 5D points 213 -> 139 M, 10^5 in the 5D cube 1705 -> 1036 M,
   // 10^5 normal 4D points 92 -> 79 M.
   constexpr std::uint8_t kBuilding = 254, kReady = 255;
-  const int lazy = kStatic || order.size() >= 16 * h ? 1 : 16;
-  auto decide = [&](const Form& f, const double* x) {
-    if constexpr (kStatic) {
-      return f.sign(x, sbound);
-    } else {
-      return f.sign(x);
-    }
-  };
+  const int lazy = kStaticForm<D> || order.size() >= 16 * h ? 1 : 16;
   // orient_d of cone k's side j (j < D) or facet k (j = D) and point q
   auto orient = [&](std::size_t k, int j, Index q) {
     Index t[D];
@@ -788,7 +790,7 @@ std::string points_inside(const Certifier& ck, const std::vector<std::vector<Ind
       }
       if (st == kReady) {
         tsan::acquired(&state[slot]);
-        if (const int s = decide(form[slot], ck.ps.point(q))) return s;
+        if (const int s = form_decides<D>(form[slot], ck.ps.point(q), sbound)) return s;
       }
     }
     return ck.orient(t, q);
