@@ -41,8 +41,8 @@ deps:
 
 # Ninja (make deps installs it) for every build folder this Makefile
 # configures: with CMake's Makefile generator a library's objects wait until
-# the libraries it links are built, and 2 cores sat half idle behind one long
-# file (the fuzz stage's build: 519 s wall for 803 s of compilation; with
+# the libraries it links are built, and one of 2 cores idled behind the last
+# long files (the fuzz stage's build: 519 s wall for 803 s of compilation; with
 # Ninja 383 s, 99 % of both cores; 2026-12-02, stop 65). A folder already
 # configured keeps its generator (CMake refuses another): `make clean` first
 # to switch an old one.

@@ -511,9 +511,10 @@ TEST_CASE("certify_rt3: wrong witnesses and outputs are rejected with their cond
                             << " missing points");
       REQUIRE((missing > 0) == weighted);
 #if defined(__SANITIZE_ADDRESS__)
-      // under ASan one (parallel) thread count: the three certifier runs per
-      // corruption and level were 54 % of this case's 79 s in make asan's
-      // ctest; the Release suite compares the verdicts at 1, 2 and 8 threads
+      // under ASan one (parallel) thread count: the witness certifier's runs
+      // were about half of this case's time there (perf), and the case took
+      // 79 s of make asan's ctest with three counts, 40 s with one; the
+      // Release suite compares the verdicts at 1, 2 and 8 threads
       const std::vector<int> threads = {2};
 #else
       const std::vector<int> threads(std::begin(kThreads), std::end(kThreads));
