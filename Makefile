@@ -112,6 +112,8 @@ python: build
 #       the corpus replays (the fuzz stage replays the corpus first), the
 #       example; the CGAL/Qhull peer wrappers and Catch2's main are compiled
 #       uninstrumented (FLIPFLOP_SANITIZE_THIRD_PARTY=OFF, 330 s of compile),
+#       the peers with make test's Release flags through its ccache, whose
+#       objects they then are (150 s of compile; peers/CMakeLists.txt),
 #       the test drivers at -O0 (FLIPFLOP_TESTS_OPT; the libraries at -O1) and
 #       without UBSan's null and alignment checks (FLIPFLOP_TESTS_FLAGS; the
 #       libraries keep them);
@@ -152,7 +154,9 @@ asan: deps
 #       The [long] cases stay in: their large inputs reach the parallel paths;
 #       but the cuda-omp deterministic sweeps (hull2 125 s, hull3 310 s under
 #       TSan here; make test runs them) — their property, large-input and
-#       rejection tests run the same OpenMP kernels here.
+#       rejection tests run the same OpenMP kernels here. The CGAL/Qhull peers
+#       and Catch2's main uninstrumented, the peers at -O0: no selected case
+#       calls a peer (peers/CMakeLists.txt).
 TSAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull3_witness_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test rt2_witness_test \
               rt3_cpu_test certify_rt3_cpu_test distributed_test rtd_hull_d_test \
@@ -166,6 +170,7 @@ ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/
 tsan: deps
 	@test -n "$(ARCHER)" || { echo "tsan: libarcher.so (libomp-14-dev) not found"; exit 1; }
 	@CC=clang CXX=clang++ cmake $(call generator,build-tsan) -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON -DFLIPFLOP_LONG_TESTS=ON \
+	  -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF -DFLIPFLOP_PEERS_FLAGS=-O0 \
 	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" $(CCCL_ARG) \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan.configure.log 2>&1 || \
 	  { cat build-tsan.configure.log; exit 1; }
