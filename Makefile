@@ -112,8 +112,8 @@ python: build
 #       the corpus replays (the fuzz stage replays the corpus first), the
 #       example, the checked twin of the reference and its 14 *_checked_test
 #       cases (FLIPFLOP_CHECKED_TESTS=OFF: 165 s of compile for 12 s of
-#       tests; make test runs them); the CGAL/Qhull peer wrappers and Catch2's main are compiled
-#       uninstrumented (FLIPFLOP_SANITIZE_THIRD_PARTY=OFF, 330 s of compile),
+#       tests; make test runs them); the CGAL/Qhull peer wrappers and
+#       Catch2's main are compiled uninstrumented (FLIPFLOP_SANITIZE_THIRD_PARTY=OFF, 330 s of compile),
 #       the peers with make test's Release flags through its ccache, whose
 #       objects they then are (150 s of compile; peers/CMakeLists.txt),
 #       the test drivers at -O0 (FLIPFLOP_TESTS_OPT; the libraries at -O1) and
@@ -139,7 +139,8 @@ ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-
 asan: deps
 	@cmake $(call generator,build-asan) -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
 	  -DFLIPFLOP_OMP_KERNELS=OFF -DFLIPFLOP_EXAMPLES=OFF -DFLIPFLOP_FUZZ_REPLAYS=OFF -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF \
-	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=null,alignment" -DFLIPFLOP_MPI=OFF -DFLIPFLOP_CHECKED_TESTS=OFF \
+	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=null,alignment" -DFLIPFLOP_MPI=OFF \
+	  -DFLIPFLOP_CHECKED_TESTS=OFF \
 	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
 	  { cat build-asan.configure.log; exit 1; }
