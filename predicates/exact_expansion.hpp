@@ -1995,6 +1995,7 @@ struct ModEchelon {
       for (int j = 0; j < K; ++j) v[j] = P::cross(g, v[j], f, row[t][j]);
     }
   }
+  FF_HD void reduce_pattern(unsigned long long* v) const { reduce(v); }  // (the walk's zero tests)
   FF_HD bool is_pivot(int c) const {
     bool p = false;
     for (int t = 0; t < K; ++t) p = p || (t < n && piv[t] == c);
@@ -2091,7 +2092,7 @@ FF_HD inline int sos_walk(const T (&m)[K - 1][K - 1], bool sos, Ech& E, unsigned
       if (pivot) {
         T e[W] = {};
         e[c] = T(1);
-        E.reduce(e);
+        E.reduce_pattern(e);  // only which entries are 0 is asked
         if (Ech::first_nonzero(e, kc) < 0) continue;  // e_c in F's row space: F loses rank without c
       }
       const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
@@ -2204,15 +2205,47 @@ struct DblEchelon {
   int piv[W] = {};
   int n = 0;
   static constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
-  FF_HD void reduce(double* v) const {
-    double prev = 1.0;  // 1 / g_{t-1}
+  // Reduces v against rows 0 .. n-1. A step whose factor f = v_{c_t} is 0
+  // only scales v by g_t / g_{t-1}, and a run of such steps by g_b / g_{a-1}
+  // (the quotients telescope), so they are skipped and the scale owed is
+  // paid by the next step with f != 0, whose divisor is then g_{a-1} (a: the
+  // first skipped step): with u the vector before the run, (g_t (g_{t-1} /
+  // g_{a-1}) u_j - (g_{t-1} / g_{a-1}) u_{c_t} row_t[j]) / g_{t-1} = (g_t u_j
+  // - u_{c_t} row_t[j]) / g_{a-1}, the same integer as step by step, from
+  // products of two minors (below H^2 < 2^51: exact, as above). Returns the
+  // factor owed at the end, 1 / g_{a-1} where the last steps were skipped
+  // (the true v is then v g_{n-1} / g_{a-1}), 0 where none is: `exact`
+  // pays it (one rounded product per entry, as a step), the zero tests do
+  // not need it (the factor is not 0). On the lattices' rows, most factors
+  // are 0: 3^5 grid Delaunay, 14 row steps per 7-row walk, most of them
+  // skipped (callgrind below, at DblEchelon's use).
+  FF_HD double reduce_pattern(double* v) const {
+    double prev = 1.0;  // 1 / g_{a-1}
+    bool owed = false;
     for (int t = 0; t < n; ++t) {
-      const double f = v[piv[t]], g = row[t][piv[t]];
+      const double f = v[piv[t]];
+      if (f == 0.0) {
+        owed = true;
+        continue;
+      }
+      const double g = row[t][piv[t]];
       for (int j = 0; j < W; ++j) {
         const double q = (g * v[j] - f * row[t][j]) * prev;
         v[j] = (q + kRound) - kRound;
       }
       prev = inv[t];
+      owed = false;
+    }
+    return owed ? prev : 0.0;
+  }
+  FF_HD void reduce(double* v) const {
+    const double owed = reduce_pattern(v);
+    if (owed != 0.0) {
+      const double g = row[n - 1][piv[n - 1]];  // g_{n-1}
+      for (int j = 0; j < W; ++j) {
+        const double q = (g * v[j]) * owed;
+        v[j] = (q + kRound) - kRound;
+      }
     }
   }
   FF_HD bool is_pivot(int c) const {
@@ -2297,20 +2330,23 @@ FF_HD inline bool small_integer_differences(const double* const* p, const double
     if (!small(w[K - 1])) return false;
     lb -= w[K - 1];
   }
+  // (the base row decided above for the inputs that are not lattices; the
+  // other rows' tests are and-ed, not branched on: on a lattice all pass)
+  bool ok = true;
   for (int i = 0; i < W; ++i) {
     double l = 0.0;
     for (int j = 0; j < ncoord; ++j) {
       const double v = p[i][j];
-      if (!small(v)) return false;
+      ok &= small(v);
       m[i][j] = v - base[j];
       l += v * v;
     }
     if (w) {
-      if (!small(w[i])) return false;
+      ok &= small(w[i]);
       m[i][K - 2] = (l - w[i]) - lb;
     }
   }
-  return true;
+  return ok;
 }
 
 // The walk in binary64 where every minor is small, else on the prime that
