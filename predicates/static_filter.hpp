@@ -340,6 +340,7 @@ class StaticFilter {
     double M = 0.0, W = 0.0;
     int lsb = 0;  // min(L, 0) over every value, L the exponent of its lowest set bit
     bool finite = true;
+    bool small_int = true;  // every value an integer below 2^20 in magnitude
     // from the IEEE 754 bits: a normal x = (2^52 + m) 2^(e - 1075), a
     // subnormal x = m 2^-1074; the lowest set bit of the integer mantissa
     // gives L
@@ -352,6 +353,7 @@ class StaticFilter {
         return;
       }
       mx = std::fmax(mx, std::fabs(x));
+      small_int = small_int && x > -0x1p20 && x < 0x1p20 && x == static_cast<double>(static_cast<long long>(x));
       std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
       if (e != 0) mant |= std::uint64_t{1} << 52;
       if (mant == 0) return;  // a zero
@@ -366,6 +368,7 @@ class StaticFilter {
     // the double-double filter's window (dd_filter.hpp): every value 0 or a
     // multiple of 2^-202 below 2^150 in magnitude
     f.dd_window_ = lsb >= -202 && M < 0x1p150 && W < 0x1p150;
+    f.small_int_ = small_int;
     for (int k = 2; k <= 8; ++k) {
       const int N = k - 1;
       // plain: degree N
@@ -401,6 +404,13 @@ class StaticFilter {
   // magnitude), so its per-call window check can be skipped.
   FF_HD bool dd_window() const { return dd_window_; }
 
+  // Every value is an integer below 2^20 in magnitude (an integer lattice
+  // such as a k^d grid, weights included): the calls' determinants are then
+  // exactly zero more often than not, and lambda_sign_staged goes to the
+  // integer walk (lambda_small_int_sorted) before the float filters, which
+  // cannot decide a zero (staged.hpp, kLatticeFirstK).
+  FF_HD bool small_integers() const { return small_int_; }
+
   // Test hook: every bound multiplied by `factor` (a weakened filter for the
   // sensitivity check of the test suite; never used by the library).
   StaticFilter scaled_for_testing(double factor) const {
@@ -416,6 +426,7 @@ class StaticFilter {
   double plain_[9];
   double lifted_[9];
   bool dd_window_ = false;
+  bool small_int_ = false;
 };
 
 // The plain determinant of det Λ's differences T against a bound derived

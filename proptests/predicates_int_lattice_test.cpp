@@ -48,6 +48,7 @@
 #include <cstdio>
 #include <random>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "predicates/exact.hpp"
@@ -839,11 +840,30 @@ void small_int_calls(std::mt19937_64& g, bool lifted, long (&t)[3]) {
       REQUIRE(e == ge);
       t[2] += ge == 0;
     }
-    // out of the domain: refused
+    // the whole staged path with the filter of these points: small
+    // integers, so the integer walk goes first where K >= kLatticeFirstK
+    // (staged.hpp), the float filters first below; the SoS sign either way
+    auto staged_with_filter = [&] {
+      std::vector<double> flat;
+      for (int i = 0; i < K; ++i) flat.insert(flat.end(), x[i], x[i] + d);
+      const pred::StaticFilter f = pred::StaticFilter::for_points(flat.data(), K, d, wp);
+      return std::make_pair(f.small_integers(), pred::lambda_sign_staged<K>(&f, ids.data(), p, wp));
+    };
+    {
+      const auto [small, sg] = staged_with_filter();
+      REQUIRE(small);
+      REQUIRE(sg == pred::stage::gmp_sos(K, ids.data(), p, wp));
+    }
+    // out of the domain: refused, and no lattice filter
     const double saved = x[0][0];
     for (double v : {0x1p20, -0x1p20, 0.5, std::nan(""), HUGE_VAL}) {
       x[0][0] = v;
       REQUIRE(pred::lambda_small_int_sorted<K>(ids.data(), p, wp) == 2);
+      if (std::isfinite(v)) {
+        const auto [small, sg] = staged_with_filter();
+        REQUIRE_FALSE(small);
+        REQUIRE(sg == pred::stage::gmp_sos(K, ids.data(), p, wp));
+      }
     }
     x[0][0] = saved;
   }
