@@ -145,14 +145,19 @@ FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambd
 // not apply (the integer stage below then decides). 3^5 grid Delaunay
 // (rtd --dim 5, compute + certify, one thread): 1296 -> 1174 M instructions
 // (callgrind) against the scan and build of Λ in int64 before the same walk.
+// `known`: every value is known to be such an integer (the tests skipped).
 template <int K, class Id>
-FF_HD FF_DEVICE_NOINLINE int lambda_small_int_sorted(const Id* ids, const double* const* p, const double* w) {
+FF_HD FF_DEVICE_NOINLINE int lambda_small_int_sorted(const Id* ids, const double* const* p, const double* w,
+                                                     bool known) {
   const double* sp[K];
   double sw[K];
   const int parity = sorted_rows<K>(ids, p, w, sp, sw);
   if (parity == 0) return 0;
   double m[K - 1][K - 1];
-  if (!xp::small_integer_differences<K>(sp, w ? sw : nullptr, m)) return 2;
+  if (known)
+    xp::small_integer_differences<K, true>(sp, w ? sw : nullptr, m);
+  else if (!xp::small_integer_differences<K>(sp, w ? sw : nullptr, m))
+    return 2;
   const int s = xp::int_lattice_sos_dbl_rows<K>(m, ids != nullptr);
   return s == 2 ? 2 : parity * s;
 }
@@ -178,15 +183,17 @@ template <int K, class Id>
 FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const double* const* p, const double* w);
 
 // An input of small integers (StaticFilter::small_integers: a k^d grid)
-// sends its calls of more than kLatticeFirstK rows, and its orientations of
-// kLatticeFirstK rows (orient5d), to the integer walk before the float
-// filters: most of them are exactly degenerate there, which no filter
+// sends its calls of kLatticeFirstK rows or more to the integer walk before
+// the float filters, telling it that every value is a small integer (no
+// per-value tests): most calls are exactly degenerate there, which no filter
 // decides, and the walk decides the others about as cheaply. Callgrind, one
-// thread, `flipflop rtd` compute and certify (2026-12-03): 3^5 grid 1091 ->
-// 1012 M instructions, 2^6 grid 622 -> 542 M, 6^4 grid 1211 -> 1208 M (its
-// power4d calls, 6 rows, stay filters first: with them 1222 M; 5 rows and
-// up: 3^5 1013 M, 6^4 1233 M).
-inline constexpr int kLatticeFirstK = 6;
+// thread, `flipflop rtd` compute and certify (2026-12-03), before -> after:
+// 3^5 grid 1091 -> 936 M instructions, 6^4 grid 1211 -> 1120 M, 2^6 grid
+// 622 -> 505 M. From 6 rows: 6^4 grid 1135 M (its orient4d calls, 5 rows,
+// are degenerate too); without the `known` flag (each value tested): 3^5
+// 1012 M, and the 6^4 grid's power4d calls were cheaper through the filters.
+// Below 5 rows (2D, 3D) the plain filters are a few dozen instructions.
+inline constexpr int kLatticeFirstK = 5;
 
 // The SoS sign of K points on a plane x_c = c0 (a constant coordinate column:
 // det Λ = 0 exactly), rows sorted by id here. The search (xp::sos_search)
@@ -258,7 +265,7 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     // leaves. K = 8 (and 9..11, predicates.cpp lambda_sign_high): only the
     // walk by ranks modulo p, where every minor is below 2^60; the stages
     // below take the rest.
-    if (const int s = lambda_small_int_sorted<K>(ids, p, w); s != 2) return s;
+    if (const int s = lambda_small_int_sorted<K>(ids, p, w, false); s != 2) return s;
     xp::IntScan S;
     if (xp::int_lambda_scan<K>(p, w, S)) {
       if constexpr (K >= 3 && K <= 5) {
@@ -342,8 +349,8 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
   } else {
     if (repeated_id(K, ids)) return 0;
     if constexpr (K >= kLatticeFirstK)
-      if (f && ids && f->small_integers() && (K > kLatticeFirstK || !w))
-        if (const int s = lambda_small_int_sorted<K>(ids, p, w); s != 2) return s;
+      if (f && ids && f->small_integers())
+        if (const int s = lambda_small_int_sorted<K>(ids, p, w, true); s != 2) return s;
     if constexpr (K == 3 || K == 4) {
       // orient2d, orient3d: the static and the permanent filter in one
       // evaluation (static_filter.hpp, plain_filters)
@@ -383,7 +390,7 @@ inline auto with_k(int k, F&& f) {
   EXT template int flat_sign_sorted<K, PointId>(const PointId*, const double* const*, const double*);         \
   EXT template int lambda_exact_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool, \
                                                    bool);                                                     \
-  EXT template int lambda_small_int_sorted<K, PointId>(const PointId*, const double* const*, const double*);  \
+  EXT template int lambda_small_int_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool);  \
   EXT template int lambda_int_build_sorted<K, PointId>(const PointId*, const double* const*, const double*,   \
                                                        const xp::IntScan&);
 // EXT = extern: the declarations; empty: the definitions (predicates.cpp)

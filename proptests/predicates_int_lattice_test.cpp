@@ -246,12 +246,12 @@ void check_call(const LatticeCall& c, Tally& t) {
   // (d) integers below 2^20 straight from the doubles (staged.hpp
   // lambda_small_int_sorted, the walk in binary64): where it applies, the SoS
   // sign; without ids, the exact sign of the rows in the given order
-  const int small = pred::lambda_small_int_sorted<K>(ids, p, w);
+  const int small = pred::lambda_small_int_sorted<K>(ids, p, w, false);
   if (small != 2) {
     RC_ASSERT(small == sos_g);
     ++t.small_int;
   }
-  const int small_exact = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, w);
+  const int small_exact = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, w, false);
   if (small_exact != 2) RC_ASSERT(small_exact == pred::stage::gmp(K, p, w));
   // (c) the whole path after the filters, both instantiations, and the exact stage
   RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids, p, w)) == sos_g);
@@ -827,8 +827,11 @@ void small_int_calls(std::mt19937_64& g, bool lifted, long (&t)[3]) {
       p[i] = x[i];
     }
     const double* wp = lifted ? w : nullptr;
-    const int s = pred::lambda_small_int_sorted<K>(ids.data(), p, wp);
-    const int e = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, wp);
+    const int s = pred::lambda_small_int_sorted<K>(ids.data(), p, wp, false);
+    const int e = pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, wp, false);
+    // told that every value is a small integer (true here): the same answers
+    REQUIRE(pred::lambda_small_int_sorted<K>(ids.data(), p, wp, true) == s);
+    REQUIRE(pred::lambda_small_int_sorted<K>(static_cast<const PointId*>(nullptr), p, wp, true) == e);
     INFO("k " << K << (lifted ? " lifted" : " plain") << " side " << side << " big " << big);
     ++t[0];
     if (s != 2) {
@@ -858,7 +861,7 @@ void small_int_calls(std::mt19937_64& g, bool lifted, long (&t)[3]) {
     const double saved = x[0][0];
     for (double v : {0x1p20, -0x1p20, 0.5, std::nan(""), HUGE_VAL}) {
       x[0][0] = v;
-      REQUIRE(pred::lambda_small_int_sorted<K>(ids.data(), p, wp) == 2);
+      REQUIRE(pred::lambda_small_int_sorted<K>(ids.data(), p, wp, false) == 2);
       if (std::isfinite(v)) {
         const auto [small, sg] = staged_with_filter();
         REQUIRE_FALSE(small);

@@ -12,6 +12,7 @@
 #include "predicates/lambda_filter.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/convex_surface.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -50,6 +51,16 @@ struct Checker {
   Orientation given;
   bool exact = false;  // Level::exact: unperturbed signs (may be 0), weak conditions
   bool furthest = false;  // the furthest-site triangulation: every power sign negated
+  // the static filter of the input's values (every call below is on input
+  // points), set by with_filter(); the default one decides nothing. On an
+  // integer lattice it also sends the calls to the integer walk first
+  // (staged.hpp, kLatticeFirstK).
+  pred::StaticFilter filter;
+  Checker& with_filter() {
+    filter = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), ps.dim,
+                                            ps.weighted ? ps.weights.data() : nullptr);
+    return *this;
+  }
   bool swap_last_two() const { return given == Orientation::volume && d % 2 == 1; }
   pred::Pt P(Index i) const { return {i, ps.point(i)}; }
   pred::WPt W(Index i) const { return {i, ps.point(i), ps.weight(i)}; }
@@ -62,7 +73,10 @@ struct Checker {
       for (int i = 0; i <= d; ++i) rows[i] = p[i].x;
       return pred::orient_d_exact(d, rows);
     }
-    return pred::orient_d(d, p);
+    pred::PointId id[kMaxD + 1];
+    const double* rows[kMaxD + 1];
+    for (int i = 0; i <= d; ++i) id[i] = p[i].id, rows[i] = p[i].x;
+    return pred::lambda_sign(&filter, d + 1, id, rows, nullptr);
   }
   // orient of t with entry i replaced by x
   int orient_with(const std::vector<Index>& t, int i, Index x) const {
@@ -86,7 +100,12 @@ struct Checker {
       }
       return furthest ? -pred::power_d_exact(d, rows, w) : pred::power_d_exact(d, rows, w);
     }
-    return furthest ? -pred::power_d(d, p) : pred::power_d(d, p);
+    pred::PointId id[kMaxD + 2];
+    const double* rows[kMaxD + 2];
+    double w[kMaxD + 2];
+    for (int i = 0; i <= d + 1; ++i) id[i] = p[i].id, rows[i] = p[i].x, w[i] = p[i].w;
+    const int s = pred::lambda_sign(&filter, d + 2, id, rows, w);
+    return furthest ? -s : s;
   }
 };
 
@@ -423,7 +442,8 @@ namespace rtd_detail {
 std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Index>>& positive_simplices) {
   if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2.." + std::to_string(kMaxD);
   if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
-  Checker ck{ps, ps.dim, Orientation::orient_d};
+  Checker ck{ps, ps.dim, Orientation::orient_d, false, false, {}};
+  ck.with_filter();
   Facets F;
   return tiling(ck, positive_simplices, F, ForRange{});
 }
@@ -451,7 +471,8 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
       return Report::fail("canonical-form", "simplices " + simplex_str(S[k - 1]) + " and " + simplex_str(S[k]) +
                                                 " are not sorted or repeat");
   }
-  Checker ck{ps, d, Orientation::volume, exact};
+  Checker ck{ps, d, Orientation::volume, exact, false, {}};
+  ck.with_filter();
   ck.furthest = furthest;
   Facets F;
   if (std::string why = tiling(ck, S, F, for_range); !why.empty()) return fail_from(why);
