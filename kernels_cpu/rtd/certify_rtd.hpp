@@ -11,6 +11,7 @@
 // sequential order is reported).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "reference/certify/certify.hpp"
@@ -19,7 +20,10 @@
 namespace flipflop::cpu {
 
 // threads: worker threads (0: the runtime's default).
+// neighbors: where given and certified, the facet table the certificate
+// matched (certify::rtd's `neighbors`: scipy's Delaunay.neighbors).
 certify::Report certify_rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
-                            certify::Level level = certify::Level::canonical, bool furthest = false, int threads = 0);
+                            certify::Level level = certify::Level::canonical, bool furthest = false, int threads = 0,
+                            std::vector<std::int64_t>* neighbors = nullptr);
 
 }  // namespace flipflop::cpu

@@ -660,9 +660,13 @@ std::pair<HullTuple, std::vector<std::vector<Index>>> hull3_strict(const Points&
 // throws if it fails), then, with strict, its strict view (`rtd --strict`:
 // certified at the exact level, no zero-volume simplex), into (simplices,
 // redundant).
+// neighbors (optional, not with strict): the facet table the certificate
+// matched (certify::rtd's `neighbors`), scipy's neighbors of the simplices.
 void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest, int threads,
-                   std::vector<std::vector<Index>>& simplices, std::vector<Index>& redundant) {
-  check_certified(cpu::certify_rtd(ps, r.simplices, certify::Level::canonical, furthest, threads),
+                   std::vector<std::vector<Index>>& simplices, std::vector<Index>& redundant,
+                   std::vector<std::int64_t>* neighbors = nullptr) {
+  check_certified(cpu::certify_rtd(ps, r.simplices, certify::Level::canonical, furthest, threads,
+                                   strict ? nullptr : neighbors),
                   furthest ? "furthest-site Delaunay" : "Delaunay");
   simplices = std::move(r.simplices);
   redundant = std::move(r.redundant);
@@ -687,8 +691,10 @@ void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest, i
 // neighbors (optional): where the cpu backend's 3D kernel computed the
 // answer (not strict, not furthest), scipy's `neighbors` of the simplices,
 // read off the kernel's certified witness (cpu::rt3_neighbors: linear and
-// parallel; matching the facets of 6.7 million tetrahedra took 2.5 s);
-// otherwise left empty.
+// parallel; matching the facets of 6.7 million tetrahedra took 2.5 s); where
+// certify::rtd certified the answer (d >= 4, furthest-site in any d; not
+// strict), the facet table its certificate matched (the 3^5 grid's
+// _flipflop.neighbors took 6 ms of a 0.12 s Delaunay); otherwise left empty.
 std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::optional<Vector>& w,
                                                    const std::string& backend, bool strict, int threads,
                                                    bool furthest, std::vector<std::int64_t>* neighbors) {
@@ -715,7 +721,7 @@ std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::o
       o.furthest = true;
       o.threads = threads;
       certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps, nullptr, true),
-                    false, true, threads, simplices, redundant);
+                    false, true, threads, simplices, redundant, neighbors);
     } else if (d == 2) {
       cpu::Rt2Options o;
       o.threads = threads;
@@ -764,7 +770,7 @@ std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::o
       cpu::RtdCavityOptions o;
       o.threads = threads;
       certified_rtd(ps, backend == "cpu" ? cpu::rtd_cavity(ps, nullptr, o) : ref::rtd_incremental(ps), strict, false,
-                    threads, simplices, redundant);
+                    threads, simplices, redundant, neighbors);
     }
   }
   return {d == 2 && !furthest ? cells_array(tris, 3)
@@ -789,7 +795,7 @@ std::tuple<IndexArray, IndexArray, std::optional<IndexArray>> triangulate_with_n
   std::optional<IndexArray> out;
   if (!nb.empty()) {
     const std::size_t m = simplices.shape(0);
-    out = index_array(std::move(nb), m, 4);
+    out = index_array(std::move(nb), m, simplices.shape(1));
   }
   return {std::move(simplices), std::move(redundant), std::move(out)};
 }

@@ -17,6 +17,7 @@ and flipflop.Delaunay (issue 39; docs/scipy_porting.md).
 import inspect
 from fractions import Fraction
 import math
+import itertools
 from itertools import combinations
 
 import numpy as np
@@ -173,6 +174,37 @@ def test_3d_neighbors_from_the_kernel_witness_equal_facet_matching():
         for threads in (1, 2):
             t = flipflop.Delaunay(pts, weights=w, threads=threads)
             assert np.array_equal(t.neighbors, _flipflop.neighbors(t.simplices.astype(np.int64)))
+            assert t.neighbors.dtype == np.intc and t.neighbors.shape == t.simplices.shape
+
+
+def test_neighbors_from_the_d_dimensional_certificate_equal_facet_matching():
+    """From 4D on, and for the furthest-site triangulation in every d, the
+    neighbors are the facet table that certify::rtd's certificate matched
+    (returned by triangulate_with_neighbors); they must equal the facet
+    matching of _flipflop.neighbors and the global sort's, on grids (most
+    simplices of zero volume), exact duplicates, weights with redundant
+    points, random points, at 1 and 2 threads; the strict view (no table)
+    still gets them by matching."""
+    from flipflop import _flipflop
+    rng = np.random.default_rng(13)
+    g5 = np.array(list(itertools.product(range(3), repeat=5)), dtype=float)
+    g4 = np.array(list(itertools.product(range(4), repeat=4)), dtype=float)
+    cases = [(g5, None, {}), (g4, None, {}), (np.concatenate([g4, g4[::5]]), None, {}),
+             (rng.random((300, 4)), rng.random(300) * 0.05, {}), (rng.random((120, 5)), None, {}),
+             (rng.random((400, 2)), None, {"furthest_site": True}),
+             (rng.random((300, 3)), None, {"furthest_site": True}),
+             (rng.random((200, 4)), None, {"furthest_site": True}),
+             (g4, None, {"strict": True})]
+    for pts, w, kw in cases:
+        raw = _flipflop.triangulate_with_neighbors(pts, w, "cpu", kw.get("strict", False), 0,
+                                                   kw.get("furthest_site", False))
+        assert (raw[2] is None) == kw.get("strict", False)
+        for threads in (1, 2):
+            t = flipflop.Delaunay(pts, weights=w, threads=threads, **kw)
+            s = t.simplices.astype(np.int64)
+            assert np.array_equal(t.neighbors, _flipflop.neighbors(s))
+            if len(s) < 3000:
+                assert np.array_equal(t.neighbors, _neighbors_by_global_sort(s))
             assert t.neighbors.dtype == np.intc and t.neighbors.shape == t.simplices.shape
 
 

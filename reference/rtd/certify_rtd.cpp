@@ -56,9 +56,10 @@ struct Checker {
   // integer lattice it also sends the calls to the integer walk first
   // (staged.hpp, kLatticeFirstK).
   pred::StaticFilter filter;
-  Checker& with_filter() {
-    filter = pred::StaticFilter::for_points(ps.coords.data(), ps.size(), ps.dim,
-                                            ps.weighted ? ps.weights.data() : nullptr);
+  Checker& with_filter(const Speedups& speedups) {
+    filter = speedups.make_filter ? speedups.make_filter({})
+                                  : pred::StaticFilter::for_points(ps.coords.data(), ps.size(), ps.dim,
+                                                                   ps.weighted ? ps.weights.data() : nullptr);
     return *this;
   }
   bool swap_last_two() const { return given == Orientation::volume && d % 2 == 1; }
@@ -443,7 +444,7 @@ std::string tiling_problem(const PointSet& ps, const std::vector<std::vector<Ind
   if (ps.dim < 2 || ps.dim > kMaxD) return "input-dimension: d must be 2.." + std::to_string(kMaxD);
   if (std::string why = index_problem(positive_simplices, ps.size(), ps.dim); !why.empty()) return why;
   Checker ck{ps, ps.dim, Orientation::orient_d, false, false, {}};
-  ck.with_filter();
+  ck.with_filter(Speedups{});
   Facets F;
   return tiling(ck, positive_simplices, F, ForRange{});
 }
@@ -455,6 +456,11 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
 
 Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest,
            const Speedups& speedups) {
+  return rtd(ps, S, level, furthest, speedups, nullptr);
+}
+
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level level, bool furthest,
+           const Speedups& speedups, std::vector<std::int64_t>* neighbors) {
   const ForRange& for_range = speedups.for_range;
   const int d = ps.dim;
   const bool exact = level == Level::exact;
@@ -472,7 +478,7 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
                                                 " are not sorted or repeat");
   }
   Checker ck{ps, d, Orientation::volume, exact, false, {}};
-  ck.with_filter();
+  ck.with_filter(speedups);
   ck.furthest = furthest;
   Facets F;
   if (std::string why = tiling(ck, S, F, for_range); !why.empty()) return fail_from(why);
@@ -589,6 +595,7 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& S, Level l
       return Report::fail("covers-hull-once", "the simplices' total volume differs from the convex hull's: they "
                                               "cover it more than once");
   }
+  if (neighbors) *neighbors = std::move(F.across);
   return Report::pass();
 }
 

@@ -97,6 +97,7 @@
 #pragma once
 
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "reference/certify/certify.hpp"
@@ -137,6 +138,13 @@ Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices,
 // kernels_cpu/rtd/certify_rtd.hpp runs them on oneTBB).
 Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level, bool furthest,
            const Speedups& speedups);
+// The same, and where the verdict is "certified" and `neighbors` is given,
+// *neighbors = the facet table the certificate matched (condition
+// facet-manifold): (d + 1) entries per simplex, entry i the simplex across
+// the facet opposite simplices[s][i], -1 on the boundary (scipy's
+// Delaunay.neighbors); left unchanged otherwise.
+Report rtd(const PointSet& ps, const std::vector<std::vector<Index>>& simplices, Level level, bool furthest,
+           const Speedups& speedups, std::vector<std::int64_t>* neighbors);
 
 namespace rtd_detail {
 // The structural part (conditions simplex-indices, simplex-orientation,
