@@ -408,7 +408,13 @@ class StaticFilter {
   // such as a k^d grid, weights included): the calls' determinants are then
   // exactly zero more often than not, and lambda_sign_staged goes to the
   // integer walk (lambda_small_int_sorted) before the float filters, which
-  // cannot decide a zero (staged.hpp, kLatticeFirstK).
+  // cannot decide a zero (staged.hpp, kLatticeFirstK). Like the bounds, it
+  // holds only for calls whose values are among the scanned ones (`extra`
+  // included): there the walk is told to skip its per-value tests, so a call
+  // with ids on any other value (an auxiliary point left out of the scan)
+  // must not use this filter — every caller builds its filter over the
+  // values it calls on (convex_surface.cpp rescans with its auxiliary
+  // centre; calls without ids, the unperturbed ones, never take this path).
   FF_HD bool small_integers() const { return small_int_; }
 
   // Test hook: every bound multiplied by `factor` (a weakened filter for the
