@@ -2334,23 +2334,20 @@ FF_HD inline bool small_integer_differences(const double* const* p, const double
     if (!small(w[K - 1])) return false;
     lb -= w[K - 1];
   }
-  // (the base row decided above for the inputs that are not lattices; the
-  // other rows' tests are and-ed, not branched on: on a lattice all pass)
-  bool ok = true;
   for (int i = 0; i < W; ++i) {
     double l = 0.0;
     for (int j = 0; j < ncoord; ++j) {
       const double v = p[i][j];
-      ok &= small(v);
+      if (!small(v)) return false;
       m[i][j] = v - base[j];
       l += v * v;
     }
     if (w) {
-      ok &= small(w[i]);
+      if (!small(w[i])) return false;
       m[i][K - 2] = (l - w[i]) - lb;
     }
   }
-  return ok;
+  return true;
 }
 
 // The walk in binary64 where every minor is small, else on the prime that
