@@ -1,6 +1,8 @@
 // dd_filter.hpp — the double-double filter with an a-priori error bound: the
 // stage of the default path (staged.hpp) after the static and semi-static
-// filters for k = 3..5 points (orient2d/3d/4d, power2d/3d). Near-degenerate
+// filters for k = 3..5 points (orient2d/3d/4d, power2d/3d), and in the
+// exact stage's path for lattices with moved points for k = 6, 7
+// (dd_filter_sign_wide below: another window, tiny values set to 0). Near-degenerate
 // calls (1-3 ulp off a degenerate set) have det Λ of order u times its terms,
 // below what any double filter resolves (the dynamic ErrDouble filter decided
 // 15-76 % of them, at the cost of a running bound), but far above the
@@ -215,6 +217,188 @@ FF_HD FF_FORCEINLINE void dd_filter_entries(const double* const* p, const double
   }
 }
 
+// Six and seven rows (orient5d, orient6d, power4d, power5d; issue 39's
+// lattices with a few points moved by some ulp, whose calls the static and
+// semi-static filters leave to this stage): the same a-priori bound on a
+// narrower window, and values far below it set to 0 with a bound of their own.
+//   * Window: every value kept is 0 or 2^-100 <= |v| < 2^100. Its lowest set
+//     bit is then >= 2^-152 and Range::fits(D) holds for every degree D <= 7
+//     (7 x 101 = 707 <= 950; 7 x (-152) = -1064 >= -1074): err_dd.hpp's
+//     precondition, as above. Entries: differences below 2^101, lifted ones
+//     below 6 x 2^202 + 2^101 < 2^205; per(M) <= 6! 2^(5 x 101 + 205) < 2^720
+//     (no overflow). Along a term at most N + N(N-1)/2 + 4 = 25 (N = 6)
+//     rounded operations: the (1 + 2^-40) above still covers them. dd_beta
+//     is the derivation's β for N = 5, 6 (det_by_minors<N>: the same Laplace
+//     expansion as det_small, in the same operation order): at most 134.
+//   * Tiny values: a nonzero value with |v| < 2^-100 (a lattice's 0 moved by
+//     some ulp is a subnormal) is replaced by 0; t is the largest such |v|.
+//     The filter then decides det T' = det Λ(p') of the points p' so changed,
+//     and det T = det Λ(p) differs from it by at most E = N! N δ (B +
+//     δ)^(N-1), where B bounds every entry of T' and δ every entry of T - T'
+//     (the Leibniz expansion's N! terms each change by at most (B + δ)^N -
+//     B^N <= N δ (B + δ)^(N-1)). A coordinate difference changes by at most
+//     2t (both points' values); a lifted entry Σ_j d_j^2 - Δw by at most
+//     Σ_j |d_j - d'_j| |d_j + d'_j| + 2t <= 2t (1 + 2m (D + t)), D the
+//     largest |d'_j|. B and D come from the magnitudes (each at least its
+//     entry's |value| / (1 + u)^2), rounded up by (1 + 2^-50); N! N <= 2^13;
+//     E's rounded operations (at most 12) are covered by the final (1 +
+//     2^-40), and an underflow of δ (B + δ)^(N-1) (at most 2^-1075) by a
+//     second 2^-1072; an E that overflows is infinite and decides nothing.
+//     With no ones column left (T is translation-invariant) E scales with the
+//     input, so values just below the window next to values just above it
+//     are bounded as tightly as a lattice's moved zeros. The sign is h's when
+//     |h| > (bound + |l| + E)(1 + 2^-40): det T' and det T both have it.
+// The window flag (StaticFilter::dd_window, the 2^±150 window) does not apply
+// here: the test runs per call.
+// Evaluation (the cost: the 6 x 6 Laplace expansion on double-double values
+// took 15,600 instructions a call, a third of the exact stage's): the base row
+// of T is a row whose kept values are all integers where there is one (an
+// unmoved lattice point: swapping it to the last row flips the sign), and
+// T's rows are reordered (the permutation's sign kept) so that the rows of
+// integer entries whose row sums S_i have a product below 2^52 come first.
+// Their levels are computed in binary64: every minor over them and every
+// partial sum of its Laplace expansion is an integer of magnitude at most
+// the permanent of their magnitudes, <= Π S_i < 2^53 — exact. The double-
+// double operations on those exact values (tails 0) would give the same
+// values with tails 0 (two_product and two_sum of exactly representable
+// results), so the evaluation is det_by_minors<N, DDv> on the reordered T
+// value for value, and the bound above holds as derived (per(M) does not
+// depend on the order of the rows). The levels above go on in double-double.
+template <int N, int U, class V>
+FF_HD FF_FORCEINLINE V dd_levels_from(const double* td, const V* tv) {
+  V d[1 << N];
+  if constexpr (U == 0) {
+    for (int j = 0; j < N; ++j) d[1 << j] = tv[j];
+    minors_above<N, 1, V>(tv, d, std::make_integer_sequence<int, (1 << N)>{});
+  } else {
+    double e[1 << N];
+    minor_levels<N, U, double>(td, e);
+    for (int S = 1; S < (1 << N); ++S)
+      if (popcount_small(static_cast<unsigned>(S)) == U) {
+        d[S].h = e[S];
+        d[S].l = 0.0;
+      }
+    if constexpr (U < N) minors_above<N, U, V>(tv, d, std::make_integer_sequence<int, (1 << N)>{});
+  }
+  return d[(1 << N) - 1];
+}
+
+template <int K, bool Fma>
+FF_HD FF_FORCEINLINE int dd_filter_sign_wide(const double* const* p, const double* w) {
+  static_assert(K == 6 || K == 7, "dd_filter_sign_wide: six or seven rows");
+  constexpr int N = K - 1;
+  constexpr double kHi = 0x1p100, kLo = 0x1p-100;
+  const int ncoord = w ? N - 1 : N;
+  double q[K][N];  // coordinates, tiny ones zeroed
+  double qw[K];
+  bool outside = false;
+  double t = 0.0;
+  int base = K - 1;
+  bool base_found = false;
+  auto keep = [&](double v) {
+    const double a = std::fabs(v);
+    outside = outside | !(a < kHi);  // also NaN, inf
+    const bool tiny = a < kLo;
+    t = tiny && a > t ? a : t;
+    return tiny ? 0.0 : v;
+  };
+  for (int i = K - 1; i >= 0; --i) {
+    bool integral = true;
+    for (int j = 0; j < ncoord; ++j) {
+      const double v = keep(p[i][j]);
+      q[i][j] = v;
+      integral = integral && v == std::floor(v);
+    }
+    if (w) {
+      const double v = keep(w[i]);
+      qw[i] = v;
+      integral = integral && v == std::floor(v);
+    }
+    if (integral && !base_found) base = i, base_found = true;
+  }
+  if (outside) return 2;
+  // the base row last: rows K-1 and base exchanged (det Λ changes sign)
+  const double* qp[K];
+  double qws[K];
+  for (int i = 0; i < K; ++i) {
+    const int src = i == base ? K - 1 : i == K - 1 ? base : i;
+    qp[i] = q[src];
+    qws[i] = w ? qw[src] : 0.0;
+  }
+  int parity = base == K - 1 ? 1 : -1;
+  using V = DDv<Fma>;
+  V tm[N * N];
+  Mag m[N * N];
+  dd_filter_entries<K, Fma>(qp, w ? qws : nullptr, tm, m);
+  // the integer rows (tails 0, integer heads) while Π S_i < 2^52, first
+  int order[N], u = 0;
+  {
+    int rest[N], nr = 0;
+    double prod = 1.0;
+    for (int i = 0; i < N; ++i) {
+      bool integral = true;
+      double sum = 0.0;
+      for (int j = 0; j < N; ++j) {
+        const V& e = tm[i * N + j];
+        integral = integral && e.l == 0.0 && e.h == std::floor(e.h);
+        sum += std::fabs(e.h);
+      }
+      if (integral && prod * sum < 0x1p52) {
+        prod *= sum > 1.0 ? sum : 1.0;
+        order[u++] = i;
+      } else {
+        rest[nr++] = i;
+      }
+    }
+    for (int r = 0; r < nr; ++r) order[u + r] = rest[r];
+    int inversions = 0;
+    for (int x = 0; x < N; ++x)
+      for (int y = x + 1; y < N; ++y) inversions += order[x] > order[y];
+    if (inversions & 1) parity = -parity;
+  }
+  V tv[N * N];
+  double td[N * N];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      tv[i * N + j] = tm[order[i] * N + j];
+      td[i * N + j] = tv[i * N + j].h;
+    }
+  V det;
+  switch (u) {
+    case 0: det = dd_levels_from<N, 0, V>(td, tv); break;
+    case 1: det = dd_levels_from<N, 1, V>(td, tv); break;
+    case 2: det = dd_levels_from<N, 2, V>(td, tv); break;
+    case 3: det = dd_levels_from<N, 3, V>(td, tv); break;
+    case 4: det = dd_levels_from<N, 4, V>(td, tv); break;
+    case 5: det = dd_levels_from<N, 5, V>(td, tv); break;
+    default: det = dd_levels_from<N, (N >= 6 ? 6 : 5), V>(td, tv); break;
+  }
+  constexpr double c = dd_beta(N, true) * 0x1p-106;  // (the lifted β covers the plain one)
+  const double per = det_by_minors<N, Mag>(m).v;
+  double tail = 0.0;
+  if (t > 0.0) {
+    // E = N! N δ (B + δ)^(N-1): B from the magnitudes (each >= its entry's
+    // |value| / (1 + u)^2), D the coordinates' part of them, δ as derived
+    double B = 0.0, D = 0.0;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const double v = m[i * N + j].v;
+        B = v > B ? v : B;
+        D = j < ncoord && v > D ? v : D;
+      }
+    B *= 1.0 + 0x1p-50;
+    D *= 1.0 + 0x1p-50;
+    const double delta = w ? 2.0 * t * (1.0 + 2.0 * ncoord * (D + t)) : 2.0 * t;
+    double Bk = 1.0;
+    for (int i = 0; i < N - 1; ++i) Bk *= B + delta;
+    tail = 0x1p13 * delta * Bk + 0x1p-1072;
+  }
+  const double bound = (c * per + std::fabs(det.l) + 0x1p-1072 + tail) * (1.0 + 0x1p-40);
+  if (det.h > bound) return parity;
+  if (-det.h > bound) return -parity;
+  return 0;
+}
+
 // +1 / -1 when certain; 0 when undecided; 2 when an input value lies outside
 // the window (the caller's other filters and exact stages decide). `window`:
 // the caller knows every input value to lie in the window
@@ -224,7 +408,11 @@ FF_HD FF_FORCEINLINE void dd_filter_entries(const double* const* p, const double
 // determinant below instead.
 template <int K, bool Fma = false>
 FF_HD FF_FORCEINLINE int dd_filter_sign(const double* const* p, const double* w, bool window = false) {
-  static_assert(K >= 3 && K <= 5, "the double-double filter serves k = 3..5");
+  static_assert(K >= 3 && K <= 7, "the double-double filter serves k = 3..7");
+  if constexpr (K >= 6) {
+    (void)window;
+    return dd_filter_sign_wide<K, Fma>(p, w);
+  }
   constexpr int N = K - 1;
   constexpr double kHi = 0x1p150, kLo = 0x1p-150;
   const int ncoord = w ? N - 1 : N;
@@ -290,8 +478,8 @@ FF_HD FF_FORCEINLINE int dd_filter_sign(const double* const* p, const double* w,
   constexpr double kPlain = dd_beta(N, false) * 0x1p-106;
   constexpr double kLifted = dd_beta(N, true) * 0x1p-106;
   const double c = w ? kLifted : kPlain;
-  const double per = det_small<N, Mag>(m).v;
-  const V det = det_small<N, V>(t);
+  const double per = det_by_minors<N, Mag>(m).v;  // (det_small for N <= 4)
+  const V det = det_by_minors<N, V>(t);
   const double bound = (c * per + std::fabs(det.l) + 0x1p-1072) * (1.0 + 0x1p-40);
   if (det.h > bound) return 1;
   if (-det.h > bound) return -1;

@@ -86,10 +86,12 @@ FF_HD FF_FORCEINLINE V det_small(const V* t) {
 // run time — the loop over all 2^N subsets per level with a popcount test
 // cost more than the arithmetic for N = 5, 6). Each d[S] is the same
 // expression in the same order as before, so the same value bit for bit.
-template <int N, int R, class V, int S>
+// (Lo: the levels up to Lo are already in d; dd_filter_sign_wide computes
+// them in binary64 where that is exact.)
+template <int N, int R, class V, int S, int Lo = 1>
 FF_HD FF_FORCEINLINE void minor_of_subset(const V* t, V* d) {
   constexpr int r = popcount_small(static_cast<unsigned>(S));
-  if constexpr (r >= 2 && r <= R) {
+  if constexpr (r >= 2 && r > Lo && r <= R) {
     V acc{};  // assigned by the first term (value-initialised: no maybe-uninitialized)
     bool first = true;
     int pos = 0;  // position of column j inside subset S
@@ -113,6 +115,10 @@ FF_HD FF_FORCEINLINE void minor_of_subset(const V* t, V* d) {
 template <int N, int R, class V, int... S>
 FF_HD FF_FORCEINLINE void minors_of_subsets(const V* t, V* d, std::integer_sequence<int, S...>) {
   (minor_of_subset<N, R, V, S>(t, d), ...);
+}
+template <int N, int Lo, class V, int... S>
+FF_HD FF_FORCEINLINE void minors_above(const V* t, V* d, std::integer_sequence<int, S...>) {
+  (minor_of_subset<N, N, V, S, Lo>(t, d), ...);
 }
 
 template <int N, int R, class V>

@@ -492,11 +492,11 @@ namespace stage {
 // latter through the target("fma") clone where the host has FMA, else the
 // same code with the library's fma: the same signs either way).
 int dd_filter(int k, const double* const* p, const double* w, bool fma) {
-  if (k < 3 || k > 5) throw std::invalid_argument("stage::dd_filter: k = 3..5");
+  if (k < 3 || k > 7) throw std::invalid_argument("stage::dd_filter: k = 3..7");
   check_k(k, w);
   auto run = [&](auto K) {
     constexpr int Kv = decltype(K)::value;
-    if constexpr (Kv >= 3 && Kv <= 5) {
+    if constexpr (Kv >= 3 && Kv <= 7) {
       if (!fma) return dd_filter_sign<Kv, false>(p, w);
 #if defined(FLIPFLOP_FMA_DISPATCH)
       if (__builtin_cpu_supports("fma")) return dd_filter_fma<Kv>(p, w);

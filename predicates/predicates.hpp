@@ -246,7 +246,7 @@ namespace stage {
 int static_filter(const StaticFilter& f, int k, const double* const* p, const double* w);
 int semi_static(int k, const double* const* p, const double* w);   // bound from this call's magnitudes
 int dynamic(int k, const double* const* p, const double* w);       // ErrDouble running bound
-int dd_filter(int k, const double* const* p, const double* w, bool fma);  // k = 3..5; 2: outside its window
+int dd_filter(int k, const double* const* p, const double* w, bool fma);  // k = 3..7; 2: outside its window
 int expansion(int k, const double* const* p, const double* w);     // exact, expansion arithmetic
 int expansion_sos(int k, const PointId* ids, const double* const* p, const double* w);
 int gmp(int k, const double* const* p, const double* w);           // exact, GMP (the oracle)
