@@ -146,6 +146,14 @@ FF_HD inline int popcount32(unsigned x) {
 #endif
 }
 
+// The next larger mask with the same number of set bits (Gosper's hack; s
+// nonzero): the subsets of {0..r-1} of one size in ascending order, without
+// scanning all 2^r masks (DoublePrefix, MinorLaplace).
+FF_HD FF_FORCEINLINE unsigned next_same_popcount(unsigned s) {
+  const unsigned t = s | (s - 1u);
+  return (t + 1u) | (((~t & (0u - ~t)) - 1u) >> (ctz64(s) + 1));
+}
+
 // Lowest set bit 2^low and bound |v| < 2^hi of a finite nonzero double
 // (Range::add, int_lambda); false for inf and NaN.
 FF_HD FF_FORCEINLINE bool bit_span(double v, int& low, int& hi) {
@@ -464,22 +472,26 @@ struct DoublePrefix {
     for (int a = 0; a < r; ++a)
       for (int b = a + 1; b < r; ++b) inversions += order[a] > order[b];
     parity = (inversions & 1) ? -1 : 1;
-    int counter[K + 1] = {};
-    for (unsigned s = 0; s < (1u << r); ++s) rank[s] = static_cast<unsigned char>(counter[popcount32(s)]++);
+    // rank: each subset's index among those of its size, in ascending order
+    // (the subsets of one size enumerated by next_same_popcount)
+    const unsigned limit = 1u << r;
+    rank[0] = 0;
+    for (int l = 1; l <= r; ++l) {
+      unsigned char n = 0;
+      for (unsigned s = (1u << l) - 1u; s < limit; s = next_same_popcount(s)) rank[s] = n++;
+    }
     if (u == 0) return 0;
-    const unsigned full = (1u << r) - 1u;
     double dl[2][kLevel];
     for (int j = 0; j < r; ++j) dl[1][rank[1u << j]] = val[order[0]][j];
-    for (int l = 2; l <= u; ++l) {
+    for (int l = 2; l <= u && l <= K; ++l) {  // (u <= r <= K; said for the compiler's K = 1)
       double* cur = dl[l & 1];
       const double* prev = dl[(l - 1) & 1];
       const double* row = val[order[l - 1]];
-      for (unsigned s = 1; s <= full; ++s) {
-        if (popcount32(s) != l) continue;
+      for (unsigned s = (1u << l) - 1u; s < limit; s = next_same_popcount(s)) {
         double d = 0.0;
         int pos = 0;
-        for (int j = 0; j < r; ++j) {
-          if (!(s & (1u << j))) continue;
+        for (unsigned b = s; b != 0; b &= b - 1u) {  // the columns of s, ascending
+          const int j = ctz64(b);
           const double term = row[j] * prev[rank[s & ~(1u << j)]];
           d = (((l - 1 + pos) & 1) != 0) ? d - term : d + term;  // (-1)^((l-1) + pos)
           ++pos;
@@ -487,8 +499,7 @@ struct DoublePrefix {
         cur[rank[s]] = d;
       }
     }
-    for (unsigned s = 1; s <= full; ++s)
-      if (popcount32(s) == u) level[rank[s]] = dl[u & 1][rank[s]];
+    for (unsigned s = (1u << u) - 1u; s < limit; s = next_same_popcount(s)) level[rank[s]] = dl[u & 1][rank[s]];
     return u;
   }
 };
@@ -523,7 +534,7 @@ struct MinorLaplace {
     if (r == 0) return 1;
     // the binary64 prefix (DoublePrefix): the kept entries as doubles where
     // one-component (single[t]: the whole kept row is)
-    double val[K][K];
+    double val[K][K] = {};  // (rows not single stay 0; read only for the prefix rows)
     bool single[K];
     for (int t = 0; t < r; ++t) {
       const int i = kept.ri[t];
@@ -543,8 +554,7 @@ struct MinorLaplace {
         const double d = pre.level[0];
         return parity * ((d > 0.0) - (d < 0.0));
       }
-      for (unsigned s = 1; s <= full; ++s) {
-        if (popcount32(s) != u) continue;
+      for (unsigned s = (1u << u) - 1u; s <= full; s = next_same_popcount(s)) {
         E& d = lev[u & 1][rank[s]];
         d.n = 1;
         d.c[0] = A::from_double(pre.level[rank[s]]);
@@ -564,14 +574,13 @@ struct MinorLaplace {
       E* cur = lev[l & 1];
       const E* prev = lev[(l - 1) & 1];
       const int i = kept.ri[order[l - 1]];
-      for (unsigned s = 1; s <= full; ++s) {
-        if (popcount32(s) != l) continue;
+      for (unsigned s = (1u << l) - 1u; s <= full; s = next_same_popcount(s)) {
         E& d = cur[rank[s]];
         d.n = 1;
         d.c[0] = A::zero();
         int pos = 0;
-        for (int j = 0; j < r; ++j) {
-          if (!(s & (1u << j))) continue;
+        for (unsigned b = s; b != 0; b &= b - 1u) {  // the columns of s, ascending
+          const int j = ctz64(b);
           const E& sub = prev[rank[s & ~(1u << j)]];
           const auto& e = L.a[i][ci[j]];
           const bool negative = ((l - 1 + pos) & 1) != 0;  // (-1)^((l-1) + pos)
