@@ -94,6 +94,24 @@ void write_result_file(const std::string& path, io::Format f, const std::functio
   }
 }
 
+void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
+                       const PointSet& ps, const Index* flat, std::size_t count, std::size_t k, io::CellKind kind,
+                       const std::vector<Index>& marked, bool ascii) {
+  if (f == io::Format::npy) {
+    try {
+      return io::write_file(path, [&](std::ostream& os) { io::write_npy_indices(os, flat, count, k); });
+    } catch (const std::runtime_error& e) {
+      throw UsageError(e.what());
+    }
+  }
+  std::vector<std::vector<Index>> cells;
+  if (f != io::Format::index) {
+    cells.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) cells.emplace_back(flat + i * k, flat + (i + 1) * k);
+  }
+  write_result_file(path, f, index_text, ps, cells, kind, marked, ascii);
+}
+
 namespace {
 // The algorithms the GPU backends (kernels_cuda/, "cuda" and "cuda-omp")
 // compute.

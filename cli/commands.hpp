@@ -71,6 +71,12 @@ io::Format output_format_of(const std::string& path);
 void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
                        const PointSet& ps, const std::vector<std::vector<Index>>& cells, io::CellKind kind,
                        const std::vector<Index>& marked, bool ascii);
+// The same for cells of k vertices stored flat (cell i is flat[i*k ..
+// i*k+k-1]): .npy is written from them directly; other formats build the
+// cells for io::write_cells.
+void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
+                       const PointSet& ps, const Index* flat, std::size_t count, std::size_t k, io::CellKind kind,
+                       const std::vector<Index>& marked, bool ascii);
 
 int run_gen(const GenArgs& a);
 int run_compute(const ComputeArgs& a);

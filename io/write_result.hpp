@@ -72,6 +72,9 @@ void write_cells(const std::string& path, Format f, const PointSet& ps, const st
 // hull), as write_cells writes Format::npy. The cells must all have the same
 // size.
 void write_npy_indices(std::ostream& os, const std::vector<std::vector<Index>>& cells, bool one_cycle);
+// The same (cells, k) array from `count` cells of k vertices stored flat
+// (cell i is flat[i*k .. i*k+k-1]), without a vector per cell.
+void write_npy_indices(std::ostream& os, const Index* flat, std::size_t count, std::size_t k);
 
 // Fan triangulation of convex polygons from their first vertex, leaving out
 // the triangles whose three points are collinear (exact orient test in the

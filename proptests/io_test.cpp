@@ -35,6 +35,7 @@
 #include "reference/certify/certify.hpp"
 #include "io/formats.hpp"
 #include "io/io.hpp"
+#include "io/write_result.hpp"
 
 namespace fs = std::filesystem;
 using namespace flipflop;
@@ -1044,6 +1045,30 @@ TEST_CASE("npy: write_points_npy writes the bytes of the format's definition, re
     const PointSet q = io::read_points(p, ps.dim, ps.weighted);
     RC_ASSERT(same_bits(q.coords, ps.coords));
     RC_ASSERT(same_bits(q.weights, ps.weights));
+  });
+}
+
+TEST_CASE("npy: write_npy_indices, from cells or flat, writes the format's int64 bytes across its buffer") {
+  // up to 3e5 indices: the writer's 1 MiB buffer (131072 numbers) fills
+  // and is flushed at any point of a row
+  rc::prop("cells and flat = independent bytes", [] {
+    const std::size_t k = *rc::gen::inRange<std::size_t>(1, 7);
+    const std::size_t count = *rc::gen::oneOf(rc::gen::inRange<std::size_t>(0, 40),
+                                              rc::gen::inRange<std::size_t>(131072 / k - 3, 300000 / k));
+    const std::uint64_t seed = *rc::gen::arbitrary<std::uint64_t>();
+    std::mt19937_64 rng(seed);
+    std::vector<Index> flat(count * k);
+    for (Index& x : flat) x = static_cast<Index>(rng());
+    std::vector<std::vector<Index>> cells;
+    for (std::size_t i = 0; i < count; ++i) cells.emplace_back(flat.begin() + i * k, flat.begin() + (i + 1) * k);
+    std::string want = npy_bytes({}, "(" + std::to_string(count) + ", " + std::to_string(k) + ")", 1, "<i8");
+    for (Index x : flat)
+      for (int b = 0; b < 8; ++b) want += static_cast<char>((static_cast<std::uint64_t>(x) >> (8 * b)) & 0xff);
+    std::ostringstream a, f;
+    io::write_npy_indices(a, cells, false);
+    io::write_npy_indices(f, flat.data(), count, k);
+    RC_ASSERT(f.str() == want);
+    if (count > 0) RC_ASSERT(a.str() == want);  // (no cells: the cells overload cannot know k)
   });
 }
 
