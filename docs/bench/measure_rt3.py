@@ -52,14 +52,18 @@ write("rt3_1e6.csv", ["job", "flipflop:cpu", "cgal", "cgal:parallel", "qhull", "
       "flipflop bench dt3|rt3 --n 1000000 --reps 3 (degenerate families: 1 run), median seconds, compute only; "
       "cgal: Delaunay_triangulation_3 (dt3) or Regular_triangulation_3 (rt3), :parallel with Parallel_tag on 2 threads")
 
-# dt3 growth 10^5..10^7 (10^7: one run)
+# dt3 growth 10^5..10^7, median of 3 at every size: the first run of a row
+# in a process touches its memory for the first time, which on the
+# development VM costs the host's page backing (0.5-0.7 GB/s against 3 GB/s
+# for memory the process touched before; at 10^7 flipflop's first run took
+# 39.5 s, the next two 23.9 and 25.0 s), so one run measures the row order
 lines = []
 for n in [10**5, 10**6, 10**7]:
-    rows = bench("dt3", ["--dist", "cube", "--n", str(n // M)], "flipflop:cpu," + CGAL_D, "1" if n == 10**7 else None)
+    rows = bench("dt3", ["--dist", "cube", "--n", str(n // M)], "flipflop:cpu," + CGAL_D)
     lines.append([n // M, med(rows, "flipflop:cpu"), med(rows, CGAL_D), med(rows, CGAL_D + ":parallel"),
                   rows[0]["size"]])
 write("dt3_growth.csv", ["n", "flipflop:cpu", CGAL_D, CGAL_D + ":parallel", "tetrahedra"], lines,
-      "dt3 cube, median seconds of 3 (10^7: one run)")
+      "dt3 cube, median seconds of 3")
 
 lines = []
 for kind, n, extra in [("dt3", 10**6, ["--dist", "ball"]), ("rt3", 10**6, ["--dist", "cube", "--weights", "0,1e-3"])]:
