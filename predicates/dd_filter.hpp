@@ -283,8 +283,16 @@ FF_HD FF_FORCEINLINE V dd_levels_from(const double* td, const V* tv) {
   return d[(1 << N) - 1];
 }
 
+// What dd_filter_sign_wide compared, for the sensitivity test of its bound
+// (proptests/filter_sensitivity_test.cpp): the sign is parity x sgn h when
+// |h| > (c per + |l| + 2^-1072 + tail)(1 + 2^-40).
+struct DdWideParts {
+  double h = 0.0, l = 0.0, c_per = 0.0, tail = 0.0;
+  int parity = 1;
+};
+
 template <int K, bool Fma>
-FF_HD FF_FORCEINLINE int dd_filter_sign_wide(const double* const* p, const double* w) {
+FF_HD FF_FORCEINLINE int dd_filter_sign_wide(const double* const* p, const double* w, DdWideParts* parts = nullptr) {
   static_assert(K == 6 || K == 7, "dd_filter_sign_wide: six or seven rows");
   constexpr int N = K - 1;
   constexpr double kHi = 0x1p100, kLo = 0x1p-100;
@@ -394,6 +402,7 @@ FF_HD FF_FORCEINLINE int dd_filter_sign_wide(const double* const* p, const doubl
     tail = 0x1p13 * delta * Bk + 0x1p-1072;
   }
   const double bound = (c * per + std::fabs(det.l) + 0x1p-1072 + tail) * (1.0 + 0x1p-40);
+  if (parts) *parts = {det.h, det.l, c * per, tail, parity};
   if (det.h > bound) return parity;
   if (-det.h > bound) return -parity;
   return 0;
