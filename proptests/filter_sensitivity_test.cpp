@@ -59,8 +59,8 @@
 //               moved by 1-4 ulp (families 4, 5). Soundness: stages "the
 //               double-double filter of 6 and 7 rows" (with the tiny values'
 //               bound left out, falsified there).
-// Not covered here (no targeted set yet): mixed_semi_static_sign (5) (the kernel point's per-call filter
-// of predicates.cpp), the adaptive stages' bounds (xp::orient_adaptive,
+// Not covered here (no targeted set yet): mixed_semi_static_sign (5) (the
+// kernel point's per-call filter of predicates.cpp), the adaptive stages' bounds (xp::orient_adaptive,
 // xp::lifted_adaptive) and the kernels' device copies
 // (kernels_cuda/static_filter.cuh), which share the headers' formulas.
 //
@@ -744,8 +744,8 @@ KernelSearch kernel_search(int restarts, int steps, const Input& orient3d_edge) 
 // (2026-12-04): 96,024 inputs per shape, 49,823-56,750 decided, each equal to
 // GMP, and no input where h has the wrong sign — the climb's binary128
 // estimate cannot steer towards |det Λ| ~ u^2 per, and the moved lattices'
-// integer rows are exact in binary64: not caught by this set (0 below). PlaneForm: ratios 0.39, 0.30, 0.21, 0.17,
-// 0.22, 0.032 for D = 2..7 (4x, 4x, 8x, 8x, 8x, 32x) after its weights were
+// integer rows are exact in binary64: not caught by this set (0 below).
+// PlaneForm: ratios 0.39, 0.30, 0.21, 0.17, 0.22, 0.032 for D = 2..7 (4x, 4x, 8x, 8x, 8x, 32x) after its weights were
 // tightened to (1 + 2u) e_j + (u + γ_D)|n_j| + eta (0.23-0.17 with the former
 // e_j + 2(u + γ_D)|n_j|); for D >= 4 the cofactors' ErrDouble running bounds
 // e_j dominate the weights, and those are caught at 4-16x by the dynamic
