@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -93,7 +94,118 @@ PointSet prefix(const PointSet& ps, std::size_t n) {
   return p;
 }
 
+// the points of ps at the ascending indices `at`, in that order
+PointSet select(const PointSet& ps, const std::vector<Index>& at) {
+  PointSet p;
+  p.dim = ps.dim;
+  std::vector<double> c;
+  for (Index i : at) c.insert(c.end(), ps.point(i), ps.point(i) + ps.dim);
+  p.coords = Values(std::move(c));
+  return p;
+}
+
+// by brute force: nb[k][j] the other facet holding every vertex of facet k
+// but the j-th (kNone-like: the size of fs where there is none)
+Facets neighbours_by_search(const Facets& fs) {
+  Facets nb(fs.size(), std::vector<Index>(fs.empty() ? 0 : fs[0].size(), static_cast<Index>(fs.size())));
+  for (std::size_t k = 0; k < fs.size(); ++k)
+    for (std::size_t j = 0; j < fs[k].size(); ++j)
+      for (std::size_t g = 0; g < fs.size(); ++g) {
+        if (g == k) continue;
+        bool all = true;
+        for (std::size_t c = 0; c < fs[k].size() && all; ++c)
+          all = c == j || std::find(fs[g].begin(), fs[g].end(), fs[k][c]) != fs[g].end();
+        if (all) nb[k][j] = static_cast<Index>(g);
+      }
+  return nb;
+}
+
+// Batches for the in-place insertion properties: a prefix length k that
+// spans R^d (and 0..extra points more, at random), then the ends of the
+// batches after it, ascending, the last ps.size(); nullopt where no prefix
+// spans (the one-shot property covers the rejection).
+std::optional<std::pair<std::size_t, std::vector<std::size_t>>> batches(const PointSet& ps, int d, std::size_t extra,
+                                                                        int max_cuts) {
+  std::size_t k = static_cast<std::size_t>(d) + 1;
+  while (k <= ps.size() && !spans(prefix(ps, k))) ++k;
+  if (k > ps.size()) return std::nullopt;
+  k = std::min(ps.size(), k + *rc::gen::inRange<std::size_t>(0, extra + 1));
+  const auto cuts = *rc::gen::container<std::vector<std::size_t>>(*rc::gen::inRange(0, max_cuts + 1),
+                                                                  rc::gen::inRange<std::size_t>(0, ps.size() + 1));
+  std::vector<std::size_t> at;
+  for (std::size_t c : cuts)
+    if (c > k && c < ps.size()) at.push_back(c);
+  std::sort(at.begin(), at.end());
+  at.push_back(ps.size());
+  return std::make_pair(k, at);
+}
+
+// f is the hull of p: the definition's facets, hull_d's, certified
+void check_hull(const PointSet& p, const Facets& f) {
+  RC_ASSERT(definition_holds(p, f));
+  RC_ASSERT(as_sets(f) == as_sets(cpu::hull_d(p)));
+  RC_ASSERT(cpu::hull_d_problem(p, f).empty());
+}
+
 }  // namespace
+
+TEST_CASE("hull_d: a kernel seeded with a certified hull on its vertices alone, then points added in batches, "
+          "equals the one-shot hull (shrinking)",
+          "[hull_d]") {
+  // Python's ConvexHull(incremental=True): the one-shot hull of the first
+  // k points, the kernel seeded with its facets and neighbours over its
+  // vertices only, then each batch appended to the kernel's points (an
+  // ascending subset of the input's indices: a monotone renumbering)
+  for (int d = 2; d <= 5; ++d)
+    test::prop_scaled("degenerate " + std::to_string(d) + "D sets: seeded kernel + batches == hull_d of all, "
+                                                          "the definition, certified",
+                      d <= 3 ? 8 : 16, [d] {
+                        const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax_of(d), false);
+                        const auto b = batches(ps, d, 5, 4);
+                        if (!b) return;
+                        const auto& [k, at] = *b;
+                        Facets f = cpu::hull_d(prefix(ps, k));
+                        std::vector<Index> keep;
+                        for (const auto& t : f) keep.insert(keep.end(), t.begin(), t.end());
+                        std::sort(keep.begin(), keep.end());
+                        keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+                        for (auto& t : f)
+                          for (Index& i : t) i = static_cast<Index>(std::lower_bound(keep.begin(), keep.end(), i) - keep.begin());
+                        cpu::HullDIncremental inc(select(ps, keep), f, neighbours_by_search(f));
+                        RC_ASSERT(inc.size() == keep.size());
+                        std::size_t last = k;
+                        for (std::size_t n : at) {
+                          for (std::size_t i = last; i < n; ++i) keep.push_back(static_cast<Index>(i));
+                          last = n;
+                          inc.add(select(ps, keep));
+                          Facets g = inc.facets();
+                          for (auto& t : g)
+                            for (Index& i : t) i = keep[i];
+                          check_hull(prefix(ps, n), g);
+                        }
+                      });
+}
+
+TEST_CASE("hull_d: a seed that is not a closed surface of simplices is refused", "[hull_d]") {
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = Values(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+  const Facets f = cpu::hull_d(ps);
+  const Facets nb = neighbours_by_search(f);
+  cpu::HullDIncremental good(ps, f, nb);
+  REQUIRE(as_sets(good.facets()) == as_sets(f));
+  Facets swapped = nb;
+  std::swap(swapped[0][0], swapped[0][1]);
+  REQUIRE_THROWS_AS(cpu::HullDIncremental(ps, f, swapped), std::invalid_argument);
+  REQUIRE_THROWS_AS(cpu::HullDIncremental(ps, Facets(f.begin(), f.end() - 1), Facets(nb.begin(), nb.end() - 1)),
+                    std::invalid_argument);
+  Facets repeated = f;
+  repeated[0][1] = repeated[0][0];
+  REQUIRE_THROWS_AS(cpu::HullDIncremental(ps, repeated, nb), std::invalid_argument);
+  Facets far = f;
+  far[1][2] = 7;
+  REQUIRE_THROWS_AS(cpu::HullDIncremental(ps, far, nb), std::invalid_argument);
+}
 
 TEST_CASE("hull_d: in-place insertion in batches equals the one-shot hull and the definition (shrinking)",
           "[hull_d]") {
@@ -104,26 +216,15 @@ TEST_CASE("hull_d: in-place insertion in batches equals the one-shot hull and th
                       d <= 3 ? 8 : d <= 5 ? 16 : 40, [d] {
                         const int nmax = d == 6 ? 16 : nmax_of(d);
                         const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax, false);
-                        std::size_t k = static_cast<std::size_t>(d) + 1;
-                        while (k <= ps.size() && !spans(prefix(ps, k))) ++k;
-                        if (k > ps.size()) return;  // never spanning: the one-shot property covers the rejection
-                        k = std::min(ps.size(), k + *rc::gen::inRange<std::size_t>(0, 4));
-                        const auto cuts = *rc::gen::container<std::vector<std::size_t>>(
-                            *rc::gen::inRange(0, 6), rc::gen::inRange<std::size_t>(0, ps.size() + 1));
-                        std::vector<std::size_t> at;
-                        for (std::size_t c : cuts)
-                          if (c > k && c < ps.size()) at.push_back(c);
-                        std::sort(at.begin(), at.end());
-                        at.push_back(ps.size());
+                        const auto b = batches(ps, d, 3, 5);
+                        if (!b) return;
+                        const auto& [k, at] = *b;
                         cpu::HullDIncremental inc(prefix(ps, k));
                         for (std::size_t n : at) {
                           const PointSet p = prefix(ps, n);
                           if (n != inc.size()) inc.add(p);
                           RC_ASSERT(inc.size() == n);
-                          const Facets f = inc.facets();
-                          RC_ASSERT(definition_holds(p, f));
-                          RC_ASSERT(as_sets(f) == as_sets(cpu::hull_d(p)));
-                          RC_ASSERT(cpu::hull_d_problem(p, f).empty());
+                          check_hull(p, inc.facets());
                         }
                       });
 }

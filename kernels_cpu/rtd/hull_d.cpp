@@ -173,6 +173,53 @@ class HullBuilder {
     grow();
   }
 
+  // Seeded (HullDIncremental's second constructor) instead of run(): the
+  // hull of ps given as its facets in this builder's convention
+  // (orient_d(facet, x) < 0 inside), each with its static form, and their
+  // neighbours (nb[k][j]: the facet across the ridge opposite vertex j of
+  // facet k), checked to be a closed surface of d-simplices glued along
+  // their ridges; false where they are not. Facet k takes slot k. No
+  // outside sets (every point of ps is on the hull or inside it) and no
+  // inner point yet: add() tests every live facet for its new points until
+  // it discards one.
+  bool seed(const std::vector<std::vector<Index>>& facets, const std::vector<std::vector<Index>>& nb) {
+    const std::size_t m = facets.size();
+    if ((m + 1) * D >= kNone) throw std::length_error("hull (cpu): more facets than 32-bit links hold");
+    // the slots take_slot() would make, at once
+    fv_.resize(m * D);
+    fn_.assign(m * D, kNone);
+    out_.resize(m);
+    nrm_.resize(m);
+    if constexpr (kStatic) ff_.resize(m);
+    mark_.assign(m, 0);
+    for (std::size_t k = 0; k < m; ++k)
+      for (int c = 0; c < D; ++c) fv_[k * D + static_cast<std::size_t>(c)] = facets[k][static_cast<std::size_t>(c)];
+    // the link across ridge j of facet k: g = nb[k][j] holds every vertex of
+    // k but the j-th, and one more at position i; g's link i names k back
+    for (std::uint32_t k = 0; k < m; ++k)
+      for (int j = 0; j < D; ++j) {
+        const Index g = nb[k][static_cast<std::size_t>(j)];
+        if (g >= m || g == k) return false;
+        int i = -1, shared = 0;
+        for (int c = 0; c < D; ++c) {
+          const Index x = fv_[g * D + static_cast<std::uint32_t>(c)];
+          bool in = false;
+          for (int q = 0; q < D; ++q) in = in || (q != j && fv_[k * D + static_cast<std::uint32_t>(q)] == x);
+          if (in)
+            ++shared;
+          else
+            i = c;
+        }
+        if (shared != D - 1 || i < 0 || nb[g][static_cast<std::size_t>(i)] != k) return false;
+        fn_[k * D + static_cast<std::uint32_t>(j)] = g * D + static_cast<std::uint32_t>(i);
+      }
+    if constexpr (kStatic)
+      par_for(m, 512, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t k = lo; k < hi; ++k) ff_[k] = facet_form(static_cast<std::uint32_t>(k), kNone, 0);
+      });
+    return true;
+  }
+
   std::vector<std::vector<Index>> facets() const {
     std::vector<std::vector<Index>> out;
     for (std::uint32_t f = 0; f < fv_.size() / D; ++f)
@@ -928,21 +975,31 @@ struct AnyHull {
 template <int D>
 struct HullOf final : AnyHull {
   HullBuilder<D> b;
-  HullOf(const PointSet& ps, HullDStats& st) : b(ps, st) { b.run(); }
+  using Facets = std::vector<std::vector<Index>>;
+  HullOf(const PointSet& ps, HullDStats& st, const Facets* seed, const Facets* nb) : b(ps, st) {
+    if (!seed)
+      b.run();
+    else if (!b.seed(*seed, *nb))
+      throw std::invalid_argument("hull (cpu): the seed facets and neighbours are not a closed surface of simplices");
+  }
   void add(const PointSet& ps, HullDStats& st) override { b.add(ps, st); }
   std::vector<std::vector<Index>> facets() const override { return b.facets(); }
 };
 
-std::unique_ptr<AnyHull> build_hull(const PointSet& plain, HullDStats& st) {
+// seed, nb: the hull's facets and their neighbours (HullDIncremental's
+// second constructor), or null to build it
+std::unique_ptr<AnyHull> build_hull(const PointSet& plain, HullDStats& st,
+                                    const std::vector<std::vector<Index>>* seed = nullptr,
+                                    const std::vector<std::vector<Index>>* nb = nullptr) {
   switch (plain.dim) {
-    case 2: return std::make_unique<HullOf<2>>(plain, st);
-    case 3: return std::make_unique<HullOf<3>>(plain, st);
-    case 4: return std::make_unique<HullOf<4>>(plain, st);
-    case 5: return std::make_unique<HullOf<5>>(plain, st);
-    case 6: return std::make_unique<HullOf<6>>(plain, st);
-    case 7: return std::make_unique<HullOf<7>>(plain, st);
-    case 8: return std::make_unique<HullOf<8>>(plain, st);
-    default: return std::make_unique<HullOf<9>>(plain, st);
+    case 2: return std::make_unique<HullOf<2>>(plain, st, seed, nb);
+    case 3: return std::make_unique<HullOf<3>>(plain, st, seed, nb);
+    case 4: return std::make_unique<HullOf<4>>(plain, st, seed, nb);
+    case 5: return std::make_unique<HullOf<5>>(plain, st, seed, nb);
+    case 6: return std::make_unique<HullOf<6>>(plain, st, seed, nb);
+    case 7: return std::make_unique<HullOf<7>>(plain, st, seed, nb);
+    case 8: return std::make_unique<HullOf<8>>(plain, st, seed, nb);
+    default: return std::make_unique<HullOf<9>>(plain, st, seed, nb);
   }
 }
 
@@ -967,6 +1024,26 @@ struct HullDIncremental::Impl {
 HullDIncremental::HullDIncremental(const PointSet& ps) : impl_(std::make_unique<Impl>()) {
   const PointSet plain = hull_input(ps);
   impl_->hull = build_hull(plain, impl_->stats);
+  impl_->size = ps.size();
+  impl_->dim = ps.dim;
+}
+
+HullDIncremental::HullDIncremental(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
+                                   const std::vector<std::vector<Index>>& neighbors)
+    : impl_(std::make_unique<Impl>()) {
+  const PointSet plain = hull_input(ps);
+  const std::size_t d = static_cast<std::size_t>(ps.dim);
+  if (facets.size() < d + 1 || neighbors.size() != facets.size())
+    throw std::invalid_argument("hull (cpu): a seed hull needs at least d + 1 facets, each with its neighbours");
+  for (std::size_t k = 0; k < facets.size(); ++k) {
+    const std::vector<Index>& t = facets[k];
+    if (t.size() != d || neighbors[k].size() != d)
+      throw std::invalid_argument("hull (cpu): a seed facet needs d vertices and d neighbours");
+    for (std::size_t c = 0; c < d; ++c)
+      if (t[c] >= ps.size() || std::find(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(c), t[c]) != t.begin() + static_cast<std::ptrdiff_t>(c))
+        throw std::invalid_argument("hull (cpu): a seed facet needs d distinct indices of the points");
+  }
+  impl_->hull = build_hull(plain, impl_->stats, &facets, &neighbors);
   impl_->size = ps.size();
   impl_->dim = ps.dim;
 }

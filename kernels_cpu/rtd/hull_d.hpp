@@ -94,6 +94,16 @@ std::vector<std::vector<Index>> hull_d(const PointSet& ps, HullDStats* stats = n
 class HullDIncremental {
  public:
   explicit HullDIncremental(const PointSet& ps);  // as hull_d(ps), kept
+  // Seeded with the hull of ps, given as facets in hull_d's convention and
+  // their neighbours (neighbors[k][j]: the facet across the ridge opposite
+  // vertex j of facet k) — the caller's certified hull: checked only to be
+  // d distinct in-range indices per facet glued along their ridges
+  // (std::invalid_argument otherwise), so that each result after add() must
+  // be certified as it is anyway. O(facets d^2) and one plane form per
+  // facet, no predicate. For a kernel over the hull's vertices only, whose
+  // points are all on it.
+  HullDIncremental(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
+                   const std::vector<std::vector<Index>>& neighbors);
   ~HullDIncremental();
   HullDIncremental(HullDIncremental&&) noexcept;
   HullDIncremental& operator=(HullDIncremental&&) noexcept;

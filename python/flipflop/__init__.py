@@ -412,10 +412,12 @@ class ConvexHull(_QhullUser):
     its smallest vertex (no zero-area triangle); `polygons` then holds the
     merged facets.
 
-    incremental=True allows add_points(points, restart=False). With the
-    'cpu' backend (and no strict view) the hull is then built, in every
-    dimension, by the d-dimensional hull kernel (kernels_cpu/rtd/hull_d),
-    which is kept: add_points inserts only the new points into it, in
+    incremental=True allows add_points(points, restart=False). The
+    construction is the one-shot call's. With the 'cpu' backend (and no
+    strict view) the first add_points then creates the d-dimensional hull
+    kernel (kernels_cpu/rtd/hull_d) on the certified hull's vertices only —
+    every other point was certified strictly inside, and a hull only grows
+    — and keeps it: each add_points inserts only the new points into it, in
     place, and certifies the result in the canonical form of the one-shot
     call — the same answer byte for byte (the canonical hull does not depend
     on the insertion order; restart changes nothing). With another backend
@@ -450,6 +452,7 @@ class ConvexHull(_QhullUser):
             _backend(backend, _HULL_BACKENDS[d], "ConvexHull")
         self._strict, self._backend, self._threads = bool(strict), backend, _threads(threads, "ConvexHull")
         self._incremental, self._closed = bool(incremental), False
+        self._inc = self._inc_points = None
         self._update(a)
 
     def add_points(self, points, restart: bool = False) -> None:
@@ -473,9 +476,9 @@ class ConvexHull(_QhullUser):
         polygons = None
         # every attribute comes from the compiled call, computed there in one
         # pass over the certified facets (python/src/module.cpp: HullMeasures)
-        if self._incremental and not self._strict and (self._backend or "cpu") == "cpu":
-            inc = _kept(self, "ConvexHull", lambda: _flipflop.IncrementalHull(sub, threads), lambda k: k.add(sub))
-            attributes = inc.attributes() if d <= 3 else _hull_d(sub, "cpu", threads, facets=inc.facets())
+        kept = self._incremental and not self._strict and (self._backend or "cpu") == "cpu"
+        if kept and getattr(self, "_inc_points", None) is not None:
+            attributes = self._kept_hull_add(sub, threads)
         elif d == 2:
             attributes = _native("ConvexHull", _flipflop.hull2, sub, _backend(self._backend, _HULL_BACKENDS[2],
                                                                                 "ConvexHull"), threads)
@@ -489,6 +492,8 @@ class ConvexHull(_QhullUser):
             attributes = _native("ConvexHull", _flipflop.hull3, sub, _backend(self._backend, _HULL_BACKENDS[3],
                                                                                 "ConvexHull"), threads)
         simplices, vertices, neighbors, equations, volume, area = attributes
+        if kept:  # the certified hull's facets, indices into sub, for the next add_points
+            self._inc_points = (len(sub), simplices, neighbors)
         if keep is not None:  # back to the input's indices (a monotone map: the canonical form is kept)
             simplices, vertices = keep[simplices], keep[vertices]
             if polygons is not None:
@@ -508,6 +513,55 @@ class ConvexHull(_QhullUser):
         # scipy's index dtype (np.intc)
         self.simplices, self.vertices, self.neighbors = _intc(simplices), _intc(vertices), _intc(neighbors)
         self.equations, self.volume, self.area, self.good, self.coplanar = equations, volume, area, good, _intc(coplanar)
+
+    def _kept_hull_add(self, sub: np.ndarray, threads: int):
+        """add_points on the kept hull kernel (incremental=True, 'cpu'):
+        the attributes of the hull of sub, whose first n points were
+        certified before with the facets s and their neighbours
+        (self._inc_points: simplices, indices into sub, and neighbors). The kernel (_flipflop.IncrementalHull) holds only
+        what can still matter: at the first add it is seeded with that
+        certified hull on its vertices v alone (no construction: the facets
+        and their links from neighbors), then every add inserts the new points into it in
+        place and certifies the result. Its points are sub[self._inc_index],
+        an ascending subset of sub, so its answer maps back by a monotone
+        renumbering, under which every SoS sign and the canonical form are
+        the same (predicates.hpp; python/src/module.cpp, IncrementalHull,
+        says why the hull of v and the new points is the hull of all of
+        them: every other point was certified strictly inside conv(v), and a
+        hull only grows). Bad input (ValueError) is refused before the
+        kernel changes; any other failure drops the kernel, and the next add
+        seeds it again from the last certified hull."""
+        n, s, nb = self._inc_points
+        d = sub.shape[1]
+        inc = self._inc
+        try:
+            if inc is None:
+                v = np.unique(s)
+                # the kernel's convention, orient_d(facet, x) < 0 inside: the
+                # public simplices with the last two vertices swapped in 2D
+                # ((i, next) counter-clockwise) and in odd d (outward,
+                # det[f1-f0, ..., x-f0] > 0 beyond; _hull_d says why), and
+                # the neighbours' columns with them
+                seed, nb = np.searchsorted(v, s).astype(np.int64), np.array(nb, dtype=np.int64)
+                if d == 2 or d % 2 == 1:
+                    seed[:, -2:], nb[:, -2:] = seed[:, -1:-3:-1], nb[:, -1:-3:-1]
+                inc = _native("ConvexHull", _flipflop.IncrementalHull, np.ascontiguousarray(sub[v]), threads,
+                              np.ascontiguousarray(seed), np.ascontiguousarray(nb))
+                self._inc, self._inc_index = inc, v
+            index = np.concatenate([self._inc_index, np.arange(n, len(sub))])
+            _native("ConvexHull.add_points", inc.add, np.ascontiguousarray(sub[index]))
+        except ValueError:
+            raise
+        except BaseException:
+            self._inc = None
+            raise
+        try:
+            local = inc.attributes() if d <= 3 else _hull_d(sub[index], "cpu", threads, facets=inc.facets())
+        except BaseException:  # the kernel holds the new points: drop it
+            self._inc = None
+            raise
+        self._inc_index = index
+        return (index[local[0]], index[local[1]]) + tuple(local[2:])
 
 
 def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarray] = None):

@@ -1011,6 +1011,41 @@ class IncrementalHull {
     finish(ps);
   }
 
+  // Seeded with the hull of p, certified by the caller (Python's ConvexHull:
+  // its one-shot call's certified hull, on its vertices only): f its facets
+  // in hull_d's convention (orient_d(facet, x) < 0 inside), nb their
+  // neighbours (nb[k][j] across the ridge opposite vertex j). Nothing is
+  // certified here and attributes() / facets() are refused until an add,
+  // whose result is certified on p and the new points (finish(): sound, as
+  // p's hull was certified). On a kernel over the vertices only (every
+  // point of p on the hull), the first add costs O(hull + new points), with
+  // no construction and no ridge matching.
+  IncrementalHull(const Points& p, int threads, const Cells& f, const Cells& nb) : threads_(threads) {
+    const PointSet ps = point_set(p, std::nullopt);
+    const std::size_t d = static_cast<std::size_t>(ps.dim), m = f.shape(0);
+    if (ps.dim < 2 || ps.dim > 9 || f.shape(1) != d || nb.shape(0) != m || nb.shape(1) != d)
+      throw std::invalid_argument("ConvexHull expects points (n, d), d = 2..9, seed facets and neighbours (m, d)");
+    auto rows = [&](const Cells& a, std::size_t bound, const char* what) {
+      std::vector<std::vector<Index>> r(m, std::vector<Index>(d));
+      for (std::size_t k = 0; k < m; ++k)
+        for (std::size_t c = 0; c < d; ++c) {
+          const std::int64_t x = a.data()[k * d + c];
+          if (x < 0 || static_cast<std::size_t>(x) >= bound)
+            throw std::invalid_argument(std::string("ConvexHull: a seed ") + what + " is out of range: " + std::to_string(x));
+          r[k][c] = static_cast<Index>(x);
+        }
+      return r;
+    };
+    const std::vector<std::vector<Index>> facets = rows(f, ps.size(), "facet's point"), neighbors = rows(nb, m, "neighbour");
+    nb::gil_scoped_release nogil;
+    kernel_ = std::make_unique<cpu::HullDIncremental>(ps, facets, neighbors);
+    std::vector<Index> v;
+    for (const auto& t : facets) v.insert(v.end(), t.begin(), t.end());
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    vertices_ = std::move(v);
+  }
+
   // p: the points given so far, unchanged, followed by the new ones.
   void add(const Points& p) {
     const PointSet ps = point_set(p, std::nullopt);
@@ -1022,6 +1057,7 @@ class IncrementalHull {
 
   // 2D and 3D: hull2's / hull3's attribute tuple
   HullTuple attributes() {
+    if (!finished_) throw std::logic_error("ConvexHull: a seeded hull has no attributes before an add");
     if (!facets_.empty()) throw std::logic_error("ConvexHull: attributes() is for 2D and 3D hulls");
     if (!cycle_.empty()) {
       Hull2Attributes a = a2_;
@@ -1032,6 +1068,7 @@ class IncrementalHull {
   }
   // 4D..9D: the certified facets
   IndexArray facets() const {
+    if (!finished_) throw std::logic_error("ConvexHull: a seeded hull has no facets before an add");
     if (facets_.empty()) throw std::logic_error("ConvexHull: facets() is for hulls in 4D..9D");
     return cells_array(facets_, facets_[0].size());
   }
@@ -1040,6 +1077,7 @@ class IncrementalHull {
  private:
   // first: the points certified before (0 at construction: all of ps)
   void finish(const PointSet& ps, std::size_t first = 0) {
+    finished_ = false;
     std::vector<std::vector<Index>> f = kernel_->facets();
     // S' (above): sub[j] the input index of position j, ascending; pos the inverse
     std::vector<Index> sub;
@@ -1103,6 +1141,7 @@ class IncrementalHull {
       vertices_ = std::move(v);
       facets_ = std::move(f);
     }
+    finished_ = true;
   }
 
   int threads_;
@@ -1113,6 +1152,7 @@ class IncrementalHull {
   Hull3Attributes a3_;
   std::vector<std::vector<Index>> facets_;  // 4D..9D
   std::vector<Index> vertices_;             // of the last certified hull, ascending
+  bool finished_ = false;                   // the attributes are those of a certified hull
 };
 
 // neighbors[i][j]: the simplex across the facet opposite vertex j of
@@ -2597,6 +2637,8 @@ NB_MODULE(_flipflop, m) {
       .def("__len__", &IncrementalTriangulation::size);
   nb::class_<IncrementalHull>(m, "IncrementalHull")
       .def(nb::init<const Points&, int>(), nb::arg("points"), nb::arg("threads"))
+      .def(nb::init<const Points&, int, const Cells&, const Cells&>(), nb::arg("points"), nb::arg("threads"),
+           nb::arg("facets"), nb::arg("neighbors"))
       .def("add", &IncrementalHull::add, nb::arg("points"))
       .def("attributes", &IncrementalHull::attributes)
       .def("facets", &IncrementalHull::facets)

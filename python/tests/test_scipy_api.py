@@ -563,12 +563,19 @@ def test_hull_add_points_in_place_equals_one_shot(d):
     qc = "Qc" if d <= 4 else None  # Qc's coplanar points: Python-side, seconds on the 6D cube's 4440 facets
     one = flipflop.ConvexHull(p, qhull_options=qc)
     h = flipflop.ConvexHull(p[:d + 4], incremental=True, qhull_options=qc)
-    kept = h._inc
-    assert kept is not None and len(kept) == d + 4
+    assert h._inc is None  # the construction is the one-shot call's; the first add seeds the kernel
+    kept, held = None, 0
     step = 9 if d <= 4 else 31
     for lo in range(d + 4, len(p), step):
+        vertices, new = len(h.vertices), min(lo + step, len(p)) - lo
         h.add_points(p[lo:lo + step])
-        assert h._inc is kept and len(kept) == min(lo + step, len(p))  # inserted in place, not rebuilt
+        if kept is None:  # seeded with the certified hull's vertices only, then the new points inserted
+            kept = h._inc
+            assert kept is not None and len(kept) == vertices + new
+        else:
+            assert h._inc is kept and len(kept) == held + new  # inserted in place, not rebuilt
+        held = len(kept)
+        assert np.array_equal(h._inc_index, np.unique(h._inc_index))  # an ascending subset: a monotone map
         assert np.array_equal(h.simplices, flipflop.ConvexHull(p[:lo + step]).simplices)
     for name in ("simplices", "vertices", "neighbors", "equations", "coplanar"):  # NaN: zero-area facets
         assert np.array_equal(getattr(h, name), getattr(one, name), equal_nan=name == "equations"), name
@@ -577,18 +584,71 @@ def test_hull_add_points_in_place_equals_one_shot(d):
     assert h._inc is None
 
 
+@pytest.mark.parametrize("d", [2, 3, 4, 5])
+def test_hull_add_points_in_place_with_good_and_inside_points(d):
+    # QGn's hull leaves point n out (the kept kernel's points are a subset of
+    # the others); batches wholly inside the hull (no vertex changes) and
+    # batches that replace every vertex; one-shot answer, good included
+    rng = np.random.default_rng(70 + d)
+    p = np.concatenate([rng.random((30, d)), 0.4 + 0.2 * rng.random((25, d)), 3 * rng.random((25, d)) - 1])
+    for opts in ("QG3", "QG-3", None):
+        h = flipflop.ConvexHull(p[:30], incremental=True, qhull_options=opts)
+        for lo in (30, 42, 55, 70):
+            hi = {30: 42, 42: 55, 55: 70, 70: 80}[lo]
+            before = h.simplices.copy()
+            h.add_points(p[lo:hi])
+            one = flipflop.ConvexHull(p[:hi], qhull_options=opts)
+            for name in ("simplices", "vertices", "neighbors", "equations", "good"):
+                assert np.array_equal(getattr(h, name), getattr(one, name)), (opts, lo, name)
+            if hi <= 55:  # points inside the unit cube's hull: the hull is unchanged
+                assert np.array_equal(h.simplices, before), (opts, lo)
+        h.close()
+        assert h._inc is None
+
+
+def test_hull_seeded_kernel_refuses_what_is_not_a_closed_surface():
+    # the seed is the caller's certified hull, checked only to be glued along
+    # its ridges; a broken one is refused (ValueError), never used
+    from flipflop import _flipflop
+    p = np.random.default_rng(5).random((40, 3))
+    h = flipflop.ConvexHull(p)
+    v = np.unique(h.simplices)
+    seed = np.searchsorted(v, h.simplices).astype(np.int64)
+    seed[:, -2:] = seed[:, -1:-3:-1]
+    nb = np.array(h.neighbors, dtype=np.int64)
+    nb[:, -2:] = nb[:, -1:-3:-1]
+    pv = np.ascontiguousarray(p[v])
+    k = _flipflop.IncrementalHull(pv, 0, seed, nb)
+    with pytest.raises(RuntimeError):  # nothing certified before an add
+        k.attributes()
+    k.add(np.concatenate([pv, [[0.5, 0.5, 0.5], [2.0, 2.0, 2.0]]]))
+    full = flipflop.ConvexHull(np.concatenate([pv, [[0.5, 0.5, 0.5], [2.0, 2.0, 2.0]]]))
+    assert np.array_equal(k.attributes()[0], full.simplices)
+    bad_nb = nb.copy()
+    bad_nb[0, 0], bad_nb[0, 1] = bad_nb[0, 1], bad_nb[0, 0]
+    bad_seed = seed.copy()
+    bad_seed[1, 0] = seed[0, 0] if seed[1, 0] != seed[0, 0] else seed[0, 1]
+    for s_, n_ in ((seed, bad_nb), (bad_seed, nb), (seed[:-1], nb[:-1]), (seed + len(v), nb)):
+        with pytest.raises(ValueError):
+            _flipflop.IncrementalHull(pv, 0, np.ascontiguousarray(s_), np.ascontiguousarray(n_))
+
+
 @pytest.mark.parametrize("cls, recomputing", [(flipflop.Delaunay, ({"backend": "reference"},)),
                                                (flipflop.ConvexHull, ({"backend": "reference"}, {"strict": True}))])
 def test_add_points_bad_input_keeps_the_kept_kernel(cls, recomputing):
     p = np.random.default_rng(9).random((40, 3))
     h = cls(p[:10], incremental=True)
+    if cls is flipflop.ConvexHull:  # its kernel is seeded at the first add: an empty one
+        h.add_points(p[10:10])
+        assert h._inc is not None
     kept, before = h._inc, h.simplices.copy()
+    held = len(kept)
     for bad_value in (np.nan, np.inf):
         bad = p[10:20].copy()
         bad[4, 0] = bad_value
         with pytest.raises(ValueError):
             h.add_points(bad)
-        assert h._inc is kept and len(kept) == 10 and np.array_equal(h.simplices, before) and h.npoints == 10
+        assert h._inc is kept and len(kept) == held and np.array_equal(h.simplices, before) and h.npoints == 10
     h.add_points(p[10:])
     assert h._inc is kept and np.array_equal(h.simplices, cls(p).simplices)
     for kw in recomputing:  # these recompute: the same answer
