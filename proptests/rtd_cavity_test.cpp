@@ -24,6 +24,7 @@
 
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/neighbours.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
@@ -106,13 +107,30 @@ PointSet prefix(const PointSet& ps, std::size_t n) {
   return p;
 }
 
+// the flat seed of RtdCavityIncremental's second constructor: the cells and
+// their neighbours (by test::neighbours_by_search unless given)
+struct FlatSeed {
+  std::vector<Index> cells;
+  std::vector<std::int64_t> nb;
+};
+FlatSeed flat_seed(const std::vector<std::vector<Index>>& cells, std::vector<std::vector<std::int64_t>> nb = {}) {
+  if (nb.empty()) nb = test::neighbours_by_search(cells);
+  FlatSeed f;
+  for (const auto& c : cells) f.cells.insert(f.cells.end(), c.begin(), c.end());
+  for (const auto& row : nb) f.nb.insert(f.nb.end(), row.begin(), row.end());
+  return f;
+}
+
 // In-place insertion in batches: built from the shortest spanning prefix or a
 // longer one, then the rest in `cuts` batches; after every batch the
 // answer equals the one-shot kernel on the points so far, and at the end the
-// reference on all of them, certified; the counters add up.
+// reference on all of them, certified; the counters add up. seeded: the
+// kernel is seeded with the one-shot kernel's answer on the prefix and the
+// neighbours found by search (Python's Delaunay(incremental=True) in 2D and
+// 3D: the one-shot kernels' certified answer, then in-place adds).
 template <class Assert>
 void check_batches(const PointSet& ps, bool furthest, const std::vector<std::size_t>& cuts, std::size_t start_extra,
-                   const Assert& require) {
+                   const Assert& require, bool seeded = false) {
   std::size_t k = static_cast<std::size_t>(ps.dim) + 1;
   while (k <= ps.size() && !dimension_problem(prefix(ps, k)).empty()) ++k;
   if (k > ps.size()) return;  // lower-dimensional: the one-shot test covers the rejection
@@ -120,8 +138,11 @@ void check_batches(const PointSet& ps, bool furthest, const std::vector<std::siz
   cpu::RtdCavityOptions o;
   o.furthest = furthest;
   o.threads = 1;
-  cpu::RtdCavityIncremental inc(prefix(ps, k), o);
-  require(text_of(inc.result()) == text_of(cpu::rtd_cavity(prefix(ps, k), nullptr, o)));
+  const ref::Rtd first = cpu::rtd_cavity(prefix(ps, k), nullptr, o);
+  const FlatSeed seed = seeded ? flat_seed(first.simplices) : FlatSeed{};
+  cpu::RtdCavityIncremental inc = seeded ? cpu::RtdCavityIncremental(prefix(ps, k), seed.cells, seed.nb, o)
+                                         : cpu::RtdCavityIncremental(prefix(ps, k), o);
+  require(text_of(inc.result()) == text_of(first));
   std::vector<std::size_t> at;
   for (std::size_t c : cuts)
     if (c > k && c < ps.size()) at.push_back(c);
@@ -138,10 +159,63 @@ void check_batches(const PointSet& ps, bool furthest, const std::vector<std::siz
   require(text_of(r) == ref_text(ps, furthest));
   require(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest).ok);
   const cpu::RtdCavityStats st = inc.stats();
-  require(st.inserted + st.discarded == ps.size());
+  require(st.inserted + st.discarded == (seeded ? ps.size() - k : ps.size()));  // a seed inserts nothing
 }
 
 }  // namespace
+
+TEST_CASE("rtd cavity: a kernel seeded with a certified triangulation, then points added in batches, equals the "
+          "one-shot kernel and the reference (shrinking)",
+          "[rtd_cavity]") {
+  for (int d = 2; d <= 5; ++d)
+    for (bool weighted : {false, true})
+      test::prop_scaled("degenerate " + std::to_string(d) + "D sets, " + (weighted ? "weighted" : "unweighted") +
+                            ": seeded kernel + batches == rtd_cavity == RT+1, certified",
+                        d <= 3 ? 8 : 16, [d, weighted] {
+                          const PointSet ps = *test::degenerate_points_d(d, d + 1, nmax_of(d), weighted);
+                          const auto cuts = *rc::gen::container<std::vector<std::size_t>>(
+                              *rc::gen::inRange(0, 5), rc::gen::inRange<std::size_t>(0, ps.size() + 1));
+                          check_batches(ps, false, cuts, *rc::gen::inRange<std::size_t>(0, 6),
+                                        [](bool ok) { RC_ASSERT(ok); }, true);
+                        });
+}
+
+TEST_CASE("rtd cavity: a seed that is not a triangulation glued along its facets is refused", "[rtd_cavity]") {
+  PointSet ps;
+  ps.dim = 2;
+  ps.coords = Values(std::vector<double>{0, 0, 1, 0, 0, 1, 1, 1, 0.25, 0.5});
+  const ref::Rtd r = cpu::rtd_cavity(ps);
+  const auto nb = test::neighbours_by_search(r.simplices);
+  const FlatSeed good = flat_seed(r.simplices, nb);
+  cpu::RtdCavityIncremental kept(ps, good.cells, good.nb);
+  REQUIRE(text_of(kept.result()) == text_of(r));
+  auto refused = [&](const std::vector<std::vector<Index>>& cells, const std::vector<std::vector<std::int64_t>>& n) {
+    const FlatSeed f = flat_seed(cells, n);
+    REQUIRE_THROWS_AS(cpu::RtdCavityIncremental(ps, f.cells, f.nb), std::invalid_argument);
+  };
+  auto swapped = nb;
+  std::swap(swapped[0][0], swapped[0][1]);
+  refused(r.simplices, swapped);
+  auto beyond = nb;  // a neighbour that is not a simplex
+  beyond[0][0] = static_cast<std::int64_t>(r.simplices.size());
+  refused(r.simplices, beyond);
+  auto open = nb;  // one side of an inner edge claimed on the hull: the other names it still
+  const auto inner = std::find_if(open[0].begin(), open[0].end(), [](std::int64_t g) { return g >= 0; });
+  REQUIRE(inner != open[0].end());
+  *inner = -1;
+  refused(r.simplices, open);
+  auto repeated = r.simplices;
+  repeated[0][1] = repeated[0][0];
+  refused(repeated, nb);
+  auto far = r.simplices;
+  far[0][2] = 9;
+  refused(far, nb);
+  cpu::RtdCavityOptions furthest;
+  furthest.furthest = true;
+  REQUIRE_THROWS_AS(cpu::RtdCavityIncremental(ps, good.cells, good.nb, furthest), std::invalid_argument);
+  REQUIRE_THROWS_AS(cpu::RtdCavityIncremental(ps, std::vector<Index>(good.cells.begin(), good.cells.end() - 1), good.nb),
+                    std::invalid_argument);
+}
 
 TEST_CASE("rtd cavity: degenerate and random sets in 2D..5D equal the reference, certified (shrinking)",
           "[rtd_cavity]") {

@@ -24,6 +24,7 @@
 #include "kernels_cpu/rtd/hull_d.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/families.hpp"
+#include "proptests/support/neighbours.hpp"
 #include "proptests/support/rc_scaled.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/rt_incremental.hpp"
@@ -104,19 +105,15 @@ PointSet select(const PointSet& ps, const std::vector<Index>& at) {
   return p;
 }
 
-// by brute force: nb[k][j] the other facet holding every vertex of facet k
-// but the j-th (kNone-like: the size of fs where there is none)
-Facets neighbours_by_search(const Facets& fs) {
-  Facets nb(fs.size(), std::vector<Index>(fs.empty() ? 0 : fs[0].size(), static_cast<Index>(fs.size())));
-  for (std::size_t k = 0; k < fs.size(); ++k)
-    for (std::size_t j = 0; j < fs[k].size(); ++j)
-      for (std::size_t g = 0; g < fs.size(); ++g) {
-        if (g == k) continue;
-        bool all = true;
-        for (std::size_t c = 0; c < fs[k].size() && all; ++c)
-          all = c == j || std::find(fs[g].begin(), fs[g].end(), fs[k][c]) != fs[g].end();
-        if (all) nb[k][j] = static_cast<Index>(g);
-      }
+// the facets' neighbours (test::neighbours_by_search; every ridge of a
+// closed surface has one, so none is -1 there; -1 would not fit an Index and
+// is refused as out of range)
+Facets neighbours_of(const Facets& fs) {
+  Facets nb;
+  for (const auto& row : test::neighbours_by_search(fs)) {
+    nb.emplace_back();
+    for (std::int64_t g : row) nb.back().push_back(static_cast<Index>(g < 0 ? fs.size() : static_cast<std::size_t>(g)));
+  }
   return nb;
 }
 
@@ -171,7 +168,7 @@ TEST_CASE("hull_d: a kernel seeded with a certified hull on its vertices alone, 
                         keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
                         for (auto& t : f)
                           for (Index& i : t) i = static_cast<Index>(std::lower_bound(keep.begin(), keep.end(), i) - keep.begin());
-                        cpu::HullDIncremental inc(select(ps, keep), f, neighbours_by_search(f));
+                        cpu::HullDIncremental inc(select(ps, keep), f, neighbours_of(f));
                         RC_ASSERT(inc.size() == keep.size());
                         std::size_t last = k;
                         for (std::size_t n : at) {
@@ -191,7 +188,7 @@ TEST_CASE("hull_d: a seed that is not a closed surface of simplices is refused",
   ps.dim = 3;
   ps.coords = Values(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
   const Facets f = cpu::hull_d(ps);
-  const Facets nb = neighbours_by_search(f);
+  const Facets nb = neighbours_of(f);
   cpu::HullDIncremental good(ps, f, nb);
   REQUIRE(as_sets(good.facets()) == as_sets(f));
   Facets swapped = nb;

@@ -82,6 +82,66 @@ class Builder {
     insert_range(W, st);
   }
 
+  // Seeded (RtdCavityIncremental's second constructor) instead of run():
+  // the positions are the input indices (the Builder was made with the
+  // identity order), `simplices` the caller's real simplices, positively
+  // oriented in the output's convention (canonical_d.hpp: volume), slot k
+  // for simplex k, and nb[k][j] the simplex across the
+  // facet opposite corner j (-1: a hull facet), checked to glue the
+  // simplices along their facets (false where they do not). Each hull
+  // facet, opposite corner i of simplex t, gets the virtual simplex of
+  // start()'s rule (t's tuple with corner i := v and two other corners
+  // swapped), linked to t across it and to the other virtual simplices
+  // across its other facets by link_cone, as an insertion's cone.
+  bool seed(const Index* simplices, const std::int64_t* nb, std::size_t m, RtdCavityStats& st) {
+    if ((m + 1) * W >= kDead) throw std::length_error("rtd (cpu): more simplices than 32-bit neighbour links hold");
+    tv_.resize(m * W);
+    tn_.assign(m * W, kDead);
+    mark_.assign(m, 0);
+    for (std::size_t k = 0; k < m; ++k) {
+      for (int j = 0; j < W; ++j) tv_[k * W + static_cast<std::size_t>(j)] = simplices[k * W + static_cast<std::size_t>(j)];
+      // the output's (volume) convention to the predicates' (orient_d):
+      // the last two swapped in odd d (canonical_d.hpp), nb's columns alike
+      if (D % 2 == 1) std::swap(tv_[k * W + D - 1], tv_[k * W + D]);
+    }
+    auto neighbour = [&](std::size_t t, int j) {
+      return nb[t * W + static_cast<std::size_t>(D % 2 == 1 && j >= D - 1 ? 2 * D - 1 - j : j)];
+    };
+    cavity_.clear();
+    horizon_.clear();
+    for (std::uint32_t t = 0; t < m; ++t)
+      for (int j = 0; j < W; ++j) {
+        const std::int64_t u = neighbour(t, j);
+        if (u < 0) {  // a hull facet: its virtual simplex
+          horizon_.push_back(virtual_over(simplex(t), j, t));
+          continue;
+        }
+        if (static_cast<std::uint64_t>(u) >= m || static_cast<std::uint32_t>(u) == t) return false;
+        // u holds every corner of t but the j-th, and one more at corner i,
+        // across which it names t back
+        int i = -1, shared = 0;
+        for (int c = 0; c < W; ++c) {
+          const std::uint32_t x = tv_[static_cast<std::size_t>(u) * W + static_cast<std::size_t>(c)];
+          bool in = false;
+          for (int q = 0; q < W; ++q) in = in || (q != j && tv_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(q)] == x);
+          if (in)
+            ++shared;
+          else
+            i = c;
+        }
+        if (shared != D || i < 0 || neighbour(static_cast<std::size_t>(u), i) != t) return false;
+        tn_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(j)] = static_cast<std::uint32_t>(u) * W + static_cast<std::uint32_t>(i);
+      }
+    if (horizon_.size() < static_cast<std::size_t>(W)) return false;  // a closed hull has at least D+1 facets
+    try {
+      link_cone(st);
+    } catch (const std::logic_error&) {  // a hull ridge not in exactly two hull facets
+      return false;
+    }
+    last_ = 0;
+    return true;
+  }
+
   // In-place insertion of more points (RtdCavityIncremental::add): ps holds
   // the points given so far followed by the new ones, `order` the new ones'
   // input indices in insertion order. The static filter is recomputed over
@@ -246,10 +306,24 @@ class Builder {
     return static_cast<std::uint32_t>(s);
   }
 
+  // The cone entry of the virtual simplex over facet i of the positive real
+  // simplex t (tuple r): r with corner i := v and two other corners swapped,
+  // so that replacing v by a point beyond facet i gives a positive tuple
+  // (make_simplex's rule), linked to t across facet i.
+  Horizon virtual_over(const std::uint32_t* r, int i, std::uint32_t t) const {
+    Horizon h;
+    for (int j = 0; j < W; ++j) h.v[j] = r[j];
+    h.v[i] = V_;
+    const int j1 = i == 0 ? 1 : 0, j2 = (i == 0 || i == 1) ? 2 : 1;
+    std::swap(h.v[j1], h.v[j2]);
+    h.i = i;
+    h.out = t * W + static_cast<std::uint32_t>(i);
+    return h;
+  }
+
   // The first simplex (positions 0..D: distinct indices, never flat under
-  // SoS), made positive, and its D+1 virtual simplices (v, facet i): the real
-  // tuple with corner i := v and two other corners swapped, so that replacing
-  // v by a point beyond facet i gives a positive tuple (make_simplex's rule).
+  // SoS), made positive, and its D+1 virtual simplices (v, facet i):
+  // virtual_over's.
   void start(RtdCavityStats& st) {
     std::uint32_t r[W];
     for (int j = 0; j < W; ++j) r[j] = static_cast<std::uint32_t>(j);
@@ -258,16 +332,7 @@ class Builder {
     for (int j = 0; j < W; ++j) tv_[static_cast<std::size_t>(t0) * W + static_cast<std::size_t>(j)] = r[j];
     cavity_.clear();
     horizon_.clear();
-    for (int i = 0; i < W; ++i) {
-      Horizon h;
-      for (int j = 0; j < W; ++j) h.v[j] = r[j];
-      h.v[i] = V_;
-      const int j1 = i == 0 ? 1 : 0, j2 = (i == 0 || i == 1) ? 2 : 1;
-      std::swap(h.v[j1], h.v[j2]);
-      h.i = i;
-      h.out = t0 * W + static_cast<std::uint32_t>(i);
-      horizon_.push_back(h);
-    }
+    for (int i = 0; i < W; ++i) horizon_.push_back(virtual_over(r, i, t0));
     link_cone(st);
     last_ = t0;
     st.inserted = W;
@@ -404,12 +469,25 @@ struct AnyBuilder {
   virtual ref::Rtd output() const = 0;
 };
 
+std::vector<Index> identity_order(std::size_t n) {
+  std::vector<Index> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<Index>(i);
+  return order;
+}
+
 template <int D>
 struct BuilderOf final : AnyBuilder {
   Builder<D> b;
   BuilderOf(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st)
       : b(ps, insertion_order<D>(ps, 0, o), o.furthest) {
     b.run(st);
+  }
+  // seeded (RtdCavityIncremental's second constructor)
+  BuilderOf(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st, const Index* simplices,
+            const std::int64_t* nb, std::size_t m)
+      : b(ps, identity_order(ps.size()), o.furthest) {
+    if (!b.seed(simplices, nb, m, st))
+      throw std::invalid_argument("rtd (cpu): the seed simplices and neighbours are not a closed triangulation");
   }
   void append(const PointSet& ps, std::size_t first, const RtdCavityOptions& o, RtdCavityStats& st) override {
     b.append(ps, insertion_order<D>(ps, first, o), st);
@@ -428,6 +506,12 @@ std::unique_ptr<AnyBuilder> build(const PointSet& ps, const RtdCavityOptions& o,
     case 8: return std::make_unique<BuilderOf<8>>(ps, o, st);
     default: return std::make_unique<BuilderOf<9>>(ps, o, st);
   }
+}
+
+template <int D>
+std::unique_ptr<AnyBuilder> seeded(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st,
+                                   const Index* simplices, const std::int64_t* nb, std::size_t m) {
+  return std::make_unique<BuilderOf<D>>(ps, o, st, simplices, nb, m);
 }
 
 void check_size(const PointSet& ps) {
@@ -466,6 +550,39 @@ RtdCavityIncremental::RtdCavityIncremental(const PointSet& ps, const RtdCavityOp
   check_size(ps);
   impl_->options = options;
   impl_->builder = build(ps, options, impl_->stats);
+  impl_->size = ps.size();
+  impl_->dim = ps.dim;
+  impl_->weighted = ps.weighted;
+}
+
+RtdCavityIncremental::RtdCavityIncremental(const PointSet& ps, const std::vector<Index>& simplices,
+                                           const std::vector<std::int64_t>& neighbors, const RtdCavityOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  ref::validate_rtd_input(ps);
+  check_size(ps);
+  if (options.furthest) throw std::invalid_argument("rtd (cpu): a seeded triangulation is not furthest-site");
+  const std::size_t w = static_cast<std::size_t>(ps.dim) + 1, m = simplices.size() / w;
+  if (m == 0 || simplices.size() != m * w || neighbors.size() != simplices.size())
+    throw std::invalid_argument("rtd (cpu): a seed needs its simplices, d + 1 corners and d + 1 neighbours each");
+  for (std::size_t k = 0; k < m; ++k) {
+    const Index* t = simplices.data() + k * w;
+    for (std::size_t c = 0; c < w; ++c)
+      if (t[c] >= ps.size() || std::find(t, t + c, t[c]) != t + c)
+        throw std::invalid_argument("rtd (cpu): a seed simplex needs d + 1 distinct indices of the points");
+  }
+  impl_->options = options;
+  const Index* s = simplices.data();
+  const std::int64_t* nb = neighbors.data();
+  switch (ps.dim) {
+    case 2: impl_->builder = seeded<2>(ps, options, impl_->stats, s, nb, m); break;
+    case 3: impl_->builder = seeded<3>(ps, options, impl_->stats, s, nb, m); break;
+    case 4: impl_->builder = seeded<4>(ps, options, impl_->stats, s, nb, m); break;
+    case 5: impl_->builder = seeded<5>(ps, options, impl_->stats, s, nb, m); break;
+    case 6: impl_->builder = seeded<6>(ps, options, impl_->stats, s, nb, m); break;
+    case 7: impl_->builder = seeded<7>(ps, options, impl_->stats, s, nb, m); break;
+    case 8: impl_->builder = seeded<8>(ps, options, impl_->stats, s, nb, m); break;
+    default: impl_->builder = seeded<9>(ps, options, impl_->stats, s, nb, m); break;
+  }
   impl_->size = ps.size();
   impl_->dim = ps.dim;
   impl_->weighted = ps.weighted;

@@ -85,6 +85,22 @@ class RtdCavityIncremental {
  public:
   // As rtd_cavity(ps, ..., options), kept.
   explicit RtdCavityIncremental(const PointSet& ps, const RtdCavityOptions& options = {});
+  // Seeded with the regular triangulation of ps, the caller's certified
+  // one: its real simplices, d + 1 corners each in one flat array,
+  // positively oriented in the output's convention (det[p1-p0, ..., pd-p0]
+  // > 0: the canonical form's, canonical_d.hpp), and neighbors[k (d+1) + j],
+  // the simplex across the facet opposite corner j of simplex k (-1: a hull
+  // facet). Checked only to be d + 1 distinct in-range
+  // indices per simplex glued along their facets, the hull facets along
+  // their ridges (std::invalid_argument otherwise), so that each result
+  // after add() must be certified as it is anyway. No predicate; the points
+  // that are vertices of no simplex are the redundant ones. (The hull
+  // ridges are matched in pairs, as an insertion's cone is: one held by four
+  // hull facets is not refused here, and the certificate after add()
+  // catches what it breaks.) Not for the
+  // furthest-site triangulation (std::invalid_argument).
+  RtdCavityIncremental(const PointSet& ps, const std::vector<Index>& simplices,
+                       const std::vector<std::int64_t>& neighbors, const RtdCavityOptions& options = {});
   ~RtdCavityIncremental();
   RtdCavityIncremental(RtdCavityIncremental&&) noexcept;
   RtdCavityIncremental& operator=(RtdCavityIncremental&&) noexcept;

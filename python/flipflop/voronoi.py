@@ -122,6 +122,7 @@ class Voronoi(_QhullUser):
         self._threads = _threads(threads, "Voronoi")
         self.furthest_site = furthest_site
         self._incremental = bool(incremental)
+        self._inc = self._inc_seed = None
         self._closed = False
         a = _points(points, tuple(_BACKENDS), "Voronoi")
         self._compute(a, _weights(weights, a.shape[0], "Voronoi"))
@@ -134,8 +135,8 @@ class Voronoi(_QhullUser):
             # furthest site: the 'cpu' backend in every d (Delaunay's choice)
             backend = "cpu" if self.furthest_site else _BACKENDS[d]
             if self._incremental:  # the kernel kept for in-place insertion (add_points)
-                simplices, _redundant = _kept_triangulation(self, "Voronoi", a, w, False, self._threads,
-                                                            self.furthest_site)
+                simplices, _redundant, _neighbors = _kept_triangulation(self, "Voronoi", a, w, False, self._threads,
+                                                                        self.furthest_site)
             else:
                 simplices, _redundant = _flipflop.triangulate(a, w, backend, False, self._threads,
                                                               self.furthest_site)

@@ -825,6 +825,35 @@ class IncrementalTriangulation {
     finish(ps);
   }
 
+  // Seeded with the regular triangulation of p (and w), certified by the
+  // caller (Python's Delaunay(incremental=True) in 2D and 3D: its one-shot
+  // call's certified answer): s its simplices (canonical: positive in the
+  // det convention), nb their neighbours (-1: a hull facet). Nothing is
+  // certified here and result() is refused until an add, whose result is
+  // certified as every result is. No strict view, no furthest site.
+  IncrementalTriangulation(const Points& p, const std::optional<Vector>& w, int threads, const Cells& s,
+                           const Cells& nb)
+      : strict_(false), furthest_(false), threads_(threads) {
+    const PointSet ps = point_set(p, w);
+    const std::size_t d = static_cast<std::size_t>(ps.dim), m = s.shape(0);
+    if (ps.dim < 2 || ps.dim > ref::rtd::kMaxDim || s.shape(1) != d + 1 || nb.shape(0) != m || nb.shape(1) != d + 1)
+      throw std::invalid_argument("Delaunay expects points (n, d), d = 2..9, seed simplices and neighbours (m, d+1)");
+    std::vector<Index> simplices(m * (d + 1));
+    std::vector<std::int64_t> neighbors(nb.data(), nb.data() + m * (d + 1));
+    for (std::size_t k = 0; k < m * (d + 1); ++k) {
+      const std::int64_t x = s.data()[k], g = neighbors[k];
+      if (x < 0 || static_cast<std::size_t>(x) >= ps.size())
+        throw std::invalid_argument("Delaunay: a seed simplex names point " + std::to_string(x));
+      if (g < -1 || g >= static_cast<std::int64_t>(m))
+        throw std::invalid_argument("Delaunay: a seed neighbour is out of range: " + std::to_string(g));
+      simplices[k] = static_cast<Index>(x);
+    }
+    cpu::RtdCavityOptions o;
+    o.threads = threads;
+    nb::gil_scoped_release nogil;
+    kernel_ = std::make_unique<cpu::RtdCavityIncremental>(ps, simplices, neighbors, o);
+  }
+
   // p (and w): the points given so far, unchanged, followed by the new ones.
   void add(const Points& p, const std::optional<Vector>& w) {
     const PointSet ps = point_set(p, w);
@@ -834,14 +863,25 @@ class IncrementalTriangulation {
   }
 
   std::pair<IndexArray, IndexArray> result() const {
+    if (simplices_.empty()) throw std::logic_error("Delaunay: a seeded triangulation has no result before an add");
     return {cells_array(simplices_, simplices_.empty() ? 0 : simplices_[0].size()), list_array(redundant_)};
+  }
+
+  // the neighbours the certificate matched (scipy's convention, -1 on the
+  // hull), None for the strict view
+  std::optional<IndexArray> neighbors() const {
+    if (simplices_.empty()) throw std::logic_error("Delaunay: a seeded triangulation has no result before an add");
+    if (neighbors_.empty()) return std::nullopt;
+    std::vector<std::int64_t> copy = neighbors_;
+    return index_array(std::move(copy), simplices_.size(), simplices_[0].size());
   }
 
   std::size_t size() const { return kernel_->size(); }
 
  private:
   void finish(const PointSet& ps) {
-    certified_rtd(ps, kernel_->result(), strict_, furthest_, threads_, simplices_, redundant_);
+    neighbors_.clear();
+    certified_rtd(ps, kernel_->result(), strict_, furthest_, threads_, simplices_, redundant_, &neighbors_);
   }
 
   bool strict_, furthest_;
@@ -849,6 +889,7 @@ class IncrementalTriangulation {
   std::unique_ptr<cpu::RtdCavityIncremental> kernel_;
   std::vector<std::vector<Index>> simplices_;
   std::vector<Index> redundant_;
+  std::vector<std::int64_t> neighbors_;  // from the certificate (not strict)
 };
 
 // The facets of the convex hull in R^d, d = 2..9 (kernels_cpu/rtd/hull_d:
@@ -2632,8 +2673,11 @@ NB_MODULE(_flipflop, m) {
   nb::class_<IncrementalTriangulation>(m, "IncrementalTriangulation")
       .def(nb::init<const Points&, const std::optional<Vector>&, bool, int, bool>(), nb::arg("points"),
            nb::arg("weights").none(), nb::arg("strict"), nb::arg("threads"), nb::arg("furthest"))
+      .def(nb::init<const Points&, const std::optional<Vector>&, int, const Cells&, const Cells&>(), nb::arg("points"),
+           nb::arg("weights").none(), nb::arg("threads"), nb::arg("simplices"), nb::arg("neighbors"))
       .def("add", &IncrementalTriangulation::add, nb::arg("points"), nb::arg("weights").none())
       .def("result", &IncrementalTriangulation::result)
+      .def("neighbors", &IncrementalTriangulation::neighbors)
       .def("__len__", &IncrementalTriangulation::size);
   nb::class_<IncrementalHull>(m, "IncrementalHull")
       .def(nb::init<const Points&, int>(), nb::arg("points"), nb::arg("threads"))

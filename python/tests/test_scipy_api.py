@@ -517,9 +517,13 @@ def test_delaunay_add_points_in_batches_equals_one_shot(d):
     one = flipflop.Delaunay(p)
     t = flipflop.Delaunay(p[:d + 3], incremental=True)
     kept = t._inc  # the kernel kept for in-place insertion (_flipflop.IncrementalTriangulation)
-    assert kept is not None and len(kept) == d + 3
+    if d <= 3:  # built by the one-shot kernels; the first add seeds the kernel with that answer
+        assert kept is None and t._inc_seed is not None
+    else:
+        assert kept is not None and len(kept) == d + 3
     for lo in range(d + 3, len(p), 7):
         t.add_points(p[lo:lo + 7], restart=lo % 2 == 0)
+        kept = t._inc if kept is None else kept
         assert t._inc is kept and len(kept) == min(lo + 7, len(p))  # inserted in place, not rebuilt
         assert np.array_equal(t.simplices, flipflop.Delaunay(p[:lo + 7]).simplices)
     assert np.array_equal(t.points, p)
@@ -542,10 +546,12 @@ def test_delaunay_add_points_in_place_on_grids_strict_and_good():
         for kw in ({}, {"strict": True}, {"qhull_options": "QG0"}):
             one = flipflop.Delaunay(g, **kw)
             t = flipflop.Delaunay(g[:side ** (d - 1)], incremental=True, **kw)
-            kept = t._inc
+            kept = t._inc  # None where the first add seeds it (not strict)
+            assert (kept is None) == (not kw.get("strict")), kw
             for lo in range(side ** (d - 1), len(g), side):
                 t.add_points(g[lo:lo + side])
-            assert t._inc is kept, kw
+                kept = t._inc if kept is None else kept
+                assert t._inc is kept, kw
             assert np.array_equal(t.simplices, one.simplices), kw
             assert np.array_equal(t.good, one.good), kw
 
@@ -638,9 +644,9 @@ def test_hull_seeded_kernel_refuses_what_is_not_a_closed_surface():
 def test_add_points_bad_input_keeps_the_kept_kernel(cls, recomputing):
     p = np.random.default_rng(9).random((40, 3))
     h = cls(p[:10], incremental=True)
-    if cls is flipflop.ConvexHull:  # its kernel is seeded at the first add: an empty one
-        h.add_points(p[10:10])
-        assert h._inc is not None
+    assert h._inc is None  # 3D: built by the one-shot kernels, the kernel seeded at the first add
+    h.add_points(p[10:10])  # an empty one
+    assert h._inc is not None
     kept, before = h._inc, h.simplices.copy()
     held = len(kept)
     for bad_value in (np.nan, np.inf):

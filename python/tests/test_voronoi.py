@@ -843,8 +843,10 @@ def test_incremental():
     rng = np.random.default_rng(2)
     p = rng.random((60, 2))
     v = Voronoi(p[:30], incremental=True)
-    kept = v._inc  # the triangulation kernel kept for in-place insertion
+    assert v._inc is None  # 2D: the one-shot kernel's answer seeds the kernel at the first add
     v.add_points(p[30:45])
+    kept = v._inc  # the triangulation kernel kept for in-place insertion
+    assert kept is not None and len(kept) == 45
     v.add_points(p[45:], restart=True)
     assert v._inc is kept and len(kept) == 60  # inserted in place, not rebuilt
     full = Voronoi(p)
