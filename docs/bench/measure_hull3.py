@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Measure the multithreaded 3D hull against its peers and write the tables the
-README's "multithreaded 3D hull" section and docs/bench/hull3.png are drawn from.
+docs/benchmarks.md's "multithreaded 3D hull" section and docs/bench/hull3.png are drawn from.
 
 usage: /usr/bin/python3 docs/bench/measure_hull3.py FLIPFLOP [--quick]
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Measure the multithreaded 2D regular / Delaunay triangulation against its
-peers and write the tables the README's "multithreaded 2D triangulation"
+peers and write the tables the docs/benchmarks.md's "multithreaded 2D triangulation"
 section and docs/bench/rt2.png are drawn from.
 
 usage: /usr/bin/python3 docs/bench/measure_rt2.py FLIPFLOP [--quick]

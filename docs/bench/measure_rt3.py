@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Measure the multithreaded 3D regular / Delaunay triangulation against its
-peers and write the tables the README's "multithreaded 3D triangulation"
+peers and write the tables the docs/benchmarks.md's "multithreaded 3D triangulation"
 section and docs/bench/rt3.png are drawn from.
 
 usage: /usr/bin/python3 docs/bench/measure_rt3.py FLIPFLOP [--quick]

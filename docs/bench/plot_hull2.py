@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """docs/bench/hull2.png from the measured tables next to it (hull2_*.csv, the
-README's "multithreaded 2D hull" section): 10^7 points per distribution,
+docs/benchmarks.md's "multithreaded 2D hull" section): 10^7 points per distribution,
 the circle-thickness sweep, and the growth from 10^5 to 10^8 disk points.
 Run: /usr/bin/python3 docs/bench/plot_hull2.py (python3-matplotlib)."""
 from benchplot import plt, rows, save

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """docs/bench/hull3.png from the measured tables next to it (hull3_*.csv, written by
-measure_hull3.py; the README's "multithreaded 3D hull" section): 10^6 points per
+measure_hull3.py; the docs/benchmarks.md's "multithreaded 3D hull" section): 10^6 points per
 distribution, the sphere-thickness sweep, the growth from 10^5 to 10^7 ball points
 with its fitted exponent, and a whole run by stage.
 Run: /usr/bin/python3 docs/bench/plot_hull3.py (python3-matplotlib)."""

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """docs/bench/rt2.png from the measured tables next to it (rt2_1e6.csv,
-dt2_growth.csv, rt2_stages.csv, written by measure_rt2.py; the README's
+dt2_growth.csv, rt2_stages.csv, written by measure_rt2.py; docs/benchmarks.md's
 "multithreaded 2D triangulation" section): 10^6 points per weight range and
 unweighted, the growth from 10^5 to 10^7 points with the fitted exponent, and
 a whole run by stage.

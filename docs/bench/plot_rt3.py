@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """docs/bench/rt3.png from the measured tables next to it (rt3_1e6.csv,
-dt3_growth.csv, rt3_stages.csv, written by measure_rt3.py; the README's
+dt3_growth.csv, rt3_stages.csv, written by measure_rt3.py; docs/benchmarks.md's
 "multithreaded 3D triangulation" section): 10^6 points per family and weight
 range, the growth from 10^5 to 10^7 points with the fitted exponent, and a
 whole run by stage.

@@ -1466,7 +1466,7 @@ void make_witness(const PointSet& ps, const Kernel& s, const ref::poly::Polyhedr
 // rounds check about 1.3x the edges the FIFO run pops (losers and repeated
 // candidates are checked again; 10^6 ball: 256k against 196k checks, 52
 // rounds) and add four parallel passes a round, so on this 2-core machine
-// they did not beat the FIFO run (README, 3D hull), and with more threads
+// they did not beat the FIFO run (docs/benchmarks.md, 3D hull), and with more threads
 // than cores they wait at every pass; automatic takes them only with at
 // least 4 threads on at least 4 cores.
 bool use_rounds(FlipFlopRun run) {
