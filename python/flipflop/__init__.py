@@ -1065,51 +1065,30 @@ class Delaunay(_QhullUser):
                              f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
         s64, n64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))
-        # each simplex's exact orientation sign, once per triangulation
-        signs = self._cached("signs", lambda: _flipflop.simplex_signs(self.points, s64))
-        return _intc(_flipflop.find_simplex(self.points, s64, n64, q, signs).reshape(shape))
+        return _intc(_flipflop.find_simplex(self.points, s64, n64, q, self._signs()).reshape(shape))
 
     # ---- their computation -----------------------------------------------------------
 
+    def _signs(self) -> np.ndarray:
+        """Each simplex's exact orientation sign (no perturbation; int8),
+        once per triangulation (_flipflop.simplex_signs: the exact orient_d
+        of the compiled predicates, in parallel)."""
+        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        return self._cached("signs", lambda: _flipflop.simplex_signs(self.points, s64))
+
     def _flat(self) -> np.ndarray:
         """The simplices of zero volume, exactly."""
-        def compute():
-            S, P = self.simplices, self.points
-            V = P[S]
-            mats = V[:, 1:] - V[:, :1]
-            return _det_signs(mats, lambda i: _differences(P, list(S[i, 1:]), S[i, 0])) == 0
-        return self._cached("flat", compute)
+        return self._signs() == 0
 
     def _compute_transform(self) -> np.ndarray:
-        S, P, d = self.simplices, self.points, self.ndim
-        m = len(S)
-        V = P[S]
-        r = V[:, d]
-        T = np.swapaxes(V[:, :d] - r[:, None, :], 1, 2)  # column j: v_j - r
-        flat = self._flat()
-        T[flat] = np.eye(d)
-        # each T scaled by a power of two first (exact): no overflow or
-        # underflow in the inverse unless its true entries are not doubles
-        with np.errstate(all="ignore"):
-            _, e = np.frexp(np.abs(T).max(axis=(1, 2)))
-            T = np.ldexp(T, -e[:, None, None])
-            bad = ~np.isfinite(T).all(axis=(1, 2))
-            T[bad] = np.eye(d)
-            try:
-                Ti = np.linalg.inv(T)
-            except np.linalg.LinAlgError:  # singular in floating point only: one at a time
-                Ti = np.empty_like(T)
-                for k in range(m):
-                    try:
-                        Ti[k] = np.linalg.inv(T[k])
-                    except np.linalg.LinAlgError:
-                        Ti[k] = np.nan
-            Ti = np.ldexp(Ti, -e[:, None, None])
-        out = np.empty((m, d + 1, d))
-        out[:, :d] = Ti
-        out[:, d] = r
-        out[flat | bad] = np.nan
-        return out
+        """scipy's barycentric transforms, (m, d+1, d): [T^-1; r] with r the
+        last vertex and T's column j = v_j - r, in the compiled call
+        (_flipflop.barycentric_transforms: T scaled by a power of two, Gauss-
+        Jordan with partial pivoting, in parallel); NaN for the simplices of
+        zero volume, decided exactly (_signs), and for those singular in
+        floating point."""
+        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        return _flipflop.barycentric_transforms(self.points, s64, self._signs())
 
     def _lifted(self, idx: np.ndarray) -> np.ndarray:
         """(points, s * (|p|^2 - w)) for the given point indices."""

@@ -1317,6 +1317,84 @@ nb::ndarray<nb::numpy, std::int8_t> simplex_signs(const Points& p, const Cells& 
   return nb::ndarray<nb::numpy, std::int8_t>(heap->data(), {heap->size()}, owner);
 }
 
+// Delaunay.transform, scipy's barycentric transforms: per simplex (v_0..v_d),
+// T with column j = v_j - v_d; the (d+1, d) block [T^-1; v_d], row-major,
+// simplex after simplex. NaN rows where the simplex is exactly flat (signs,
+// simplex_signs' exact orientations, 0), where T's entries are not finite,
+// or where T is singular in floating point (a zero pivot). T is scaled by
+// 2^-e first (its largest |entry| in [1/2, 1): exact, so no intermediate
+// over- or underflows), inverted by Gauss–Jordan elimination with partial
+// pivoting in double, and the inverse scaled by 2^-e (T^-1 = (2^-e T)^-1
+// 2^-e). In parallel pieces; the same values at any thread count.
+DoubleArray barycentric_transforms(const Points& p, const Cells& c, const Signs& signs) {
+  const PointSet ps = point_set(p, std::nullopt);
+  const std::size_t m = c.shape(0), k = c.shape(1), d = k - 1;
+  if (k != static_cast<std::size_t>(ps.dim) + 1 || d > static_cast<std::size_t>(kMaxD))
+    throw std::invalid_argument("transform: simplices need d+1 indices");
+  if (signs.shape(0) != m) throw std::invalid_argument("transform: one sign per simplex");
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
+      throw std::invalid_argument("transform: simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  std::vector<double> out(m * k * d);
+  {
+    nb::gil_scoped_release nogil;
+    cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
+      double a[kMaxD][2 * kMaxD];  // [T | I], reduced to [I | T^-1]
+      for (std::size_t s = lo; s < hi; ++s) {
+        double* o = out.data() + s * k * d;
+        const double* r = ps.point(static_cast<std::size_t>(c.data()[s * k + d]));
+        for (std::size_t j = 0; j < d; ++j) o[d * d + j] = r[j];
+        bool ok = signs.data()[s] != 0;
+        double big = 0.0;
+        for (std::size_t j = 0; j < d && ok; ++j) {  // column j: v_j - r
+          const double* v = ps.point(static_cast<std::size_t>(c.data()[s * k + j]));
+          for (std::size_t i = 0; i < d; ++i) {
+            a[i][j] = v[i] - r[i];
+            big = std::max(big, std::fabs(a[i][j]));
+          }
+        }
+        ok = ok && std::isfinite(big) && big > 0.0;
+        int e = 0;
+        if (ok) std::frexp(big, &e);
+        for (std::size_t i = 0; i < d && ok; ++i)
+          for (std::size_t j = 0; j < d; ++j) {
+            a[i][j] = std::ldexp(a[i][j], -e);
+            a[i][d + j] = i == j ? 1.0 : 0.0;
+          }
+        for (std::size_t col = 0; col < d && ok; ++col) {
+          std::size_t piv = col;
+          for (std::size_t i = col + 1; i < d; ++i)
+            if (std::fabs(a[i][col]) > std::fabs(a[piv][col])) piv = i;
+          if (a[piv][col] == 0.0 || !std::isfinite(a[piv][col])) {
+            ok = false;
+            break;
+          }
+          if (piv != col)
+            for (std::size_t j = 0; j < 2 * d; ++j) std::swap(a[piv][j], a[col][j]);
+          const double inv = 1.0 / a[col][col];
+          for (std::size_t j = 0; j < 2 * d; ++j) a[col][j] *= inv;
+          for (std::size_t i = 0; i < d; ++i) {
+            if (i == col || a[i][col] == 0.0) continue;
+            const double f = a[i][col];
+            for (std::size_t j = 0; j < 2 * d; ++j) a[i][j] -= f * a[col][j];
+          }
+        }
+        for (std::size_t i = 0; i < d; ++i)
+          for (std::size_t j = 0; j < d; ++j) {
+            const double x = ok ? std::ldexp(a[i][d + j], -e) : std::nan("");
+            o[i * d + j] = x;
+          }
+        if (!ok)
+          for (std::size_t j = 0; j < d; ++j) o[d * d + j] = std::nan("");
+      }
+    });
+  }
+  auto* heap = new std::vector<double>(std::move(out));
+  nb::capsule owner(heap, [](void* x) noexcept { delete static_cast<std::vector<double>*>(x); });
+  const std::size_t shape[3] = {m, k, d};
+  return DoubleArray(heap->data(), 3, shape, owner);
+}
+
 IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const Points& q,
                         std::optional<Signs> signs) {
   const PointSet ps = point_set(p, std::nullopt);
@@ -2691,6 +2769,7 @@ NB_MODULE(_flipflop, m) {
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
         nb::arg("queries"), nb::arg("signs").none() = nb::none());
   m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
+  m.def("barycentric_transforms", &barycentric_transforms, nb::arg("points"), nb::arg("simplices"), nb::arg("signs"));
   m.def("certify", &certify_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"), nb::arg("weights").none(),
         nb::arg("canonical"));
   m.def("orient", &orient_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"));

@@ -324,7 +324,7 @@ def grid(k, d):
     return np.array(np.meshgrid(*[np.arange(float(k))] * d, indexing="ij")).reshape(d, -1).T.copy()
 
 
-@pytest.mark.parametrize("d,k", [(2, 5), (3, 3)])
+@pytest.mark.parametrize("d,k", [(2, 5), (3, 3), (4, 3)])
 def test_transform_is_nan_exactly_on_zero_volume_simplices(d, k):
     p = grid(k, d) * 0.1  # not integers: 0.1 is not exact, the flat ones are still flat
     t = flipflop.Delaunay(p)
@@ -344,6 +344,28 @@ def test_transform_is_nan_exactly_on_zero_volume_simplices(d, k):
         assert np.array_equal(T[i, d], p[r[d]])
     # the strict view has no flat simplex, so no NaN
     assert np.isfinite(flipflop.Delaunay(p, strict=True).transform).all()
+
+
+def test_transform_on_a_grid_moved_by_ulps():
+    # simplices a few ulps from flat: exactly not flat, so not NaN unless
+    # singular in floating point; every finite row inverts its T
+    rng = np.random.default_rng(3)
+    p = grid(4, 3) + 1.0
+    for i in rng.choice(len(p), len(p) // 5, replace=False):
+        p[i] = np.nextafter(np.nextafter(p[i], np.inf), np.inf)
+    t = flipflop.Delaunay(p)
+    T = t.transform
+    flat = np.array([fdet([[a - b for a, b in zip(F(p[r[j]]), F(p[r[0]]))] for j in range(1, 4)]) == 0
+                     for r in t.simplices])
+    assert flat.any() and not flat.all()
+    assert np.isnan(T[flat]).all()
+    fin = np.isfinite(T).all(axis=(1, 2))
+    assert fin[~flat].mean() > 0.5
+    for i in np.flatnonzero(fin):
+        r = t.simplices[i]
+        Tm = (p[r[:3]] - p[r[3]]).T
+        assert np.allclose(T[i, :3] @ Tm, np.eye(3), atol=1e-6 * max(1.0, np.abs(T[i, :3]).max()))
+        assert np.array_equal(T[i, 3], p[r[3]])
 
 
 @pytest.mark.parametrize("d", [2, 3])
