@@ -500,7 +500,7 @@ class ConvexHull(_QhullUser):
                 polygons = [keep[p] for p in polygons]
         good = None
         if g is not None:
-            sees = _hull_sees(a, simplices, a[g]) if len(simplices) else np.zeros(0, dtype=bool)
+            sees = _hull_sees(a, simplices, g) if len(simplices) else np.zeros(0, dtype=bool)
             good = sees if self._options.visible else ~sees
         coplanar = np.zeros((0, 3), dtype=np.int64)
         if self._options.coplanar:
@@ -614,32 +614,26 @@ def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarr
 
 def _hull_sides(points: np.ndarray, facets: np.ndarray, queries: np.ndarray, pairs_f: np.ndarray,
                 pairs_q: np.ndarray) -> np.ndarray:
-    """For the pairs (facet pairs_f[i], point queries[pairs_q[i]]): +1 when the
-    point is strictly outside the facet's hyperplane (the side its outward
-    normal points to), -1 strictly inside, 0 on it; exact. The facets are
-    flipflop's: 3D triangles counter-clockwise seen from outside (outward =
-    +det[b-a, c-a, x-a]; 4D..9D: +det[f1-f0, ..., x-f0] likewise), 2D edges of
-    the counter-clockwise cycle (outward = -det[b-a, x-a])."""
+    """For the pairs (facet pairs_f[i], point queries[pairs_q[i]], an index
+    into points): +1 when the point is strictly outside the facet's
+    hyperplane (the side its outward normal points to), -1 strictly inside,
+    0 on it; exact. The facets are flipflop's: 3D triangles counter-clockwise
+    seen from outside (outward = +det[b-a, c-a, x-a]; 4D..9D:
+    +det[f1-f0, ..., x-f0] likewise), 2D edges of the counter-clockwise cycle
+    (outward = -det[b-a, x-a]). The signs are the compiled exact orient_d
+    (_flipflop.simplex_signs, in parallel) of the facet's vertices and the
+    point: det[[p 1]] with the 1-column last = (-1)^d det[f1-f0, ..., x-f0]."""
     d = points.shape[1]
-    f = facets[pairs_f]
-    a = points[f[:, 0]]
-    x = queries[pairs_q]
-    mats = np.stack([points[f[:, j]] - a for j in range(1, d)] + [x - a], axis=1)
-
-    def exact(i):
-        rows = _differences(points, list(f[i, 1:]), f[i, 0])
-        b = [Fraction(float(c)) for c in points[f[i, 0]]]
-        rows.append([Fraction(float(c)) - y for c, y in zip(x[i], b)])
-        return rows
-
-    s = _det_signs(mats, exact)
+    cells = np.ascontiguousarray(np.concatenate([facets[pairs_f], queries[pairs_q][:, None]], axis=1), dtype=np.int64)
+    s = _flipflop.simplex_signs(points, cells).astype(np.int8)
+    s = s if d % 2 == 0 else -s
     return s if d >= 3 else -s
 
 
-def _hull_sees(points: np.ndarray, facets: np.ndarray, x: np.ndarray) -> np.ndarray:
-    """Which facets have x strictly on their outer side (exact)."""
+def _hull_sees(points: np.ndarray, facets: np.ndarray, g: int) -> np.ndarray:
+    """Which facets have point g strictly on their outer side (exact)."""
     m = len(facets)
-    return _hull_sides(points, facets, x[None, :], np.arange(m), np.zeros(m, dtype=np.int64)) > 0
+    return _hull_sides(points, facets, np.array([g], dtype=np.int64), np.arange(m), np.zeros(m, dtype=np.int64)) > 0
 
 
 def _nondegenerate_facets(points: np.ndarray, facets: np.ndarray) -> np.ndarray:
@@ -694,7 +688,7 @@ def _hull_coplanar(points: np.ndarray, facets: np.ndarray, candidates: np.ndarra
         qi, fi = np.nonzero(maybe)
         if len(qi) == 0:
             continue
-        zero = _hull_sides(points, F, points[c], fi, qi) == 0
+        zero = _hull_sides(points, F, c, fi, qi) == 0
         qi, fi = qi[zero], fi[zero]
         for q in np.unique(qi):
             p = int(c[q])
@@ -1154,29 +1148,16 @@ class Delaunay(_QhullUser):
         m, g = len(self.simplices), self._good_index
         if g is None:
             return np.ones(m, dtype=np.intc)
-        S, P, d = self.simplices, self.points, self.ndim
-        x = P[g]
-        wx = 0.0 if self.weights is None else self.weights[g]
-        D = P[S] - x  # (m, d+1, d)
-        sq = (D ** 2).sum(axis=2)
-        W = np.zeros(S.shape) if self.weights is None else self.weights[S]
-        mats = np.concatenate([D, (sq - W + wx)[:, :, None]], axis=2)
-        mags = np.concatenate([np.abs(D), (sq + np.abs(W) + abs(wx))[:, :, None]], axis=2).max(axis=2)
-
-        def exact(i):
-            fx = [Fraction(float(c)) for c in x]
-            fwx = Fraction(float(wx))
-            rows = []
-            for v in S[i]:
-                r = [Fraction(float(c)) - y for c, y in zip(P[v], fx)]
-                wv = Fraction(0) if self.weights is None else Fraction(float(self.weights[v]))
-                rows.append(r + [sum(c * c for c in r) - wv + fwx])
-            return rows
-
-        # visible from the lifted point n: strictly inside the circumsphere
-        # (below the lower hull's facet); furthest site: strictly outside
-        # (above the upper hull's facet)
-        inside = _det_signs(mats, exact, mags) == (-_INSPHERE[d] if self.furthest_site else _INSPHERE[d])
+        # det Λ of the simplex's lifted vertices and point g's (rows (p,
+        # |p|^2 - w, 1), g last; _flipflop.power_signs: the compiled exact
+        # power_d, no perturbation) is, subtracting g's row from the others,
+        # det [v - x, |v - x|^2 - w_v + w_x]: negative _INSPHERE[d] times
+        # that means strictly inside the circumsphere (below the lower hull's
+        # facet, visible from the lifted point g); furthest site: strictly
+        # outside (above the upper hull's facet)
+        cells = np.ascontiguousarray(np.concatenate([self.simplices, np.full((m, 1), g)], axis=1), dtype=np.int64)
+        s = _flipflop.power_signs(self.points, self.weights, cells)
+        inside = s == (-_INSPHERE[self.ndim] if self.furthest_site else _INSPHERE[self.ndim])
         return (inside if self._options.visible else ~inside).astype(np.intc)
 
 

@@ -1317,6 +1317,36 @@ nb::ndarray<nb::numpy, std::int8_t> simplex_signs(const Points& p, const Cells& 
   return nb::ndarray<nb::numpy, std::int8_t>(heap->data(), {heap->size()}, owner);
 }
 
+// The exact power_d sign (no perturbation; pred::power_d_exact, may be 0)
+// of each row of d+2 point indices: det Λ with rows (p, |p|^2 - w, 1), the
+// 1-column last (weights: null for Delaunay). In parallel pieces.
+nb::ndarray<nb::numpy, std::int8_t> power_signs(const Points& p, const std::optional<Vector>& w, const Cells& c) {
+  const PointSet ps = point_set(p, w);
+  const std::size_t m = c.shape(0), k = c.shape(1), d = static_cast<std::size_t>(ps.dim);
+  if (k != d + 2 || d < 1 || d > 9) throw std::invalid_argument("power_signs: rows of d+2 point indices, d = 1..9");
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
+      throw std::invalid_argument("power_signs: row " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  auto* heap = new std::vector<std::int8_t>(m);
+  {
+    nb::gil_scoped_release nogil;
+    cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t s = lo; s < hi; ++s) {
+        const double* rows[11];
+        double wt[11];
+        for (std::size_t l = 0; l < k; ++l) {
+          const std::size_t i = static_cast<std::size_t>(c.data()[s * k + l]);
+          rows[l] = ps.point(i);
+          wt[l] = ps.weight(i);
+        }
+        (*heap)[s] = static_cast<std::int8_t>(pred::power_d_exact(static_cast<int>(d), rows, wt));
+      }
+    });
+  }
+  nb::capsule owner(heap, [](void* x) noexcept { delete static_cast<std::vector<std::int8_t>*>(x); });
+  return nb::ndarray<nb::numpy, std::int8_t>(heap->data(), {heap->size()}, owner);
+}
+
 // Delaunay.transform, scipy's barycentric transforms: per simplex (v_0..v_d),
 // T with column j = v_j - v_d; the (d+1, d) block [T^-1; v_d], row-major,
 // simplex after simplex. NaN rows where the simplex is exactly flat (signs,
@@ -2770,6 +2800,7 @@ NB_MODULE(_flipflop, m) {
         nb::arg("queries"), nb::arg("signs").none() = nb::none());
   m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
   m.def("barycentric_transforms", &barycentric_transforms, nb::arg("points"), nb::arg("simplices"), nb::arg("signs"));
+  m.def("power_signs", &power_signs, nb::arg("points"), nb::arg("weights").none(), nb::arg("cells"));
   m.def("certify", &certify_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"), nb::arg("weights").none(),
         nb::arg("canonical"));
   m.def("orient", &orient_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"));

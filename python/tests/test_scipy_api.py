@@ -448,6 +448,62 @@ def test_delaunay_good_against_scipy_and_by_hand():
         assert flipflop.Delaunay(p, qhull_options="QG-4").good.tolist() == [int(not inside)] * 2
 
 
+def _power_inside(V, W, x, wx):
+    """Oracle (Fractions): x strictly inside the orthosphere of the simplex
+    V (weights W): the centre c from 2 (v_i - v_0) . c = |v_i|^2 - |v_0|^2
+    - w_i + w_0, r^2 = |v_0 - c|^2 - w_0, inside iff |x - c|^2 - w_x < r^2;
+    None for a flat simplex (no orthosphere)."""
+    d = len(x)
+    A = [[2 * (V[i][k] - V[0][k]) for k in range(d)] + [sum(c * c for c in V[i]) - sum(c * c for c in V[0]) - W[i] + W[0]]
+         for i in range(1, d + 1)]
+    for col in range(d):  # Gauss-Jordan in Fractions
+        piv = next((r for r in range(col, d) if A[r][col] != 0), None)
+        if piv is None:
+            return None
+        A[col], A[piv] = A[piv], A[col]
+        for r in range(d):
+            if r != col and A[r][col] != 0:
+                f = A[r][col] / A[col][col]
+                A[r] = [a - f * b for a, b in zip(A[r], A[col])]
+    c = [A[k][d] / A[k][k] for k in range(d)]
+    r2 = sum((a - b) ** 2 for a, b in zip(V[0], c)) - W[0]
+    return sum((a - b) ** 2 for a, b in zip(x, c)) - wx < r2
+
+
+@pytest.mark.parametrize("d", [2, 3, 4])
+def test_delaunay_good_exact_on_grids_and_weights(d):
+    # QGn on lattices, where the point is cospherical with many simplices
+    # (on the sphere: not inside), weighted or not, against the orthosphere
+    # in Fractions; the flat simplices against the lifted determinant
+    k = {2: 4, 3: 3, 4: 3}[d]
+    p = grid(k, d)
+    rng = np.random.default_rng(40 + d)
+    for weights in (None, rng.choice([0.0, 0.25, 1.0], size=len(p))):
+        for g in (0, len(p) // 2, len(p) - 1):
+            for sign in ("", "-"):
+                t = flipflop.Delaunay(p, weights=weights, qhull_options=f"QG{sign}{g}")
+                P = [F(v) for v in p]
+                Wf = [Fraction(0)] * len(p) if weights is None else [Fraction(float(w)) for w in weights]
+                flat_seen = 0
+                for simplex, good in zip(t.simplices, t.good):
+                    V, W = [P[i] for i in simplex], [Wf[i] for i in simplex]
+                    inside = _power_inside(V, W, P[g], Wf[g])
+                    if inside is None:  # flat: the sign of the lifted determinant, exactly
+                        flat_seen += 1
+                        rows = [[a - b for a, b in zip(v, P[g])] + [sum((a - b) ** 2 for a, b in zip(v, P[g])) - w + Wf[g]]
+                                for v, w in zip(V, W)]
+                        det = fdet(rows)
+                        inside = det != 0 and (det > 0) == (d % 2 == 0)  # the sign inside has, below
+                    assert bool(good) == (inside if sign == "" else not inside), (weights is None, g, sign, simplex)
+                assert flat_seen or weights is not None or d == 2
+    # the lifted determinant of a positive simplex and a point inside has the
+    # sign (-1)^d: the standard simplex and its centroid
+    std = [[Fraction(0)] * d] + [[Fraction(int(i == j)) for i in range(d)] for j in range(d)]
+    x = [Fraction(1, d + 1)] * d
+    rows = [[a - b for a, b in zip(v, x)] + [sum((a - b) ** 2 for a, b in zip(v, x))] for v in std]
+    assert (fdet(rows) > 0) == (d % 2 == 0) and _power_inside(std, [Fraction(0)] * (d + 1), x, Fraction(0))
+
+
 # ---- ConvexHull ----------------------------------------------------------------------
 
 @pytest.mark.parametrize("d", [2, 3])
