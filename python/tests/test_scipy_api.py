@@ -25,6 +25,7 @@ import pytest
 import scipy.spatial as ss
 
 import flipflop
+from oracles import exact_centre
 
 
 def sets(simplices):
@@ -448,26 +449,18 @@ def test_delaunay_good_against_scipy_and_by_hand():
         assert flipflop.Delaunay(p, qhull_options="QG-4").good.tolist() == [int(not inside)] * 2
 
 
-def _power_inside(V, W, x, wx):
+def _power_inside(pts, w, x, wx):
     """Oracle (Fractions): x strictly inside the orthosphere of the simplex
-    V (weights W): the centre c from 2 (v_i - v_0) . c = |v_i|^2 - |v_0|^2
-    - w_i + w_0, r^2 = |v_0 - c|^2 - w_0, inside iff |x - c|^2 - w_x < r^2;
-    None for a flat simplex (no orthosphere)."""
-    d = len(x)
-    A = [[2 * (V[i][k] - V[0][k]) for k in range(d)] + [sum(c * c for c in V[i]) - sum(c * c for c in V[0]) - W[i] + W[0]]
-         for i in range(1, d + 1)]
-    for col in range(d):  # Gauss-Jordan in Fractions
-        piv = next((r for r in range(col, d) if A[r][col] != 0), None)
-        if piv is None:
-            return None
-        A[col], A[piv] = A[piv], A[col]
-        for r in range(d):
-            if r != col and A[r][col] != 0:
-                f = A[r][col] / A[col][col]
-                A[r] = [a - f * b for a, b in zip(A[r], A[col])]
-    c = [A[k][d] / A[k][k] for k in range(d)]
-    r2 = sum((a - b) ** 2 for a, b in zip(V[0], c)) - W[0]
-    return sum((a - b) ** 2 for a, b in zip(x, c)) - wx < r2
+    pts (weights w, floats): its centre c (oracles.exact_centre), r^2 =
+    |p_0 - c|^2 - w_0, inside iff |x - c|^2 - w_x < r^2; None for a flat
+    simplex (no orthosphere)."""
+    c = exact_centre(pts, w)
+    if c is None:
+        return None
+    P0, W0 = [Fraction(float(v)) for v in pts[0]], Fraction(0) if w is None else Fraction(float(w[0]))
+    X = [Fraction(float(v)) for v in x]
+    r2 = sum((a - b) ** 2 for a, b in zip(P0, c)) - W0
+    return sum((a - b) ** 2 for a, b in zip(X, c)) - Fraction(float(wx)) < r2
 
 
 @pytest.mark.parametrize("d", [2, 3, 4])
@@ -487,7 +480,8 @@ def test_delaunay_good_exact_on_grids_and_weights(d):
                 flat_seen = 0
                 for simplex, good in zip(t.simplices, t.good):
                     V, W = [P[i] for i in simplex], [Wf[i] for i in simplex]
-                    inside = _power_inside(V, W, P[g], Wf[g])
+                    inside = _power_inside(p[simplex], None if weights is None else weights[simplex], p[g],
+                                           0.0 if weights is None else weights[g])
                     if inside is None:  # flat: the sign of the lifted determinant, exactly
                         flat_seen += 1
                         rows = [[a - b for a, b in zip(v, P[g])] + [sum((a - b) ** 2 for a, b in zip(v, P[g])) - w + Wf[g]]
@@ -501,7 +495,8 @@ def test_delaunay_good_exact_on_grids_and_weights(d):
     std = [[Fraction(0)] * d] + [[Fraction(int(i == j)) for i in range(d)] for j in range(d)]
     x = [Fraction(1, d + 1)] * d
     rows = [[a - b for a, b in zip(v, x)] + [sum((a - b) ** 2 for a, b in zip(v, x))] for v in std]
-    assert (fdet(rows) > 0) == (d % 2 == 0) and _power_inside(std, [Fraction(0)] * (d + 1), x, Fraction(0))
+    assert (fdet(rows) > 0) == (d % 2 == 0)
+    assert _power_inside(np.vstack([np.zeros(d), np.eye(d)]), None, np.full(d, 0.25), 0.0)
 
 
 # ---- ConvexHull ----------------------------------------------------------------------
