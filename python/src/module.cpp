@@ -1943,6 +1943,82 @@ bool centre_filtered(int d, const double* const* p, const double* w, double* out
   }
   return true;
 }
+
+// d = 4..9: the system 2 V x = B (row k: 2 (p_k - p_0) . x = |p_k - p_0|^2
+// - w_k + w_0; c = p_0 + x) solved by Gaussian elimination with partial
+// pivoting on the long double approximations, each value carried with a
+// running error bound as above. Elimination in exact arithmetic along the
+// same pivot sequence gives the exact solution (any order does, with
+// non-zero pivots), so each bound compares a computed value with the exact
+// value of the same expression. Every bound is computed in rounded
+// arithmetic from a few non-negative terms (< 16 roundings, each within a
+// factor 1 +- 2^-64) and multiplied by kUp = 1 + 2^-58 at once, so it is an
+// upper bound whatever the length of the chain (d = 9: about 300
+// operations); a quotient's denominator |b| (|b| - e_b) is multiplied by
+// kDown = 1 - 2^-58 instead. A pivot whose bound does not exclude zero, a
+// non-finite value or a centre near a rounding midpoint goes the exact way.
+constexpr long double kUp = 1.0L + 0x1p-58L, kDown = 1.0L - 0x1p-58L;
+inline Ev eg_sub(Ev a, Ev b) {
+  const long double v = a.v - b.v;
+  return {v, (a.e + b.e + kU * std::fabs(v)) * kUp};
+}
+inline Ev eg_mul(Ev a, Ev b) {
+  const long double v = a.v * b.v;
+  return {v, (std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v)) * kUp};
+}
+// a / b where |b.v| > b.e (checked by the caller)
+inline Ev eg_div(Ev a, Ev b) {
+  const long double v = a.v / b.v;
+  const long double den = std::fabs(b.v) * (std::fabs(b.v) - b.e) * kDown;
+  return {v, ((std::fabs(a.v) * b.e + std::fabs(b.v) * a.e) / den + kU * std::fabs(v)) * kUp};
+}
+
+bool centre_filtered_gauss(int d, const double* const* p, const double* w, double* out) {
+  Ev A[kMaxD][kMaxD + 1];
+  for (int k = 1; k <= d; ++k) {
+    Ev b{0.0L, 0.0L};
+    for (int l = 0; l < d; ++l) {
+      const Ev v = eg_sub({p[k][l], 0.0L}, {p[0][l], 0.0L});
+      A[k - 1][l] = {2 * v.v, 2 * v.e};  // exact
+      const Ev sq = eg_mul(v, v);
+      const long double t = b.v + sq.v;
+      b = {t, (b.e + sq.e + kU * std::fabs(t)) * kUp};
+    }
+    if (w) b = eg_sub(b, eg_sub({w[k], 0.0L}, {w[0], 0.0L}));
+    A[k - 1][d] = b;
+  }
+  for (int col = 0; col < d; ++col) {
+    int piv = col;
+    for (int r = col + 1; r < d; ++r)
+      if (std::fabs(A[r][col].v) > std::fabs(A[piv][col].v)) piv = r;
+    if (!(std::fabs(A[piv][col].v) > A[piv][col].e) || !std::isfinite(A[piv][col].v)) return false;
+    if (piv != col)
+      for (int j = col; j <= d; ++j) std::swap(A[piv][j], A[col][j]);
+    for (int r = col + 1; r < d; ++r) {
+      const Ev f = eg_div(A[r][col], A[col][col]);
+      for (int j = col + 1; j <= d; ++j) A[r][j] = eg_sub(A[r][j], eg_mul(f, A[col][j]));
+    }
+  }
+  Ev x[kMaxD];
+  for (int i = d - 1; i >= 0; --i) {
+    Ev t = A[i][d];
+    for (int j = i + 1; j < d; ++j) t = eg_sub(t, eg_mul(A[i][j], x[j]));
+    x[i] = eg_div(t, A[i][i]);
+  }
+  for (int l = 0; l < d; ++l) {
+    const long double cv = static_cast<long double>(p[0][l]) + x[l].v;
+    const long double e = (x[l].e + kU * std::fabs(cv)) * kUp;
+    if (!std::isfinite(cv) || !std::isfinite(e)) return false;
+    const double h = static_cast<double>(cv);  // round to nearest
+    const double ah = std::fabs(h);
+    if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
+    const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
+    const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
+    if (!(cv - lo > e && hi - cv > e)) return false;
+    out[l] = h;
+  }
+  return true;
+}
 #endif
 
 // An exact centre kept for comparison: c_l = M[l] / D * 2^E.
@@ -2021,7 +2097,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           if (weighted) w[j] = wt(S[s * k + j]);
         }
 #ifdef FLIPFLOP_VORONOI_FILTER
-        if (d <= 3 && centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])) continue;
+        if (d <= 3 ? centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])
+                   : centre_filtered_gauss(d, p, weighted ? w : nullptr, &C[s * d]))
+          continue;
         if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
 #endif
         if (cs.solve(p, weighted ? w : nullptr))

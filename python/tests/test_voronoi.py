@@ -127,10 +127,30 @@ def check_rounding(vor):
     return checked
 
 
-@pytest.mark.parametrize("d,seed", [(2, 1), (3, 2)])
+@pytest.mark.parametrize("d,seed", [(2, 1), (3, 2), (4, 3), (5, 4), (6, 5)])
 def test_vertices_are_the_correctly_rounded_centres_random(d, seed):
-    p = np.random.default_rng(seed).random((150 if d == 2 else 60, d))
+    p = np.random.default_rng(seed).random(({2: 150, 3: 60, 4: 40, 5: 25, 6: 14}[d], d))
     assert check_rounding(Voronoi(p)) > 50
+
+
+@pytest.mark.parametrize("d", [4, 5])
+def test_vertices_correctly_rounded_4d_5d_weighted_and_near_degenerate(d):
+    """The d >= 4 filter (long double Gaussian elimination with running error
+    bounds) where it decides and where it must hand over: weights, a grid
+    moved by ulps (simplices a few ulps from flat, centres far out),
+    points near a sphere, wide magnitudes."""
+    rng = np.random.default_rng(60 + d)
+    n = 30 if d == 4 else 20
+    assert check_rounding(Voronoi(rng.random((n, d)), weights=rng.random(n) * 1e-2)) > 50
+    g = np.array(list(itertools.product(range(3), repeat=d)), dtype=float)[:n * 2]
+    g = np.nextafter(g, g + rng.choice([-1.0, 0.0, 1.0], size=g.shape))
+    assert check_rounding(Voronoi(g)) > 20
+    s = rng.standard_normal((n, d))
+    s = s / np.linalg.norm(s, axis=1)[:, None] * 1e3
+    s = np.nextafter(s, s + rng.choice([-1.0, 1.0], size=s.shape))
+    assert check_rounding(Voronoi(s)) > 20
+    m = rng.random((n, d)) * 10.0 ** rng.integers(-100, 100, (n, 1))
+    assert check_rounding(Voronoi(m)) > 20
 
 
 def test_vertices_correctly_rounded_weighted():
