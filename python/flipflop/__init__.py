@@ -1084,33 +1084,14 @@ class Delaunay(_QhullUser):
         s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
         return _flipflop.barycentric_transforms(self.points, s64, self._signs())
 
-    def _lifted(self, idx: np.ndarray) -> np.ndarray:
-        """(points, s * (|p|^2 - w)) for the given point indices."""
-        z = self.lift_points(self.points[idx])
-        if self.weights is not None:
-            z[..., -1] -= self.weights[idx] * self.paraboloid_scale
-        return z
-
     def _compute_equations(self) -> np.ndarray:
-        S, d = self.simplices, self.ndim
-        m = len(S)
-        Z = self._lifted(S)  # (m, d+1, d+1)
-        M = Z[:, 1:] - Z[:, :1]  # (m, d, d+1)
-        with np.errstate(all="ignore"):
-            _, e = np.frexp(np.abs(M).max(axis=(1, 2)))
-            Ms = np.ldexp(M, -e[:, None, None])
-            # the normal by cofactors: n_k = (-1)^k det(M without column k), so
-            # that M n = 0; n_d = (-1)^d det[v_j - v_0] is made negative for
-            # positively oriented simplices (outward of the lower hull: down)
-            n = np.empty((m, d + 1))
-            for k in range(d + 1):
-                n[:, k] = (-1) ** k * _det(np.delete(Ms, k, axis=2))
-            n *= (-1) ** (d + 1)
-            if self.furthest_site:  # the upper hull's facets: outward is up
-                n = -n
-            n /= np.linalg.norm(n, axis=1)[:, None]
-            off = -(n * Z[:, 0]).sum(axis=1)
-        return np.concatenate([n, off[:, None]], axis=1)
+        """Each simplex's lifted hyperplane [unit normal, offset], the normal
+        down (up for the furthest site), in the compiled call
+        (_flipflop.lifted_equations: the lifted vertices as lift_points
+        gives them, the normal by cofactors of their differences scaled by a
+        power of two, in parallel)."""
+        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        return _flipflop.lifted_equations(self.points, self.weights, s64, self._lift_exponent, self.furthest_site)
 
     def _compute_vertex_to_simplex(self) -> np.ndarray:
         S = self.simplices

@@ -1317,6 +1317,72 @@ nb::ndarray<nb::numpy, std::int8_t> simplex_signs(const Points& p, const Cells& 
   return nb::ndarray<nb::numpy, std::int8_t>(heap->data(), {heap->size()}, owner);
 }
 
+// Delaunay.equations: per simplex the unit normal and offset of the
+// hyperplane through its lifted vertices z = (x, 2^-e (|x|^2 - w)) (e: the
+// lift exponent, Python's paraboloid_scale = 2^-e; |x|^2 summed as
+// 2^e |2^-e x|^2, as lift_points), the normal pointing down (up for the
+// furthest site): n_k = (-1)^(k+d+1) det(M without column k) for M = the
+// rows z_j - z_0 scaled by a power of two (exact), normalised; offset -n.z_0.
+// Floating point (cpu::det_gauss_double); NaN for a simplex whose lifted
+// vertices span no hyperplane. In parallel pieces.
+DoubleArray lifted_equations(const Points& p, const std::optional<Vector>& w, const Cells& c, int e, bool furthest) {
+  const PointSet ps = point_set(p, w);
+  const std::size_t m = c.shape(0), k = c.shape(1), d = static_cast<std::size_t>(ps.dim);
+  if (k != d + 1 || d > static_cast<std::size_t>(kMaxD)) throw std::invalid_argument("equations: simplices need d+1 indices");
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
+      throw std::invalid_argument("equations: simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  std::vector<double> out(m * (d + 2));
+  {
+    nb::gil_scoped_release nogil;
+    const double scale = std::ldexp(1.0, -e);
+    cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
+      double z[kMaxD + 1][kMaxD + 1], M[kMaxD][kMaxD + 1], sub[kMaxD * kMaxD], n[kMaxD + 1];
+      for (std::size_t s = lo; s < hi; ++s) {
+        for (std::size_t j = 0; j <= d; ++j) {
+          const std::size_t i = static_cast<std::size_t>(c.data()[s * k + j]);
+          const double* x = ps.point(i);
+          double h = 0.0;
+          for (std::size_t l = 0; l < d; ++l) {
+            const double t = std::ldexp(x[l], -e);
+            h += t * t;
+            z[j][l] = x[l];
+          }
+          z[j][d] = std::ldexp(h, e) - (ps.weighted ? ps.weights[i] * scale : 0.0);
+        }
+        double big = 0.0;
+        for (std::size_t r = 0; r < d; ++r)
+          for (std::size_t l = 0; l <= d; ++l) {
+            M[r][l] = z[r + 1][l] - z[0][l];
+            big = std::max(big, std::fabs(M[r][l]));
+          }
+        int e2 = 0;
+        std::frexp(big, &e2);
+        for (std::size_t r = 0; r < d; ++r)
+          for (std::size_t l = 0; l <= d; ++l) M[r][l] = std::ldexp(M[r][l], -e2);
+        double norm2 = 0.0;
+        for (std::size_t col = 0; col <= d; ++col) {
+          for (std::size_t r = 0; r < d; ++r)
+            for (std::size_t l = 0, q = 0; l <= d; ++l)
+              if (l != col) sub[r * d + q++] = M[r][l];
+          const double det = d > 0 ? cpu::det_gauss_double(sub, static_cast<int>(d)) : 1.0;
+          n[col] = ((col + d + 1) % 2 == 0 ? det : -det) * (furthest ? -1.0 : 1.0);
+          norm2 += n[col] * n[col];
+        }
+        const double norm = std::sqrt(norm2);
+        double* o = out.data() + s * (d + 2);
+        double off = 0.0;
+        for (std::size_t l = 0; l <= d; ++l) {
+          o[l] = n[l] / norm;
+          off -= o[l] * z[0][l];
+        }
+        o[d + 1] = off;
+      }
+    });
+  }
+  return double_array(std::move(out), m, d + 2);
+}
+
 // The exact power_d sign (no perturbation; pred::power_d_exact, may be 0)
 // of each row of d+2 point indices: det Λ with rows (p, |p|^2 - w, 1), the
 // 1-column last (weights: null for Delaunay). In parallel pieces.
@@ -2879,6 +2945,8 @@ NB_MODULE(_flipflop, m) {
   m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
   m.def("barycentric_transforms", &barycentric_transforms, nb::arg("points"), nb::arg("simplices"), nb::arg("signs"));
   m.def("power_signs", &power_signs, nb::arg("points"), nb::arg("weights").none(), nb::arg("cells"));
+  m.def("lifted_equations", &lifted_equations, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"),
+        nb::arg("lift_exponent"), nb::arg("furthest"));
   m.def("certify", &certify_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"), nb::arg("weights").none(),
         nb::arg("canonical"));
   m.def("orient", &orient_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"));
