@@ -1102,14 +1102,10 @@ class Delaunay(_QhullUser):
         return _intc(out)
 
     def _compute_vertex_neighbor_vertices(self):
-        S, n = self.simplices, self.npoints
-        i, j = np.triu_indices(S.shape[1], 1)
-        a, b = S[:, i].ravel().astype(np.int64), S[:, j].ravel().astype(np.int64)
-        key = np.unique(np.concatenate([a * n + b, b * n + a]))
-        src, dst = key // n, key % n
-        indptr = np.zeros(n + 1, dtype=np.int64)
-        np.cumsum(np.bincount(src, minlength=n), out=indptr[1:])
-        return _intc(indptr), _intc(dst)
+        # each vertex's neighbours ascending (_flipflop.vertex_neighbours)
+        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        indptr, indices = _flipflop.vertex_neighbours(s64, self.npoints)
+        return _intc(indptr), _intc(indices)
 
     def _compute_coplanar(self) -> np.ndarray:
         if not self._options.coplanar or len(self.redundant) == 0 or self.furthest_site:

@@ -1383,6 +1383,47 @@ DoubleArray lifted_equations(const Points& p, const std::optional<Vector>& w, co
   return double_array(std::move(out), m, d + 2);
 }
 
+// Delaunay.vertex_neighbor_vertices: (indptr, indices) over n points, each
+// vertex's neighbours (the other vertices of its simplices) ascending, a
+// point of no simplex with none. A counting sort of the (vertex, other)
+// pairs by vertex, then each vertex's run sorted and made unique, in
+// parallel pieces.
+std::pair<IndexArray, IndexArray> vertex_neighbours(const Cells& c, std::size_t n) {
+  const std::size_t m = c.shape(0), k = c.shape(1);
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= n)
+      throw std::invalid_argument("vertex_neighbor_vertices: simplex " + std::to_string(i / k) + " names point " +
+                                  std::to_string(c.data()[i]));
+  std::vector<std::int64_t> start(n + 1, 0), pairs(m * k * (k - 1)), indptr(n + 1, 0), out;
+  {
+    nb::gil_scoped_release nogil;
+    const std::int64_t* S = c.data();
+    for (std::size_t i = 0; i < m * k; ++i) start[static_cast<std::size_t>(S[i]) + 1] += static_cast<std::int64_t>(k - 1);
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t s = 0; s < m; ++s)
+      for (std::size_t a = 0; a < k; ++a)
+        for (std::size_t b = 0; b < k; ++b)
+          if (a != b) pairs[static_cast<std::size_t>(fill[static_cast<std::size_t>(S[s * k + a])]++)] = S[s * k + b];
+    std::vector<std::int64_t> len(n, 0);
+    cpu::par_for(n, 1024, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t v = lo; v < hi; ++v) {
+        auto b = pairs.begin() + start[v], e = pairs.begin() + start[v + 1];
+        std::sort(b, e);
+        len[v] = std::unique(b, e) - b;
+      }
+    });
+    for (std::size_t v = 0; v < n; ++v) indptr[v + 1] = indptr[v] + len[v];
+    out.resize(static_cast<std::size_t>(indptr[n]));
+    cpu::par_for(n, 1024, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t v = lo; v < hi; ++v)
+        std::copy_n(pairs.begin() + start[v], len[v], out.begin() + indptr[v]);
+    });
+  }
+  const std::size_t total = out.size();
+  return {index_array(std::move(indptr), n + 1, 0, true), index_array(std::move(out), total, 0, true)};
+}
+
 // The exact power_d sign (no perturbation; pred::power_d_exact, may be 0)
 // of each row of d+2 point indices: det Λ with rows (p, |p|^2 - w, 1), the
 // 1-column last (weights: null for Delaunay). In parallel pieces.
@@ -2945,6 +2986,7 @@ NB_MODULE(_flipflop, m) {
   m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
   m.def("barycentric_transforms", &barycentric_transforms, nb::arg("points"), nb::arg("simplices"), nb::arg("signs"));
   m.def("power_signs", &power_signs, nb::arg("points"), nb::arg("weights").none(), nb::arg("cells"));
+  m.def("vertex_neighbours", &vertex_neighbours, nb::arg("simplices"), nb::arg("n"));
   m.def("lifted_equations", &lifted_equations, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"),
         nb::arg("lift_exponent"), nb::arg("furthest"));
   m.def("certify", &certify_cells, nb::arg("kind"), nb::arg("points"), nb::arg("cells"), nb::arg("weights").none(),

@@ -229,8 +229,27 @@ def test_neighbors_vertex_to_simplex_and_vertex_neighbor_vertices(pair):
     assert ip.shape == jp.shape == (t.npoints + 1,)
     for v in range(t.npoints):
         assert set(ix[ip[v]:ip[v + 1]]) == set(jx[jp[v]:jp[v + 1]])
-        # the definition: joined by an edge of some simplex
+        # the definition: joined by an edge of some simplex; ascending
         assert set(ix[ip[v]:ip[v + 1]]) == {int(x) for r in t.simplices if v in r for x in r} - {v}
+        assert (np.diff(ix[ip[v]:ip[v + 1]]) > 0).all()
+
+
+@pytest.mark.parametrize("d", [2, 3, 4])
+def test_vertex_neighbor_vertices_with_duplicates_and_redundant_points(d):
+    # copies and weighted points that are vertices of no simplex have no
+    # neighbours; the others those of the definition, ascending
+    rng = np.random.default_rng(90 + d)
+    p = rng.random((30, d))
+    p = np.concatenate([p, p[:5]])
+    for w in (None, rng.random(len(p)) * 0.05):
+        t = flipflop.Delaunay(p, weights=w)
+        ip, ix = t.vertex_neighbor_vertices
+        assert ip.shape == (len(p) + 1,) and ip[0] == 0 and ip[-1] == len(ix)
+        for v in range(len(p)):
+            run = ix[ip[v]:ip[v + 1]]
+            assert set(run.tolist()) == {int(x) for r in t.simplices if v in r for x in r} - {v}
+            assert (np.diff(run) > 0).all()
+        assert (np.diff(ip)[np.setdiff1d(np.arange(len(p)), t.simplices)] == 0).all()
 
 
 def test_transform_gives_scipys_barycentric_coordinates(pair):
