@@ -2080,20 +2080,11 @@ inline Ev eg_div(Ev a, Ev b) {
   return {v, ((std::fabs(a.v) * b.e + std::fabs(b.v) * a.e) / den + kU * std::fabs(v)) * kUp};
 }
 
-bool centre_filtered_gauss(int d, const double* const* p, const double* w, double* out) {
-  Ev A[kMaxD][kMaxD + 1];
-  for (int k = 1; k <= d; ++k) {
-    Ev b{0.0L, 0.0L};
-    for (int l = 0; l < d; ++l) {
-      const Ev v = eg_sub({p[k][l], 0.0L}, {p[0][l], 0.0L});
-      A[k - 1][l] = {2 * v.v, 2 * v.e};  // exact
-      const Ev sq = eg_mul(v, v);
-      const long double t = b.v + sq.v;
-      b = {t, (b.e + sq.e + kU * std::fabs(t)) * kUp};
-    }
-    if (w) b = eg_sub(b, eg_sub({w[k], 0.0L}, {w[0], 0.0L}));
-    A[k - 1][d] = b;
-  }
+// Gaussian elimination with partial pivoting on the long double
+// approximations of A = [M | rhs] (d rows), every value with its running
+// bound (eg_*); x the solution. False where a pivot's bound does not
+// exclude zero or a value is not finite. A is overwritten.
+bool ev_solve(int d, Ev (*A)[kMaxD + 1], Ev* x) {
   for (int col = 0; col < d; ++col) {
     int piv = col;
     for (int r = col + 1; r < d; ++r)
@@ -2106,24 +2097,138 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
       for (int j = col + 1; j <= d; ++j) A[r][j] = eg_sub(A[r][j], eg_mul(f, A[col][j]));
     }
   }
-  Ev x[kMaxD];
   for (int i = d - 1; i >= 0; --i) {
     Ev t = A[i][d];
     for (int j = i + 1; j < d; ++j) t = eg_sub(t, eg_mul(A[i][j], x[j]));
     x[i] = eg_div(t, A[i][i]);
   }
-  for (int l = 0; l < d; ++l) {
-    const long double cv = static_cast<long double>(p[0][l]) + x[l].v;
-    const long double e = (x[l].e + kU * std::fabs(cv)) * kUp;
-    if (!std::isfinite(cv) || !std::isfinite(e)) return false;
-    const double h = static_cast<double>(cv);  // round to nearest
-    const double ah = std::fabs(h);
-    if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
-    const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
-    const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
-    if (!(cv - lo > e && hi - cv > e)) return false;
-    out[l] = h;
+  return true;
+}
+
+// The double nearest to c, where the exact value lies within e of c (long
+// double), when that interval lies strictly between the midpoints around
+// it (computed exactly: 54 significant bits), for a normal double away from
+// overflow; else false.
+bool rounds_to(long double c, long double e, double& out) {
+  if (!std::isfinite(c) || !std::isfinite(e)) return false;
+  const double h = static_cast<double>(c);  // round to nearest
+  const double ah = std::fabs(h);
+  if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
+  const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
+  const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
+  if (!(c - lo > e && hi - c > e)) return false;
+  out = h;
+  return true;
+}
+
+// Error-free transformations (exact for finite values without overflow;
+// two_prod's low part is exact unless it underflows, each such loss below
+// 2^-1074) and Sum2 of Ogita, Rump and Oishi (2005): the computed sum of n
+// doubles is within u |sum| + gamma_(n-1)^2 sum |p_i| of the exact one (u =
+// 2^-53; Proposition 4.5), bounded here by 2^-52 |res| + 4 (n 2^-52)^2
+// sum |p_i| (the factor 4 covers 1 / (1 - u) and the rounding of sum |p_i|)
+// plus 2^-1060 for underflowed low parts (at most 100 of them).
+inline void two_sum(double a, double b, double& s, double& t) {
+  s = a + b;
+  const double bb = s - a;
+  t = (a - (s - bb)) + (b - bb);
+}
+inline void two_prod(double a, double b, double& p, double& t) {
+  p = a * b;
+  t = std::fma(a, b, -p);
+}
+struct Sum2 {
+  double s = 0.0, sigma = 0.0, abs = 0.0;
+  int n = 0;
+  void add(double x) {
+    double t;
+    two_sum(s, x, s, t);
+    sigma += t;
+    abs += std::fabs(x);
+    ++n;
   }
+  long double result() const { return static_cast<long double>(s + sigma); }
+  long double bound() const {
+    const long double res = std::fabs(static_cast<long double>(s + sigma));
+    const long double g = static_cast<long double>(n) * 0x1p-52L;
+    return (0x1p-52L * res + 4 * g * g * static_cast<long double>(abs) + 0x1p-1060L) * kUp;
+  }
+};
+
+// d = 4..9 (module comment above): the long double solution x~ decides the
+// centre where it can. Where it cannot (its bound is too wide for the
+// rounding: many slivers in 5D and 6D), one step of refinement: x~ rounded to
+// doubles x_d, the residual r = B - 2 V x_d as an exact sum of products of
+// doubles (each V_kl = p_kl - p_0l exactly two doubles by two_sum) summed by
+// Sum2 with its bound, then 2 V delta = r solved as before (exactly,
+// delta = x - x_d, x the exact solution), and c = p_0 + x_d + delta with
+// p_0 + x_d exact by two_sum. The residual's bound is that of Sum2, the
+// rest running bounds, so the refined centre's bound is about cond^2 u_ld^2
+// |x| plus the final roundings (2^-63 |c|), not cond u_ld |x|.
+bool centre_filtered_gauss(int d, const double* const* p, const double* w, double* out) {
+  Ev A[kMaxD][kMaxD + 1], V2[kMaxD][kMaxD];
+  for (int k = 1; k <= d; ++k) {
+    Ev b{0.0L, 0.0L};
+    for (int l = 0; l < d; ++l) {
+      const Ev v = eg_sub({p[k][l], 0.0L}, {p[0][l], 0.0L});
+      A[k - 1][l] = V2[k - 1][l] = {2 * v.v, 2 * v.e};  // exact
+      const Ev sq = eg_mul(v, v);
+      const long double t = b.v + sq.v;
+      b = {t, (b.e + sq.e + kU * std::fabs(t)) * kUp};
+    }
+    if (w) b = eg_sub(b, eg_sub({w[k], 0.0L}, {w[0], 0.0L}));
+    A[k - 1][d] = b;
+  }
+  Ev x[kMaxD];
+  if (!ev_solve(d, A, x)) return false;
+  double c[kMaxD];
+  bool all = true;
+  for (int l = 0; l < d && all; ++l) {
+    const long double cv = static_cast<long double>(p[0][l]) + x[l].v;
+    all = rounds_to(cv, (x[l].e + kU * std::fabs(cv)) * kUp, c[l]);
+  }
+  if (all) {
+    for (int l = 0; l < d; ++l) out[l] = c[l];
+    return true;
+  }
+  // refinement
+  double xd[kMaxD];
+  for (int l = 0; l < d; ++l) {
+    xd[l] = static_cast<double>(x[l].v);
+    if (!std::isfinite(xd[l])) return false;
+  }
+  for (int k = 1; k <= d; ++k) {
+    Sum2 r;
+    for (int l = 0; l < d; ++l) {
+      double vh, vl, ph, pl;
+      two_sum(p[k][l], -p[0][l], vh, vl);
+      two_prod(vh, vh, ph, pl), r.add(ph), r.add(pl);   // vh^2
+      two_prod(vh, vl, ph, pl), r.add(2 * ph), r.add(2 * pl);  // 2 vh vl
+      two_prod(vl, vl, ph, pl), r.add(ph), r.add(pl);   // vl^2
+      two_prod(vh, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vh x_d
+      two_prod(vl, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vl x_d
+    }
+    if (w) {
+      double wh, wl;
+      two_sum(w[k], -w[0], wh, wl);
+      r.add(-wh), r.add(-wl);
+    }
+    const long double rv = r.result(), re = r.bound();
+    if (!std::isfinite(rv) || !std::isfinite(re)) return false;
+    for (int l = 0; l < d; ++l) A[k - 1][l] = V2[k - 1][l];
+    A[k - 1][d] = {rv, re};
+  }
+  Ev delta[kMaxD];
+  if (!ev_solve(d, A, delta)) return false;
+  for (int l = 0; l < d; ++l) {
+    double s0, t0;
+    two_sum(p[0][l], xd[l], s0, t0);  // p_0 + x_d exactly
+    const long double tail = static_cast<long double>(t0) + delta[l].v;
+    const long double cv = static_cast<long double>(s0) + tail;
+    const long double e = (delta[l].e + kU * std::fabs(tail) + kU * std::fabs(cv)) * kUp;
+    if (!rounds_to(cv, e, c[l])) return false;
+  }
+  for (int l = 0; l < d; ++l) out[l] = c[l];
   return true;
 }
 #endif

@@ -151,6 +151,13 @@ def test_vertices_correctly_rounded_4d_5d_weighted_and_near_degenerate(d):
     assert check_rounding(Voronoi(s)) > 20
     m = rng.random((n, d)) * 10.0 ** rng.integers(-100, 100, (n, 1))
     assert check_rounding(Voronoi(m)) > 20
+    # slivers: points near a hyperplane (badly conditioned systems, the
+    # refinement step's case), and near a line
+    for squash in ((1e-7,), (1e-5, 1e-9)):
+        q = rng.random((n, d))
+        for j, f in enumerate(squash):
+            q[:, d - 1 - j] *= f
+        assert check_rounding(Voronoi(q)) > 20
 
 
 def test_vertices_correctly_rounded_weighted():
