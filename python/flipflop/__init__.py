@@ -870,8 +870,10 @@ class Delaunay(_QhullUser):
     whose circumsphere point n lies strictly outside of / not.
     incremental=True allows add_points(points,
     restart=False, *, weights=None). With the 'cpu' backend the
-    triangulation is then built, in every dimension, by the
-    cavity-insertion kernel (kernels_cpu/rtd), which is kept: add_points
+    cavity-insertion kernel (kernels_cpu/rtd) is kept: in 2D and 3D (no
+    strict view, no furthest site) the construction is the one-shot call's
+    and the first add_points seeds the kernel with that certified
+    triangulation; elsewhere the kernel builds it. add_points
     inserts only the new points into it, in place, and certifies the result;
     the answer is the one-shot answer for all the points, byte for byte (the
     canonical answer does not depend on the insertion order; restart changes

@@ -99,8 +99,9 @@ class Voronoi(_QhullUser):
     option raises ValueError.
 
     incremental=True allows add_points(points, restart=False): the
-    triangulation is then built by the cavity-insertion kernel, which is
-    kept, and add_points inserts the new points into it in place; the
+    cavity-insertion kernel is kept (in 2D and 3D seeded at the first
+    add_points with the one-shot triangulation, as Delaunay's), and
+    add_points inserts the new points into it in place; the
     diagram is derived again from its certified result (the exact answer
     does not depend on the order of insertion); close() ends it and frees
     the kept kernel.
