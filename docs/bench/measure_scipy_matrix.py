@@ -6,23 +6,17 @@ medians of 3 (docs/performance/python_scipy.md, stop 71):
 
 scipy's incremental add on the 4D and 5D grids ends the process (exit status 7), so those rows
 time flipflop alone."""
-import itertools, time, sys, numpy as np, scipy.spatial as ss, flipflop
-def grid(k, d): return np.array(list(itertools.product(range(k), repeat=d)), dtype=float)
-def perturbed(p, seed=7):
-    p = p.copy(); rng = np.random.default_rng(seed)
-    moved = rng.choice(len(p), len(p) // 5, replace=False)
-    for i in moved:
-        for j in range(p.shape[1]):
-            to = np.inf if rng.random() < 0.5 else -np.inf
-            p[i, j] = np.nextafter(np.nextafter(p[i, j], to), to)
-    return p
+import sys, time
+
+import numpy as np, scipy.spatial as ss, flipflop
+from lattices import grid, perturbed
+
 K = {2: 60, 3: 15, 4: 6, 5: 3}
 def med(f, r=3):
     ts = []
     for _ in range(r):
         s = time.perf_counter(); f(); ts.append(time.perf_counter() - s)
     return float(np.median(ts))
-rows = []
 for d in (int(x) for x in (sys.argv[1] if len(sys.argv) > 1 else '2345')):
     g = grid(K[d], d)
     inputs = {"grid": g, "grid+2ulp+1": perturbed(g) + 1.0, "random": np.random.default_rng(1).random((len(g), d))}

@@ -12,27 +12,13 @@ Delaunay of random points in 4D and 5D, ConvexHull of standard normal points in 
 uniform cube points in 4D and 5D,
 find_simplex of 18,000 queries on the perturbed 3^5 grid. flipflop's calls include
 certification; both libraries' attributes are those computed eagerly."""
-import itertools, os, sys
+import os, sys
 import numpy as np, scipy, scipy.spatial as ss, flipflop
 from alternate import alternate
+from lattices import grid, perturbed
 
 R = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 ONLY = sys.argv[2] if len(sys.argv) > 2 else ""
-
-
-def grid(k, d):
-    return np.array(list(itertools.product(range(k), repeat=d)), dtype=float)
-
-
-def perturbed(p, seed=7):
-    p = p.copy()
-    rng = np.random.default_rng(seed)
-    moved = rng.choice(len(p), len(p) // 5, replace=False)
-    for i in moved:
-        for j in range(p.shape[1]):
-            to = np.inf if rng.random() < 0.5 else -np.inf
-            p[i, j] = np.nextafter(np.nextafter(p[i, j], to), to)
-    return p
 
 
 rng = np.random.default_rng(1)

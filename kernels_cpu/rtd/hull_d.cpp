@@ -200,17 +200,8 @@ class HullBuilder {
       for (int j = 0; j < D; ++j) {
         const Index g = nb[k][static_cast<std::size_t>(j)];
         if (g >= m || g == k) return false;
-        int i = -1, shared = 0;
-        for (int c = 0; c < D; ++c) {
-          const Index x = fv_[g * D + static_cast<std::uint32_t>(c)];
-          bool in = false;
-          for (int q = 0; q < D; ++q) in = in || (q != j && fv_[k * D + static_cast<std::uint32_t>(q)] == x);
-          if (in)
-            ++shared;
-          else
-            i = c;
-        }
-        if (shared != D - 1 || i < 0 || nb[g][static_cast<std::size_t>(i)] != k) return false;
+        const int i = across(&fv_[static_cast<std::size_t>(k) * D], &fv_[static_cast<std::size_t>(g) * D], D, j);
+        if (i < 0 || nb[g][static_cast<std::size_t>(i)] != k) return false;
         fn_[k * D + static_cast<std::uint32_t>(j)] = g * D + static_cast<std::uint32_t>(i);
       }
     if constexpr (kStatic)

@@ -13,6 +13,24 @@
 
 namespace flipflop::cpu {
 
+// Two cells of k corners each (facets of a hull, simplices of a
+// triangulation), t and g: when g holds every corner of t but the j-th and
+// one more, that one's position in g (the side of g across which it meets t);
+// otherwise -1. Corners distinct within each cell. The seeded kernels' check
+// that a caller's cells are glued along their faces.
+inline int across(const std::uint32_t* t, const std::uint32_t* g, int k, int j) {
+  int i = -1, shared = 0;
+  for (int c = 0; c < k; ++c) {
+    bool in = false;
+    for (int q = 0; q < k; ++q) in = in || (q != j && t[q] == g[c]);
+    if (in)
+      ++shared;
+    else
+      i = c;
+  }
+  return shared == k - 1 ? i : -1;
+}
+
 template <int K>  // vertices per key
 class RidgeTable {
  public:

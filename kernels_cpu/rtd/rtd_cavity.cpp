@@ -119,17 +119,8 @@ class Builder {
         if (static_cast<std::uint64_t>(u) >= m || static_cast<std::uint32_t>(u) == t) return false;
         // u holds every corner of t but the j-th, and one more at corner i,
         // across which it names t back
-        int i = -1, shared = 0;
-        for (int c = 0; c < W; ++c) {
-          const std::uint32_t x = tv_[static_cast<std::size_t>(u) * W + static_cast<std::size_t>(c)];
-          bool in = false;
-          for (int q = 0; q < W; ++q) in = in || (q != j && tv_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(q)] == x);
-          if (in)
-            ++shared;
-          else
-            i = c;
-        }
-        if (shared != D || i < 0 || neighbour(static_cast<std::size_t>(u), i) != t) return false;
+        const int i = across(simplex(t), simplex(static_cast<std::uint32_t>(u)), W, j);
+        if (i < 0 || neighbour(static_cast<std::size_t>(u), i) != t) return false;
         tn_[static_cast<std::size_t>(t) * W + static_cast<std::size_t>(j)] = static_cast<std::uint32_t>(u) * W + static_cast<std::uint32_t>(i);
       }
     if (horizon_.size() < static_cast<std::size_t>(W)) return false;  // a closed hull has at least D+1 facets

@@ -1060,16 +1060,21 @@ class Delaunay(_QhullUser):
             raise ValueError(f"find_simplex: wrong dimensionality in xi: points must have shape (..., {self.ndim}), "
                              f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
-        s64, n64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))
+        s64, n64 = self._int64()
         return _intc(_flipflop.find_simplex(self.points, s64, n64, q, self._signs()).reshape(shape))
 
     # ---- their computation -----------------------------------------------------------
+
+    def _int64(self):
+        """(simplices, neighbors) as int64, the compiled calls' index type,
+        once per triangulation."""
+        return self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))
 
     def _signs(self) -> np.ndarray:
         """Each simplex's exact orientation sign (no perturbation; int8),
         once per triangulation (_flipflop.simplex_signs: the exact orient_d
         of the compiled predicates, in parallel)."""
-        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        s64 = self._int64()[0]
         return self._cached("signs", lambda: _flipflop.simplex_signs(self.points, s64))
 
     def _flat(self) -> np.ndarray:
@@ -1083,7 +1088,7 @@ class Delaunay(_QhullUser):
         Jordan with partial pivoting, in parallel); NaN for the simplices of
         zero volume, decided exactly (_signs), and for those singular in
         floating point."""
-        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        s64 = self._int64()[0]
         return _flipflop.barycentric_transforms(self.points, s64, self._signs())
 
     def _compute_equations(self) -> np.ndarray:
@@ -1092,7 +1097,7 @@ class Delaunay(_QhullUser):
         (_flipflop.lifted_equations: the lifted vertices as lift_points
         gives them, the normal by cofactors of their differences scaled by a
         power of two, in parallel)."""
-        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        s64 = self._int64()[0]
         return _flipflop.lifted_equations(self.points, self.weights, s64, self._lift_exponent, self.furthest_site)
 
     def _compute_vertex_to_simplex(self) -> np.ndarray:
@@ -1105,7 +1110,7 @@ class Delaunay(_QhullUser):
 
     def _compute_vertex_neighbor_vertices(self):
         # each vertex's neighbours ascending (_flipflop.vertex_neighbours)
-        s64 = self._cached("int64", lambda: (self.simplices.astype(np.int64), self.neighbors.astype(np.int64)))[0]
+        s64 = self._int64()[0]
         indptr, indices = _flipflop.vertex_neighbours(s64, self.npoints)
         return _intc(indptr), _intc(indices)
 

@@ -56,6 +56,7 @@
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
 #include "kernels_cuda/gpu.hpp"
 #endif
+#include "predicates/expansion.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
@@ -1283,6 +1284,16 @@ std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_
 // every query exactly.
 using Signs = nb::ndarray<const std::int8_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
+// Every index of the rows of c names one of n points (what: the caller, for
+// the message; std::invalid_argument naming the first that does not).
+void check_indices(const Cells& c, std::size_t n, const char* what) {
+  const std::size_t m = c.shape(0), k = c.shape(1);
+  for (std::size_t i = 0; i < m * k; ++i)
+    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= n)
+      throw std::invalid_argument(std::string(what) + "simplex " + std::to_string(i / k) + " names point " +
+                                  std::to_string(c.data()[i]));
+}
+
 // The exact sign of det[[v_0 1] ... [v_d 1]] of every simplex (0: zero
 // volume), in parallel pieces; find_simplex's, which Python computes once per
 // triangulation and passes back (on near-degenerate input these signs are
@@ -1290,9 +1301,7 @@ using Signs = nb::ndarray<const std::int8_t, nb::ndim<1>, nb::c_contig, nb::devi
 std::vector<std::int8_t> signs_of(const PointSet& ps, const Cells& c) {
   const std::size_t m = c.shape(0), k = c.shape(1);
   if (k < 2 || k > static_cast<std::size_t>(kMaxD) + 1) throw std::invalid_argument("simplices need 2..10 vertices");
-  for (std::size_t i = 0; i < m * k; ++i)
-    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
-      throw std::invalid_argument("simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  check_indices(c, ps.size(), "");
   std::vector<std::int8_t> own(m);
   cpu::par_for(m, 256, [&](std::size_t lo, std::size_t hi) {
     for (std::size_t s = lo; s < hi; ++s) {
@@ -1329,9 +1338,7 @@ DoubleArray lifted_equations(const Points& p, const std::optional<Vector>& w, co
   const PointSet ps = point_set(p, w);
   const std::size_t m = c.shape(0), k = c.shape(1), d = static_cast<std::size_t>(ps.dim);
   if (k != d + 1 || d > static_cast<std::size_t>(kMaxD)) throw std::invalid_argument("equations: simplices need d+1 indices");
-  for (std::size_t i = 0; i < m * k; ++i)
-    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
-      throw std::invalid_argument("equations: simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  check_indices(c, ps.size(), "equations: ");
   std::vector<double> out(m * (d + 2));
   {
     nb::gil_scoped_release nogil;
@@ -1390,10 +1397,7 @@ DoubleArray lifted_equations(const Points& p, const std::optional<Vector>& w, co
 // parallel pieces.
 std::pair<IndexArray, IndexArray> vertex_neighbours(const Cells& c, std::size_t n) {
   const std::size_t m = c.shape(0), k = c.shape(1);
-  for (std::size_t i = 0; i < m * k; ++i)
-    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= n)
-      throw std::invalid_argument("vertex_neighbor_vertices: simplex " + std::to_string(i / k) + " names point " +
-                                  std::to_string(c.data()[i]));
+  check_indices(c, n, "vertex_neighbor_vertices: ");
   std::vector<std::int64_t> start(n + 1, 0), pairs(m * k * (k - 1)), indptr(n + 1, 0), out;
   {
     nb::gil_scoped_release nogil;
@@ -1431,9 +1435,7 @@ nb::ndarray<nb::numpy, std::int8_t> power_signs(const Points& p, const std::opti
   const PointSet ps = point_set(p, w);
   const std::size_t m = c.shape(0), k = c.shape(1), d = static_cast<std::size_t>(ps.dim);
   if (k != d + 2 || d < 1 || d > 9) throw std::invalid_argument("power_signs: rows of d+2 point indices, d = 1..9");
-  for (std::size_t i = 0; i < m * k; ++i)
-    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
-      throw std::invalid_argument("power_signs: row " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  check_indices(c, ps.size(), "power_signs: ");
   auto* heap = new std::vector<std::int8_t>(m);
   {
     nb::gil_scoped_release nogil;
@@ -1469,9 +1471,7 @@ DoubleArray barycentric_transforms(const Points& p, const Cells& c, const Signs&
   if (k != static_cast<std::size_t>(ps.dim) + 1 || d > static_cast<std::size_t>(kMaxD))
     throw std::invalid_argument("transform: simplices need d+1 indices");
   if (signs.shape(0) != m) throw std::invalid_argument("transform: one sign per simplex");
-  for (std::size_t i = 0; i < m * k; ++i)
-    if (c.data()[i] < 0 || static_cast<std::uint64_t>(c.data()[i]) >= ps.size())
-      throw std::invalid_argument("transform: simplex " + std::to_string(i / k) + " names point " + std::to_string(c.data()[i]));
+  check_indices(c, ps.size(), "transform: ");
   std::vector<double> out(m * k * d);
   {
     nb::gil_scoped_release nogil;
@@ -2001,6 +2001,22 @@ inline Ev ev_det3(const Ev (*r)[3]) {
   return ev_add(ev_sub(ev_mul(r[0][0], c0), ev_mul(r[0][1], c1)), ev_mul(r[0][2], c2));
 }
 
+// The double nearest to c, where the exact value lies within e of c (long
+// double), when that interval lies strictly between the midpoints around
+// it (computed exactly: 54 significant bits), for a normal double away from
+// overflow; else false.
+bool rounds_to(long double c, long double e, double& out) {
+  if (!std::isfinite(c) || !std::isfinite(e)) return false;
+  const double h = static_cast<double>(c);  // round to nearest
+  const double ah = std::fabs(h);
+  if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
+  const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
+  const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
+  if (!(c - lo > e && hi - c > e)) return false;
+  out = h;
+  return true;
+}
+
 // true: out[] holds the correctly rounded centre (the simplex has positive volume)
 bool centre_filtered(int d, const double* const* p, const double* w, double* out) {
   Ev V[3][3], B[3];
@@ -2038,15 +2054,7 @@ bool centre_filtered(int d, const double* const* p, const double* w, double* out
         (std::fabs(N[l].v) * De + std::fabs(D.v) * N[l].e * infl) / (std::fabs(D.v) * (std::fabs(D.v) - De)) +
         kU * std::fabs(xv);
     const Ev c = ev_add({p[0][l], 0.0L}, {xv, xe * infl});
-    const long double e = c.e * infl;
-    if (!std::isfinite(c.v) || !std::isfinite(e)) return false;
-    const double h = static_cast<double>(c.v);  // round to nearest
-    const double ah = std::fabs(h);
-    if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
-    const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
-    const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
-    if (!(c.v - lo > e && hi - c.v > e)) return false;
-    out[l] = h;
+    if (!rounds_to(c.v, c.e * infl, out[l])) return false;
   }
   return true;
 }
@@ -2105,44 +2113,22 @@ bool ev_solve(int d, Ev (*A)[kMaxD + 1], Ev* x) {
   return true;
 }
 
-// The double nearest to c, where the exact value lies within e of c (long
-// double), when that interval lies strictly between the midpoints around
-// it (computed exactly: 54 significant bits), for a normal double away from
-// overflow; else false.
-bool rounds_to(long double c, long double e, double& out) {
-  if (!std::isfinite(c) || !std::isfinite(e)) return false;
-  const double h = static_cast<double>(c);  // round to nearest
-  const double ah = std::fabs(h);
-  if (!(ah >= 0x1p-1000 && ah <= 0x1p1000)) return false;  // zero, subnormal range, overflow: exact
-  const long double lo = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, -INFINITY))) / 2;
-  const long double hi = (static_cast<long double>(h) + static_cast<long double>(std::nextafter(h, INFINITY))) / 2;
-  if (!(c - lo > e && hi - c > e)) return false;
-  out = h;
-  return true;
-}
-
-// Error-free transformations (exact for finite values without overflow;
-// two_prod's low part is exact unless it underflows, each such loss below
-// 2^-1074) and Sum2 of Ogita, Rump and Oishi (2005): the computed sum of n
-// doubles is within u |sum| + gamma_(n-1)^2 sum |p_i| of the exact one (u =
-// 2^-53; Proposition 4.5), bounded here by 2^-52 |res| + 4 (n 2^-52)^2
-// sum |p_i| (the factor 4 covers 1 / (1 - u) and the rounding of sum |p_i|)
-// plus 2^-1060 for underflowed low parts (at most 100 of them).
-inline void two_sum(double a, double b, double& s, double& t) {
-  s = a + b;
-  const double bb = s - a;
-  t = (a - (s - bb)) + (b - bb);
-}
-inline void two_prod(double a, double b, double& p, double& t) {
-  p = a * b;
-  t = std::fma(a, b, -p);
-}
+// Sum2 of Ogita, Rump and Oishi (2005) over error-free transformations
+// (pred::xp::Dbl's two_sum and two_product, [She97]: exact for finite values
+// without overflow, two_product's low part exact unless it underflows — each
+// such loss a few units of 2^-1074 — and, without an FMA, for factors below
+// 2^995, which the caller checks): the computed sum of n doubles is within u
+// |sum| + gamma_(n-1)^2 sum |p_i| of the exact one (u = 2^-53; Proposition
+// 4.5), bounded here by 2^-52 |res| + 4 (n 2^-52)^2 sum |p_i| (the factor 4
+// covers 1 / (1 - u) and the rounding of sum |p_i|) plus 2^-1060 for the
+// low parts that underflow (at most 100 products).
+using pred::xp::Dbl;
 struct Sum2 {
   double s = 0.0, sigma = 0.0, abs = 0.0;
   int n = 0;
   void add(double x) {
     double t;
-    two_sum(s, x, s, t);
+    Dbl::two_sum(s, x, s, t);
     sigma += t;
     abs += std::fabs(x);
     ++n;
@@ -2192,25 +2178,29 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
     return true;
   }
   // refinement
+  // every factor of the residual's products below 2^995 (two_product
+  // without an FMA splits them; differences of the coordinates below 2^994)
   double xd[kMaxD];
   for (int l = 0; l < d; ++l) {
     xd[l] = static_cast<double>(x[l].v);
-    if (!std::isfinite(xd[l])) return false;
+    if (!(std::fabs(xd[l]) < 0x1p994) || !(std::fabs(p[0][l]) < 0x1p993)) return false;
+    for (int k = 1; k <= d; ++k)
+      if (!(std::fabs(p[k][l]) < 0x1p993)) return false;
   }
   for (int k = 1; k <= d; ++k) {
     Sum2 r;
     for (int l = 0; l < d; ++l) {
       double vh, vl, ph, pl;
-      two_sum(p[k][l], -p[0][l], vh, vl);
-      two_prod(vh, vh, ph, pl), r.add(ph), r.add(pl);   // vh^2
-      two_prod(vh, vl, ph, pl), r.add(2 * ph), r.add(2 * pl);  // 2 vh vl
-      two_prod(vl, vl, ph, pl), r.add(ph), r.add(pl);   // vl^2
-      two_prod(vh, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vh x_d
-      two_prod(vl, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vl x_d
+      Dbl::two_sum(p[k][l], -p[0][l], vh, vl);
+      Dbl::two_product(vh, vh, ph, pl), r.add(ph), r.add(pl);   // vh^2
+      Dbl::two_product(vh, vl, ph, pl), r.add(2 * ph), r.add(2 * pl);  // 2 vh vl
+      Dbl::two_product(vl, vl, ph, pl), r.add(ph), r.add(pl);   // vl^2
+      Dbl::two_product(vh, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vh x_d
+      Dbl::two_product(vl, xd[l], ph, pl), r.add(-2 * ph), r.add(-2 * pl);  // -2 vl x_d
     }
     if (w) {
       double wh, wl;
-      two_sum(w[k], -w[0], wh, wl);
+      Dbl::two_sum(w[k], -w[0], wh, wl);
       r.add(-wh), r.add(-wl);
     }
     const long double rv = r.result(), re = r.bound();
@@ -2222,7 +2212,7 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
   if (!ev_solve(d, A, delta)) return false;
   for (int l = 0; l < d; ++l) {
     double s0, t0;
-    two_sum(p[0][l], xd[l], s0, t0);  // p_0 + x_d exactly
+    Dbl::two_sum(p[0][l], xd[l], s0, t0);  // p_0 + x_d exactly
     const long double tail = static_cast<long double>(t0) + delta[l].v;
     const long double cv = static_cast<long double>(s0) + tail;
     const long double e = (delta[l].e + kU * std::fabs(tail) + kU * std::fabs(cv)) * kUp;
