@@ -3,7 +3,7 @@
 //   flipflop gen DIST N [--seed S] [--thickness T] [--weights LO,HI] [--hull-points H] -o FILE
 //   flipflop hull2|hull3|rt2|dt2 IN [-o OUT] [--backend B] [--algo A] [--stats] [--strict (hull3, rt2, dt2)]
 //                                [--threads N (cpu backend)]
-//   flipflop rt3|dt3 IN [-o OUT] [--backend cpu|reference] [--threads N] [--strict] [--stats]
+//   flipflop rt3|dt3 IN [-o OUT] [--backend cpu|reference|cuda|cuda-omp] [--threads N] [--strict] [--stats]
 //   flipflop rtd IN --dim d [-o OUT] [--backend cpu|reference] [--threads N (cpu backend)] [--strict] [--stats]
 //   flipflop instant-flip POINTS --dim d --from W.xyz --to U.xyz [-o OUT] [--stats] [--timeline] [--threads N]
 //   flipflop certify hull2|hull3|rt2|dt2 POINTS OUTPUT [--canonical] [--threads N]
@@ -97,9 +97,10 @@ int main(int argc, char** argv) {
                     ".vtu tetrahedral mesh, .npy index array");
     cmd->add_flag("--ascii", t3.ascii, "accepted for symmetry (.vtu is ASCII, .npy binary)");
     cmd->add_option("--backend", t3.backend,
-                    "cpu (default: kernels_cpu/rt3, multithreaded, certified from its witness) or reference "
-                    "(RT+1, sequential); the same bytes")
-        ->check(CLI::IsMember({"cpu", "reference"}));
+                    "cpu (default: kernels_cpu/rt3, multithreaded, certified from its witness), reference "
+                    "(RT+1, sequential), cuda (kernels_cuda/rt3 on the GPU) or cuda-omp (the same code on "
+                    "thrust's OpenMP backend); the same bytes")
+        ->check(CLI::IsMember({"cpu", "reference", "cuda", "cuda-omp"}));
     cmd->add_option("--threads", t3.threads, "worker threads of the cpu backend and its certifier (default: all cores)")
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--stats", t3.stats, "print counts and stage timings to standard error");

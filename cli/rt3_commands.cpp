@@ -18,6 +18,9 @@
 #include "io/read_points.hpp"
 #include "kernels_cpu/rt3/certify_rt3.hpp"
 #include "kernels_cpu/rt3/rt3.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
@@ -69,8 +72,15 @@ int run_rt3(const Rt3Args& a) {
   const std::string& kind = a.kind;
   const bool weighted = kind != "dt3";
   const std::string backend = a.backend.empty() ? "cpu" : a.backend;
-  if (backend != "cpu" && backend != "reference")
-    throw UsageError(kind + " backends: cpu (kernels_cpu/rt3, the default) and reference; got '" + backend + "'");
+  const bool gpu = backend == "cuda" || backend == "cuda-omp";
+  if (backend != "cpu" && backend != "reference" && !gpu)
+    throw UsageError(kind + " backends: cpu (kernels_cpu/rt3, the default), reference, cuda and cuda-omp; got '" +
+                     backend + "'");
+#ifndef FLIPFLOP_HAVE_KERNELS_GPU
+  if (gpu)
+    throw UsageError("--backend " + backend + ": this flipflop was built without the GPU kernels (kernels_cuda/: "
+                     "thrust headers and OpenMP)");
+#endif
   if (a.threads < 0) throw UsageError("--threads must be positive, got " + std::to_string(a.threads));
   if (a.threads != 0 && backend != "cpu")
     throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
@@ -97,11 +107,32 @@ int run_rt3(const Rt3Args& a) {
   std::vector<Index> redundant;
   cpu::Rt3Stats kst;
   cpu::StageTimes stages;
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  kernels::Rt3GpuStats gst;
+#endif
   ref::RtdStats rst;
   std::string certified_by;
   double t_compute = 0, t_certify = 0;
   try {
-    if (backend == "cpu") {
+    if (gpu) {
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+      // kernels_cuda/rt3: insertion rounds on the device, and the witness
+      // the cpu kernel's certifier checks
+      auto witness = std::make_unique<cpu::Rt3Witness>();
+      cpu::Rt3Result r = kernels::rt3_gpu(backend, ps, &gst, &stages, witness.get());
+      t_compute = seconds_since(t0);
+      progress->stage("certifying");
+      const auto t1 = Clock::now();
+      const certify::Report rep = cpu::certify_rt3(ps, *witness, r.tets, certify::Level::canonical);
+      t_certify = seconds_since(t1);
+      witness.reset();
+      if (rep.condition == "input-dimension") throw UsageError(a.in + ": " + rep.detail);
+      if (!rep.ok) throw InternalError("the " + kind + " result failed certification: " + rep.message());
+      tets = std::move(r.tets);
+      redundant = std::move(r.redundant);
+      certified_by = "canonical, cpu::certify_rt3 from the kernel's witness";
+#endif
+    } else if (backend == "cpu") {
       // kernels_cpu/rt3: BRIO order, incremental insertion, parallel output,
       // and the witness its certifier checks
       cpu::Rt3Options o;
@@ -178,7 +209,20 @@ int run_rt3(const Rt3Args& a) {
               << " points, " << canonical_count << " tetrahedra, " << canonical_redundant << " redundant; compute "
               << t_compute << " s, certify " << t_certify << " s (" << certified_by << "); read " << t_read
               << " s, write " << t_write << " s\n";
-    if (backend == "cpu") {
+    if (gpu) {
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+      std::cerr << kind << ": insertion rounds " << gst.rounds << ", inserted " << gst.inserted
+                << " (the first four included), discarded when located " << gst.discarded << ", cavities "
+                << gst.attempts << " (lost a claim " << gst.lost << ", overflowed " << gst.overflowed
+                << ", largest capacity " << gst.max_capacity << "), tetrahedra replaced " << gst.cavity_tets
+                << ", created " << gst.created_tets << ", exact-pass items " << gst.exact_items << ", slots "
+                << gst.slots << "\n";
+      const char* sep = ": stages ";
+      std::cerr << kind;
+      for (const auto& [stage, s] : stages.stages) std::cerr << std::exchange(sep, ", ") << stage << " " << s << " s";
+      std::cerr << " (kernels_cuda/rt3, backend " << backend << ")\n";
+#endif
+    } else if (backend == "cpu") {
       std::cerr << kind << ": inserted " << kst.inserted << " (placed outside the hull " << kst.placed
                 << "), discarded when located " << kst.discarded << ", removed by later insertions " << kst.removed
                 << ", tetrahedra replaced " << kst.cavity_tets << ", created " << kst.created_tets

@@ -16,6 +16,8 @@
 #include <thrust/copy.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
+#include <thrust/for_each.h>
+#include <thrust/iterator/counting_iterator.h>
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
 #include <thrust/system/omp/execution_policy.h>
 #else
@@ -23,6 +25,7 @@
 #endif
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -111,5 +114,24 @@ inline void require_device(const char* who) {
   if (count <= 0) throw kernels::NoDeviceError(std::string(who) + " (--backend cuda): no CUDA device; use --backend cuda-omp or cpu");
 }
 #endif
+
+// ---- helpers of the kernels' host code (rt2.cuh, rt3.cuh) -------------------------
+// The buffer's data as a pointer the functors take.
+template <class T>
+T* raw(Buffer<T>& b) {
+  return thrust::raw_pointer_cast(b.data());
+}
+// One element read on the host (a copy from the device in the CUDA build).
+template <class T>
+T read_one(Buffer<T>& b, std::size_t i) {
+  return static_cast<T>(b[i]);
+}
+// f(i) for i in [0, count), as one step (run_step).
+template <std::size_t ParallelFrom, class F>
+void for_range(std::size_t count, const F& f) {
+  if (count == 0) return;
+  thrust::counting_iterator<std::uint32_t> first(0);
+  run_step<ParallelFrom>(count, [&](auto policy) { thrust::for_each(policy, first, first + count, f); });
+}
 
 }  // namespace flipflop::FF_KERNELS_NS::backend

@@ -84,4 +84,17 @@ std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, re
       });
 }
 
+cpu::Rt3Result rt3_gpu(const std::string& backend, const PointSet& ps, Rt3GpuStats* stats, cpu::StageTimes* times,
+                       cpu::Rt3Witness* witness) {
+  return dispatch(
+      backend, [&] { return kernels_omp::rt3(ps, stats, times, witness); },
+      [&] {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+        return kernels_cuda::rt3(ps, stats, times, witness);
+#else
+        return cpu::Rt3Result{};
+#endif
+      });
+}
+
 }  // namespace flipflop::kernels

@@ -15,6 +15,7 @@
 #include "kernels_cuda/hull3/hull3.hpp"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
+#include "kernels_cuda/rt3/rt3.hpp"
 #include "reference/hull2/polygon.hpp"
 #include "reference/point_set.hpp"
 
@@ -36,5 +37,10 @@ std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, 
 // ffRT (§5.3): the regular triangulation of ps (Delaunay when unweighted)
 std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats = nullptr,
                               cpu::StageTimes* times = nullptr);
+
+// The 3D regular triangulation (Delaunay when unweighted), kernels_cuda/rt3;
+// witness (when given): the certificate of cpu::certify_rt3
+cpu::Rt3Result rt3_gpu(const std::string& backend, const PointSet& ps, Rt3GpuStats* stats = nullptr,
+                       cpu::StageTimes* times = nullptr, cpu::Rt3Witness* witness = nullptr);
 
 }  // namespace flipflop::kernels

@@ -499,6 +499,12 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend c
   for (int x = 0; x < 12; ++x)
     for (int y = 0; y < 12; ++y)
       for (int z = 0; z < 12; ++z) cube += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+  std::string weighted3;  // a 7^3 lattice with weights of three sizes (equal and lattice weights: SoS decides)
+  for (int x = 0; x < 7; ++x)
+    for (int y = 0; y < 7; ++y)
+      for (int z = 0; z < 7; ++z)
+        weighted3 += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + " " +
+                     std::to_string((x + 2 * y + 3 * z) % 3 * 0.25) + "\n";
   std::string weighted;  // integer points with weights of three sizes (some points redundant)
   std::srand(7);
   for (int i = 0; i < 5000; ++i)
@@ -516,7 +522,9 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend c
       {"hull2", t.file("random.xyz", random), {}},
       {"dt2", t.file("grid.xyz", grid), {"--backend cuda-omp --algo lawson", "--backend cuda --algo incremental"}},
       {"rt2", t.file("weighted.xyz", weighted), {"--backend cuda-omp --threads 2"}},
-      {"hull3", t.file("cube.xyz", cube), {"--backend cuda-omp --algo splay"}}};
+      {"hull3", t.file("cube.xyz", cube), {"--backend cuda-omp --algo splay"}},
+      {"dt3", t.file("cube.xyz", cube), {"--backend cuda-omp --threads 2"}},
+      {"rt3", t.file("weighted3.xyz", weighted3), {"--backend cuda --threads 2"}}};
   for (const Job& j : jobs) {
     const fs::path expect = t.dir / "expect.txt", got = t.dir / "got.txt";
     REQUIRE(run(t, std::string(j.kind) + " " + j.in.string() + " --backend reference -o " + expect.string()).code == 0);

@@ -243,6 +243,17 @@ TEST_CASE("rt3 cli: --stats prints counts and stage timings", "[cli]") {
     return err.substr(a, b - a);
   };
   CHECK(sizes(cpu.err) == sizes(ref.err));
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  const Run omp = run(t, "rt3 " + in.string() + " --stats --backend cuda-omp -o " + (t.dir / "d.txt").string());
+  INFO(omp.err);
+  REQUIRE(omp.code == 0);
+  CHECK(omp.err.find("rt3: backend cuda-omp, 2000 points, ") != std::string::npos);
+  CHECK(omp.err.find("certify_rt3 from the kernel's witness") != std::string::npos);
+  CHECK(omp.err.find("rt3: insertion rounds ") != std::string::npos);
+  CHECK(omp.err.find("(kernels_cuda/rt3, backend cuda-omp)") != std::string::npos);
+  CHECK(sizes(omp.err) == sizes(ref.err));
+  CHECK(slurp(t.dir / "d.txt") == slurp(t.dir / "b.txt"));
+#endif
   const Run rtd = run(t, "rtd " + in.string() + " --dim 3 --stats -o " + (t.dir / "c.txt").string());
   CHECK(rtd.code == 0);
   CHECK(rtd.err.find("rtd: backend cpu, 2000 points, ") != std::string::npos);
@@ -308,7 +319,8 @@ TEST_CASE("rt3 cli: bad input and bad usage give one line and exit code 2", "[cl
         {"rt3 " + in + " --threads -2", "--threads"},
         {"rt3 " + in + " --threads x", "--threads"},
         {"rt3 " + in + " --backend reference --threads 2", "--threads applies"},
-        {"rt3 " + in + " --backend cuda", "--backend"},
+        {"rt3 " + in + " --backend gpu", "--backend"},
+        {"rt3 " + in + " --backend cuda-omp --threads 2", "--threads applies"},
         {"rt3 " + in + " --algo brute", "--algo"},
         {"rt3 " + in + " -o " + (t.dir / "x.foo").string(), "x.foo"},
         {"rt3 " + in + " -o " + (t.dir / "x.off").string(), "x.off"},

@@ -35,6 +35,7 @@
 #include "proptests/support/families.hpp"
 #include "proptests/support/large_n.hpp"
 #include "proptests/support/rc_scaled.hpp"
+#include "proptests/support/rt3_outcome.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
@@ -73,50 +74,15 @@ cpu::Rt3Options options(int threads, const Mode& m) {
   return o;
 }
 
-// What a backend answers: the canonical text, its redundant points, or
-// "error: " and the input problem (the message without its backend prefix).
-std::string text_of(const std::vector<std::vector<Index>>& simplices, const std::vector<Index>& redundant) {
-  std::ostringstream os;
-  write_simplices(os, simplices);
-  os << "redundant";
-  for (Index r : redundant) os << ' ' << r;
-  return os.str();
-}
-
-std::string problem(const std::string& what) {
-  const auto colon = what.find(": ");
-  return "error: " + (colon == std::string::npos ? what : what.substr(colon + 2));
-}
-
-std::string ref_text(const PointSet& ps) {
-  try {
-    const ref::Rtd r = ref::rtd_incremental(ps);
-    return text_of(r.simplices, r.redundant);
-  } catch (const std::invalid_argument& e) {
-    // the reference's messages: "rtd: a coordinate is not finite", or the
-    // dimension problem itself
-    const std::string w = e.what();
-    return w.rfind("rtd: ", 0) == 0 ? problem(w) : "error: " + w;
-  }
-}
-
-std::vector<std::vector<Index>> as_simplices(const std::vector<cpu::Tet>& tets) {
-  std::vector<std::vector<Index>> out;
-  out.reserve(tets.size());
-  for (const cpu::Tet& t : tets) out.emplace_back(t.begin(), t.end());
-  return out;
-}
+using test::as_simplices;
+using test::with_weights;
+std::string ref_text(const PointSet& ps) { return test::rt3_ref_text(ps); }
 
 std::string cpu_text(const PointSet& ps, int threads, const Mode& m = kModes[1], cpu::Rt3Stats* st = nullptr) {
-  try {
-    const cpu::Rt3Result r = cpu::rt3(ps, options(threads, m), st);
-    return text_of(as_simplices(r.tets), r.redundant);
-  } catch (const std::invalid_argument& e) {
-    return problem(e.what());
-  }
+  return test::rt3_outcome([&] { return cpu::rt3(ps, options(threads, m), st); });
 }
 
-bool is_error(const std::string& s) { return s.rfind("error: ", 0) == 0; }
+using test::is_error;
 
 // cpu == reference at every thread count in every mode; the counts are
 // consistent: every point is one of the first four, inserted or discarded
@@ -130,9 +96,7 @@ std::string check(const PointSet& ps, const Assert& require) {
       require(cpu_text(ps, t, m, &st) == expect, t, m);
       if (!is_error(expect)) {
         require(st.inserted + st.discarded == ps.size(), t, m);
-        const std::size_t redundant = static_cast<std::size_t>(std::count(expect.begin(), expect.end(), ' ')) -
-                                      3 * static_cast<std::size_t>(std::count(expect.begin(), expect.end(), '\n'));
-        require(st.discarded + st.removed == redundant, t, m);
+        require(st.discarded + st.removed == test::rt3_redundant_count(expect), t, m);
       }
     }
   return expect;
@@ -147,12 +111,6 @@ std::string check_req(const PointSet& ps) {
     INFO("threads " << t << ", " << name(m.how) << ", brio_min " << m.brio << ", parallel_from " << m.parallel_from);
     REQUIRE(ok);
   });
-}
-
-PointSet with_weights(PointSet ps, std::vector<double> w) {
-  ps.weighted = true;
-  ps.weights = Values(std::move(w));
-  return ps;
 }
 
 }  // namespace
@@ -211,27 +169,13 @@ TEST_CASE("rt3 cpu: lattices, cospherical sets, duplicates and redundant-heavy i
   gen::Options o;
   o.seed = 7;
   const PointSet grid = gen::generate("grid3", 343, o);  // 7^3: every cell cospherical
-  SECTION("grid, unweighted") { check_req(grid); }
-  SECTION("grid, equal weights") { check_req(with_weights(grid, std::vector<double>(grid.size(), 0.25))); }
-  SECTION("grid, lattice weights") {
-    std::vector<double> w(grid.size());
-    for (std::size_t i = 0; i < w.size(); ++i) w[i] = static_cast<double>(i % 3) / 4;
-    check_req(with_weights(grid, w));
+  SECTION("the named degenerate inputs (rt3_outcome.hpp)") {
+    for (const auto& [name, ps] : test::rt3_degenerate_inputs(grid)) {
+      INFO(name);
+      check_req(ps);
+    }
   }
   SECTION("sphere lattice (cospherical)") { check_req(gen::generate("sphere-lattice", 400, o)); }
-  SECTION("duplicates with different weights") {
-    PointSet ps;
-    ps.dim = 3;
-    std::vector<double> c, w;
-    for (int i = 0; i < 60; ++i) {
-      const double x = i % 5, y = (i / 5) % 3, z = i % 2;
-      c.insert(c.end(), {x, y, z, x, y, z});  // each point twice
-      w.insert(w.end(), {0.0, 0.1 * (i % 4)});
-    }
-    ps.coords = Values(std::move(c));
-    check_req(ps);
-    check_req(with_weights(ps, w));
-  }
   SECTION("all points redundant but four") {
     // a huge-weight tetrahedron swallows everything inside it
     PointSet ps;
@@ -280,15 +224,6 @@ TEST_CASE("rt3 cpu: lattices, cospherical sets, duplicates and redundant-heavy i
       INFO("removed " << st.removed << ", discarded " << st.discarded);
       REQUIRE(st.removed <= ps.size() / 100);
     }
-  }
-  SECTION("points on two planes") {
-    PointSet ps;
-    ps.dim = 3;
-    std::vector<double> c;
-    for (int i = 0; i < 100; ++i) c.insert(c.end(), {double(i % 10), double(i / 10), 0.0});
-    for (int i = 0; i < 100; ++i) c.insert(c.end(), {double(i % 10) + 0.5, 0.0, double(i / 10) + 1});
-    ps.coords = Values(std::move(c));
-    check_req(ps);
   }
 }
 

@@ -62,6 +62,7 @@
 #include <thread>
 
 #include "kernels_cpu/brio.hpp"
+#include "kernels_cpu/rt3/canonical_tet.hpp"
 #include "kernels_cpu/parallel.hpp"
 #include "kernels_cpu/witnessed_output.hpp"
 #include "predicates/fast.hpp"
@@ -895,27 +896,6 @@ void Builder::run(bool parallel, std::size_t parallel_from, std::size_t min_piec
 }
 
 // ---- stage 3: output ----------------------------------------------------------------
-
-// The canonical tuple (canonical_d.hpp) of an orient_d-positive tuple in 3D:
-// to the volume convention by swapping the last two entries (d odd), then
-// sorted, the last two swapped back when the sorting permutation is odd.
-inline Tet canonical_tet(Index a, Index b, Index c, Index d) {
-  // branch-free (the comparisons of a tetrahedron's indices are
-  // unpredictable: the branching network cost the output stage about five
-  // mispredictions per tetrahedron, twice; and g++ turns std::min/std::max
-  // pairs back into branches): the parity of the sorting permutation is that
-  // of the number of inversions, the sort a compare-exchange network by masks
-  Index t0 = a, t1 = b, t2 = d, t3 = c;
-  const Index inv = Index{t0 > t1} + Index{t0 > t2} + Index{t0 > t3} + Index{t1 > t2} + Index{t1 > t3} +
-                    Index{t2 > t3};
-  auto cs = [](Index& x, Index& y) {
-    const Index e = (x ^ y) & (Index{0} - Index{y < x});
-    x ^= e, y ^= e;
-  };
-  cs(t0, t1), cs(t2, t3), cs(t0, t2), cs(t1, t3), cs(t1, t2);
-  const Index e = (t2 ^ t3) & (Index{0} - (inv & 1u));  // odd: the last two swapped back
-  return {t0, t1, t2 ^ e, t3 ^ e};
-}
 
 // The sort is a two-pass MSD radix sort on the smallest index, then a sort
 // of the few tetrahedra sharing it: (1) every piece of slots counts its live

@@ -119,6 +119,7 @@
 
 #include "kernels_cuda/backend.cuh"
 #include "kernels_cuda/device_predicates.cuh"
+#include "kernels_cuda/elections.cuh"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
 #include "kernels_cuda/two_pass.cuh"
@@ -153,21 +154,11 @@ constexpr uint8_t kKept = 4;    // 3-1 flip: the surviving triangle
 FF_HD inline int nx(int i) { return i == 2 ? 0 : i + 1; }
 FF_HD inline int pv(int i) { return i == 0 ? 2 : i - 1; }
 
-template <class T>
-FF_HD inline T atomic_fetch_min(T* p, T v) {
-  cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
-  return r.fetch_min(v, cuda::memory_order_relaxed);
-}
-template <class T>
-FF_HD inline T atomic_fetch_add(T* p, T v) {
-  cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
-  return r.fetch_add(v, cuda::memory_order_relaxed);
-}
-template <class T>
-FF_HD inline T atomic_exchange(T* p, T v) {
-  cuda::atomic_ref<T, cuda::thread_scope_device> r(*p);
-  return r.exchange(v, cuda::memory_order_relaxed);
-}
+using dev::atomic_exchange;
+using dev::atomic_fetch_add;
+using dev::atomic_fetch_min;
+using dev::IsWinner;
+using dev::vote_key;
 
 // ---- the points and the predicates with the virtual vertex ------------------
 struct Geo {
@@ -327,27 +318,11 @@ FF_HD inline uint64_t claim_key(uint32_t epoch, uint32_t j) {
 
 // ---- insertion rounds (§5.3) ----------------------------------------------------
 
-// A point's vote for its triangle: a hash of the point first (any point may be
-// chosen; a pseudo-random one splits a triangle's points evenly in expectation,
-// the point index breaks ties).
-FF_HD inline uint64_t vote_key(uint32_t p) {
-  uint32_t h = p * 0x9E3779B1u;
-  h ^= h >> 15;
-  h *= 0x85EBCA77u;
-  h ^= h >> 13;
-  return (static_cast<uint64_t>(h) << 32) | p;
-}
-
+// A point's vote for its triangle (elections.cuh).
 struct Vote {
   const uint32_t* loc;
   uint64_t* best;
   FF_HD void operator()(uint32_t p) const { atomic_fetch_min(best + loc[p], vote_key(p)); }
-};
-
-struct IsWinner {
-  const uint32_t* loc;
-  const uint64_t* best;
-  FF_HD bool operator()(uint32_t p) const { return best[loc[p]] == vote_key(p); }
 };
 
 // 1-3 flip of winner q: point p into t = (a, b, c) — t becomes (a, b, p), the
@@ -817,10 +792,8 @@ struct Gather {
 };
 
 // ---- the whole kernel -------------------------------------------------------------------
-template <class T>
-T* raw(backend::Buffer<T>& b) {
-  return thrust::raw_pointer_cast(b.data());
-}
+using backend::raw;
+using backend::read_one;
 
 // OpenMP: one thread below this many items (backend.cuh).
 constexpr std::size_t kParallelFrom = std::size_t{1} << 12;
@@ -832,9 +805,7 @@ void step(std::size_t count, F&& f) {
 
 template <class F>
 void for_range(std::size_t count, const F& f) {
-  if (count == 0) return;
-  thrust::counting_iterator<uint32_t> first(0);
-  step(count, [&](auto policy) { thrust::for_each(policy, first, first + count, f); });
+  backend::for_range<kParallelFrom>(count, f);
 }
 
 // f's two passes over [0, count) (two_pass.cuh)
@@ -842,11 +813,6 @@ template <class F>
 void two_passes(std::size_t count, const F& f) {
   for_range(count, dev::Pass<F, false>{f});
   for_range(count, dev::Pass<F, true>{f});
-}
-
-template <class T>
-T read_one(backend::Buffer<T>& b, std::size_t i) {
-  return static_cast<T>(b[i]);
 }
 
 struct Buffers {
