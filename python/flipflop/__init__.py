@@ -55,9 +55,9 @@ _HULL_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU
                   **{d: ("cpu", "reference") for d in range(4, 10)}}
 # per dimension, the default first: the multithreaded kernels exist for d = 2
 # and 3 (kernels_cpu/rt2, kernels_cpu/rt3), the cavity-insertion kernel for
-# d = 4..9 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2
-# (kernels_cuda/rt2)
-_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference"),
+# d = 4..9 (kernels_cpu/rtd, one thread), the GPU kernels for d = 2 and 3
+# (kernels_cuda/rt2, kernels_cuda/rt3)
+_DELAUNAY_BACKENDS = {2: ("cpu", "reference") + _GPU, 3: ("cpu", "reference") + _GPU,
                       **{d: ("cpu", "reference") for d in range(4, 10)}}
 # the dimensions of Delaunay, Voronoi and ConvexHull (predicates of up to 11
 # rows: power tests in 9D)
@@ -890,10 +890,10 @@ class Delaunay(_QhullUser):
     and kernels_cpu/rt3, certified from their witnesses, in 2D and 3D; the
     cavity-insertion kernel of kernels_cpu/rtd, one thread, certified by the
     d-dimensional certifier, in 4D..9D), 'reference' (the exact
-    sequential reference: ffRT in 2D, RT+1 in 3D..9D) or, in 2D, one of
-    `gpu_backends` ('cuda-omp':
-    the GPU ffRT on thrust's OpenMP backend); every backend returns the same
-    simplices. strict=True derives the strict view from the backend's
+    sequential reference: ffRT in 2D, RT+1 in 3D..9D) or, in 2D and 3D, one
+    of `gpu_backends` ('cuda-omp': the GPU kernels kernels_cuda/rt2 and
+    kernels_cuda/rt3 on thrust's OpenMP backend; 'cuda': on the device, where
+    nvcc built them); every backend returns the same simplices. strict=True derives the strict view from the backend's
     certified answer by the reference's (sequential) rule.
     threads: worker threads of the 'cpu' backend and of its certifier
     (0: all cores); the answer is the same at any count.

@@ -705,10 +705,10 @@ std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::o
   if (furthest && (strict || (backend != "reference" && backend != "cpu")))
     throw std::invalid_argument("the furthest-site triangulation is computed by the 'cpu' or the 'reference' "
                                 "backend, without strict");
-  if (!(backend == "reference" || backend == "cpu" || (gpu_backend(backend) && d == 2)))
+  if (!(backend == "reference" || backend == "cpu" || (gpu_backend(backend) && (d == 2 || d == 3))))
     throw std::invalid_argument("Delaunay backends: 'cpu', 'reference'" +
-                                (backend_list("").empty() ? std::string() : backend_list("") + " (2D)") + "; got '" +
-                                backend + "'");
+                                (backend_list("").empty() ? std::string() : backend_list("") + " (2D, 3D)") +
+                                "; got '" + backend + "'");
   std::vector<std::vector<Index>> simplices;
   std::vector<Triangle> tris;  // d = 2 (not copied into `simplices`: 2 * 10^6 small vectors took 0.2 s)
   std::vector<cpu::Tet> tets;  // d = 3, the cpu backend's canonical answer (likewise)
@@ -744,13 +744,18 @@ std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::o
         check_certified(certify::rt2_strict(ps, tris), "strict Delaunay");
       }
       redundant = points_used(ps.size(), tris, false);
-    } else if (d == 3 && backend == "cpu") {
+    } else if (d == 3 && (backend == "cpu" || gpu_backend(backend))) {
       cpu::Rt3Options o;
       o.threads = threads;
       cpu::Rt3Result r;
       {  // certified from the kernel's witness, as `flipflop rt3|dt3` (the witness freed after)
         cpu::Rt3Witness witness;
-        r = cpu::rt3(ps, o, nullptr, &witness);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+        if (gpu_backend(backend))  // kernels_cuda/rt3's rounds, as `flipflop rt3 --backend cuda`
+          r = kernels::rt3_gpu(backend, ps, nullptr, nullptr, &witness);
+        else
+#endif
+          r = cpu::rt3(ps, o, nullptr, &witness);
         check_certified(cpu::certify_rt3(ps, witness, r.tets, certify::Level::canonical, threads), "Delaunay");
         if (neighbors && !strict) *neighbors = cpu::rt3_neighbors(witness, r.tets, threads);
       }

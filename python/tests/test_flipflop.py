@@ -114,9 +114,9 @@ def test_delaunay_equals_scipy(d, n):
     # cavity-insertion kernel, against RT+1)
     for backend, threads in (("reference", 0), ("cpu", 1), ("cpu", 2)):
         assert (flipflop.Delaunay(p, backend=backend, threads=threads).simplices == t.simplices).all()
-    if d > 2:
+    if d > 3:
         with pytest.raises(ValueError, match="backend"):
-            flipflop.Delaunay(p, backend="cuda-omp")  # the GPU kernels are 2D
+            flipflop.Delaunay(p, backend="cuda-omp")  # the GPU kernels are 2D and 3D
 
 
 def test_gpu_backends_return_the_reference_answer():
@@ -148,8 +148,15 @@ def test_gpu_backends_return_the_reference_answer():
             for p in inputs3:
                 assert (flipflop.ConvexHull(p, backend=backend).simplices ==
                         flipflop.ConvexHull(p, backend="cpu").simplices).all()
+                w = (np.arange(len(p)) % 3).astype(np.float64) * (0.25 if len(p) < 200 else 1e-3)
+                for weights in (None, w):  # kernels_cuda/rt3
+                    a = flipflop.Delaunay(p, weights=weights, backend=backend)
+                    b = flipflop.Delaunay(p, weights=weights, backend="cpu")
+                    assert (a.simplices == b.simplices).all()
+                    assert (a.neighbors == b.neighbors).all()
+                    assert list(a.redundant) == list(b.redundant)
             with pytest.raises(ValueError, match="backend"):
-                flipflop.Delaunay(inputs3[0], backend=backend)  # 2D only
+                flipflop.Delaunay(np.random.default_rng(1).random((40, 4)), backend=backend)  # 2D and 3D only
         except RuntimeError as e:  # "cuda" not built with nvcc, or without a usable device: one line
             assert backend == "cuda" and "cuda" in str(e) and "\n" not in str(e), str(e)
 
@@ -764,9 +771,10 @@ def test_delaunay_3d_extreme_magnitudes_and_bad_input():
     w = rng.integers(0, 2000, 400).astype(np.float64)
     plain = flipflop.Delaunay(p)
     weighted = flipflop.Delaunay(p, weights=w)
+    backends = ("cpu", "reference") + (("cuda-omp",) if "cuda-omp" in flipflop.gpu_backends else ())
     for e in (-1062, -1000, -500, 500, 988):
         s = 2.0 ** e
-        for backend in ("cpu", "reference"):
+        for backend in backends:
             assert np.array_equal(flipflop.Delaunay(p * s, backend=backend).simplices, plain.simplices), (e, backend)
             if -500 <= e <= 500:
                 t = flipflop.Delaunay(p * s, weights=w * s * s, backend=backend)
@@ -780,15 +788,16 @@ def test_delaunay_3d_extreme_magnitudes_and_bad_input():
     flat = np.c_[rng.random((50, 2)), np.ones(50)]
     line = np.outer(np.arange(10.0), [1.0, 2.0, 3.0])
     for bad, what in ((flat, "coplanar"), (line, "collinear"), (np.ones((6, 3)), "equal"), (p[:3], "at least 4")):
-        for backend in ("cpu", "reference"):
+        for backend in backends:
             with pytest.raises(ValueError, match=what):
                 flipflop.Delaunay(bad, backend=backend)
-    with pytest.raises(ValueError, match="NaN"):
-        flipflop.Delaunay(np.vstack([p, [np.nan, 0, 0]]))
-    with pytest.raises(ValueError, match="weights hold NaN"):
-        flipflop.Delaunay(p, weights=np.r_[w[:-1], np.inf])
+    for backend in backends:
+        with pytest.raises(ValueError, match="NaN"):
+            flipflop.Delaunay(np.vstack([p, [np.nan, 0, 0]]), backend=backend)
+        with pytest.raises(ValueError, match="weights hold NaN"):
+            flipflop.Delaunay(p, weights=np.r_[w[:-1], np.inf], backend=backend)
     with pytest.raises(ValueError, match="backend"):
-        flipflop.Delaunay(p, backend="cuda-omp")  # the GPU kernels are 2D
+        flipflop.Delaunay(np.c_[p, p, p][:, :4], backend="cuda-omp")  # the GPU kernels are 2D and 3D
 
 
 @needs_cli
