@@ -9,6 +9,10 @@
 // canonical order, peers/triangulation3.hpp):
 //   flipflop:cpu                         cpu::rt3 (kernels_cpu/rt3), --threads
 //                                        threads (default: the machine's cores)
+//   flipflop:cuda-omp, flipflop:cuda, flipflop:cuda:no-transfers
+//                                        kernels_cuda/rt3 in thrust's OpenMP
+//                                        build, and the CUDA build where nvcc
+//                                        built it (bench/gpu_rows.hpp)
 //   flipflop:reference                   ref::rtd_incremental with d = 3
 //                                        (Edelsbrunner–Shah's RT+1, exact,
 //                                        sequential), for n <= kReferenceLimit
@@ -46,6 +50,7 @@
 #include <vector>
 
 #include "bench/compare.hpp"
+#include "bench/gpu_rows.hpp"
 #include "bench/timing.hpp"
 #include "io/read_points.hpp"
 #include "io/write_points.hpp"
@@ -149,6 +154,9 @@ int bench_rt3(const Args& a) {
                   }});
   if (pts.size() <= kReferenceLimit)
     rows.push_back({"flipflop:reference", [](const PointSet& p) { return as_tets(ref::rtd_incremental(p).simplices); }});
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  add_gpu_rows(rows, [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::rt3_gpu(b, pts, nullptr, t).tets; });
+#endif
   if (dt) {
     rows.push_back({"cgal:delaunay_triangulation_3", [](const PointSet& p) { return peers::cgal_delaunay3(p); }});
     rows.push_back({"cgal:delaunay_triangulation_3:parallel", [threads](const PointSet& p) {

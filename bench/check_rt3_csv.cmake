@@ -9,8 +9,8 @@
 #   cmake -DFLIPFLOP=<path to flipflop> -P check_rt3_csv.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/bench_csv.cmake)
 set(header "name,median_s,min_s,max_s,size,identical")
-foreach(job "dt3;ball;flipflop:cpu;flipflop:reference;cgal:delaunay_triangulation_3;cgal:delaunay_triangulation_3:parallel;cgal:regular_triangulation_3;cgal:regular_triangulation_3:parallel;qhull;tetgen?"
-            "rt3;cube;flipflop:cpu;flipflop:reference;cgal:regular_triangulation_3;cgal:regular_triangulation_3:parallel")
+foreach(job "dt3;ball;flipflop:cpu;flipflop:reference;flipflop:cuda-omp?;cgal:delaunay_triangulation_3;cgal:delaunay_triangulation_3:parallel;cgal:regular_triangulation_3;cgal:regular_triangulation_3:parallel;qhull;tetgen?"
+            "rt3;cube;flipflop:cpu;flipflop:reference;flipflop:cuda-omp?;cgal:regular_triangulation_3;cgal:regular_triangulation_3:parallel")
   list(GET job 0 kind)
   list(GET job 1 dist)
   list(SUBLIST job 2 -1 want)
@@ -22,13 +22,18 @@ foreach(job "dt3;ball;flipflop:cpu;flipflop:reference;cgal:delaunay_triangulatio
     endif()
     list(APPEND got "${CMAKE_MATCH_1}")
   endforeach()
-  # tetgen: a row where this build has TetGen
-  list(FIND got tetgen has_tetgen)
-  if(has_tetgen EQUAL -1)
-    list(REMOVE_ITEM want "tetgen?")
-  else()
-    list(TRANSFORM want REPLACE "^tetgen\\?$" "tetgen")
-  endif()
+  # NAME?: a row where this build has it (tetgen: TetGen; flipflop:cuda-omp:
+  # the thrust/OpenMP build of kernels_cuda/; flipflop:cuda rows appear only
+  # where nvcc built the kernels, and are not expected here)
+  list(REMOVE_ITEM got flipflop:cuda flipflop:cuda:no-transfers)
+  foreach(optional tetgen flipflop:cuda-omp)
+    list(FIND got ${optional} has_it)
+    if(has_it EQUAL -1)
+      list(REMOVE_ITEM want "${optional}?")
+    else()
+      list(TRANSFORM want REPLACE "^${optional}\\?$" "${optional}")
+    endif()
+  endforeach()
   if(NOT got STREQUAL want)
     message(FATAL_ERROR "${kind}: rows '${got}', expected '${want}'")
   endif()
