@@ -164,7 +164,8 @@ constexpr uint8_t kOverflow = 1;   // cavity larger than the round's scratch: re
 constexpr uint8_t kUndecided = 2;  // the filter pass's mark (two_pass.cuh)
 constexpr uint8_t kRedundant = 3;  // its real tetrahedron proves it redundant (the walk's test already does)
 constexpr uint8_t kWon = 4;        // held all its claims: inserts
-constexpr uint8_t kLost = 5;       // another insertion holds one of its claims: retries
+constexpr uint8_t kLost = 5;       // another insertion holds one of its claims (Revive decides: retry now or next round)
+constexpr uint8_t kOut = 6;        // meets an insertion of this round: retries in the next round
 
 using dev::atomic_fetch_min;
 using dev::atomic_store;
@@ -298,10 +299,12 @@ struct Located {
 
 // The points of list[] whose tetrahedron the round's insertions destroyed
 // (stamp == epoch) walk from a new tetrahedron of the insertion that did
-// (start_of[owner]); with from_all set, every point walks from that slot (the
-// first location). A point ending in a real tetrahedron that is not visible
-// from it is redundant (§5.3) and leaves; hint[] keeps that tetrahedron (the
-// witness's walk starts there).
+// (start_of[owner]). With anchor set (a live slot: a BRIO level's first
+// location), every point walks from its last location when that slot holds a
+// tetrahedron now (slots are reused by cones over the same region, so it is
+// near), else from the anchor. A point ending in a real tetrahedron that is
+// not visible from it is redundant (§5.3) and leaves; hint[] keeps that
+// tetrahedron (the witness's walk starts there).
 struct Relocate : OnGeo {
   Mesh m;
   const uint32_t* list;
@@ -312,19 +315,22 @@ struct Relocate : OnGeo {
   const uint32_t* owner;
   const uint32_t* start_of;
   uint32_t epoch;
-  uint32_t from_all;
+  uint32_t anchor;  // kNil: the round's relocation
+  uint32_t slots;
   template <class S>
   FF_HD Located decide(std::size_t i, S& sg) const {
     const uint32_t p = list[i];
-    uint32_t s = from_all;
-    if (s == kNil) {
-      const uint32_t t = loc[p];
+    const uint32_t t = loc[p];
+    uint32_t s;
+    if (anchor == kNil) {
       if (t >= kDiscarded || stamp[t] != epoch) return {kNil, 0};
       s = start_of[owner[t]];
+    } else {
+      s = t < slots && m.corners(t)[0] != kNil ? t : anchor;
     }
-    const uint32_t t = walk(sg, m, p, s, (uint64_t{p} << 32) ^ epoch);
-    if (!m.is_virtual(t) && !visible(sg, m, t, p)) return {t, 1};
-    return {t, 0};
+    const uint32_t u = walk(sg, m, p, s, (uint64_t{p} << 32) ^ epoch);
+    if (!m.is_virtual(u) && !visible(sg, m, u, p)) return {u, 1};
+    return {u, 0};
   }
   FF_HD void write(std::size_t i, Located r) const {
     pending[i] = 0;
@@ -342,24 +348,26 @@ struct Relocate : OnGeo {
 };
 
 // ---- the round's elections ------------------------------------------------------------------
-// BRIO (Amenta–Choi–Rote) in rounds: a point takes part from the level at
-// which its hash falls below the level's threshold (the levels' samples
-// double); a level's points are inserted into the triangulation of the
-// earlier ones, whose hull already covers most of them — a point outside the
-// current hull sees much of it, and such cavities block one another.
-// (the hash is vote_key's, elections.cuh)
-FF_HD inline uint64_t level_hash(uint32_t p) { return static_cast<uint64_t>(vote_key(p) >> 32); }
 struct Vote {
   const uint32_t* loc;
   uint64_t* best;
-  uint64_t threshold;  // eligible: level_hash(p) < threshold
-  FF_HD void operator()(uint32_t p) const {
-    if (level_hash(p) < threshold) atomic_fetch_min(best + loc[p], vote_key(p));
-  }
+  FF_HD void operator()(uint32_t p) const { atomic_fetch_min(best + loc[p], vote_key(p)); }
 };
-struct Eligible {
-  uint64_t threshold;
-  FF_HD bool operator()(uint32_t p) const { return level_hash(p) < threshold; }
+// BRIO (Amenta–Choi–Rote) in levels: a point belongs to the level at which
+// its hash falls below the level's threshold (the levels' samples double); a
+// level's points are located and inserted, in rounds, into the triangulation
+// of the earlier levels, whose hull already covers most of them — a point
+// outside the current hull sees much of it, and such cavities block one
+// another. Only the current level's points take part in a round.
+// (the hash is vote_key's, elections.cuh)
+FF_HD inline uint64_t level_hash(uint32_t p) { return static_cast<uint64_t>(vote_key(p) >> 32); }
+struct InLevel {
+  uint64_t lo, hi;  // level_hash in [lo, hi)
+  uint32_t r[4];    // the first tetrahedron's corners: never in a level
+  FF_HD bool operator()(uint32_t p) const {
+    const uint64_t h = level_hash(p);
+    return h >= lo && h < hi && p != r[0] && p != r[1] && p != r[2] && p != r[3];
+  }
 };
 struct ResetVote {
   const uint32_t* winners;
@@ -483,7 +491,6 @@ struct Won {
   const uint64_t* hclaim;
   uint32_t* need;
   FF_HD void operator()(uint32_t q) const {
-    need[q] = 0;
     if (s.status[q] != kOk) return;
     const uint64_t key = claim_key(s.ncav[q] + s.nhor[q], q);
     const uint32_t* C = s.C(q);
@@ -497,8 +504,42 @@ struct Won {
   }
 };
 
-// After Won: every entry a winner claimed back to ~0 (the winners that
-// claimed are those Won marked kWon or kLost).
+// The election in sub-rounds (a maximal set of apart insertions, as Luby's
+// rounds): the winners' cavities and horizons are marked taken (ctaken,
+// htaken: the round's epoch); a loser that meets no taken tetrahedron — it
+// lost only to other losers — takes part again (kOk), the others wait for
+// the next round (kOut). Taken marks only ever grow within a round, so a
+// later sub-round's winner is apart from every earlier one.
+struct MarkTaken {
+  Scratch s;
+  uint32_t* ctaken;
+  uint32_t* htaken;
+  uint32_t epoch;
+  FF_HD void operator()(uint32_t q) const {
+    if (s.status[q] != kWon) return;
+    const uint32_t* C = s.C(q);
+    const HorEntry* E = s.E(q);
+    for (uint32_t b = 0; b < s.ncav[q]; ++b) ctaken[C[b]] = epoch;
+    for (uint32_t b = 0; b < s.nhor[q]; ++b) atomic_store(htaken + (E[b].out >> 2), epoch);
+  }
+};
+struct Revive {
+  Scratch s;
+  const uint32_t* ctaken;
+  const uint32_t* htaken;
+  uint32_t epoch;
+  FF_HD void operator()(uint32_t q) const {
+    if (s.status[q] != kLost) return;
+    const uint32_t* C = s.C(q);
+    const HorEntry* E = s.E(q);
+    bool apart = true;
+    for (uint32_t b = 0; b < s.ncav[q] && apart; ++b) apart = ctaken[C[b]] != epoch && htaken[C[b]] != epoch;
+    for (uint32_t b = 0; b < s.nhor[q] && apart; ++b) apart = ctaken[E[b].out >> 2] != epoch;
+    s.status[q] = apart ? kOk : kOut;
+  }
+};
+
+// After a sub-round's Won: every entry a winner claimed back to ~0.
 struct ResetClaims {
   Scratch s;
   uint64_t* cclaim;
@@ -609,10 +650,6 @@ struct LocIs {
   const uint32_t* loc;
   uint32_t value;
   FF_HD bool operator()(uint32_t p) const { return loc[p] == value; }
-};
-struct NotIn4 {
-  uint32_t r[4];
-  FF_HD bool operator()(uint32_t p) const { return p != r[0] && p != r[1] && p != r[2] && p != r[3]; }
 };
 
 // ---- output --------------------------------------------------------------------------------
@@ -799,6 +836,8 @@ using backend::read_one;
 
 // OpenMP: one thread below this many items (backend.cuh).
 constexpr std::size_t kParallelFrom = std::size_t{1} << 10;
+// claim sub-rounds per round (MarkTaken, Revive)
+constexpr int kSubRounds = 4;
 
 template <class F>
 void step(std::size_t count, F&& f) {
@@ -822,7 +861,7 @@ struct Buffers {
   backend::Buffer<uint32_t> order, loc, hint, active, active2, winners;
   backend::Buffer<uint8_t> pending;
   // tetrahedron slots (cap) and links (4 cap)
-  backend::Buffer<uint32_t> tv, tn, stamp, owner, list;
+  backend::Buffer<uint32_t> tv, tn, stamp, owner, ctaken, htaken, list;
   backend::Buffer<uint64_t> claim, hclaim, best;
   // per winner
   backend::Buffer<uint32_t> cav, ncav, nhor, need, offset, start_of;
@@ -860,6 +899,7 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
     B.order.resize(n), B.loc.resize(n), B.hint.resize(n, kNil), B.active.resize(n), B.active2.resize(n);
     B.winners.resize(n), B.pending.resize(n, 0);
     B.tv.resize(4 * cap, kNil), B.tn.resize(4 * cap, kNil), B.stamp.resize(cap, 0), B.owner.resize(cap, 0);
+    B.ctaken.resize(cap, 0), B.htaken.resize(cap, 0);
     B.claim.resize(cap, ~uint64_t{0}), B.hclaim.resize(cap, ~uint64_t{0}), B.best.resize(cap, ~uint64_t{0});
   } catch (const std::bad_alloc&) {
     throw no_memory("the input (" + std::to_string(n) + " points; about " + std::to_string((n * 420) >> 20) +
@@ -945,12 +985,8 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
   }
   uint32_t slots = 5;
   std::size_t n_active = 0;
-  step(n, [&](auto policy) {
-    thrust::fill(policy, B.loc.begin(), B.loc.end(), kInserted);
-    n_active = static_cast<std::size_t>(
-        thrust::copy_if(policy, first, first + n, B.active.begin(), NotIn4{{r[0], r[1], r[2], r[3]}}) -
-        B.active.begin());
-  });
+  step(n, [&](auto policy) { thrust::fill(policy, B.loc.begin(), B.loc.end(), 0u); });  // slot 0: the first tetrahedron
+  for (int k = 0; k < 4; ++k) B.loc[r[k]] = kInserted;
   uint32_t epoch = 0;
   // the two passes of f over [0, count) (two_pass.cuh); exact_items counts
   // the second pass's items
@@ -969,22 +1005,21 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
       return c;
     };
   };
-  auto relocate = [&](uint32_t from_all) {
+  auto relocate = [&](uint32_t anchor) {
     two_passes(n_active,
                Relocate{{g}, mesh(), raw(B.active), raw(B.loc), raw(B.hint), raw(B.pending), raw(B.stamp),
-                        raw(B.owner), raw(B.start_of), epoch, from_all},
+                        raw(B.owner), raw(B.start_of), epoch, anchor, slots},
                pending_count(n_active));
   };
   B.start_of.resize(1);
-  relocate(0);
   clock.mark("sort");
 
-  // ---- insertion rounds
+  // ---- insertion rounds, level by level
   uint32_t K = 16;  // cavity capacity per insertion (horizon: 2K + 2)
   // scratch per round: at most this many bytes (or one winner's)
   const std::size_t budget = std::max<std::size_t>(std::size_t{64} << 20, 96 * n);
   // the first level's sample: about 64 points
-  uint64_t threshold = std::max<uint64_t>(1, (uint64_t{64} << 32) / std::max<std::size_t>(n, 1));
+  uint64_t lo = 0, hi = std::max<uint64_t>(1, (uint64_t{64} << 32) / std::max<std::size_t>(n, 1));
   for (;;) {
     step(n_active, [&](auto policy) {
       n_active = static_cast<std::size_t>(thrust::copy_if(policy, B.active.begin(), B.active.begin() + n_active,
@@ -992,23 +1027,34 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
                                           B.active2.begin());
     });
     B.active.swap(B.active2);
+    // the next level: its points, each located from its last location
+    while (n_active == 0 && lo < (uint64_t{1} << 32)) {
+      step(n, [&](auto policy) {
+        n_active = static_cast<std::size_t>(
+            thrust::copy_if(policy, first, first + n, B.active.begin(), InLevel{lo, hi, {r[0], r[1], r[2], r[3]}}) -
+            B.active.begin());
+      });
+      lo = hi, hi *= 2;
+      if (n_active == 0) continue;
+      ++st.levels;
+      uint32_t anchor = 0;
+      step(slots, [&](auto policy) {
+        anchor = static_cast<uint32_t>(thrust::find_if(policy, first, first + slots, IsRealLive{mesh()}) - first);
+      });
+      relocate(anchor);
+      step(n_active, [&](auto policy) {
+        n_active = static_cast<std::size_t>(thrust::copy_if(policy, B.active.begin(), B.active.begin() + n_active,
+                                                            B.active2.begin(), StillActive{raw(B.loc)}) -
+                                            B.active2.begin());
+      });
+      B.active.swap(B.active2);
+    }
     if (n_active == 0) break;
     ++epoch;
     ++st.rounds;
-    // the level: the smallest whose sample still has active points
-    for (;;) {
-      std::size_t eligible = 0;
-      step(n_active, [&](auto policy) {
-        eligible = static_cast<std::size_t>(
-            thrust::count_if(policy, B.active.begin(), B.active.begin() + n_active, Eligible{threshold}));
-      });
-      if (eligible > 0) break;
-      threshold *= 2;
-    }
     std::size_t k_all = 0;
     step(n_active, [&](auto policy) {
-      thrust::for_each(policy, B.active.begin(), B.active.begin() + n_active,
-                       Vote{raw(B.loc), raw(B.best), threshold});
+      thrust::for_each(policy, B.active.begin(), B.active.begin() + n_active, Vote{raw(B.loc), raw(B.best)});
     });
     step(n_active, [&](auto policy) {
       k_all = static_cast<std::size_t>(thrust::copy_if(policy, B.active.begin(), B.active.begin() + n_active,
@@ -1037,20 +1083,25 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
       step(k, [&](auto policy) { c = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kUndecided})); });
       return c;
     });
-    for_range(k, Claim{s, raw(B.claim), raw(B.hclaim)});
-    for_range(k, Won{s, raw(B.claim), raw(B.hclaim), raw(B.need)});
-    for_range(k, ResetClaims{s, raw(B.claim), raw(B.hclaim)});
+    step(k, [&](auto policy) { thrust::fill(policy, B.need.begin(), B.need.begin() + static_cast<std::ptrdiff_t>(k), 0u); });
+    for (int sub = 0; sub < kSubRounds; ++sub) {
+      for_range(k, Claim{s, raw(B.claim), raw(B.hclaim)});
+      for_range(k, Won{s, raw(B.claim), raw(B.hclaim), raw(B.need)});
+      for_range(k, MarkTaken{s, raw(B.ctaken), raw(B.htaken), epoch});
+      for_range(k, ResetClaims{s, raw(B.claim), raw(B.hclaim)});
+      if (sub + 1 < kSubRounds) for_range(k, Revive{s, raw(B.ctaken), raw(B.htaken), epoch});
+    }
     std::size_t won = 0, lost = 0, over = 0, red = 0;
     uint64_t sizes = 0;
     step(k, [&](auto policy) {
       won = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kWon}));
-      lost = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kLost}));
       over = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kOverflow}));
       sizes = thrust::transform_reduce(policy, first, first + k, WonSizes{s}, uint64_t{0}, thrust::plus<uint64_t>());
       red = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kRedundant}));
       thrust::exclusive_scan(policy, B.need.begin(), B.need.begin() + static_cast<std::ptrdiff_t>(k), B.offset.begin());
     });
     const std::size_t fresh = k ? static_cast<std::size_t>(read_one(B.offset, k - 1)) + read_one(B.need, k - 1) : 0;
+    lost = k - won - over - red;
     st.attempts += k, st.lost += lost, st.overflowed += over;
     st.cavity_tets += sizes >> 32, st.created_tets += sizes & 0xffffffffu;
     if (slots + fresh > cap) {
@@ -1060,6 +1111,7 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
       try {
         grow(B.tv, 4 * cap, kNil), grow(B.tn, 4 * cap, kNil), grow(B.stamp, cap, 0u), grow(B.owner, cap, 0u);
         grow(B.claim, cap, ~uint64_t{0}), grow(B.hclaim, cap, ~uint64_t{0}), grow(B.best, cap, ~uint64_t{0});
+        grow(B.ctaken, cap, 0u), grow(B.htaken, cap, 0u);
       } catch (const std::bad_alloc&) {
         throw no_memory(std::to_string(cap) + " tetrahedron slots");
       }

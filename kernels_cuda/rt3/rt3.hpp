@@ -32,6 +32,7 @@ namespace flipflop::kernels {
 
 // Counters of one run (reset and filled when asked for; --stats prints them).
 struct Rt3GpuStats {
+  std::uint64_t levels = 0;         // BRIO levels (samples of doubling size, located and inserted in turn)
   std::uint64_t rounds = 0;         // insertion rounds
   std::uint64_t inserted = 0;       // points made vertices (the first four included)
   std::uint64_t discarded = 0;      // points a real tetrahedron proved redundant when located (§5.3)
