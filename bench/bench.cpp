@@ -28,7 +28,7 @@ const char* kUsage =
     "                      read .xyz/.npy, the kernel's stages, certify, write)\n"
     "       flipflop bench rt3|dt3 --dist NAME --n N [--reps R] [--seed S] [--weights LO,HI] (rt3)\n"
     "                      [--threads T] [--run PREFIX,...] [--csv] [--stages]  (3D regular / Delaunay:\n"
-    "                      flipflop:cpu, flipflop:reference, cgal:delaunay_triangulation_3[:parallel] (dt3),\n"
+    "                      flipflop:cpu, flipflop:reference, flipflop:cuda-omp|cuda[:no-transfers], cgal:delaunay_triangulation_3[:parallel] (dt3),\n"
     "                      cgal:regular_triangulation_3[:parallel], qhull and tetgen (dt3))\n"
     "       flipflop bench instant-flip --dim d --n N [--step S] [--reps R] [--seed S] [--run P,...] [--csv]\n"
     "                      (RT(S+W) -> RT(S+U) in place, U = max(0, W + delta), against fresh builds)\n";

@@ -211,7 +211,7 @@ int run_rt3(const Rt3Args& a) {
               << " s, write " << t_write << " s\n";
     if (gpu) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
-      std::cerr << kind << ": insertion rounds " << gst.rounds << ", inserted " << gst.inserted
+      std::cerr << kind << ": BRIO levels " << gst.levels << ", insertion rounds " << gst.rounds << ", inserted " << gst.inserted
                 << " (the first four included), discarded when located " << gst.discarded << ", cavities "
                 << gst.attempts << " (lost a claim " << gst.lost << ", overflowed " << gst.overflowed
                 << ", largest capacity " << gst.max_capacity << "), tetrahedra replaced " << gst.cavity_tets

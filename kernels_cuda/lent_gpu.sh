@@ -21,8 +21,8 @@
 #       2. the GPU test programs (kernels_cuda/*_cuda_test.cpp): byte-identical
 #          to the reference over the generator families, degenerate ones too;
 #       3. compute-sanitizer memcheck, racecheck, synccheck on flipflop
-#          hull2|hull3|rt2 --backend cuda over small generated inputs;
-#       4. flipflop bench hull3|hull2|rt2|dt2 on 10^7 points:
+#          hull2|hull3|rt2|rt3 --backend cuda over small generated inputs;
+#       4. flipflop bench hull3|hull2|rt2|dt2|dt3|rt3 on 10^7 points:
 #          flipflop:cuda (with and without transfers) next to flipflop:cpu,
 #          Qhull and CGAL on that machine's CPU, medians of 3 (CSV); then
 #          flipflop:cpu on 10^6 points pinned to 1, 2, 4, 8 and 16 cores
@@ -52,7 +52,7 @@ if [ "$mode" = bundle ]; then
   rm -rf "$B" && mkdir -p "$B/lib"
   [ -z "${3:-}" ] || strip -o "$B/flipflop_base" "$3" || exit 1
   progs="flipflop"
-  for t in classify predicates hull2 rt2 hull3; do progs="$progs ${t}_cuda_test"; done
+  for t in classify predicates hull2 rt2 hull3 rt3; do progs="$progs ${t}_cuda_test"; done
   for p in $progs; do
     f=$(find "$build" -name "$p" -type f -perm -u+x | head -1)
     [ -n "$f" ] || { echo "lent_gpu.sh: $p not built in $build" >&2; exit 1; }
@@ -88,7 +88,7 @@ fi
 
 run_tests() {
 echo "== GPU test programs (byte-identical to the reference)"
-for t in ${LG_TESTS:-classify predicates hull2 rt2 hull3}; do
+for t in ${LG_TESTS:-classify predicates hull2 rt2 hull3 rt3}; do
   s=$(date +%s%N)
   timeout "${LG_TEST_TIMEOUT:-100}" "$B/${t}_cuda_test" > "$OUT/test_$t.log" 2>&1
   rc=$?
@@ -117,12 +117,13 @@ tmp=$(mktemp -d)
 "$ff" gen disk 1000 --seed 5 -o "$tmp/p2.xyz"
 "$ff" gen ball 1000 --seed 5 -o "$tmp/p3.xyz"
 "$ff" gen square 1000 --seed 5 --weights 0,1e-5 -o "$tmp/w2.xyz"
+"$ff" gen cube 1000 --seed 5 --weights 0,1e-3 -o "$tmp/w3.xyz"
 "$ff" gen tiny2 50000 --seed 5 -o "$tmp/t2.xyz"  # subnormals: the exact stage inside the throw-away
 : > "$OUT/sanitizer.log"
 for tool in memcheck racecheck synccheck; do
-  for job in "hull2 $tmp/p2.xyz" "hull2 $tmp/t2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz"; do
+  for job in "hull2 $tmp/p2.xyz" "hull2 $tmp/t2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz" "rt3 $tmp/w3.xyz"; do
     set -- $job
-    case " ${LG_SANITIZE:-hull2 hull3 rt2} " in *" $1 "*) ;; *) continue ;; esac
+    case " ${LG_SANITIZE:-hull2 hull3 rt2 rt3} " in *" $1 "*) ;; *) continue ;; esac
     timeout 60 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$1" "$2" --backend cuda -o "$tmp/out" \
       >> "$OUT/sanitizer.log" 2>&1
     rc=$?
@@ -140,7 +141,7 @@ run_bench() {
 echo "== benchmarks (medians of 3; CSV in \$OUT/bench.csv)"
 : > "$OUT/bench.csv"
 bench() {
-  case " ${LG_BENCH:-hull3 hull2 rt2 dt2} " in *" $1 "*) ;; *) return ;; esac
+  case " ${LG_BENCH:-hull3 hull2 rt2 dt2 dt3 rt3} " in *" $1 "*) ;; *) return ;; esac
   echo "# flipflop bench $*" >> "$OUT/bench.csv"
   timeout 200 "$ff" bench "$@" --reps 3 --csv >> "$OUT/bench.csv" 2>> "$OUT/bench.err"
   echo "rc=$? flipflop bench $*"
@@ -149,6 +150,8 @@ bench hull3 --dist ball --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipfl
 bench hull2 --dist disk --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,qhull,cgal'
 bench rt2 --dist square --n 10000000 --weights 0,1e-5 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'
 bench dt2 --dist square --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'
+bench dt3 --dist cube --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal:delaunay_triangulation_3:parallel$'
+bench rt3 --dist cube --n 10000000 --weights 0,1e-4 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal:regular_triangulation_3:parallel$'
 cat "$OUT/bench.csv"
 }
 

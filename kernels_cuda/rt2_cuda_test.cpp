@@ -13,32 +13,20 @@
 #include <vector>
 
 #include "gen/generate.hpp"
+#include "kernels_cuda/device_property.hpp"
 #include "kernels_cuda/device_test.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
 #include "proptests/support/families.hpp"
-#include "proptests/support/rc_check.hpp"
 #include "proptests/support/rt2_outcome.hpp"
 
 using namespace flipflop;
+using kernels_cuda::property;
+using kernels_cuda::report;
 
 namespace {
 
 std::string cuda_text(const PointSet& ps) {
   return test::problem_of(test::outcome([&] { return kernels_cuda::rt2_ffrt(ps); }));
-}
-
-bool report(const std::string& name, bool passed, const std::string& message = {}) {
-  std::printf("%s %s\n", passed ? "ok  " : "FAIL", name.c_str());
-  if (!passed && !message.empty()) std::printf("%s\n", message.c_str());
-  return passed;
-}
-
-bool property(const std::string& name, int divisor, rc::Gen<PointSet> points) {
-  const test::ScaledResult r = test::check_scaled(name, divisor, [points] {
-    const PointSet ps = *points;
-    RC_ASSERT(cuda_text(ps) == test::ref_text(ps));
-  });
-  return report(name, r.ok, r.message);
 }
 
 }  // namespace
@@ -48,9 +36,11 @@ int main() {
   bool ok = true;
   for (bool weighted : {false, true}) {
     const std::string w = weighted ? "weighted" : "unweighted";
-    ok = property("degenerate sets of 3..60 points, " + w, 2, test::degenerate_points(2, 3, 60, weighted)) && ok;
-    ok = property("family sets of 3..3000 points, " + w, 10,
-                  test::thinned(test::family_points(2, 3, 3000, weighted))) &&
+    ok = property("degenerate sets of 3..60 points, " + w, 2, test::degenerate_points(2, 3, 60, weighted), cuda_text,
+                  test::ref_text) &&
+         ok;
+    ok = property("family sets of 3..3000 points, " + w, 10, test::thinned(test::family_points(2, 3, 3000, weighted)),
+                  cuda_text, test::ref_text) &&
          ok;
   }
   for (std::size_t n : {std::size_t{10000}, std::size_t{100000}})

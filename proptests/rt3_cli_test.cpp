@@ -249,7 +249,8 @@ TEST_CASE("rt3 cli: --stats prints counts and stage timings", "[cli]") {
   REQUIRE(omp.code == 0);
   CHECK(omp.err.find("rt3: backend cuda-omp, 2000 points, ") != std::string::npos);
   CHECK(omp.err.find("certify_rt3 from the kernel's witness") != std::string::npos);
-  CHECK(omp.err.find("rt3: insertion rounds ") != std::string::npos);
+  CHECK(omp.err.find("rt3: BRIO levels ") != std::string::npos);
+  CHECK(omp.err.find(", insertion rounds ") != std::string::npos);
   CHECK(omp.err.find("(kernels_cuda/rt3, backend cuda-omp)") != std::string::npos);
   CHECK(sizes(omp.err) == sizes(ref.err));
   CHECK(slurp(t.dir / "d.txt") == slurp(t.dir / "b.txt"));
