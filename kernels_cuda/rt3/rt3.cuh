@@ -425,23 +425,33 @@ struct Cavity : OnGeo {
     if (!visible(sg, m, root, p)) return kRedundant;
     uint32_t nc = 1, nh = 0;
     C[0] = root;
+    // 64-bit signatures of the tetrahedra in C and of the invisible ones met
+    // (bit: a hash of the slot): a neighbour whose bit is clear is in neither
+    // list, and the lists are scanned only when it is set
+    auto bit = [](uint32_t t) { return uint64_t{1} << ((t * 0x9E3779B1u) >> 26); };
+    uint64_t in_c = bit(root), in_out = 0;
     for (uint32_t a = 0; a < nc; ++a) {
       const uint32_t t = C[a];
       for (uint32_t i = 0; i < 4; ++i) {
         const uint32_t l = m.tn[4 * static_cast<std::size_t>(t) + i], u = l >> 2;
+        const uint64_t bu = bit(u);
         bool inside = false;
-        for (uint32_t b = 0; b < nc && !inside; ++b) inside = C[b] == u;
+        if (in_c & bu)
+          for (uint32_t b = 0; b < nc && !inside; ++b) inside = C[b] == u;
         if (inside) continue;
         bool known = false;
-        for (uint32_t b = 0; b < nh && !known; ++b) known = (E[b].out >> 2) == u;
+        if (in_out & bu)
+          for (uint32_t b = 0; b < nh && !known; ++b) known = (E[b].out >> 2) == u;
         if (!known) {
           const bool vis = visible(sg, m, u, p);
           if (sg.undecided) return kUndecided;
           if (vis) {
             if (nc == s.K) return kOverflow;
             C[nc++] = u;
+            in_c |= bu;
             continue;
           }
+          in_out |= bu;
         }
         if (nh == s.H) return kOverflow;
         HorEntry& e = E[nh++];
