@@ -231,6 +231,10 @@ int run_compute(const ComputeArgs& a) {
     throw UsageError("--triangulate applies to the strict view of a 3D hull (hull3 --strict)");
   const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
   Progress progress(Progress::stderr_is_terminal(), "flipflop " + a.kind);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  // --backend cuda: the CUDA start-up in a thread while the input is read (issue 36 item 4)
+  kernels::DeviceStart device(a.backend);
+#endif
   progress.stage("reading " + a.in);
   const auto t_read0 = Clock::now();
   const PointSet ps = read_input(a.in, a.kind);
@@ -261,6 +265,10 @@ int run_compute(const ComputeArgs& a) {
   if (algo == "brute" && ps.size() > brute_limit(a.kind))
     throw UsageError(a.in + ": " + std::to_string(ps.size()) + " points exceed the limit of " +
                      std::to_string(brute_limit(a.kind)) + " of the brute-force reference ('--algo brute')");
+  double t_device = 0;  // the CUDA start-up, overlapped with the reading
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  t_device = device.wait();
+#endif
   progress.stage("computing (" + std::to_string(ps.size()) + " points, backend " + backend + ")");
   const auto t0 = Clock::now();
   std::vector<Index> cycle;
@@ -414,6 +422,9 @@ int run_compute(const ComputeArgs& a) {
               << t_certify << " s (canonical); read " << t_read << " s, write " << t_write << " s\n";
     if (!counts.empty()) std::cerr << a.kind << ": " << counts << "\n";
     if (!exact_kernel.empty()) std::cerr << a.kind << ": " << exact_kernel << "\n";
+    if (t_device > 0)
+      std::cerr << a.kind << ": CUDA start-up " << t_device << " s, in a thread while the input was read (read "
+                << t_read << " s)\n";
     if (!gpu_times.stages.empty()) {
       // the GPU kernels' stages (kernels_cuda/: upload and download timed
       // apart from the device work)

@@ -87,6 +87,10 @@ int run_rt3(const Rt3Args& a) {
   const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
   refuse_formats_without_tetrahedra(a.out, fmt);
 
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  // --backend cuda: the CUDA start-up in a thread while the input is read (issue 36 item 4)
+  kernels::DeviceStart device(backend);
+#endif
   std::optional<Progress> progress(std::in_place, Progress::stderr_is_terminal(), "flipflop " + kind);
   progress->stage("reading " + a.in);
   const auto t_read0 = Clock::now();
@@ -100,6 +104,10 @@ int run_rt3(const Rt3Args& a) {
   if (std::string why = dimension_problem(ps); !why.empty()) throw UsageError(a.in + ": " + why);
   const double t_read = seconds_since(t_read0);
 
+  double t_device = 0;  // the CUDA start-up, overlapped with the reading
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+  t_device = device.wait();
+#endif
   // ---- the canonical answer, certified -------------------------------------------
   progress->stage("computing (" + std::to_string(ps.size()) + " points, backend " + backend + ")");
   const auto t0 = Clock::now();
@@ -221,6 +229,9 @@ int run_rt3(const Rt3Args& a) {
       std::cerr << kind;
       for (const auto& [stage, s] : stages.stages) std::cerr << std::exchange(sep, ", ") << stage << " " << s << " s";
       std::cerr << " (kernels_cuda/rt3, backend " << backend << ")\n";
+      if (t_device > 0)
+        std::cerr << kind << ": CUDA start-up " << t_device << " s, in a thread while the input was read (read "
+                  << t_read << " s)\n";
 #endif
     } else if (backend == "cpu") {
       std::cerr << kind << ": inserted " << kst.inserted << " (placed outside the hull " << kst.placed

@@ -15,6 +15,14 @@ int device_count() {
   return count;
 }
 
+void start_device() {
+  // the driver's initialisation and the primary context's creation: the
+  // runtime does both lazily at a process's first call that needs a context;
+  // cudaFree(nullptr) is such a call and does nothing else. Without a device
+  // the error is cleared: the kernel's own check reports it (one line).
+  if (cudaFree(nullptr) != cudaSuccess) cudaGetLastError();
+}
+
 std::size_t stack_limit() {
   std::size_t bytes = 0;
   if (cudaDeviceGetLimit(&bytes, cudaLimitStackSize) != cudaSuccess) {

@@ -2,6 +2,7 @@
 // (CMake) when the nvcc build, flipflop_kernels_cuda, is linked.
 #include "kernels_cuda/gpu.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace flipflop::kernels {
@@ -37,6 +38,27 @@ std::vector<std::string> gpu_backends_built() {
 }
 
 bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "cuda-omp"; }
+
+DeviceStart::DeviceStart([[maybe_unused]] const std::string& backend) {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+  if (backend != "cuda") return;
+  started_ = true;
+  thread_ = std::thread([this] {
+    const auto t0 = std::chrono::steady_clock::now();
+    kernels_cuda::start_device();
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  });
+#endif
+}
+
+DeviceStart::~DeviceStart() {
+  if (thread_.joinable()) thread_.join();
+}
+
+double DeviceStart::wait() {
+  if (thread_.joinable()) thread_.join();
+  return seconds_;
+}
 
 std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, const Hull2GpuOptions& opt,
                              ref::Hull2Stats* stats, const std::string& algo) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "kernels_cuda/hull2/hull2.hpp"
@@ -18,6 +19,10 @@
 #include "kernels_cuda/rt3/rt3.hpp"
 #include "reference/hull2/polygon.hpp"
 #include "reference/point_set.hpp"
+
+namespace flipflop::kernels_cuda {
+void start_device();  // classify_cuda.cu: cudaFree(nullptr)
+}  // namespace flipflop::kernels_cuda
 
 namespace flipflop::kernels {
 
@@ -37,6 +42,28 @@ std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, 
 // ffRT (§5.3): the regular triangulation of ps (Delaunay when unweighted)
 std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats = nullptr,
                               cpu::StageTimes* times = nullptr);
+
+// The CUDA driver's and context's start-up (0.3–0.45 s at a process's first
+// GPU call, measured on H100/H200 machines), begun in a thread when the
+// backend is "cuda" and this build has the CUDA kernels, so that it overlaps
+// whatever the caller does before the kernel (the command line: reading the
+// input); wait() joins it and returns its seconds (0 when none was begun). The
+// kernel's first CUDA call waits for a start-up still under way, so wait()
+// only moves that time to where it is reported.
+class DeviceStart {
+ public:
+  explicit DeviceStart(const std::string& backend);
+  ~DeviceStart();
+  DeviceStart(const DeviceStart&) = delete;
+  DeviceStart& operator=(const DeviceStart&) = delete;
+  double wait();
+  bool started() const { return started_; }
+
+ private:
+  std::thread thread_;
+  double seconds_ = 0;
+  bool started_ = false;
+};
 
 // The 3D regular triangulation (Delaunay when unweighted), kernels_cuda/rt3;
 // witness (when given): the certificate of cpu::certify_rt3

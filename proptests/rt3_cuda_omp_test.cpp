@@ -24,6 +24,7 @@
 
 #ifdef FLIPFLOP_HAVE_KERNELS_OMP
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -33,6 +34,9 @@
 #include "kernels_cpu/rt3/certify_rt3.hpp"
 #include "kernels_cpu/rt3/rt3.hpp"
 #include "kernels_cuda/rt3/rt3.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+#include "kernels_cuda/gpu.hpp"
+#endif
 #include "proptests/support/families.hpp"
 #include "proptests/support/large_n.hpp"
 #include "proptests/support/omp_threads.hpp"
@@ -266,5 +270,26 @@ TEST_CASE("rt3 cuda-omp: extreme magnitudes (1e±300, subnormals) equal the refe
     check_req(ps);
   }
 }
+
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+// Issue 36 item 4: the command line begins the CUDA start-up in a thread
+// while it reads the input — for --backend cuda in a build with the CUDA
+// kernels only (without a device the start-up fails quietly and the kernel
+// reports the missing device in one line).
+TEST_CASE("rt3 cuda-omp: the CUDA start-up thread begins for --backend cuda in a build with the CUDA kernels only",
+          "[rt3_cuda_omp]") {
+  kernels::DeviceStart omp("cuda-omp"), cpu("cpu");
+  REQUIRE(!omp.started());
+  REQUIRE(!cpu.started());
+  REQUIRE(omp.wait() == 0);
+  const auto built = kernels::gpu_backends_built();
+  const bool cuda_built = std::find(built.begin(), built.end(), "cuda") != built.end();
+  kernels::DeviceStart cuda("cuda");
+  REQUIRE(cuda.started() == cuda_built);
+  const double s = cuda.wait();
+  REQUIRE((cuda_built ? s > 0 : s == 0));
+  REQUIRE(cuda.wait() == s);  // joined once; the seconds stay
+}
+#endif
 
 #endif

@@ -845,7 +845,7 @@ using backend::raw;
 using backend::read_one;
 
 // OpenMP: one thread below this many items (backend.cuh).
-constexpr std::size_t kParallelFrom = std::size_t{1} << 10;
+constexpr std::size_t kParallelFrom = std::size_t{1} << 8;
 // claim sub-rounds per round (MarkTaken, Revive)
 constexpr int kSubRounds = 4;
 
