@@ -25,6 +25,9 @@
 #include "fuzz/fuzz_input.hpp"
 #include "kernels_cpu/rt3/certify_rt3.hpp"
 #include "kernels_cpu/rt3/rt3.hpp"
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+#include "kernels_cuda/rt3/rt3.hpp"
+#endif
 #include "reference/dimension.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
@@ -63,6 +66,15 @@ bool check_rt3_input(const std::uint8_t* data, std::size_t size) {
         fail(kTarget, std::string("cpu::rt3 threw the wrong exception: ") + e.what(), describe(ps));
       }
     }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+    try {
+      (void)kernels_omp::rt3(ps);
+      fail(kTarget, "kernels_omp::rt3 returned on input that does not span R^3", describe(ps));
+    } catch (const std::invalid_argument&) {
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("kernels_omp::rt3 threw the wrong exception: ") + e.what(), describe(ps));
+    }
+#endif
     return true;
   }
 
@@ -97,6 +109,28 @@ bool check_rt3_input(const std::uint8_t* data, std::size_t size) {
       const certify::Report rep = cpu::certify_rt3(ps, w, got.tets, certify::Level::canonical, threads);
       if (!rep.ok) fail(kTarget, what + ": certify_rt3 rejected its witness: " + rep.message(), describe(ps));
     }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  {
+    const std::string what = "kernels_omp::rt3";
+    kernels::Rt3GpuStats st;
+    cpu::Rt3Witness w;
+    cpu::Rt3Result got;
+    try {
+      got = kernels_omp::rt3(ps, &st, nullptr, &w);
+    } catch (const std::exception& e) {
+      fail(kTarget, what + " threw: " + e.what(), describe(ps));
+    }
+    const auto simplices = as_simplices(got.tets);
+    if (simplices != answer.simplices || got.redundant != answer.redundant)
+      fail(kTarget, what + " differs from rtd_incremental",
+           describe(ps) + what + "\n" + simplices_text(simplices) + "rtd_incremental\n" +
+               simplices_text(answer.simplices));
+    if (st.inserted + st.discarded != ps.size())
+      fail(kTarget, what + ": inconsistent counts", describe(ps));
+    const certify::Report rep = cpu::certify_rt3(ps, w, got.tets, certify::Level::canonical);
+    if (!rep.ok) fail(kTarget, what + ": certify_rt3 rejected its witness: " + rep.message(), describe(ps));
+  }
+#endif
   const certify::Report rep = certify::rtd(ps, answer.simplices, certify::Level::canonical);
   if (!rep.ok) fail(kTarget, "certify::rtd rejected the answer: " + rep.message(), describe(ps));
   return true;
