@@ -84,39 +84,13 @@ bool check_rt3_input(const std::uint8_t* data, std::size_t size) {
   } catch (const std::exception& e) {
     fail(kTarget, std::string("rtd_incremental threw: ") + e.what(), describe(ps));
   }
-  for (int threads : {1, 3})
-    for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
-      cpu::Rt3Options o;
-      o.threads = threads;
-      o.brio_min = brio;
-      cpu::Rt3Stats st;
-      cpu::Rt3Witness w;
-      cpu::Rt3Result got;
-      const std::string what =
-          "cpu::rt3 (" + std::to_string(threads) + " threads, brio_min " + std::to_string(brio) + ")";
-      try {
-        got = cpu::rt3(ps, o, &st, &w);
-      } catch (const std::exception& e) {
-        fail(kTarget, what + " threw: " + e.what(), describe(ps));
-      }
-      const auto simplices = as_simplices(got.tets);
-      if (simplices != answer.simplices || got.redundant != answer.redundant)
-        fail(kTarget, what + " differs from rtd_incremental",
-             describe(ps) + what + "\n" + simplices_text(simplices) + "rtd_incremental\n" +
-                 simplices_text(answer.simplices));
-      if (st.inserted + st.discarded != ps.size() || st.discarded + st.removed != got.redundant.size())
-        fail(kTarget, what + ": inconsistent counts", describe(ps));
-      const certify::Report rep = cpu::certify_rt3(ps, w, got.tets, certify::Level::canonical, threads);
-      if (!rep.ok) fail(kTarget, what + ": certify_rt3 rejected its witness: " + rep.message(), describe(ps));
-    }
-#ifdef FLIPFLOP_HAVE_KERNELS_OMP
-  {
-    const std::string what = "kernels_omp::rt3";
-    kernels::Rt3GpuStats st;
+  // a kernel's run: it returns, the reference's bytes, counts that add up
+  // (counts_ok), its witness certified
+  auto check_run = [&](const std::string& what, auto&& run, auto&& counts_ok) {
     cpu::Rt3Witness w;
     cpu::Rt3Result got;
     try {
-      got = kernels_omp::rt3(ps, &st, nullptr, &w);
+      got = run(w);
     } catch (const std::exception& e) {
       fail(kTarget, what + " threw: " + e.what(), describe(ps));
     }
@@ -125,11 +99,27 @@ bool check_rt3_input(const std::uint8_t* data, std::size_t size) {
       fail(kTarget, what + " differs from rtd_incremental",
            describe(ps) + what + "\n" + simplices_text(simplices) + "rtd_incremental\n" +
                simplices_text(answer.simplices));
-    if (st.inserted + st.discarded != ps.size())
-      fail(kTarget, what + ": inconsistent counts", describe(ps));
+    if (!counts_ok(got)) fail(kTarget, what + ": inconsistent counts", describe(ps));
     const certify::Report rep = cpu::certify_rt3(ps, w, got.tets, certify::Level::canonical);
     if (!rep.ok) fail(kTarget, what + ": certify_rt3 rejected its witness: " + rep.message(), describe(ps));
-  }
+  };
+  for (int threads : {1, 3})
+    for (std::size_t brio : {std::size_t{1}, std::size_t{256}}) {
+      cpu::Rt3Options o;
+      o.threads = threads;
+      o.brio_min = brio;
+      cpu::Rt3Stats st;
+      check_run("cpu::rt3 (" + std::to_string(threads) + " threads, brio_min " + std::to_string(brio) + ")",
+                [&](cpu::Rt3Witness& w) { return cpu::rt3(ps, o, &st, &w); },
+                [&](const cpu::Rt3Result& got) {
+                  return st.inserted + st.discarded == ps.size() &&
+                         st.discarded + st.removed == got.redundant.size();
+                });
+    }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  kernels::Rt3GpuStats gst;
+  check_run("kernels_omp::rt3", [&](cpu::Rt3Witness& w) { return kernels_omp::rt3(ps, &gst, nullptr, &w); },
+            [&](const cpu::Rt3Result&) { return gst.inserted + gst.discarded == ps.size(); });
 #endif
   const certify::Report rep = certify::rtd(ps, answer.simplices, certify::Level::canonical);
   if (!rep.ok) fail(kTarget, "certify::rtd rejected the answer: " + rep.message(), describe(ps));
