@@ -157,9 +157,9 @@ TEST_CASE("rt3 cuda-omp: lattices, cospherical sets, duplicates and redundant-he
   }
 }
 
-// A cavity larger than the round's scratch retries with twice the room: the
-// sphere lattice (every point's cavity reaches far under SoS) and a grid
-// overflow the first capacity; the answer is still the reference's.
+// A cavity larger than its room (64 tetrahedra at first) retries in a later
+// round with twice the room: the sphere lattice (cavities reach far under SoS)
+// and a grid overflow it; the answer is still the reference's.
 TEST_CASE("rt3 cuda-omp: cavities that overflow the scratch retry with more room", "[rt3_cuda_omp]") {
   gen::Options o;
   o.seed = 3;

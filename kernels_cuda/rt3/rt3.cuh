@@ -45,8 +45,9 @@
 //             search from its tetrahedron (the visible facets are connected)
 //             into its own scratch of K tetrahedra and 2K + 2 horizon facets
 //             (a cavity of c tetrahedra is a ball with at most 2c + 2
-//             boundary facets); a larger cavity marks the winner overflowed:
-//             it retries in the next round, for which K doubles.
+//             boundary facets; K per point, 64 at first); a larger cavity
+//             marks the winner overflowed: it retries in a later round with
+//             twice the room.
 //   claim     each winner claims every tetrahedron of its cavity and every
 //             neighbour across its horizon by an atomic minimum of (round,
 //             winner number), as the 2D kernel's flips; a winner that holds
@@ -93,7 +94,7 @@
 // insertion wins a claim and how rounds are cut change the work, never the
 // answer; the claim of smallest number always holds all its claims and a
 // cavity that overflowed gets twice the room next time, so every round
-// inserts or grows K, and the rounds end.
+// inserts or grows a room, and the rounds end.
 //
 // Functors: __host__ __device__, no heap, no recursion; atomics are
 // cuda::atomic_ref (libcu++, also for the host compiler). Every choice is a
@@ -117,6 +118,8 @@
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/scan.h>
 #include <thrust/sequence.h>
+#include <thrust/binary_search.h>
+#include <thrust/reduce.h>
 #include <thrust/sort.h>
 #include <thrust/transform.h>
 #include <thrust/transform_reduce.h>
@@ -160,7 +163,7 @@ constexpr std::size_t kMaxSlots = std::size_t{1} << 30;
 
 // A winner's state in its round.
 constexpr uint8_t kOk = 0;         // cavity found
-constexpr uint8_t kOverflow = 1;   // cavity larger than the round's scratch: retries, K doubles
+constexpr uint8_t kOverflow = 1;   // cavity larger than its room: retries with twice the room
 constexpr uint8_t kUndecided = 2;  // the filter pass's mark (two_pass.cuh)
 constexpr uint8_t kRedundant = 3;  // its real tetrahedron proves it redundant (the walk's test already does)
 constexpr uint8_t kWon = 4;        // held all its claims: inserts
@@ -396,25 +399,37 @@ struct HorEntry {
   uint32_t out;
 };
 
+// Per winner q: room for K_q cavity tetrahedra and 2 K_q + 2 horizon facets
+// (a cavity of c tetrahedra is a ball with at most 2c + 2 boundary facets),
+// K_q = want[its point]; first[q] = K_0 + ... + K_{q-1} (an exclusive scan),
+// so that its cavity list starts at first[q] and its horizon list at
+// 2 first[q] + 2q.
 struct Scratch {
-  uint32_t* cav;   // K per winner
-  HorEntry* hor;   // H = 2K + 2 per winner
-  uint32_t* ncav;  // per winner
-  uint32_t* nhor;  // per winner
+  uint32_t* cav;
+  HorEntry* hor;
+  const uint64_t* first;  // per winner
+  const uint32_t* room;   // per winner: K_q
+  uint32_t* ncav;         // per winner
+  uint32_t* nhor;         // per winner
   uint8_t* status;
-  uint32_t K, H;
-  FF_HD uint32_t* C(uint32_t q) const { return cav + static_cast<std::size_t>(q) * K; }
-  FF_HD HorEntry* E(uint32_t q) const { return hor + static_cast<std::size_t>(q) * H; }
+  FF_HD uint32_t K(uint32_t q) const { return room[q]; }
+  FF_HD uint32_t H(uint32_t q) const { return 2 * room[q] + 2; }
+  FF_HD uint32_t* C(uint32_t q) const { return cav + first[q]; }
+  FF_HD HorEntry* E(uint32_t q) const { return hor + 2 * first[q] + 2 * static_cast<uint64_t>(q); }
 };
 
 // Breadth-first search of the facets visible from p̂ from the winner's
 // tetrahedron (every visible facet is reached through visible ones), testing
 // only the cavity's neighbours; a neighbour already found invisible is not
-// tested again.
+// tested again. A cavity larger than its room is kOverflow: the point wants
+// twice the room, which it gets in its next round (its own, not every
+// winner's: a few large cavities — SoS on cospherical lattices — then do not
+// shrink how many insertions a round's scratch holds).
 struct Cavity : OnGeo {
   Mesh m;
   const uint32_t* winners;
   const uint32_t* loc;
+  uint32_t* want;  // per point: the room its next cavity search gets
   Scratch s;
   template <class S>
   FF_HD uint8_t decide(std::size_t qi, S& sg) const {
@@ -446,14 +461,14 @@ struct Cavity : OnGeo {
           const bool vis = visible(sg, m, u, p);
           if (sg.undecided) return kUndecided;
           if (vis) {
-            if (nc == s.K) return kOverflow;
+            if (nc == s.K(q)) return kOverflow;
             C[nc++] = u;
             in_c |= bu;
             continue;
           }
           in_out |= bu;
         }
-        if (nh == s.H) return kOverflow;
+        if (nh == s.H(q)) return kOverflow;
         HorEntry& e = E[nh++];
         const uint32_t* c = m.corners(t);
         for (uint32_t j = 0; j < 4; ++j) e.v[j] = j == i ? p : c[j];
@@ -465,7 +480,10 @@ struct Cavity : OnGeo {
     s.nhor[q] = nh;
     return kOk;
   }
-  FF_HD void write(std::size_t q, uint8_t r) const { s.status[q] = r; }
+  FF_HD void write(std::size_t q, uint8_t r) const {
+    s.status[q] = r;
+    if (r == kOverflow) want[winners[q]] = 2 * s.K(static_cast<uint32_t>(q));  // (the next try's room)
+  }
   FF_HD void mark(std::size_t q) const { s.status[q] = kUndecided; }
   FF_HD bool marked(std::size_t q) const { return s.status[q] == kUndecided; }
 };
@@ -562,6 +580,14 @@ struct ResetClaims {
     for (uint32_t b = 0; b < s.nhor[q]; ++b) atomic_store(hclaim + (E[b].out >> 2), ~uint64_t{0});
   }
 };
+
+struct RoomOf {
+  const uint32_t* winners;
+  const uint32_t* want;
+  FF_HD uint32_t operator()(uint32_t q) const { return want[winners[q]]; }
+};
+// the bytes of winner q's scratch per unit of room, and the rest
+constexpr std::size_t kScratchPerRoom = 4 + 2 * sizeof(HorEntry);
 
 struct StatusIs {
   const uint8_t* status;
@@ -874,7 +900,8 @@ struct Buffers {
   backend::Buffer<uint32_t> tv, tn, stamp, owner, ctaken, htaken, list;
   backend::Buffer<uint64_t> claim, hclaim, best;
   // per winner
-  backend::Buffer<uint32_t> cav, ncav, nhor, need, offset, start_of;
+  backend::Buffer<uint32_t> cav, room, ncav, nhor, need, offset, start_of, want;
+  backend::Buffer<uint64_t> first;
   backend::Buffer<HorEntry> hor;
   backend::Buffer<uint8_t> status;
 };
@@ -1025,9 +1052,15 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
   clock.mark("sort");
 
   // ---- insertion rounds, level by level
-  uint32_t K = 16;  // cavity capacity per insertion (horizon: 2K + 2)
+  // per point: the room its next cavity search gets (64 tetrahedra, doubled
+  // after each overflow)
+  try {
+    B.want.resize(n, 64u);
+  } catch (const std::bad_alloc&) {
+    throw no_memory("the input");
+  }
   // scratch per round: at most this many bytes (or one winner's)
-  const std::size_t budget = std::max<std::size_t>(std::size_t{64} << 20, 96 * n);
+  const std::size_t budget = std::max<std::size_t>(std::size_t{64} << 20, 256 * n);
   // the first level's sample: about 64 points
   uint64_t lo = 0, hi = std::max<uint64_t>(1, (uint64_t{64} << 32) / std::max<std::size_t>(n, 1));
   for (;;) {
@@ -1072,23 +1105,46 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
                                        B.winners.begin());
     });
     for_range(k_all, ResetVote{raw(B.winners), raw(B.loc), raw(B.best)});
-    const uint32_t H = 2 * K + 2;
-    const std::size_t per = 4 * std::size_t{K} + sizeof(HorEntry) * H + 24;
-    const std::size_t k = std::min(k_all, std::max<std::size_t>(1, budget / per));
+    // each winner's room, its scratch's first entry (an inclusive scan, then
+    // shifted), and how many winners the round's scratch holds: those whose
+    // scan stays within the budget (at least one)
+    std::size_t k = 0;
+    uint64_t total = 0;
     try {
-      if (B.cav.size() < k * K) B.cav.resize(k * K);
-      if (B.hor.size() < k * H) B.hor.resize(k * H);
+      if (B.room.size() < k_all + 1) B.room.resize(k_all + 1), B.first.resize(k_all + 1);
+    } catch (const std::bad_alloc&) {
+      throw no_memory("the round's " + std::to_string(k_all) + " insertions");
+    }
+    step(k_all, [&](auto policy) {
+      thrust::transform(policy, first, first + k_all, B.room.begin(), RoomOf{raw(B.winners), raw(B.want)});
+      thrust::inclusive_scan(policy, B.room.begin(), B.room.begin() + static_cast<std::ptrdiff_t>(k_all),
+                             B.first.begin() + 1, thrust::plus<uint64_t>());
+      const uint64_t units = std::max<uint64_t>(1, budget / kScratchPerRoom);
+      k = static_cast<std::size_t>(thrust::upper_bound(policy, B.first.begin() + 1,
+                                                       B.first.begin() + 1 + static_cast<std::ptrdiff_t>(k_all),
+                                                       units) -
+                                   (B.first.begin() + 1));
+    });
+    k = std::max<std::size_t>(k, std::min<std::size_t>(k_all, 1));
+    B.first[0] = 0;
+    if (k > 0) total = read_one(B.first, k);
+    st.max_capacity = std::max<std::uint64_t>(
+        st.max_capacity, k ? thrust::reduce(B.room.begin(), B.room.begin() + static_cast<std::ptrdiff_t>(k), 0u,
+                                            thrust::maximum<uint32_t>())
+                           : 0u);
+    try {
+      if (B.cav.size() < total) B.cav.resize(total);
+      if (B.hor.size() < 2 * total + 2 * k) B.hor.resize(2 * total + 2 * k);
       if (B.ncav.size() < k + 1) {
         B.ncav.resize(k + 1), B.nhor.resize(k + 1), B.need.resize(k + 1), B.offset.resize(k + 1);
         B.start_of.resize(k + 1), B.status.resize(k + 1);
       }
     } catch (const std::bad_alloc&) {
-      throw no_memory("the cavities of one round (" + std::to_string(k) + " insertions of up to " +
-                      std::to_string(K) + " tetrahedra)");
+      throw no_memory("the cavities of one round (" + std::to_string(k) + " insertions, room for " +
+                      std::to_string(total) + " tetrahedra)");
     }
-    st.max_capacity = std::max<std::uint64_t>(st.max_capacity, K);
-    const Scratch s{raw(B.cav), raw(B.hor), raw(B.ncav), raw(B.nhor), raw(B.status), K, H};
-    two_passes(k, Cavity{{g}, mesh(), raw(B.winners), raw(B.loc), s}, [&] {
+    const Scratch s{raw(B.cav), raw(B.hor), raw(B.first), raw(B.room), raw(B.ncav), raw(B.nhor), raw(B.status)};
+    two_passes(k, Cavity{{g}, mesh(), raw(B.winners), raw(B.loc), raw(B.want), s}, [&] {
       std::size_t c = 0;
       step(k, [&](auto policy) { c = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kUndecided})); });
       return c;
@@ -1129,10 +1185,7 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
     for_range(k, Insert{mesh(), s, raw(B.winners), raw(B.loc), raw(B.hint), raw(B.offset), slots, raw(B.stamp),
                         raw(B.owner), raw(B.start_of), epoch});
     slots += static_cast<uint32_t>(fresh);
-    if (over > 0) {
-      if (K >= (1u << 22)) throw no_memory("a cavity of more than 2^22 tetrahedra");
-      K *= 2;
-    }
+    if (over > 0 && st.max_capacity >= (1u << 22)) throw no_memory("a cavity of more than 2^22 tetrahedra");
     if (won == 0 && over == 0 && red == 0 && k > 0)
       throw std::logic_error(me + ": a round without an insertion (the smallest claim must win)");
     relocate(kNil);
