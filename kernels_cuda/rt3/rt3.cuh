@@ -162,6 +162,9 @@ constexpr uint32_t kDiscarded = kNil - 2;   // loc[]: proved redundant when loca
 constexpr std::size_t kMaxSlots = std::size_t{1} << 30;
 
 // A winner's state in its round.
+// the cavity search's lists at which it switches from scans to a hash table
+constexpr uint32_t kHashFrom = 48;
+
 constexpr uint8_t kOk = 0;         // cavity found
 constexpr uint8_t kOverflow = 1;   // cavity larger than its room: retries with twice the room
 constexpr uint8_t kUndecided = 2;  // the filter pass's mark (two_pass.cuh)
@@ -407,6 +410,7 @@ struct HorEntry {
 struct Scratch {
   uint32_t* cav;
   HorEntry* hor;
+  uint32_t* table;        // 8 K_q per winner, from 8 first[q] (the cavity search's hash table)
   const uint64_t* first;  // per winner
   const uint32_t* room;   // per winner: K_q
   uint32_t* ncav;         // per winner
@@ -416,6 +420,7 @@ struct Scratch {
   FF_HD uint32_t H(uint32_t q) const { return 2 * room[q] + 2; }
   FF_HD uint32_t* C(uint32_t q) const { return cav + first[q]; }
   FF_HD HorEntry* E(uint32_t q) const { return hor + 2 * first[q] + 2 * static_cast<uint64_t>(q); }
+  FF_HD uint32_t* T(uint32_t q) const { return table + 8 * first[q]; }
 };
 
 // Breadth-first search of the facets visible from p̂ from the winner's
@@ -440,23 +445,47 @@ struct Cavity : OnGeo {
     if (!visible(sg, m, root, p)) return kRedundant;
     uint32_t nc = 1, nh = 0;
     C[0] = root;
-    // 64-bit signatures of the tetrahedra in C and of the invisible ones met
-    // (bit: a hash of the slot): a neighbour whose bit is clear is in neither
-    // list, and the lists are scanned only when it is set
+    // Is a neighbour in C, or an invisible one met before? Small cavities:
+    // 64-bit signatures of the two lists (bit: a hash of the slot) — a
+    // neighbour whose bit is clear is in neither, the lists are scanned only
+    // when it is set. From kHashFrom entries on (cospherical and coplanar sets
+    // under SoS make cavities of thousands of tetrahedra, and the scans
+    // quadratic): an open-addressing table in the winner's scratch (8 K slots
+    // for at most 3 K + 2 keys), entry 2t for t in C, 2t + 1 for t invisible.
     auto bit = [](uint32_t t) { return uint64_t{1} << ((t * 0x9E3779B1u) >> 26); };
     uint64_t in_c = bit(root), in_out = 0;
+    uint32_t* T = s.T(q);
+    const uint32_t mask = 8 * s.K(q) - 1;
+    bool hashed = false;
+    auto slot_of = [&](uint32_t t) {
+      uint32_t h = (t * 0x9E3779B1u) & mask;
+      while (T[h] != kNil && (T[h] >> 1) != t) h = (h + 1) & mask;
+      return h;
+    };
     for (uint32_t a = 0; a < nc; ++a) {
       const uint32_t t = C[a];
+      if (!hashed && nc + nh > kHashFrom) {
+        for (uint32_t h = 0; h <= mask; ++h) T[h] = kNil;
+        for (uint32_t b = 0; b < nc; ++b) T[slot_of(C[b])] = 2 * C[b];
+        for (uint32_t b = 0; b < nh; ++b) T[slot_of(E[b].out >> 2)] = 2 * (E[b].out >> 2) + 1;
+        hashed = true;
+      }
       for (uint32_t i = 0; i < 4; ++i) {
         const uint32_t l = m.tn[4 * static_cast<std::size_t>(t) + i], u = l >> 2;
         const uint64_t bu = bit(u);
-        bool inside = false;
-        if (in_c & bu)
-          for (uint32_t b = 0; b < nc && !inside; ++b) inside = C[b] == u;
+        bool inside = false, known = false;
+        uint32_t h = 0;
+        if (hashed) {
+          h = slot_of(u);
+          inside = T[h] == 2 * u;
+          known = T[h] == 2 * u + 1;
+        } else {
+          if (in_c & bu)
+            for (uint32_t b = 0; b < nc && !inside; ++b) inside = C[b] == u;
+          if (!inside && (in_out & bu))
+            for (uint32_t b = 0; b < nh && !known; ++b) known = (E[b].out >> 2) == u;
+        }
         if (inside) continue;
-        bool known = false;
-        if (in_out & bu)
-          for (uint32_t b = 0; b < nh && !known; ++b) known = (E[b].out >> 2) == u;
         if (!known) {
           const bool vis = visible(sg, m, u, p);
           if (sg.undecided) return kUndecided;
@@ -464,9 +493,11 @@ struct Cavity : OnGeo {
             if (nc == s.K(q)) return kOverflow;
             C[nc++] = u;
             in_c |= bu;
+            if (hashed) T[h] = 2 * u;
             continue;
           }
           in_out |= bu;
+          if (hashed) T[h] = 2 * u + 1;
         }
         if (nh == s.H(q)) return kOverflow;
         HorEntry& e = E[nh++];
@@ -587,7 +618,7 @@ struct RoomOf {
   FF_HD uint32_t operator()(uint32_t q) const { return want[winners[q]]; }
 };
 // the bytes of winner q's scratch per unit of room, and the rest
-constexpr std::size_t kScratchPerRoom = 4 + 2 * sizeof(HorEntry);
+constexpr std::size_t kScratchPerRoom = 4 + 2 * sizeof(HorEntry) + 8 * 4;
 
 struct StatusIs {
   const uint8_t* status;
@@ -636,6 +667,16 @@ struct Insert {
     auto slot = [&](uint32_t b) { return b < nc ? C[b] : fresh + (b - nc); };
     for (uint32_t b = 0; b < nc; ++b) stamp[C[b]] = epoch, owner[C[b]] = q;
     uint32_t start = kNil;
+    // the links inside the cone: each new tetrahedron's three facets through
+    // p hold p and an edge of the horizon, which is in exactly two horizon
+    // facets (a closed surface); matched by a scan of the horizon, or, for a
+    // large one, through a hash table of edges in the winner's scratch (8 K
+    // slots for at most 3 K + 3 edges)
+    const bool hashed = nh > kHashFrom;
+    uint32_t* T = s.T(q);
+    const uint32_t mask = 8 * s.K(q) - 1;
+    if (hashed)
+      for (uint32_t h = 0; h <= mask; ++h) T[h] = kNil;
     for (uint32_t b = 0; b < nh; ++b) {
       const HorEntry& e = E[b];
       const uint32_t t = slot(b);
@@ -651,6 +692,28 @@ struct Insert {
         uint32_t xy[2], k = 0;
         for (uint32_t r = 0; r < 4; ++r)
           if (r != e.i && r != j) xy[k++] = e.v[r];
+        if (hashed) {  // the edge's first half waits in the table for its second
+          const uint32_t lo = xy[0] < xy[1] ? xy[0] : xy[1], hi = xy[0] < xy[1] ? xy[1] : xy[0];
+          uint32_t h = (lo * 0x9E3779B1u ^ hi * 0x85EBCA77u) & mask;
+          for (;; h = (h + 1) & mask) {
+            if (T[h] == kNil) {
+              T[h] = 4 * b + j;
+              break;
+            }
+            if (T[h] == kNil - 1) continue;  // a matched edge's tombstone
+            const uint32_t b2 = T[h] >> 2, j2 = T[h] & 3u;
+            uint32_t e2[2], n2 = 0;
+            for (uint32_t r = 0; r < 4; ++r)
+              if (r != E[b2].i && r != j2) e2[n2++] = E[b2].v[r];
+            if ((e2[0] == lo && e2[1] == hi) || (e2[0] == hi && e2[1] == lo)) {
+              l[j] = 4 * slot(b2) + j2;
+              m.tn[4 * static_cast<std::size_t>(slot(b2)) + j2] = 4 * t + j;
+              T[h] = kNil - 1;  // (matched: a tombstone, never a first half again)
+              break;
+            }
+          }
+          continue;
+        }
         uint32_t link = kNil;
         for (uint32_t b2 = 0; b2 < nh && link == kNil; ++b2) {
           if (b2 == b) continue;
@@ -900,7 +963,7 @@ struct Buffers {
   backend::Buffer<uint32_t> tv, tn, stamp, owner, ctaken, htaken, list;
   backend::Buffer<uint64_t> claim, hclaim, best;
   // per winner
-  backend::Buffer<uint32_t> cav, room, ncav, nhor, need, offset, start_of, want;
+  backend::Buffer<uint32_t> cav, table, room, ncav, nhor, need, offset, start_of, want;
   backend::Buffer<uint64_t> first;
   backend::Buffer<HorEntry> hor;
   backend::Buffer<uint8_t> status;
@@ -1134,6 +1197,7 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
                            : 0u);
     try {
       if (B.cav.size() < total) B.cav.resize(total);
+      if (B.table.size() < 8 * total) B.table.resize(8 * total);
       if (B.hor.size() < 2 * total + 2 * k) B.hor.resize(2 * total + 2 * k);
       if (B.ncav.size() < k + 1) {
         B.ncav.resize(k + 1), B.nhor.resize(k + 1), B.need.resize(k + 1), B.offset.resize(k + 1);
@@ -1143,7 +1207,7 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
       throw no_memory("the cavities of one round (" + std::to_string(k) + " insertions, room for " +
                       std::to_string(total) + " tetrahedra)");
     }
-    const Scratch s{raw(B.cav), raw(B.hor), raw(B.first), raw(B.room), raw(B.ncav), raw(B.nhor), raw(B.status)};
+    const Scratch s{raw(B.cav), raw(B.hor), raw(B.table), raw(B.first), raw(B.room), raw(B.ncav), raw(B.nhor), raw(B.status)};
     two_passes(k, Cavity{{g}, mesh(), raw(B.winners), raw(B.loc), raw(B.want), s}, [&] {
       std::size_t c = 0;
       step(k, [&](auto policy) { c = static_cast<std::size_t>(thrust::count_if(policy, first, first + k, StatusIs{raw(B.status), kUndecided})); });
