@@ -207,6 +207,35 @@ TEST_CASE("rt3 cuda-omp: 20000 points in three weight ranges and the degenerate 
   }
 }
 
+// The round's scratch budget (Rt3GpuOptions::scratch_bytes) decides how many
+// of a round's winners take part; the others wait for a later round. Budgets
+// of 1 byte (one winner a round, the rule's minimum), 64 KiB (a dozen) and
+// 1 MiB change the rounds, never the answer or its certificate.
+TEST_CASE("rt3 cuda-omp: a small scratch budget takes part of a round's winners, with the same answer",
+          "[rt3_cuda_omp]") {
+  gen::Options o;
+  o.seed = 9;
+  for (const PointSet& ps : {gen::generate("ball", 3000, o), gen::generate("grid3", 1000, o)}) {
+    const std::string expect = test::rt3_outcome([&] { return cpu::rt3(ps); });
+    kernels::Rt3GpuStats full;
+    REQUIRE(test::rt3_outcome([&] { return kernels_omp::rt3(ps, &full); }) == expect);
+    for (std::size_t bytes : {std::size_t{1} << 20, std::size_t{1} << 16, std::size_t{1}}) {
+      kernels::Rt3GpuOptions opt;
+      opt.scratch_bytes = bytes;
+      kernels::Rt3GpuStats st;
+      cpu::Rt3Witness w;
+      cpu::Rt3Result r;
+      REQUIRE(test::rt3_outcome([&] { return r = kernels_omp::rt3(ps, &st, nullptr, &w, opt); }) == expect);
+      INFO(ps.size() << " points, budget " << bytes << " bytes: " << st.rounds << " rounds (" << full.rounds
+                     << " with the default budget)");
+      REQUIRE(cpu::certify_rt3(ps, w, r.tets).ok);
+      // one winner a round at the smallest budget: a round per insertion
+      if (bytes == 1) REQUIRE(st.rounds >= st.inserted - 4);
+      if (bytes == 1) REQUIRE(st.attempts == st.rounds);
+    }
+  }
+}
+
 // 16 OpenMP threads, as on the many-core machines that run this build, and
 // 1: every choice is a minimum or a scan, so the witness is the same too.
 TEST_CASE("rt3 cuda-omp: 1, 2 and 16 OpenMP threads give the same answer and the same witness", "[rt3_cuda_omp]") {

@@ -970,7 +970,7 @@ struct Buffers {
 };
 
 inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::StageTimes* times,
-                          cpu::Rt3Witness* witness, const char* who) {
+                          cpu::Rt3Witness* witness, const kernels::Rt3GpuOptions& opt, const char* who) {
   const std::string me(who);
   if (ps.dim != 3) throw std::invalid_argument(me + ": the points must be 3D, got dimension " + std::to_string(ps.dim));
   if (ps.weighted && ps.weights.size() != ps.size())
@@ -1123,7 +1123,8 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
     throw no_memory("the input");
   }
   // scratch per round: at most this many bytes (or one winner's)
-  const std::size_t budget = std::max<std::size_t>(std::size_t{64} << 20, 256 * n);
+  const std::size_t budget =
+      opt.scratch_bytes ? opt.scratch_bytes : std::max<std::size_t>(std::size_t{64} << 20, 256 * n);
   // the first level's sample: about 64 points
   uint64_t lo = 0, hi = std::max<uint64_t>(1, (uint64_t{64} << 32) / std::max<std::size_t>(n, 1));
   for (;;) {
@@ -1320,11 +1321,12 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
 
 }  // namespace rt3_detail
 
-cpu::Rt3Result rt3(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::StageTimes* times, cpu::Rt3Witness* witness) {
+cpu::Rt3Result rt3(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::StageTimes* times, cpu::Rt3Witness* witness,
+                   const kernels::Rt3GpuOptions& opt) {
 #if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
-  return rt3_detail::run(ps, stats, times, witness, "rt3 (omp)");
+  return rt3_detail::run(ps, stats, times, witness, opt, "rt3 (omp)");
 #else
-  return rt3_detail::run(ps, stats, times, witness, "rt3 (cuda)");
+  return rt3_detail::run(ps, stats, times, witness, opt, "rt3 (cuda)");
 #endif
 }
 

@@ -21,6 +21,7 @@
 // included, runs on the device (rt3.cuh).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -46,6 +47,13 @@ struct Rt3GpuStats {
   std::uint64_t max_capacity = 0;   // the largest per-insertion cavity capacity a round used
 };
 
+// Tuning; the answer does not depend on it (tests vary it).
+struct Rt3GpuOptions {
+  // bytes of cavity scratch a round may use (the winners whose scratch fits
+  // it take part, at least one); 0: max(64 MiB, 256 bytes per point)
+  std::size_t scratch_bytes = 0;
+};
+
 }  // namespace flipflop::kernels
 
 namespace flipflop::kernels_omp {
@@ -53,13 +61,13 @@ namespace flipflop::kernels_omp {
 // witness, when given, receives the kernel's final extended triangulation in
 // its own (Morton) order, the certificate cpu::certify_rt3 checks.
 cpu::Rt3Result rt3(const PointSet& ps, kernels::Rt3GpuStats* stats = nullptr, cpu::StageTimes* times = nullptr,
-                   cpu::Rt3Witness* witness = nullptr);
+                   cpu::Rt3Witness* witness = nullptr, const kernels::Rt3GpuOptions& opt = {});
 
 }  // namespace flipflop::kernels_omp
 
 namespace flipflop::kernels_cuda {
 
 cpu::Rt3Result rt3(const PointSet& ps, kernels::Rt3GpuStats* stats = nullptr, cpu::StageTimes* times = nullptr,
-                   cpu::Rt3Witness* witness = nullptr);
+                   cpu::Rt3Witness* witness = nullptr, const kernels::Rt3GpuOptions& opt = {});
 
 }  // namespace flipflop::kernels_cuda
