@@ -76,14 +76,14 @@ int run_rt3(const Rt3Args& a) {
   if (backend != "cpu" && backend != "reference" && !gpu)
     throw UsageError(kind + " backends: cpu (kernels_cpu/rt3, the default), reference, cuda and cuda-omp; got '" +
                      backend + "'");
+  if (a.threads < 0) throw UsageError("--threads must be positive, got " + std::to_string(a.threads));
+  if (a.threads != 0 && backend != "cpu")
+    throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
 #ifndef FLIPFLOP_HAVE_KERNELS_GPU
   if (gpu)
     throw UsageError("--backend " + backend + ": this flipflop was built without the GPU kernels (kernels_cuda/: "
                      "thrust headers and OpenMP)");
 #endif
-  if (a.threads < 0) throw UsageError("--threads must be positive, got " + std::to_string(a.threads));
-  if (a.threads != 0 && backend != "cpu")
-    throw UsageError("--threads applies to the multithreaded backend (--backend cpu), not '" + backend + "'");
   const io::Format fmt = output_format_of(a.out);  // an unknown extension fails before any work
   refuse_formats_without_tetrahedra(a.out, fmt);
 
