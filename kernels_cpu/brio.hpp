@@ -33,46 +33,18 @@
 #include <functional>
 #include <vector>
 
+#include "kernels_cpu/grid_keys.hpp"
 #include "kernels_cpu/parallel.hpp"
 #include "reference/certify/certify_detail.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::cpu::brio {
 
-inline std::uint64_t splitmix64(std::uint64_t z) {
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+// splitmix64, unit, grid_cell, morton: grid_keys.hpp (also the GPU kernels')
 
-// Grid coordinate in [0, 2^kBits) of x in [lo, hi]; halves first so that no
-// difference overflows near ±DBL_MAX.
-inline std::uint32_t grid_cell(double x, double lo, double hi, int bits) {
-  const double cells = static_cast<double>(std::uint32_t{1} << bits);
-  const double span = hi * 0.5 - lo * 0.5;
-  double u = span > 0 ? (x * 0.5 - lo * 0.5) / span : 0.0;
-  if (!(u >= 0)) u = 0;
-  if (u > 1) u = 1;
-  return static_cast<std::uint32_t>(std::min(cells - 1, u * cells));
-}
 template <int kBits>
 std::uint32_t grid(double x, double lo, double hi) {
   return grid_cell(x, lo, hi, kBits);
-}
-
-// Morton (Z-order) index of x's cell in the box lo[0..d-1], hi[0..d-1]:
-// floor(total / d) bits per axis (grid cells), interleaved from the top bit;
-// below 2^total (total <= 64). The d-dimensional kernels' point order
-// (kernels_cpu/rtd) and their certifiers' walk order.
-inline std::uint64_t morton(const double* x, const double* lo, const double* hi, int d, int total) {
-  const int bits = total / d;
-  std::uint32_t cell[16];  // d <= 16
-  for (int j = 0; j < d; ++j) cell[j] = grid_cell(x[j], lo[j], hi[j], bits);
-  std::uint64_t key = 0;
-  for (int b = bits - 1; b >= 0; --b)
-    for (int j = 0; j < d; ++j) key = (key << 1) | ((cell[j] >> b) & 1u);
-  return key;
 }
 
 inline std::uint32_t grid15(double x, double lo, double hi) { return grid<15>(x, lo, hi); }

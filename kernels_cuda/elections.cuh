@@ -47,7 +47,14 @@ FF_HD inline std::uint64_t vote_key(std::uint32_t p) {
   return (static_cast<std::uint64_t>(h) << 32) | p;
 }
 
-// Did point p win the election of its cell loc[p]? (best: the cells' minima)
+// Point p's vote for its cell loc[p] (best: the cells' minima, ~0 before).
+struct Vote {
+  const std::uint32_t* loc;
+  std::uint64_t* best;
+  FF_HD void operator()(std::uint32_t p) const { atomic_fetch_min(best + loc[p], vote_key(p)); }
+};
+
+// Did point p win the election of its cell loc[p]?
 struct IsWinner {
   const std::uint32_t* loc;
   const std::uint64_t* best;

@@ -158,6 +158,7 @@ using dev::atomic_exchange;
 using dev::atomic_fetch_add;
 using dev::atomic_fetch_min;
 using dev::IsWinner;
+using dev::Vote;
 using dev::vote_key;
 
 // ---- the points and the predicates with the virtual vertex ------------------
@@ -318,12 +319,7 @@ FF_HD inline uint64_t claim_key(uint32_t epoch, uint32_t j) {
 
 // ---- insertion rounds (§5.3) ----------------------------------------------------
 
-// A point's vote for its triangle (elections.cuh).
-struct Vote {
-  const uint32_t* loc;
-  uint64_t* best;
-  FF_HD void operator()(uint32_t p) const { atomic_fetch_min(best + loc[p], vote_key(p)); }
-};
+// A point's vote for its triangle: dev::Vote, dev::IsWinner (elections.cuh).
 
 // 1-3 flip of winner q: point p into t = (a, b, c) — t becomes (a, b, p), the
 // new slots (b, c, p) and (c, a, p) are base + 2q and base + 2q + 1

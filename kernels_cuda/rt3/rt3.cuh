@@ -137,6 +137,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels_cpu/grid_keys.hpp"
 #include "kernels_cpu/rt3/canonical_tet.hpp"
 #include "kernels_cuda/backend.cuh"
 #include "kernels_cuda/device_predicates.cuh"
@@ -176,6 +177,7 @@ constexpr uint8_t kOut = 6;        // meets an insertion of this round: retries 
 using dev::atomic_fetch_min;
 using dev::atomic_store;
 using dev::IsWinner;
+using dev::Vote;
 using dev::vote_key;
 
 // ---- the points and the two kinds of signs ------------------------------------------
@@ -248,13 +250,6 @@ FF_HD bool visible(S& sg, const Mesh& m, uint32_t t, uint32_t p) {
   return sg.power(c[0], c[1], c[2], c[3], p) > 0;
 }
 
-FF_HD inline uint64_t mix64(uint64_t z) {
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 // The visibility walk toward p from tetrahedron t (kernels_cpu/rt3's walk):
 // across a facet that separates t from p (orient3d with that corner replaced
 // by p negative), never straight back, the facets tried from a hashed one
@@ -275,7 +270,7 @@ FF_HD uint32_t walk(S& sg, const Mesh& m, uint32_t p, uint32_t t, uint64_t seed)
     const uint32_t l = m.tn[4 * static_cast<std::size_t>(t) + iv];
     t = l >> 2, from = l & 3u;
   }
-  uint64_t rng = mix64(seed) | 1;
+  uint64_t rng = cpu::brio::splitmix64(seed) | 1;
   for (;;) {
     rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
     const uint32_t r = static_cast<uint32_t>(rng >> 32) & 3u;
@@ -353,12 +348,7 @@ struct Relocate : OnGeo {
   FF_HD bool marked(std::size_t i) const { return pending[i] != 0; }
 };
 
-// ---- the round's elections ------------------------------------------------------------------
-struct Vote {
-  const uint32_t* loc;
-  uint64_t* best;
-  FF_HD void operator()(uint32_t p) const { atomic_fetch_min(best + loc[p], vote_key(p)); }
-};
+// ---- the round's elections (dev::Vote, dev::IsWinner: elections.cuh) -----------------------------
 // BRIO (Amenta–Choi–Rote) in levels: a point belongs to the level at which
 // its hash falls below the level's threshold (the levels' samples double); a
 // level's points are located and inserted, in rounds, into the triangulation
@@ -841,29 +831,13 @@ struct BoxUnion {
     return r;
   }
 };
-// Morton key: 21 bits of each coordinate on the bounding box's grid, bits
-// interleaved; scaled by halves so that no difference overflows (only the
-// locality depends on the key, never the answer).
+// Morton key: 21 bits of each coordinate on the bounding box's grid
+// (grid_keys.hpp; only the locality depends on it, never the answer).
 struct MortonKey {
   const double* xyz;
   Box box;
-  FF_HD static uint64_t spread(uint64_t x) {
-    x &= 0x1fffffull;
-    x = (x | (x << 32)) & 0x1f00000000ffffull;
-    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
-    x = (x | (x << 8)) & 0x100f00f00f00f00full;
-    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
-    return (x | (x << 2)) & 0x1249249249249249ull;
-  }
-  FF_HD uint64_t cell(double x, int k) const {
-    const double span = box.hi[k] * 0.5 - box.lo[k] * 0.5;
-    double f = span > 0 ? (x * 0.5 - box.lo[k] * 0.5) / span : 0.0;
-    f = f >= 0 ? (f <= 1 ? f : 1.0) : 0.0;
-    return static_cast<uint64_t>(f * 2097151.0);
-  }
   FF_HD uint64_t operator()(uint32_t i) const {
-    const double* x = xyz + 3 * static_cast<std::size_t>(i);
-    return (spread(cell(x[0], 0)) << 2) | (spread(cell(x[1], 1)) << 1) | spread(cell(x[2], 2));
+    return cpu::brio::morton(xyz + 3 * static_cast<std::size_t>(i), box.lo, box.hi, 3, 63);
   }
 };
 // The first tetrahedron's corners, chosen in double on the box-normalised
@@ -881,16 +855,12 @@ struct Spread {
   Box box;
   int mode;             // 0: -x, 1: x, 2: distance² from line ab, 3: |volume| with abc
   double a[3], b[3], c[3];  // normalised corners chosen so far
-  FF_HD void norm(uint32_t i, double* y) const {
-    const double* x = xyz + 3 * static_cast<std::size_t>(i);
-    for (int k = 0; k < 3; ++k) {
-      const double span = box.hi[k] * 0.5 - box.lo[k] * 0.5;
-      y[k] = span > 0 ? (x[k] * 0.5 - box.lo[k] * 0.5) / span : 0.0;
-    }
+  FF_HD static void norm(const double* x, const Box& box, double* y) {
+    for (int k = 0; k < 3; ++k) y[k] = cpu::brio::unit(x[k], box.lo[k], box.hi[k]);
   }
   FF_HD Scored operator()(uint32_t i) const {
     double y[3];
-    norm(i, y);
+    norm(xyz + 3 * static_cast<std::size_t>(i), box, y);
     double v = 0;
     if (mode == 0) v = -y[0];
     if (mode == 1) v = y[0];
@@ -1043,12 +1013,8 @@ inline cpu::Rt3Result run(const PointSet& ps, kernels::Rt3GpuStats* stats, cpu::
       });
       double* into[3] = {sp.a, sp.b, sp.c};
       if (mode < 3) {
-        // the chosen point's normalised coordinates, on the host (Spread::norm)
-        const double* px = ps.point(read_one(B.order, e[mode]));
-        for (int k = 0; k < 3; ++k) {
-          const double span = box.hi[k] * 0.5 - box.lo[k] * 0.5;
-          into[mode][k] = span > 0 ? (px[k] * 0.5 - box.lo[k] * 0.5) / span : 0.0;
-        }
+        // the chosen point's normalised coordinates, on the host
+        Spread::norm(ps.point(read_one(B.order, e[mode])), box, into[mode]);
       }
     }
     if (e[0] != e[1] && e[0] != e[2] && e[0] != e[3] && e[1] != e[2] && e[1] != e[3] && e[2] != e[3])
