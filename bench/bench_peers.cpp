@@ -123,6 +123,11 @@ int bench_peers(const Args& a) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
     add_gpu_rows(rows,
                  [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::hull3_gpu(b, pts, nullptr, t); });
+    // gHull (thesis ch. 7) beside the GPU ffHull, as §7.4 compares them
+    add_gpu_rows(
+        rows,
+        [&pts](const std::string& b, cpu::StageTimes* t) { return kernels::hull3_ghull_gpu(b, pts, {}, nullptr, t); },
+        ":ghull");
 #endif
     rows.insert(rows.end(), {{"flipflop:reference:ffhull", [](const PointSet& p) { return ref::hull3(p, "ffhull"); }},
                              {"flipflop:reference:splay", [](const PointSet& p) { return ref::hull3(p, "splay"); }}});

@@ -119,7 +119,7 @@ std::vector<std::string> gpu_algorithms(const std::string& kind) {
 #ifdef FLIPFLOP_HAVE_KERNELS_GPU
   if (kind == "hull2") return {"graham-sort", "graham-insert"};
   if (kind == "rt2" || kind == "dt2") return {"ffrt"};
-  if (kind == "hull3") return {"ffhull"};
+  if (kind == "hull3") return {"ffhull", "ghull"};
 #else
   (void)kind;
 #endif
@@ -159,7 +159,16 @@ bool cpu_computes(const std::string& kind, const std::string& algo) {
 }
 }  // namespace
 
+// an algorithm only the GPU backends compute (gHull)
+bool gpu_only(const std::string& kind, const std::string& algo) {
+  const auto g = gpu_algorithms(kind);
+  if (std::find(g.begin(), g.end(), algo) == g.end()) return false;
+  if (kind != "hull3") return false;
+  const auto r = ref::hull3_algorithms();
+  return std::find(r.begin(), r.end(), algo) == r.end();
+}
 std::string default_backend(const std::string& kind, const std::string& algo) {
+  if (gpu_only(kind, algo)) return "cuda-omp";
   return cpu_computes(kind, algo) ? "cpu" : "reference";
 }
 
@@ -169,6 +178,9 @@ std::vector<std::string> available_algorithms(const std::string& kind) {
   if (kind == "rt2") algos = {"incremental", "territories", "batches", "ffrt", "ffrt-vfirst"};
   if (kind == "dt2") algos = {"incremental", "territories", "batches", "ffrt", "ffrt-vfirst", "lawson"};
   if (kind == "hull3") algos = ref::hull3_algorithms();
+  // the GPU backends' own algorithms (gHull: kernels_cuda/hull3/ghull.hpp)
+  for (const std::string& x : gpu_algorithms(kind))
+    if (std::find(algos.begin(), algos.end(), x) == algos.end()) algos.push_back(x);
   algos.push_back("brute");
   return algos;
 }
@@ -247,6 +259,8 @@ int run_compute(const ComputeArgs& a) {
   if (backend == "reference" && (a.kind == "rt2" || a.kind == "dt2") && cpu_computes(a.kind, algo))
     throw UsageError("--algo " + algo + " is the cpu backend's (kernels_cpu/rt2); the reference computes ffrt, "
                      "ffrt-vfirst" + std::string(a.kind == "dt2" ? ", lawson" : "") + " and brute");
+  if (backend == "reference" && gpu_only(a.kind, algo))
+    throw UsageError("--algo " + algo + " is the GPU backends' (--backend cuda or cuda-omp), not the reference's");
   if (backend == "cpu" && !cpu_computes(a.kind, algo)) {
     std::string list;
     for (const std::string& x : cpu_algorithms(a.kind)) list += (list.empty() ? "" : ", ") + x;
@@ -338,10 +352,24 @@ int run_compute(const ComputeArgs& a) {
   } else if (a.kind == "hull3" && is_gpu(backend)) {
     // kernels_cuda/hull3: ffHull's construction rounds and parallel flip-flop rounds
     ref::Hull3Stats st;
-    tris = kernels::hull3_gpu(backend, ps, &st, &gpu_times);
-    counts = hull3_counts(st);
-    exact_kernel = "exact kernel point: " + std::to_string(st.exact_kernel_point) +
-                   " (an almost flat initial tetrahedron: the exact centroid's side tests on the device)";
+    if (algo == "ghull") {
+      // kernels_cuda/hull3/ghull: gHull's five stages (thesis ch. 7) and the exact verification
+      kernels::GhullStats g;
+      tris = kernels::hull3_ghull_gpu(backend, ps, {}, &g, &gpu_times);
+      counts = "grid " + std::to_string(g.grid) + ", captured (|S'|) " + std::to_string(g.captured) +
+               ", working pairs " + std::to_string(g.working_pairs) + ", CH(S') vertices " +
+               std::to_string(g.approx_vertices) + ", depth-test candidates " + std::to_string(g.depth_candidates) +
+               ", added " + std::to_string(g.added) + ", depth misses " + std::to_string(g.depth_misses) +
+               ", splay rounds " + std::to_string(g.splay_rounds) + ", splay insertions " +
+               std::to_string(g.splay_insertions) + ", dead stars " + std::to_string(g.dead_stars) +
+               ", edge-list growths " + std::to_string(g.edge_list_growths);
+      exact_kernel = "handed back: " + std::to_string(g.handed_back) + " (gHull runs every stage on the device)";
+    } else {
+      tris = kernels::hull3_gpu(backend, ps, &st, &gpu_times);
+      counts = hull3_counts(st);
+      exact_kernel = "exact kernel point: " + std::to_string(st.exact_kernel_point) +
+                     " (an almost flat initial tetrahedron: the exact centroid's side tests on the device)";
+    }
 #endif
   } else if (a.kind == "hull3" && backend == "cpu") {
     // kernels_cpu/hull3: parallel ffHull, byte-identical to the reference,

@@ -93,6 +93,19 @@ std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, 
       });
 }
 
+std::vector<Triangle> hull3_ghull_gpu(const std::string& backend, const PointSet& ps, const GhullOptions& opt,
+                                     GhullStats* stats, cpu::StageTimes* times) {
+  return dispatch(
+      backend, [&] { return kernels_omp::hull3_ghull(ps, opt, stats, times); },
+      [&] {
+#ifdef FLIPFLOP_HAVE_KERNELS_CUDA
+        return kernels_cuda::hull3_ghull(ps, opt, stats, times);
+#else
+        return std::vector<Triangle>{};
+#endif
+      });
+}
+
 std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats,
                               cpu::StageTimes* times) {
   return dispatch(

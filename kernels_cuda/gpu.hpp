@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kernels_cuda/hull2/hull2.hpp"
+#include "kernels_cuda/hull3/ghull.hpp"
 #include "kernels_cuda/hull3/hull3.hpp"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt2/rt2.hpp"
@@ -38,6 +39,11 @@ std::vector<Index> hull2_gpu(const std::string& backend, const PointSet& ps, con
 // ffHull (§6.4): the 3D convex hull
 std::vector<Triangle> hull3_gpu(const std::string& backend, const PointSet& ps, ref::Hull3Stats* stats = nullptr,
                                 cpu::StageTimes* times = nullptr);
+
+// gHull (ch. 7): the 3D convex hull by star splaying from the digital
+// restricted Voronoi diagram (kernels_cuda/hull3/ghull.hpp)
+std::vector<Triangle> hull3_ghull_gpu(const std::string& backend, const PointSet& ps, const GhullOptions& opt = {},
+                                     GhullStats* stats = nullptr, cpu::StageTimes* times = nullptr);
 
 // ffRT (§5.3): the regular triangulation of ps (Delaunay when unweighted)
 std::vector<Triangle> rt2_gpu(const std::string& backend, const PointSet& ps, ref::Rt2Stats* stats = nullptr,

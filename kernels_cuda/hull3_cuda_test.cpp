@@ -1,4 +1,5 @@
-// hull3_cuda_test.cpp — the CUDA build of ffHull (kernels_cuda/hull3) equals
+// hull3_cuda_test.cpp — the CUDA build of ffHull (kernels_cuda/hull3) and of
+// gHull (kernels_cuda/hull3/ghull.hpp) equals
 // the exact sequential reference ref::hull3_ffhull byte for byte on every 3D
 // generator family (degenerate ones included: grids, lattices on a sphere,
 // coplanar subsets, duplicates, huge / tiny coordinates, 1-ulp jitter) at
@@ -14,6 +15,7 @@
 
 #include "gen/generate.hpp"
 #include "kernels_cuda/device_test.hpp"
+#include "kernels_cuda/hull3/ghull.hpp"
 #include "kernels_cuda/hull3/hull3.hpp"
 #include "reference/hull3/ffhull.hpp"
 
@@ -52,6 +54,20 @@ bool check(const std::string& what, const PointSet& ps, ref::Hull3Stats* stats =
   return ok && counts;
 }
 
+// gHull (kernels_cuda/hull3/ghull.hpp) against the same reference
+bool check_ghull(const std::string& what, const PointSet& ps) {
+  kernels::GhullStats st;
+  const std::string got = outcome([&] { return kernels_cuda::hull3_ghull(ps, {}, &st); });
+  const std::string expect = outcome([&] { return ref::hull3_ffhull(ps); });
+  const bool ok = got == expect && st.handed_back == 0;
+  std::printf("%s ghull %-22s n=%-8zu |S'| %llu, candidates %llu, added %llu, misses %llu, splay rounds %llu%s\n",
+              ok ? "ok  " : "FAIL", what.c_str(), ps.size(), static_cast<unsigned long long>(st.captured),
+              static_cast<unsigned long long>(st.depth_candidates), static_cast<unsigned long long>(st.added),
+              static_cast<unsigned long long>(st.depth_misses), static_cast<unsigned long long>(st.splay_rounds),
+              ok ? "" : "  (differs from the reference)");
+  return ok;
+}
+
 }  // namespace
 
 int main() {
@@ -63,13 +79,17 @@ int main() {
       for (std::uint64_t seed : {1, 2}) {
         gen::Options o;
         o.seed = seed;
-        ok = check(fam + " seed " + std::to_string(seed), gen::generate(fam, n, o)) && ok;
+        const PointSet ps = gen::generate(fam, n, o);
+        ok = check(fam + " seed " + std::to_string(seed), ps) && ok;
+        ok = check_ghull(fam + " seed " + std::to_string(seed), ps) && ok;
       }
   }
   for (const char* fam : {"ball", "sphere"}) {
     gen::Options o;
     o.seed = 11;
-    ok = check(std::string(fam) + " (large)", gen::generate(fam, 1000000, o)) && ok;
+    const PointSet ps = gen::generate(fam, 1000000, o);
+    ok = check(std::string(fam) + " (large)", ps) && ok;
+    ok = check_ghull(std::string(fam) + " (large)", ps) && ok;
   }
   // almost flat slabs (heights one ulp apart): the exact kernel point's side
   // tests on the device (dev::orient3d_centroid); the run must take that path
@@ -98,6 +118,7 @@ int main() {
   flat.dim = 3;
   flat.coords = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 3, 0};
   ok = check("coplanar (rejected)", flat) && ok;
+  ok = check_ghull("coplanar (rejected)", flat) && ok;
   kernels_cuda::report_stack_limit("after the kernels");
   return ok ? 0 : 1;
 }

@@ -121,13 +121,14 @@ tmp=$(mktemp -d)
 "$ff" gen tiny2 50000 --seed 5 -o "$tmp/t2.xyz"  # subnormals: the exact stage inside the throw-away
 : > "$OUT/sanitizer.log"
 for tool in memcheck racecheck synccheck; do
-  for job in "hull2 $tmp/p2.xyz" "hull2 $tmp/t2.xyz" "hull3 $tmp/p3.xyz" "rt2 $tmp/w2.xyz" "rt3 $tmp/w3.xyz"; do
+  for job in "hull2 $tmp/p2.xyz" "hull2 $tmp/t2.xyz" "hull3 $tmp/p3.xyz" "hull3 $tmp/p3.xyz --algo ghull" \
+             "rt2 $tmp/w2.xyz" "rt3 $tmp/w3.xyz"; do
     set -- $job
     case " ${LG_SANITIZE:-hull2 hull3 rt2 rt3} " in *" $1 "*) ;; *) continue ;; esac
-    timeout 60 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$1" "$2" --backend cuda -o "$tmp/out" \
+    timeout 60 compute-sanitizer --tool "$tool" --error-exitcode 9 "$ff" "$@" --backend cuda -o "$tmp/out" \
       >> "$OUT/sanitizer.log" 2>&1
     rc=$?
-    step "compute-sanitizer --tool $tool: $1 $(basename "$2")" "rc=$rc $(tail -1 "$OUT/sanitizer.log")"
+    step "compute-sanitizer --tool $tool: $1 $(basename "$2") ${3:-} ${4:-}" "rc=$rc $(tail -1 "$OUT/sanitizer.log")"
     if [ $rc -eq 0 ]; then
       "$ff" "$1" "$2" --backend reference -o "$tmp/ref" 2>/dev/null
       cmp -s "$tmp/out" "$tmp/ref" || step "  output of $1 under $tool" "differs from --backend reference"
@@ -147,6 +148,10 @@ bench() {
   echo "rc=$? flipflop bench $*"
 }
 bench hull3 --dist ball --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,qhull'
+# gHull beside the GPU ffHull on §7.4's four distributions (issue 36 item 2)
+for d in cube ball box sphere; do
+  bench hull3 --dist $d --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,qhull'
+done
 bench hull2 --dist disk --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,qhull,cgal'
 bench rt2 --dist square --n 10000000 --weights 0,1e-5 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'
 bench dt2 --dist square --n 10000000 --run 'flipflop:cuda$,flipflop:cuda:,flipflop:cpu$,cgal'

@@ -488,6 +488,23 @@ TEST_CASE("cli: hull2 --backend cpu --threads N writes the reference's bytes, ba
   }
 }
 
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+// A --backend cuda run: the expected bytes where a device and the CUDA
+// kernels are, else one line saying which is missing, exit 2, no output.
+void check_cuda_run(const Run& cuda, const fs::path& got, const fs::path& expect) {
+  if (cuda.code == 0) {
+    CHECK(slurp(got) == slurp(expect));
+    return;
+  }
+  INFO(cuda.err);
+  CHECK(cuda.code == 2);
+  CHECK(lines(cuda.err) == 1);
+  CHECK((cuda.err.find("no CUDA device") != std::string::npos ||
+         cuda.err.find("without the CUDA algorithm kernels") != std::string::npos));
+  CHECK(!fs::exists(got));
+}
+#endif
+
 TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend cuda writes them or says in one line "
           "that there is no device",
           "[cli]") {
@@ -542,17 +559,8 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend c
       CHECK(st.err.find("hull3: exact kernel point: 0 ") != std::string::npos);
       fs::remove(got);
     }
-    const Run cuda = run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda -o " + got.string());
-    if (cuda.code == 0) {
-      CHECK(slurp(got) == slurp(expect));
-    } else {
-      INFO(cuda.err);
-      CHECK(cuda.code == 2);
-      CHECK(lines(cuda.err) == 1);
-      CHECK((cuda.err.find("no CUDA device") != std::string::npos ||
-             cuda.err.find("without the CUDA algorithm kernels") != std::string::npos));
-      CHECK(!fs::exists(got));
-    }
+    check_cuda_run(run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda -o " + got.string()), got,
+                   expect);
     for (const std::string& opts : j.bad) {
       const Run r = run(t, std::string(j.kind) + " " + j.in.string() + " " + opts);
       INFO(opts << ": " << r.err);
@@ -562,6 +570,48 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend c
 #else
     // without the thrust/OpenMP build the GPU backends are not offered
     const Run r = run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda-omp");
+    CHECK(r.code == 2);
+#endif
+  }
+}
+
+// gHull (kernels_cuda/hull3/ghull.hpp) from the command line: the GPU
+// backends' own algorithm, cuda-omp by default; the reference's bytes on a
+// lattice (coplanar hull facets, interior points) and scattered points;
+// --stats reports its stages and no hand-back; the other backends refuse it in
+// one line.
+TEST_CASE("cli: hull3 --algo ghull writes the reference's bytes on the GPU backends, others refuse it", "[cli]") {
+  TempDir t;
+  std::string cube, scattered;
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 10; ++y)
+      for (int z = 0; z < 10; ++z) cube += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+  std::srand(11);
+  for (int i = 0; i < 4000; ++i)
+    scattered += std::to_string(std::rand() % 1000) + " " + std::to_string(std::rand() % 1000) + " " +
+                 std::to_string(std::rand() % 1000) + "\n";
+  for (const fs::path& in : {t.file("cube.xyz", cube), t.file("scattered.xyz", scattered)}) {
+    const fs::path expect = t.dir / "expect.txt", got = t.dir / "got.txt";
+    REQUIRE(run(t, "hull3 " + in.string() + " --backend reference -o " + expect.string()).code == 0);
+#ifdef FLIPFLOP_HAVE_KERNELS_GPU
+    const Run r = run(t, "hull3 " + in.string() + " --algo ghull --stats -o " + got.string());
+    INFO(in << ": " << r.err);
+    REQUIRE(r.code == 0);
+    CHECK(slurp(got) == slurp(expect));
+    CHECK(r.err.find("hull3: backend cuda-omp, algo ghull") != std::string::npos);
+    CHECK(r.err.find("hull3: handed back: 0 ") != std::string::npos);
+    CHECK(r.err.find("depth misses 0") != std::string::npos);
+    CHECK(r.err.find("stage 6: verification") != std::string::npos);
+    fs::remove(got);
+    check_cuda_run(run(t, "hull3 " + in.string() + " --backend cuda --algo ghull -o " + got.string()), got, expect);
+    for (const char* backend : {"reference", "cpu"}) {
+      const Run bad = run(t, "hull3 " + in.string() + " --backend " + backend + " --algo ghull");
+      INFO(backend << ": " << bad.err);
+      CHECK(bad.code == 2);
+      CHECK(lines(bad.err) == 1);
+    }
+#else
+    const Run r = run(t, "hull3 " + in.string() + " --algo ghull");
     CHECK(r.code == 2);
 #endif
   }

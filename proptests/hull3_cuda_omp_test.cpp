@@ -53,11 +53,7 @@ std::string omp_text(const PointSet& ps, ref::Hull3Stats* st = nullptr, cpu::Sta
 
 std::string ref_text(const PointSet& ps) { return test::hull3_reference_text(ps); }
 
-std::size_t vertex_count(const std::vector<Triangle>& tris) {
-  std::set<Index> v;
-  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
-  return v.size();
-}
+using test::vertex_count;
 
 // ffHull's counters (fuzz/hull3_check.cpp): every point but the tetrahedron
 // is inserted or discarded early; every 3-1 flip removes an inserted vertex;

@@ -100,6 +100,7 @@
 #include "kernels_cpu/hull3/rounded_centroid.hpp"
 #include "kernels_cpu/stage_times.hpp"
 #include "kernels_cuda/backend.cuh"
+#include "kernels_cuda/spread.cuh"
 #include "kernels_cuda/static_filter.cuh"
 #include "kernels_cuda/device_predicates.cuh"
 #include "kernels_cuda/two_pass.cuh"
@@ -406,44 +407,10 @@ void two_passes(std::size_t n, const F& f) {
   for_n(n, dev::Pass<F, true>{f});
 }
 
-// ---- arg-max reductions -----------------------------------------------------------
-struct Best {
-  double key;
-  Index id;
-};
-// the larger key; ties: the smaller index (a total order: keys are never NaN)
-struct BestOf {
-  FF_HD Best operator()(const Best& x, const Best& y) const {
-    if (x.key > y.key) return x;
-    if (y.key > x.key) return y;
-    return x.id < y.id ? x : y;
-  }
-};
-
-// Line 1's keys (kernels_cpu/hull3/ffhull.cpp's approximations): mode 0: -x,
-// 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|.
-struct TetKey {
-  const double* xyz;
-  int mode;
-  double A[3], u[3], N[3];
-  FF_HD Best operator()(std::size_t i) const {
-    const double* p = xyz + 3 * i;
-    double k;
-    if (mode == 0) {
-      k = -p[0];
-    } else if (mode == 1) {
-      k = p[0];
-    } else if (mode == 2) {
-      const double w0 = p[0] - A[0], w1 = p[1] - A[1], w2 = p[2] - A[2];
-      const double x = u[1] * w2 - u[2] * w1, y = u[2] * w0 - u[0] * w2, z = u[0] * w1 - u[1] * w0;
-      k = x * x + y * y + z * z;
-    } else {
-      k = N[0] * (p[0] - A[0]) + N[1] * (p[1] - A[1]) + N[2] * (p[2] - A[2]);
-      k = k < 0 ? -k : k;
-    }
-    return {k == k ? k : -HUGE_VAL, static_cast<Index>(i)};
-  }
-};
+// ---- arg-max reductions (spread.cuh) -----------------------------------------------
+using dev::Best;
+using dev::BestOf;
+using dev::TetKey;
 
 Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
   Best b{-HUGE_VAL, kNone};
@@ -1465,27 +1432,7 @@ class Hull3 {
 
 // Line 1 by reductions; exactly independent, else the reference's rule.
 std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz) {
-  const std::size_t n = ps.size();
-  TetKey key{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  const Index a = argmax(temp, n, key);
-  key.mode = 1;
-  const Index b = argmax(temp, n, key);
-  const double *A = ps.point(a), *Bp = ps.point(b);
-  for (int j = 0; j < 3; ++j) key.A[j] = A[j], key.u[j] = Bp[j] - A[j];
-  key.mode = 2;
-  const Index c = argmax(temp, n, key);
-  const double* Cp = ps.point(c);
-  const double v[3] = {Cp[0] - A[0], Cp[1] - A[1], Cp[2] - A[2]};
-  key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
-  key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
-  key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
-  key.mode = 3;
-  const Index d = argmax(temp, n, key);
-  const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
-  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
-  // (a, b, c) counter-clockwise seen from outside: d on its inner side
-  if (o < 0) return {a, c, b, d};
-  return {a, b, c, d};
+  return dev::spanning_tetrahedron(ps, xyz, [&](const TetKey& key) { return argmax(temp, ps.size(), key); });
 }
 
 // Runs f, turning a failed allocation of device memory (std::bad_alloc, from

@@ -144,6 +144,7 @@
 #include "kernels_cuda/elections.cuh"
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/rt3/rt3.hpp"
+#include "kernels_cuda/spread.cuh"
 #include "kernels_cuda/two_pass.cuh"
 #include "predicates/predicates.hpp"
 #include "reference/dimension.hpp"
@@ -811,26 +812,9 @@ struct IdOf {
 };
 
 // ---- the sort ---------------------------------------------------------------------------------
-struct Box {
-  double lo[3], hi[3];
-};
-struct PointBox {
-  const double* xyz;
-  FF_HD Box operator()(uint32_t i) const {
-    const double* x = xyz + 3 * static_cast<std::size_t>(i);
-    return {{x[0], x[1], x[2]}, {x[0], x[1], x[2]}};
-  }
-};
-struct BoxUnion {
-  FF_HD Box operator()(const Box& a, const Box& b) const {
-    Box r;
-    for (int k = 0; k < 3; ++k) {
-      r.lo[k] = a.lo[k] < b.lo[k] ? a.lo[k] : b.lo[k];
-      r.hi[k] = a.hi[k] > b.hi[k] ? a.hi[k] : b.hi[k];
-    }
-    return r;
-  }
-};
+using dev::Box;  // spread.cuh
+using dev::BoxUnion;
+using dev::PointBox;
 // Morton key: 21 bits of each coordinate on the bounding box's grid
 // (grid_keys.hpp; only the locality depends on it, never the answer).
 struct MortonKey {

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,13 @@
 #include "reference/hull3/ffhull.hpp"
 
 namespace flipflop::test {
+
+// the vertices of a hull's triangles
+inline std::size_t vertex_count(const std::vector<Triangle>& tris) {
+  std::set<Index> v;
+  for (const Triangle& t : tris) v.insert(t.begin(), t.end());
+  return v.size();
+}
 
 inline std::string hull3_reference_text(const PointSet& ps) {
   return outcome([&] { return ref::hull3_ffhull(ps); });

@@ -1,0 +1,108 @@
+// spread.cuh — reductions the 3D kernels of kernels_cuda/ share (hull3.cuh's
+// ffHull, ghull.cuh's gHull, rt3.cuh's triangulation): the bounding box of the
+// points, and thesis Algorithm 7 line 1's four spread-out points by arg-max
+// reductions of floating keys (a heuristic: the points are accepted only when
+// exactly affinely independent, else the reference's rule decides — and
+// rejects input that does not span R^3).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "predicates/predicates.hpp"
+#include "reference/hull3/ffhull.hpp"
+#include "reference/point_set.hpp"
+
+namespace flipflop::dev {
+
+// ---- the bounding box -------------------------------------------------------------
+struct Box {
+  double lo[3], hi[3];
+};
+struct PointBox {
+  const double* xyz;
+  FF_HD Box operator()(std::uint32_t i) const {
+    const double* x = xyz + 3 * static_cast<std::size_t>(i);
+    return {{x[0], x[1], x[2]}, {x[0], x[1], x[2]}};
+  }
+};
+struct BoxUnion {
+  FF_HD Box operator()(const Box& a, const Box& b) const {
+    Box r;
+    for (int k = 0; k < 3; ++k) {
+      r.lo[k] = a.lo[k] < b.lo[k] ? a.lo[k] : b.lo[k];
+      r.hi[k] = a.hi[k] > b.hi[k] ? a.hi[k] : b.hi[k];
+    }
+    return r;
+  }
+};
+
+// ---- arg-max reductions -----------------------------------------------------------
+struct Best {
+  double key;
+  Index id;
+};
+// the larger key; ties: the smaller index (a total order: keys are never NaN)
+struct BestOf {
+  FF_HD Best operator()(const Best& x, const Best& y) const {
+    if (x.key > y.key) return x;
+    if (y.key > x.key) return y;
+    return x.id < y.id ? x : y;
+  }
+};
+
+// Line 1's keys (kernels_cpu/hull3/ffhull.cpp's approximations): mode 0: -x,
+// 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|.
+struct TetKey {
+  const double* xyz;
+  int mode;
+  double A[3], u[3], N[3];
+  FF_HD Best operator()(std::size_t i) const {
+    const double* p = xyz + 3 * i;
+    double k;
+    if (mode == 0) {
+      k = -p[0];
+    } else if (mode == 1) {
+      k = p[0];
+    } else if (mode == 2) {
+      const double w0 = p[0] - A[0], w1 = p[1] - A[1], w2 = p[2] - A[2];
+      const double x = u[1] * w2 - u[2] * w1, y = u[2] * w0 - u[0] * w2, z = u[0] * w1 - u[1] * w0;
+      k = x * x + y * y + z * z;
+    } else {
+      k = N[0] * (p[0] - A[0]) + N[1] * (p[1] - A[1]) + N[2] * (p[2] - A[2]);
+      k = k < 0 ? -k : k;
+    }
+    return {k == k ? k : -HUGE_VAL, static_cast<Index>(i)};
+  }
+};
+
+// Line 1 by reductions (argmax(key): the arg-max of the key over every point,
+// a reduction where the points live); exactly independent, else the
+// reference's rule (ref::ffhull::initial_tetrahedron, which throws
+// std::invalid_argument for input that does not span R^3). (a, b, c) is
+// counter-clockwise seen from outside: d on its inner side.
+template <class Argmax>
+std::array<Index, 4> spanning_tetrahedron(const PointSet& ps, const double* xyz, const Argmax& argmax) {
+  TetKey key{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  const Index a = argmax(key);
+  key.mode = 1;
+  const Index b = argmax(key);
+  const double *A = ps.point(a), *Bp = ps.point(b);
+  for (int j = 0; j < 3; ++j) key.A[j] = A[j], key.u[j] = Bp[j] - A[j];
+  key.mode = 2;
+  const Index c = argmax(key);
+  const double* Cp = ps.point(c);
+  const double v[3] = {Cp[0] - A[0], Cp[1] - A[1], Cp[2] - A[2]};
+  key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
+  key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
+  key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
+  key.mode = 3;
+  const Index d = argmax(key);
+  const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
+  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+  if (o < 0) return {a, c, b, d};
+  return {a, b, c, d};
+}
+
+}  // namespace flipflop::dev
