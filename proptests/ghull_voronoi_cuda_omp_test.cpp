@@ -246,9 +246,9 @@ TEST_CASE("ghull stage 1: site_distance is the documented integer distance", "[g
 
 TEST_CASE("ghull stage 1: digital Voronoi labels are nearest sites (exact, brute force)", "[ghull][cuda-omp]") {
   std::mt19937_64 rng(73);
-  for (int k = 0; k < 300; ++k) {
-    const Case c = k < 150   ? make_case(rng, 1, 16, 60)
-                   : k < 270 ? make_case(rng, 8, 40, 200)
+  for (int k = 0; k < 600; ++k) {
+    const Case c = k < 300   ? make_case(rng, 1, 16, 60)
+                   : k < 560 ? make_case(rng, 8, 40, 200)
                              : make_case(rng, 40, 64, 200);
     INFO("case " << k << ": " << describe(c));
     std::vector<std::uint32_t> sites;

@@ -317,10 +317,9 @@ inline void digital_voronoi(const double* scaled, std::uint32_t n, std::uint32_t
   const std::size_t P = 6 * std::size_t{G} * G;
   labels.resize(P);
   sites.resize(P);
-  backend::Buffer<uint64_t> g(P);  // the projection's minima, then pass 1's g
+  backend::Buffer<uint64_t> g(P, ~uint64_t{0});  // the projection's minima, then pass 1's g
   backend::Scratch<uint32_t> arg(P), stack(P);
   backend::run_step_async<kItemGrain>(P, [&](auto policy) {
-    thrust::fill(policy, g.begin(), g.end(), ~uint64_t{0});
     thrust::fill(policy, sites.begin(), sites.end(), kNoSite);
   });
   const std::size_t items = 6 * std::size_t{n};
