@@ -363,12 +363,15 @@ int run_compute(const ComputeArgs& a) {
                ", splay rounds " + std::to_string(g.splay_rounds) + ", splay insertions " +
                std::to_string(g.splay_insertions) + ", dead stars " + std::to_string(g.dead_stars) +
                ", edge-list growths " + std::to_string(g.edge_list_growths);
-      exact_kernel = "handed back: " + std::to_string(g.handed_back) + " (gHull runs every stage on the device)";
+      exact_kernel = "handed back: " + std::to_string(g.handed_back) +
+                     " (1: the spanning points came from the reference's sequential rule)";
     } else {
       tris = kernels::hull3_gpu(backend, ps, &st, &gpu_times);
       counts = hull3_counts(st);
       exact_kernel = "exact kernel point: " + std::to_string(st.exact_kernel_point) +
-                     " (an almost flat initial tetrahedron: the exact centroid's side tests on the device)";
+                     " (an almost flat initial tetrahedron: the exact centroid's side tests on the device)\n" +
+                     a.kind + ": handed back: " + std::to_string(st.handed_back) +
+                     " (1: the initial tetrahedron came from the reference's sequential rule)";
     }
 #endif
   } else if (a.kind == "hull3" && backend == "cpu") {

@@ -6,7 +6,9 @@
 // rejects input that does not span R^3).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -53,14 +55,25 @@ struct BestOf {
 };
 
 // Line 1's keys (kernels_cpu/hull3/ffhull.cpp's approximations): mode 0: -x,
-// 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|.
+// 1: x, 2: squared distance to the line A + R u, 3: |N · (p - A)|, 4: the
+// largest |coordinate|. Modes 2 and 3 work on the coordinates times `scale`,
+// a power of two that brings the largest magnitude near 1 (exact: only the
+// order of the keys matters, and products of 1e±300 would overflow or
+// underflow); A, u and N are in those units.
 struct TetKey {
   const double* xyz;
   int mode;
   double A[3], u[3], N[3];
+  double scale = 1;
   FF_HD Best operator()(std::size_t i) const {
-    const double* p = xyz + 3 * i;
+    const double* q = xyz + 3 * i;
     double k;
+    if (mode == 4) {
+      k = q[0] < 0 ? -q[0] : q[0];
+      for (int j = 1; j < 3; ++j) k = (q[j] < 0 ? -q[j] : q[j]) > k ? (q[j] < 0 ? -q[j] : q[j]) : k;
+      return {k == k ? k : -HUGE_VAL, static_cast<Index>(i)};
+    }
+    const double p[3] = {q[0] * scale, q[1] * scale, q[2] * scale};
     if (mode == 0) {
       k = -p[0];
     } else if (mode == 1) {
@@ -81,26 +94,42 @@ struct TetKey {
 // a reduction where the points live); exactly independent, else the
 // reference's rule (ref::ffhull::initial_tetrahedron, which throws
 // std::invalid_argument for input that does not span R^3). (a, b, c) is
-// counter-clockwise seen from outside: d on its inner side.
+// counter-clockwise seen from outside: d on its inner side. by_reference
+// (optional): set when the reference's rule chose the points (a sequential
+// pass over the input on the host: the kernels count it as a hand-back).
 template <class Argmax>
-std::array<Index, 4> spanning_tetrahedron(const PointSet& ps, const double* xyz, const Argmax& argmax) {
-  TetKey key{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+std::array<Index, 4> spanning_tetrahedron(const PointSet& ps, const double* xyz, const Argmax& argmax,
+                                          bool* by_reference = nullptr) {
+  if (by_reference) *by_reference = false;
+  TetKey key{xyz, 4, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  {
+    double big = 0;
+    for (int j = 0; j < 3; ++j) big = std::max(big, std::fabs(ps.point(argmax(key))[j]));
+    int e = 0;
+    if (big > 0 && std::isfinite(big)) std::frexp(big, &e);
+    key.scale = std::ldexp(1.0, -e);
+  }
+  key.mode = 0;
   const Index a = argmax(key);
   key.mode = 1;
   const Index b = argmax(key);
   const double *A = ps.point(a), *Bp = ps.point(b);
-  for (int j = 0; j < 3; ++j) key.A[j] = A[j], key.u[j] = Bp[j] - A[j];
+  const double sc = key.scale;
+  for (int j = 0; j < 3; ++j) key.A[j] = A[j] * sc, key.u[j] = Bp[j] * sc - A[j] * sc;
   key.mode = 2;
   const Index c = argmax(key);
   const double* Cp = ps.point(c);
-  const double v[3] = {Cp[0] - A[0], Cp[1] - A[1], Cp[2] - A[2]};
+  const double v[3] = {Cp[0] * sc - A[0] * sc, Cp[1] * sc - A[1] * sc, Cp[2] * sc - A[2] * sc};
   key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
   key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
   key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
   key.mode = 3;
   const Index d = argmax(key);
   const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
-  if (o == 0) return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+  if (o == 0) {
+    if (by_reference) *by_reference = true;
+    return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+  }
   if (o < 0) return {a, c, b, d};
   return {a, b, c, d};
 }

@@ -557,6 +557,7 @@ TEST_CASE("cli: --backend cuda-omp writes the reference's bytes, and --backend c
       const Run st = run(t, "hull3 " + j.in.string() + " --backend cuda-omp --stats -o " + got.string());
       INFO(st.err);
       CHECK(st.err.find("hull3: exact kernel point: 0 ") != std::string::npos);
+      CHECK(st.err.find("hull3: handed back: 0 ") != std::string::npos);  // issue 36's counter
       fs::remove(got);
     }
     check_cuda_run(run(t, std::string(j.kind) + " " + j.in.string() + " --backend cuda -o " + got.string()), got,

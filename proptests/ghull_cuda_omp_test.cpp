@@ -60,17 +60,21 @@ using test::vertex_count;
 
 // the counters' relations: every stage's count is bounded by what it works on
 bool counts_ok(const PointSet& ps, const kernels::GhullStats& st, std::size_t vertices) {
-  return st.handed_back == 0 && st.captured >= 4 && st.captured <= ps.size() && st.approx_vertices <= st.captured &&
+  return st.handed_back <= 1 && st.captured >= 4 && st.captured <= ps.size() && st.approx_vertices <= st.captured &&
          st.added <= st.depth_candidates && st.depth_candidates + st.captured <= ps.size() &&
          st.approx_vertices + st.added + st.depth_misses >= vertices && st.grid >= 4 && st.render >= 4;
 }
 
-std::string check_rc(const PointSet& ps, const kernels::GhullOptions& o = {}) {
+// on_device: the run must not hand work back (the generator families:
+// issue 36's counter); the degenerate sets mix magnitudes 1e±300 in one
+// point, where the floating keys of Stage 0 may pick four coplanar points
+std::string check_rc(const PointSet& ps, const kernels::GhullOptions& o = {}, bool on_device = true) {
   const std::string expect = ref_text(ps);
   kernels::GhullStats st;
   const std::string got = ghull_text(ps, &st, o);
   RC_ASSERT(got == expect);
   if (!is_error(expect)) RC_ASSERT(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+  if (on_device && !is_error(expect)) RC_ASSERT(st.handed_back == 0u);
   return expect;
 }
 
@@ -109,7 +113,7 @@ bool has_stage(const cpu::StageTimes& t, const std::string& name) {
 TEST_CASE("ghull cuda-omp: degenerate and random small sets equal the reference (shrinking)", "[ghull_cuda_omp]") {
   test::prop_scaled("degenerate sets of 4..60 points: ghull == reference byte for byte", 8, [] {
     const PointSet ps = *test::degenerate_points(3, 4, 60, false);
-    check_rc(ps);
+    check_rc(ps, {}, false);
   });
 }
 
@@ -177,6 +181,7 @@ TEST_CASE("ghull cuda-omp: deterministic sweep over the families and sizes", "[g
                                 REQUIRE(ghull_text(ps, &st) == expect);
                                 if (!is_error(expect)) {
                                   REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+                                  REQUIRE(st.handed_back == 0);  // every family stays on the device
                                   misses += st.depth_misses;
                                   candidates += st.depth_candidates;
                                   points += ps.size();
@@ -209,6 +214,7 @@ TEST_CASE("ghull cuda-omp: the thesis' distributions equal the reference, certif
     cpu::StageTimes times;
     REQUIRE(kernels_omp::hull3_ghull(ps, {}, &st, &times) == expect);
     REQUIRE(counts_ok(ps, st, vertex_count(expect)));
+    REQUIRE(st.handed_back == 0);
     for (const char* stage : {"upload", "stage 1: digital Voronoi", "stage 2: stars", "stage 3: star splaying",
                               "stage 4: depth test", "stage 4: point addition", "stage 5: star splaying",
                               "stage 6: verification", "output"})

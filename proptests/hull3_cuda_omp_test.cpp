@@ -106,8 +106,10 @@ TEST_CASE("hull3 cuda-omp: deterministic sweep over the families and sizes", "[h
                                 const std::string expect = test::hull3_sweep_expect(ps, rejected);
                                 ref::Hull3Stats st;
                                 REQUIRE(omp_text(ps, &st) == expect);
-                                if (!is_error(expect))
+                                if (!is_error(expect)) {
                                   REQUIRE(counts_ok(ps, st, vertex_count(ref::hull3_ffhull(ps))));
+                                  REQUIRE(st.handed_back == 0);  // every family stays on the device
+                                }
                                 exact_kernel += st.exact_kernel_point;
                                 ++cases;
                               });

@@ -1087,6 +1087,7 @@ class Ghull {
     backend::run_step<kGrain>(n, [&](auto policy) {
       r_ = thrust::reduce(policy, first + 1, first + n, uint32_t{0}, LexLess{g_.xyz});
     });
+    bool by_reference = false;
     const auto t = dev::spanning_tetrahedron(ps_, g_.xyz, [&](const dev::TetKey& key) {
       dev::Best best{-HUGE_VAL, kNo};
       backend::run_step<kGrain>(n, [&](auto policy) {
@@ -1094,7 +1095,8 @@ class Ghull {
                                         thrust::counting_iterator<std::size_t>(n), key, best, dev::BestOf());
       });
       return best.id;
-    });
+    }, &by_reference);
+    st_.handed_back += by_reference;
     tet_ = {t[0], t[1], t[2], t[3]};
     dev::Box ext{{0, 0, 0}, {0, 0, 0}};
     for (int j = 0; j < 3; ++j) ext.lo[j] = ext.hi[j] = ps_.point(0)[j];

@@ -55,7 +55,12 @@ struct GhullStats {
   std::uint64_t splay_insertions = 0;         // successful insertions (Case 2)
   std::uint64_t dead_stars = 0;               // stars that died (Case 3) or were created dead
   std::uint64_t edge_list_growths = 0;        // Algorithm 9 lines 7-8
-  std::uint64_t handed_back = 0;              // work handed to the host or the reference: always 0
+  // Work handed to the host or the reference: 1 when the four spanning
+  // points of Stage 0 came from the reference's sequential rule (the
+  // reductions' four points were exactly coplanar), else 0. Every stage runs
+  // on the device otherwise; Stage 6 verifies its inner ball and box against
+  // the hull's triangles on the host (O(triangles), no point decided there).
+  std::uint64_t handed_back = 0;
 };
 
 }  // namespace flipflop::kernels

@@ -1431,8 +1431,11 @@ class Hull3 {
 };
 
 // Line 1 by reductions; exactly independent, else the reference's rule.
-std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz) {
-  return dev::spanning_tetrahedron(ps, xyz, [&](const TetKey& key) { return argmax(temp, ps.size(), key); });
+// by_reference: the reductions' points were exactly coplanar and the
+// reference's sequential rule chose (a hand-back, counted in the stats).
+std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz, bool* by_reference) {
+  return dev::spanning_tetrahedron(
+      ps, xyz, [&](const TetKey& key) { return argmax(temp, ps.size(), key); }, by_reference);
 }
 
 // Runs f, turning a failed allocation of device memory (std::bad_alloc, from
@@ -1462,7 +1465,10 @@ std::vector<Triangle> compute(const PointSet& ps, ref::Hull3Stats& st, cpu::Stag
     return backend::to_device(ps.coords.data(), ps.coords.size(), B->coords);
   });
   clock.mark("upload");
-  const std::array<Index, 4> tet = on_device(n, [&] { return initial_tetrahedron(B->temp, ps, xyz); });  // line 1
+  bool by_reference = false;
+  const std::array<Index, 4> tet =
+      on_device(n, [&] { return initial_tetrahedron(B->temp, ps, xyz, &by_reference); });  // line 1
+  st.handed_back += by_reference;
   // line 4: the rounded centroid, when strictly inside the tetrahedron exactly;
   // else (§6.4.2) the exact centroid, as the reference's (its four points are
   // exactly independent: initial_tetrahedron)

@@ -28,6 +28,10 @@ struct Hull3Stats {
   // centroid (an initial tetrahedron whose rounded centroid is not strictly
   // inside, §6.4.2), decided on the device by the exact expansion stage
   std::uint64_t exact_kernel_point = 0;
+  // the GPU ffHull: runs whose four initial points came from the reference's
+  // sequential rule (the reductions' floating keys chose four exactly
+  // coplanar points: extreme anisotropy) — work handed back to the host
+  std::uint64_t handed_back = 0;
 };
 
 }  // namespace flipflop::ref
