@@ -30,7 +30,8 @@
 // 1 and 2 threads and must equal the reference byte for byte (triangle for
 // triangle), with ffHull's counters' lemmas, and reject the same inputs; so
 // must the data-parallel ffHull of kernels_cuda/hull3 in its OpenMP build
-// (kernels_omp, FLIPFLOP_HAVE_KERNELS_OMP).
+// (kernels_omp, FLIPFLOP_HAVE_KERNELS_OMP), and gHull (kernels_cuda/hull3/
+// ghull.hpp) on a 4-pixel and the default grid.
 // When the build has the by-name entry point (reference/hull3/hull3.hpp,
 // part flipflop_hull3; FLIPFLOP_FUZZ_HULL3_BY_NAME) the algorithms are run
 // through ref::hull3(ps, name), whose list must be exactly these three.
@@ -47,6 +48,7 @@
 #include "fuzz/fuzz_input.hpp"
 #include "kernels_cpu/hull3/ffhull.hpp"
 #ifdef FLIPFLOP_HAVE_KERNELS_OMP
+#include "kernels_cuda/hull3/ghull.hpp"
 #include "kernels_cuda/hull3/hull3.hpp"
 #endif
 #include "predicates/predicates.hpp"
@@ -210,6 +212,16 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
         fail(kTarget, name + " threw the wrong exception on lower-dimensional input: " + e.what(), describe(ps));
       }
     }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+    try {
+      const Tris t = kernels_omp::hull3_ghull(ps);
+      fail(kTarget, "kernels_omp ghull returned a hull of lower-dimensional input", describe(ps) + describe(t));
+    } catch (const std::invalid_argument&) {
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("kernels_omp ghull threw the wrong exception on lower-dimensional input: ") + e.what(),
+           describe(ps));
+    }
+#endif
     return true;
   }
 
@@ -241,6 +253,28 @@ bool check_hull3_input(const std::uint8_t* data, std::size_t size) {
       fail(kTarget, name + " differs from ffhull", describe(ps) + name + " " + describe(got) + "\nffhull " + describe(answer));
     check_counts(ps, "ffhull", st, vertex_count(answer));
   }
+#ifdef FLIPFLOP_HAVE_KERNELS_OMP
+  // gHull (kernels_cuda/hull3/ghull.hpp) on a coarse and the default digital
+  // space: the same triangles; every hull vertex is in CH(S'), added or
+  // found by the verification; at most the one counted hand-back
+  for (const std::uint32_t grid : {4u, 0u}) {
+    kernels::GhullOptions o;
+    o.grid = grid;
+    kernels::GhullStats gs;
+    Tris got;
+    try {
+      got = kernels_omp::hull3_ghull(ps, o, &gs);
+    } catch (const std::exception& e) {
+      fail(kTarget, std::string("kernels_omp ghull threw: ") + e.what(), describe(ps));
+    }
+    if (got != answer)
+      fail(kTarget, "kernels_omp ghull (grid " + std::to_string(grid) + ") differs from ffhull",
+           describe(ps) + "ghull " + describe(got) + "\nffhull " + describe(answer));
+    if (gs.handed_back > 1 || gs.approx_vertices + gs.added + gs.depth_misses < vertex_count(answer) ||
+        gs.captured > ps.size() || gs.added > gs.depth_candidates)
+      fail(kTarget, "kernels_omp ghull's counters are inconsistent", describe(ps));
+  }
+#endif
   if (ps.size() <= kMaxBrute && brute::hull3(ps) != answer)
     fail(kTarget, "ffhull differs from brute::hull3", describe(ps) + describe(answer));
   for (auto level : {certify::Level::canonical, certify::Level::exact}) {
