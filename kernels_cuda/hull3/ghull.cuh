@@ -1044,10 +1044,10 @@ class Ghull {
     return out;
   }
   std::vector<ref::Star> copy_stars() {
-    const std::vector<uint32_t> members(members_.begin(), members_.begin() + static_cast<std::ptrdiff_t>(nm_));
-    std::vector<uint8_t> status(status_.begin(), status_.end());
-    std::vector<uint32_t> beg(beg_.begin(), beg_.end()), cnt(cnt_.begin(), cnt_.end()), cert(cert_.begin(), cert_.end()),
-        link(link_.begin(), link_.end());
+    const std::vector<uint32_t> members = download(members_, nm_);
+    const std::vector<uint8_t> status = download(status_, n_);
+    const std::vector<uint32_t> beg = download(beg_, n_), cnt = download(cnt_, n_), cert = download(cert_, 4 * n_),
+                                link = download(link_, link_end_);
     std::vector<ref::Star> out;
     for (uint32_t v : members) {
       ref::Star s;
@@ -1071,6 +1071,14 @@ class Ghull {
     }
   };
 
+  // the first count elements, copied to the host in one transfer (the
+  // buffer stays: backend::to_host would move it out in the OpenMP build)
+  template <class T>
+  static std::vector<T> download(const backend::Buffer<T>& b, std::size_t count) {
+    std::vector<T> h(count);
+    if (count) thrust::copy(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(count), h.begin());
+    return h;
+  }
   Stars stars() {
     return {raw(status_), raw(beg_), raw(cnt_), raw(cap_), raw(link_), raw(cert_)};
   }
@@ -1211,7 +1219,7 @@ class Ghull {
   // splaying theorem) and needs no walk. Empty regions where the
   // verification fails (degenerate hulls): every point then walks.
   void inner_region() {
-    const std::vector<Tri> host(tris_.begin(), tris_.begin() + static_cast<std::ptrdiff_t>(ntris_));
+    const std::vector<Tri> host = download(tris_, ntris_);
     std::vector<Triangle> tris(ntris_);
     if (ntris_) std::memcpy(tris.data(), host.data(), ntris_ * sizeof(Tri));
     const certify::Speedups seq;  // sequential: the triangles are few
