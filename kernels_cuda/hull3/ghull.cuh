@@ -842,6 +842,118 @@ struct AddStar {
     splay_insert(g, S, p, r);
   }
 };
+// ---- Stage 6's inner ball and box (Ghull::inner_region) --------------------------
+FF_HD inline void tri_normal(const double* a, const double* b, const double* c, double* n) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  n[0] = u[1] * v[2] - u[2] * v[1], n[1] = u[2] * v[0] - u[0] * v[2], n[2] = u[0] * v[1] - u[1] * v[0];
+}
+template <class Acc>
+struct VertexAcc {
+  const double* xyz;
+  const Tri* tris;
+  double w;
+  FF_HD Acc operator()(std::size_t k) const {
+    const double* p = xyz + 3 * static_cast<std::size_t>(tris[k / 3].v[k % 3]);
+    return {{p[0] * w, p[1] * w, p[2] * w}, {p[0], p[1], p[2]}, {p[0], p[1], p[2]}};
+  }
+};
+template <class Acc>
+struct AccJoin {
+  FF_HD Acc operator()(const Acc& x, const Acc& y) const {
+    Acc r;
+    for (int j = 0; j < 3; ++j) {
+      r.sum[j] = x.sum[j] + y.sum[j];
+      r.lo[j] = x.lo[j] < y.lo[j] ? x.lo[j] : y.lo[j];
+      r.hi[j] = x.hi[j] > y.hi[j] ? x.hi[j] : y.hi[j];
+    }
+    return r;
+  }
+};
+struct MinOf {
+  FF_HD double operator()(double x, double y) const { return x < y ? x : y; }
+};
+// the floating distance from c to the plane of triangle t, inner side
+// positive (+inf for a triangle of zero area: it bounds nothing; NaN -> 0)
+struct Clearance {
+  const double* xyz;
+  const Tri* tris;
+  double c[3];
+  FF_HD double operator()(uint32_t t) const {
+    const double *a = xyz + 3 * static_cast<std::size_t>(tris[t].v[0]), *b = xyz + 3 * static_cast<std::size_t>(tris[t].v[1]),
+                 *d = xyz + 3 * static_cast<std::size_t>(tris[t].v[2]);
+    double n[3];
+    tri_normal(a, b, d, n);
+    double len2 = 0, dot = 0;
+    for (int j = 0; j < 3; ++j) len2 += n[j] * n[j], dot += n[j] * (c[j] - a[j]);
+    const double len = sqrt(len2);
+    if (!(len > 0)) return HUGE_VAL;
+    const double r = -dot / len;
+    return r == r ? r : 0.0;
+  }
+};
+// the largest t with the box mid + t [-half, half] on the inner side of
+// triangle t's plane in floating point (+inf for a zero-area triangle)
+struct BoxReach {
+  const double* xyz;
+  const Tri* tris;
+  double m[3], h[3];
+  FF_HD double operator()(uint32_t t) const {
+    const double *a = xyz + 3 * static_cast<std::size_t>(tris[t].v[0]), *b = xyz + 3 * static_cast<std::size_t>(tris[t].v[1]),
+                 *c = xyz + 3 * static_cast<std::size_t>(tris[t].v[2]);
+    double n[3];
+    tri_normal(a, b, c, n);
+    double gap = 0, spread = 0;  // n.(a - m) > 0 inside; the box reaches t sum |n_j| h_j
+    for (int j = 0; j < 3; ++j) gap += n[j] * (a[j] - m[j]), spread += (n[j] < 0 ? -n[j] : n[j]) * h[j];
+    if (!(spread > 0)) return HUGE_VAL;
+    const double r = gap / spread;
+    return r == r ? r : 0.0;
+  }
+};
+// Triangle t keeps the ball (centre c, squared radius r2) on its inner side,
+// certainly (InnerBall::clears_filtered's test, on the device), or is marked.
+struct BallFilter {
+  const double* xyz;
+  const Tri* tris;
+  double c[3], r2;
+  uint8_t* uncertain;
+  FF_HD void operator()(uint32_t t) const {
+    const double *a = xyz + 3 * static_cast<std::size_t>(tris[t].v[0]), *b = xyz + 3 * static_cast<std::size_t>(tris[t].v[1]),
+                 *d = xyz + 3 * static_cast<std::size_t>(tris[t].v[2]);
+    using pred::ErrDouble;
+    const ErrDouble u[3] = {ErrDouble(b[0]) - ErrDouble(a[0]), ErrDouble(b[1]) - ErrDouble(a[1]), ErrDouble(b[2]) - ErrDouble(a[2])};
+    const ErrDouble v[3] = {ErrDouble(d[0]) - ErrDouble(a[0]), ErrDouble(d[1]) - ErrDouble(a[1]), ErrDouble(d[2]) - ErrDouble(a[2])};
+    const ErrDouble N[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    ErrDouble M(0.0), Dot(0.0);
+    for (int j = 0; j < 3; ++j) M = M + N[j] * N[j], Dot = Dot - N[j] * (ErrDouble(c[j]) - ErrDouble(a[j]));
+    const bool sure = pred::sign_if_certain(M) > 0 && pred::sign_if_certain(Dot) > 0 &&
+                      pred::sign_if_certain(Dot * Dot - ErrDouble(r2) * M) > 0;
+    uncertain[t] = !sure;
+  }
+};
+// Triangle t has every corner of the box strictly on its inner side,
+// certainly (the per-call semi-static filter of orient3d), or is marked.
+struct BoxFilter {
+  const double* xyz;
+  const Tri* tris;
+  certify::BoxTest3 box;
+  uint8_t* uncertain;
+  FF_HD void operator()(uint32_t t) const {
+    const double* p[4] = {xyz + 3 * static_cast<std::size_t>(tris[t].v[0]), xyz + 3 * static_cast<std::size_t>(tris[t].v[1]),
+                          xyz + 3 * static_cast<std::size_t>(tris[t].v[2]), nullptr};
+    bool sure = true;
+    for (unsigned k = 0; k < 8 && sure; ++k) {
+      const double corner[3] = {(k & 1u) ? box.hi[0] : box.lo[0], (k & 2u) ? box.hi[1] : box.lo[1],
+                                (k & 4u) ? box.hi[2] : box.lo[2]};
+      p[3] = corner;
+      sure = pred::semi_static_sign<4>(p, nullptr) > 0;
+    }
+    uncertain[t] = !sure;
+  }
+};
+struct IsMarked {
+  const uint8_t* flag;
+  FF_HD bool operator()(uint32_t i) const { return flag[i] != 0; }
+};
 // A dropped point strictly inside the verified inner ball or box (Stage 6).
 struct InnerRegion {
   const double* xyz;
@@ -922,6 +1034,75 @@ std::size_t select_from(const backend::Buffer<uint32_t>& in, std::size_t n, back
   });
   return m;
 }
+
+// The triangles' side of Stage 6 (Ghull::inner_region): reductions and
+// filtered checks on the device, the undecided triangles exactly on the host.
+struct InnerFacets {
+  const double* xyz;
+  const Tri* tris;
+  double min_clearance(std::size_t F, const double* c) const {
+    double m = HUGE_VAL;
+    Clearance cl{xyz, tris, {c[0], c[1], c[2]}};
+    backend::run_step<kGrain>(F, [&](auto policy) {
+      m = thrust::transform_reduce(policy, thrust::counting_iterator<uint32_t>(0),
+                                   thrust::counting_iterator<uint32_t>(static_cast<uint32_t>(F)), cl, m, MinOf());
+    });
+    return m;
+  }
+  double box_scale(std::size_t F, const double* mid, const double* half) const {
+    double m = HUGE_VAL;
+    BoxReach br{xyz, tris, {mid[0], mid[1], mid[2]}, {half[0], half[1], half[2]}};
+    backend::run_step<kGrain>(F, [&](auto policy) {
+      m = thrust::transform_reduce(policy, thrust::counting_iterator<uint32_t>(0),
+                                   thrust::counting_iterator<uint32_t>(static_cast<uint32_t>(F)), br, m, MinOf());
+    });
+    return m;
+  }
+  // the triangles the filter marked, on the host (ids and vertices)
+  template <class Filter>
+  std::vector<Tri> undecided(std::size_t F, const Filter& make) const {
+    backend::Buffer<uint8_t> mark(F);
+    backend::Buffer<uint32_t> list;
+    for_range(F, make(raw(mark)));
+    const std::size_t k = select_indices(F, list, IsMarked{raw(mark)});
+    std::vector<uint32_t> ids(k);
+    if (k) thrust::copy(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(k), ids.begin());
+    std::vector<Tri> out;
+    for (uint32_t t : ids) out.push_back(read_tri(t));
+    return out;
+  }
+  Tri read_tri(uint32_t t) const {
+    Tri x;
+#if THRUST_DEVICE_SYSTEM == THRUST_DEVICE_SYSTEM_OMP
+    x = tris[t];
+#else
+    cudaMemcpy(&x, tris + t, sizeof x, cudaMemcpyDeviceToHost);
+#endif
+    return x;
+  }
+  bool ball_holds(std::size_t F, const double* c, double r2, const PointSet& ps) const {
+    const std::array<double, 3> cc = {c[0], c[1], c[2]};
+    for (const Tri& x : undecided(F, [&](uint8_t* m) { return BallFilter{xyz, tris, {c[0], c[1], c[2]}, r2, m}; })) {
+      const Triangle f = {x.v[0], x.v[1], x.v[2]};
+      if (!certify::detail::InnerBall<3>::clears_exact(ps, f, cc.data(), r2)) return false;
+    }
+    return true;
+  }
+  bool box_holds(std::size_t F, const certify::BoxTest3& box, const PointSet& ps) const {
+    for (const Tri& x : undecided(F, [&](uint8_t* m) { return BoxFilter{xyz, tris, box, m}; })) {
+      // every corner strictly inside, or all eight on the plane: a zero-area triangle, which bounds nothing
+      int positive = 0, zero = 0;
+      for (unsigned k = 0; k < 8; ++k) {
+        double corner[3];
+        box.corner(k, corner);
+        const int o = pred::orient3d_exact(ps.point(x.v[0]), ps.point(x.v[1]), ps.point(x.v[2]), corner);
+        positive += o > 0, zero += o == 0;
+      }
+      if (positive != 8 && zero != 8) return false;
+    }
+    return true;
+  }
+};
 
 class Ghull {
  public:
@@ -1212,50 +1393,55 @@ class Ghull {
     return k;
   }
   // Stage 6's shortcut: an inner ball and an inner box of the hull of the
-  // stars (reference/certify/inner_ball.hpp, inner_box.hpp), each verified
-  // exactly against every triangle on the host (the triangles are few); a
-  // dropped point strictly inside one of them is strictly inside the hull
-  // (the consistent stars bound the convex hull of the members: the
-  // splaying theorem) and needs no walk. Empty regions where the
-  // verification fails (degenerate hulls): every point then walks.
+  // stars, as the certifier's (reference/certify/inner_ball.hpp,
+  // inner_box.hpp), built and checked on the device: the candidate centres,
+  // radius and box by reductions over the triangles, each triangle's check
+  // by a floating filter with an error bound (InnerFacets); only the
+  // triangles the filter cannot decide (zero-area ones, a few near the
+  // bound) are checked exactly on the host (clears_exact, orient3d_exact).
+  // A dropped point strictly inside the ball or the box is then strictly
+  // inside the hull (the consistent stars bound the convex hull of the
+  // members: the splaying theorem) and needs no walk. A region whose check
+  // fails is empty: every point then walks.
   void inner_region() {
-    const std::vector<Tri> host = download(tris_, ntris_);
-    std::vector<Triangle> tris(ntris_);
-    if (ntris_) std::memcpy(tris.data(), host.data(), ntris_ * sizeof(Tri));
-    const certify::Speedups seq;  // sequential: the triangles are few
-    const certify::detail::InnerBall<3> ball(ps_, tris, seq.for_range);
-    certify::BoxTest3 box = propose_box(tris);
-    if (!box.empty() && !certify::detail::box_inside_facets(ps_, tris, box, seq.for_range)) box = certify::BoxTest3{};
-    if (ball.test().limit == 0 && box.empty()) return;
-    for_range(n_, InnerRegion{g_.xyz, ball.test(), box, raw(role_)});
-  }
-  // the largest box around the middle of the vertices' bounding box, scaled
-  // from it, that floating point puts inside every triangle's plane, shrunk
-  // by 2^-20 (verified exactly by the caller)
-  certify::BoxTest3 propose_box(const std::vector<Triangle>& tris) const {
-    certify::BoxTest3 box;
-    if (tris.empty()) return box;
-    double lo[3], hi[3];
-    for (int j = 0; j < 3; ++j) lo[j] = HUGE_VAL, hi[j] = -HUGE_VAL;
-    for (const Triangle& t : tris)
-      for (Index v : t)
-        for (int j = 0; j < 3; ++j) lo[j] = std::min(lo[j], ps_.point(v)[j]), hi[j] = std::max(hi[j], ps_.point(v)[j]);
-    double m[3], h[3];
-    for (int j = 0; j < 3; ++j) m[j] = lo[j] / 2 + hi[j] / 2, h[j] = hi[j] / 2 - lo[j] / 2;
-    double t = HUGE_VAL;
-    for (const Triangle& f : tris) {
-      const double *a = ps_.point(f[0]), *b = ps_.point(f[1]), *c = ps_.point(f[2]);
-      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const double nn[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-      double gap = 0, spread = 0;  // n.(a - m) > 0 inside; the box's reach t sum |n_j| h_j
-      for (int j = 0; j < 3; ++j) gap += nn[j] * (a[j] - m[j]), spread += std::fabs(nn[j]) * h[j];
-      if (!(spread > 0)) continue;  // a triangle of zero area bounds nothing
-      t = std::min(t, gap / spread);
+    if (ntris_ == 0) return;
+    const InnerFacets f{g_.xyz, raw(tris_)};
+    const std::size_t F = ntris_;
+    // the vertices' mean and bounding box (each vertex counted once per triangle)
+    struct Acc {
+      double sum[3], lo[3], hi[3];
+    };
+    const double* xyz = g_.xyz;
+    const Tri* tris = raw(tris_);
+    Acc acc{{0, 0, 0}, {HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+    backend::run_step<kGrain>(3 * F, [&](auto policy) {
+      acc = thrust::transform_reduce(
+          policy, thrust::counting_iterator<std::size_t>(0), thrust::counting_iterator<std::size_t>(3 * F),
+          VertexAcc<Acc>{xyz, tris, 1.0 / (3.0 * static_cast<double>(F))}, acc, AccJoin<Acc>());
+    });
+    double mean[3], mid[3], half[3];
+    for (int j = 0; j < 3; ++j)
+      mean[j] = acc.sum[j], mid[j] = acc.lo[j] / 2 + acc.hi[j] / 2, half[j] = acc.hi[j] / 2 - acc.lo[j] / 2;
+    // the ball: the centre farther from every triangle's plane, 0.999999 of that distance
+    const double dmean = f.min_clearance(F, mean), dmid = f.min_clearance(F, mid);
+    certify::BallTest<3> ball;
+    const bool use_mid = dmid > dmean;
+    const double* c = use_mid ? mid : mean;
+    const double r = (use_mid ? dmid : dmean) * 0.999999, r2 = r * r;
+    if (r > 0 && std::isfinite(r2) && r2 >= 0x1p-900 && f.ball_holds(F, c, r2, ps_)) {
+      for (int j = 0; j < 3; ++j) ball.s[j] = c[j];
+      ball.limit = r2 * (1 - 0x1p-40);
     }
-    t *= 1 - 0x1p-20;
-    if (!(t > 0) || !std::isfinite(t)) return box;
-    for (int j = 0; j < 3; ++j) box.lo[j] = m[j] - t * h[j], box.hi[j] = m[j] + t * h[j];
-    return box;
+    // the box: around the middle, the largest scale of the half-extents that
+    // floating point puts inside every triangle's plane, shrunk by 2^-20
+    certify::BoxTest3 box;
+    double t = f.box_scale(F, mid, half) * (1 - 0x1p-20);
+    if (t > 0 && std::isfinite(t)) {
+      for (int j = 0; j < 3; ++j) box.lo[j] = mid[j] - t * half[j], box.hi[j] = mid[j] + t * half[j];
+      if (box.empty() || !f.box_holds(F, box, ps_)) box = certify::BoxTest3{};
+    }
+    if (ball.limit == 0 && box.empty()) return;
+    for_range(n_, InnerRegion{g_.xyz, ball, box, raw(role_)});
   }
   void build_triangles() {
     backend::Buffer<uint32_t> count(nm_), offset;
