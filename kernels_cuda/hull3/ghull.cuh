@@ -49,8 +49,10 @@
 //     and B being a death certificate.
 //  5. Hull completion: star splaying again, only the new stars flagged.
 //  6. Verification (not in the thesis): Lemma 7.1 holds for exact depths; the
-//     maps here are rounded, so every point the depth test dropped is located
-//     exactly against the final hull as in Stage 4. One found outside (a
+//     maps here are rounded, so every point the depth test dropped is checked
+//     exactly against the final hull: strictly inside its inner ball or box
+//     (inner_region: the certifier's, built and filtered on the device), or
+//     located as in Stage 4. One found outside (a
 //     "depth miss", counted) gets its star and Stage 5 runs again; the points
 //     found inside stay inside, hulls only grow. So the digital stages decide
 //     only the work, never the answer.

@@ -58,8 +58,9 @@ struct GhullStats {
   // Work handed to the host or the reference: 1 when the four spanning
   // points of Stage 0 came from the reference's sequential rule (the
   // reductions' four points were exactly coplanar), else 0. Every stage runs
-  // on the device otherwise; Stage 6 verifies its inner ball and box against
-  // the hull's triangles on the host (O(triangles), no point decided there).
+  // on the device otherwise; Stage 6 checks on the host the few triangles
+  // its device filter leaves undecided for its inner ball and box (no point
+  // is decided there).
   std::uint64_t handed_back = 0;
 };
 
