@@ -849,6 +849,10 @@ FF_HD inline void tri_normal(const double* a, const double* b, const double* c, 
   const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   n[0] = u[1] * v[2] - u[2] * v[1], n[1] = u[2] * v[0] - u[0] * v[2], n[2] = u[0] * v[1] - u[1] * v[0];
 }
+// the weighted sum, the minima and the maxima of the triangles' vertices
+struct Acc {
+  double sum[3], lo[3], hi[3];
+};
 template <class Acc>
 struct VertexAcc {
   const double* xyz;
@@ -1036,6 +1040,19 @@ std::size_t select_from(const backend::Buffer<uint32_t>& in, std::size_t n, back
   });
   return m;
 }
+
+// Stage 2's members: a star each, all of them to be checked in Stage 3.
+// (Functors that kernels run live at namespace scope: nvcc's launch stubs
+// name them from outside any class.)
+struct MarkMembers {
+  const uint32_t* members;
+  uint8_t* role;
+  uint8_t* changed;
+  FF_HD void operator()(uint32_t i) const {
+    role[members[i]] = kMember;
+    changed[members[i]] = 1;
+  }
+};
 
 // The triangles' side of Stage 6 (Ghull::inner_region): reductions and
 // filtered checks on the device, the undecided triangles exactly on the host.
@@ -1244,16 +1261,6 @@ class Ghull {
     }
     return out;
   }
-  struct MarkMembers {
-    const uint32_t* members;
-    uint8_t* role;
-    uint8_t* changed;
-    FF_HD void operator()(uint32_t i) const {
-      role[members[i]] = kMember;
-      changed[members[i]] = 1;
-    }
-  };
-
   // the first count elements, copied to the host in one transfer (the
   // buffer stays: backend::to_host would move it out in the OpenMP build)
   template <class T>
@@ -1410,9 +1417,6 @@ class Ghull {
     const InnerFacets f{g_.xyz, raw(tris_)};
     const std::size_t F = ntris_;
     // the vertices' mean and bounding box (each vertex counted once per triangle)
-    struct Acc {
-      double sum[3], lo[3], hi[3];
-    };
     const double* xyz = g_.xyz;
     const Tri* tris = raw(tris_);
     Acc acc{{0, 0, 0}, {HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
