@@ -140,6 +140,7 @@
 #include "kernels_cuda/kernel_errors.hpp"
 #include "kernels_cuda/spread.cuh"
 #include "kernels_cuda/static_filter.cuh"
+#include "kernels_cuda/two_pass.cuh"
 #include "predicates/predicates.hpp"
 #include "reference/certify/ball_test.hpp"
 #include "reference/certify/certify.hpp"
@@ -191,12 +192,33 @@ struct Geo {
     if (const int r = pred::static_sign<4>(filter, p, nullptr)) return r;
     return dev::orient3d(&filter, a, p[0], b, p[1], c, p[2], d, p[3]);
   }
-  // q strictly inside the cone apex + R+{A - apex, B - apex, C - apex}
-  FF_HD bool in_cone(uint32_t apex, uint32_t A, uint32_t B, uint32_t C, uint32_t q, int want) const {
-    const int s = orient(apex, A, B, C) * want;
-    return orient(apex, A, B, q) == s && orient(apex, B, C, q) == s && orient(apex, C, A, q) == s;
+};
+
+// §6.4.2's two passes (two_pass.cuh) for the read-only checks (Check,
+// LocateAll): the first pass's signs are the per-input static filter alone
+// (0 and `undecided` where it cannot decide: the item is marked and its
+// decision abandoned), the second pass's the whole staged path, for the
+// marked items only. The checks that change stars (Create, Apply, AddStar)
+// run the staged path in one pass.
+struct FastSigns : dev::Undecided {
+  const Geo& g;
+  FF_HD explicit FastSigns(const Geo& geo) : g(geo) {}
+  FF_HD int orient(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
+    return certain(pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
+struct ExactSigns {
+  const Geo& g;
+  static constexpr bool undecided = false;
+  FF_HD int orient(uint32_t a, uint32_t b, uint32_t c, uint32_t d) const { return g.orient(a, b, c, d); }
+};
+// q strictly inside the cone apex + R+{A - apex, ...} (want 1) or its reflection (want -1)
+template <class Sg>
+FF_HD bool in_cone(Sg& sg, uint32_t apex, uint32_t A, uint32_t B, uint32_t C, uint32_t q, int want) {
+  const int s = sg.orient(apex, A, B, C) * want;
+  return sg.orient(apex, A, B, q) == s && sg.orient(apex, B, C, q) == s && sg.orient(apex, C, A, q) == s;
+}
 
 // ---- the stars ------------------------------------------------------------------------
 struct Stars {
@@ -242,7 +264,8 @@ FF_HD inline int splay_insert(const Geo& g, const Stars& S, uint32_t s, uint32_t
   if (beyond == 0) return 0;  // Case 1
   if (beyond == k) {          // Case 3
     for (uint32_t i = 1; i + 1 < k; ++i) {
-      if (!g.in_cone(s, L[0], L[i], L[i + 1], p, -1)) continue;
+      ExactSigns sg{g};
+      if (!in_cone(sg, s, L[0], L[i], L[i + 1], p, -1)) continue;
       uint32_t* c = S.cert + 4 * static_cast<std::size_t>(s);
       c[0] = p, c[1] = L[0], c[2] = L[i], c[3] = L[i + 1];
       S.status[s] = kDead;
@@ -319,50 +342,68 @@ struct Flagged {
 // Line 5: the local check and criterion on candidate edge (v, u)
 // (star_splaying.cpp: demanded — the same cases, the same insertions), up to
 // four insertions into out[4e .. 4e + 3] (kNoKey where fewer).
+struct Demand {
+  uint64_t k[4];
+};
+constexpr uint64_t kUndecidedKey = kNoKey - 1;  // the first pass's mark (no insertion has star 2^32 - 1)
 struct Check {
   Geo g;
   Stars S;
   const uint64_t* edges;
   uint64_t* out;
-  FF_HD void operator()(uint32_t e) const {
-    uint64_t* o = out + 4 * static_cast<std::size_t>(e);
-    o[0] = o[1] = o[2] = o[3] = kNoKey;
+  FF_HD FastSigns fast() const { return FastSigns(g); }
+  FF_HD ExactSigns exact() const { return ExactSigns{g}; }
+  FF_HD void write(std::size_t e, const Demand& d) const {
+    for (int t = 0; t < 4; ++t) out[4 * e + t] = d.k[t];
+  }
+  FF_HD void mark(std::size_t e) const { out[4 * e] = kUndecidedKey; }
+  FF_HD bool marked(std::size_t e) const { return out[4 * e] == kUndecidedKey; }
+  template <class Sg>
+  FF_HD Demand decide(std::size_t e, Sg& sg) const {
+    Demand o{{kNoKey, kNoKey, kNoKey, kNoKey}};
     const uint32_t v = static_cast<uint32_t>(edges[e] >> 32), u = static_cast<uint32_t>(edges[e]);
-    if (S.status[v] != kAlive) return;
+    if (S.status[v] != kAlive) return o;
     const uint32_t* Lv = S.link + S.beg[v];
     const uint32_t kv = S.cnt[v];
     const uint32_t i = find_in(Lv, kv, u);
-    if (i == kNo) return;  // no longer a candidate
+    if (i == kNo) return o;  // no longer a candidate
     if (S.status[u] == kDead) {  // u's certificate into v's star
       const uint32_t* c = S.cert + 4 * static_cast<std::size_t>(u);
       for (int t = 0; t < 4; ++t)
-        if (c[t] != v) o[t] = ins_key(v, c[t]);
-      return;
+        if (c[t] != v) o.k[t] = ins_key(v, c[t]);
+      return o;
     }
-    if (S.status[u] != kAlive) return;  // (every link vertex has a star: unreachable)
+    if (S.status[u] != kAlive) return o;  // (every link vertex has a star: unreachable)
     const uint32_t* Lu = S.link + S.beg[u];
     const uint32_t ku = S.cnt[u];
     const uint32_t j = find_in(Lu, ku, v);
     if (j == kNo) {
       // v not in u's star: insert it, unless it would fail (Case 1) ...
-      for (uint32_t t = 0; t < ku; ++t)
-        if (g.orient(u, Lu[t], Lu[nx(t, ku)], v) < 0) {
-          o[0] = ins_key(u, v);
-          return;
+      for (uint32_t t = 0; t < ku; ++t) {
+        const bool beyond = sg.orient(u, Lu[t], Lu[nx(t, ku)], v) < 0;
+        if (sg.undecided) return o;  // (abandoned: the second pass decides)
+        if (beyond) {
+          o.k[0] = ins_key(u, v);
+          return o;
         }
+      }
       // ... then the three link vertices of u that prohibit it go into v's star
-      for (uint32_t t = 1; t + 1 < ku; ++t)
-        if (g.in_cone(u, Lu[0], Lu[t], Lu[t + 1], v, 1)) {
-          o[0] = ins_key(v, Lu[0]), o[1] = ins_key(v, Lu[t]), o[2] = ins_key(v, Lu[t + 1]);
-          return;
+      for (uint32_t t = 1; t + 1 < ku; ++t) {
+        const bool inside = in_cone(sg, u, Lu[0], Lu[t], Lu[t + 1], v, 1);
+        if (sg.undecided) return o;
+        if (inside) {
+          o.k[0] = ins_key(v, Lu[0]), o.k[1] = ins_key(v, Lu[t]), o.k[2] = ins_key(v, Lu[t + 1]);
+          return o;
         }
-      return;
+      }
+      return o;
     }
     const uint32_t a = Lv[pv(i, kv)], b = Lv[nx(i, kv)];
     const uint32_t c = Lu[pv(j, ku)], d = Lu[nx(j, ku)];
     int at = 0;
-    if (b != c) o[at++] = ins_key(u, b), o[at++] = ins_key(v, c);
-    if (a != d) o[at++] = ins_key(u, a), o[at++] = ins_key(v, d);
+    if (b != c) o.k[at++] = ins_key(u, b), o.k[at++] = ins_key(v, c);
+    if (a != d) o.k[at++] = ins_key(u, a), o.k[at++] = ins_key(v, d);
+    return o;
   }
 };
 
@@ -733,14 +774,19 @@ struct Locator {
   const Tri* tris;
   uint32_t ntris;
   FF_HD bool incident(const uint32_t* t) const { return t[0] == r || t[1] == r || t[2] == r; }
-  FF_HD int locate(uint32_t p, uint32_t start, uint32_t* b) const {
+  // -2: a sign the fast signs could not decide (the decision is abandoned)
+  template <class Sg>
+  FF_HD int locate(Sg& sg, uint32_t p, uint32_t start, uint32_t* b) const {
     const uint32_t* Lr = S.link + S.beg[r];
     const uint32_t kr = S.cnt[r];
-    for (uint32_t i = 0; i < kr; ++i)
-      if (g.orient(r, Lr[i], Lr[nx(i, kr)], p) < 0) {
+    for (uint32_t i = 0; i < kr; ++i) {
+      const bool beyond = sg.orient(r, Lr[i], Lr[nx(i, kr)], p) < 0;
+      if (sg.undecided) return -2;
+      if (beyond) {
         b[0] = r, b[1] = Lr[i], b[2] = Lr[nx(i, kr)];
         return 1;
       }
+    }
     // a triangle not incident to r at the start vertex (or at r's first neighbour)
     uint32_t c = start;
     if (c == kNo || c == r || S.status[c] != kAlive) c = Lr[0];
@@ -764,7 +810,8 @@ struct Locator {
       }
       int cross[3], nc = 0;
       for (int e = 0; e < 3; ++e)
-        if (g.orient(r, t[e], t[(e + 1) % 3], p) > 0) cross[nc++] = e;
+        if (sg.orient(r, t[e], t[(e + 1) % 3], p) > 0) cross[nc++] = e;
+      if (sg.undecided) return -2;
       if (nc == 0) break;
       h ^= h << 13, h ^= h >> 17, h ^= h << 5;
       const int e = cross[nc == 1 ? 0 : h % static_cast<uint32_t>(nc)];
@@ -787,7 +834,10 @@ struct Locator {
       for (uint32_t q = 0; q < ntris; ++q) {
         const uint32_t* T = tris[q].v;
         if (incident(T)) continue;
-        if (g.orient(r, T[0], T[1], p) < 0 && g.orient(r, T[1], T[2], p) < 0 && g.orient(r, T[2], T[0], p) < 0) {
+        const bool holds = sg.orient(r, T[0], T[1], p) < 0 && sg.orient(r, T[1], T[2], p) < 0 &&
+                           sg.orient(r, T[2], T[0], p) < 0;
+        if (sg.undecided) return -2;
+        if (holds) {
           t[0] = T[0], t[1] = T[1], t[2] = T[2];
           settled = true;
           break;
@@ -796,12 +846,19 @@ struct Locator {
       if (!settled) return -1;  // no hull of the stars: reported by the caller
     }
     b[0] = t[0], b[1] = t[1], b[2] = t[2];
-    return g.orient(t[0], t[1], t[2], p) < 0 ? 1 : 0;
+    const bool beyond = sg.orient(t[0], t[1], t[2], p) < 0;
+    if (sg.undecided) return -2;
+    return beyond ? 1 : 0;
   }
 };
 // Locate each listed point: outside -> its triangle in face[3i..], flag 1;
 // inside -> role kInside, flag 0; -1 (no triangle: the stars are not a hull)
 // counted in bad.
+struct Located {
+  int o;
+  uint32_t b[3];
+};
+constexpr uint32_t kLocMark = 2;  // outside[i]: the first pass's mark
 struct LocateAll {
   Locator loc;
   const uint32_t* list;
@@ -810,13 +867,24 @@ struct LocateAll {
   uint32_t* face;
   uint32_t* outside;
   uint32_t* bad;
-  FF_HD void operator()(uint32_t i) const {
+  FF_HD FastSigns fast() const { return FastSigns(loc.g); }
+  FF_HD ExactSigns exact() const { return ExactSigns{loc.g}; }
+  template <class Sg>
+  FF_HD Located decide(std::size_t i, Sg& sg) const {
+    Located r{0, {kNo, kNo, kNo}};
     const uint32_t p = list[i];
-    const int o = loc.locate(p, start[p], face + 3 * static_cast<std::size_t>(i));
-    outside[i] = o == 1;
-    if (o == 0) role[p] = kInside;
-    if (o < 0) atomic_store(bad, uint32_t{1});
+    r.o = loc.locate(sg, p, start[p], r.b);
+    return r;
   }
+  FF_HD void write(std::size_t i, const Located& r) const {
+    const uint32_t p = list[i];
+    for (int j = 0; j < 3; ++j) face[3 * i + j] = r.b[j];
+    outside[i] = r.o == 1;
+    if (r.o == 0) role[p] = kInside;
+    if (r.o < 0) atomic_store(bad, uint32_t{1});
+  }
+  FF_HD void mark(std::size_t i) const { outside[i] = kLocMark; }
+  FF_HD bool marked(std::size_t i) const { return outside[i] == kLocMark; }
 };
 // The new stars of the points found outside: B's vertices (the cone over B
 // holds r's direction: the segment from p to r crosses B), then r inserted.
@@ -1123,6 +1191,13 @@ struct InnerFacets {
   }
 };
 
+// §6.4.2: the filter-only pass over every item, then the exact pass for the marked ones
+template <class F>
+void two_passes(std::size_t n, const F& f) {
+  for_range<256>(n, dev::Pass<F, false>{f});
+  for_range<256>(n, dev::Pass<F, true>{f});
+}
+
 class Ghull {
  public:
   Ghull(const PointSet& ps, const kernels::GhullOptions& opt, kernels::GhullStats& st, cpu::StageClock& clock)
@@ -1340,7 +1415,7 @@ class Ghull {
       edges.resize(E);
       for_range(nm_, WriteLinks<Flagged, uint64_t>{stars(), raw(members_), flagged, raw(offset), raw(edges)});
       ins.resize(4 * E);
-      for_range<256>(E, Check{g_, stars(), raw(edges), raw(ins)});
+      two_passes(E, Check{g_, stars(), raw(edges), raw(ins)});
       std::size_t m = 4 * E;
       backend::run_step<kGrain>(m, [&](auto policy) {
         thrust::sort(policy, ins.begin(), ins.begin() + static_cast<std::ptrdiff_t>(m));
@@ -1387,7 +1462,7 @@ class Ghull {
     backend::Buffer<uint32_t> face(3 * count), outside(count), bad(1), which;
     fill_buf(bad, 1, uint32_t{0});
     const Locator loc{g_, stars(), r_, raw(tris_), static_cast<uint32_t>(ntris_)};
-    for_range<64>(count, LocateAll{loc, raw(list), raw(start_), raw(role_), raw(face), raw(outside), raw(bad)});
+    two_passes(count, LocateAll{loc, raw(list), raw(start_), raw(role_), raw(face), raw(outside), raw(bad)});
     if (backend::read_one(bad, 0))
       throw std::logic_error("hull3 ghull: a point inside r's cone lies in no triangle's cone (the stars are not a hull)");
     const std::size_t k = select_indices(count, which, IsOutside{raw(outside)});
