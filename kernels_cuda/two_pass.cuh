@@ -36,6 +36,7 @@
 #include <cstddef>
 
 #include "predicates/predicates.hpp"
+#include "predicates/static_filter.hpp"
 
 namespace flipflop::dev {
 
@@ -45,6 +46,21 @@ struct Undecided {
   FF_HD int certain(int r) {
     undecided |= r == 0;
     return r;
+  }
+};
+
+// The first pass's orient3d for a geometry G with the per-input static
+// filter G::filter and the coordinates G::P(i) (hull3.cuh, ghull.cuh): that
+// filter alone, inlined, no call into the staged path; 0 where it cannot
+// decide.
+template <class G>
+struct StaticOrient : Undecided {
+  const G& g;
+  FF_HD explicit StaticOrient(const G& geo) : g(geo) {}
+  template <class I>
+  FF_HD int orient(I a, I b, I c, I d) {
+    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
+    return certain(pred::static_sign<4>(g.filter, p, nullptr));
   }
 };
 

@@ -200,14 +200,7 @@ struct Geo {
 // decision abandoned), the second pass's the whole staged path, for the
 // marked items only. The checks that change stars (Create, Apply, AddStar)
 // run the staged path in one pass.
-struct FastSigns : dev::Undecided {
-  const Geo& g;
-  FF_HD explicit FastSigns(const Geo& geo) : g(geo) {}
-  FF_HD int orient(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
-    return certain(pred::static_sign<4>(g.filter, p, nullptr));
-  }
-};
+using FastSigns = dev::StaticOrient<Geo>;
 struct ExactSigns {
   const Geo& g;
   static constexpr bool undecided = false;

@@ -359,13 +359,8 @@ struct Geo {
 // The first pass's signs: the per-input static filter alone (static_filter.hpp,
 // its bound precomputed once per input: Geo::filter), inlined, no call into
 // the staged path; 0 where it cannot decide.
-struct FastSigns : dev::Undecided {
-  const Geo& g;
-  FF_HD explicit FastSigns(const Geo& geo) : g(geo) {}
-  FF_HD int orient(Index a, Index b, Index c, Index d) {
-    const double* p[4] = {g.P(a), g.P(b), g.P(c), g.P(d)};
-    return certain(pred::static_sign<4>(g.filter, p, nullptr));
-  }
+struct FastSigns : dev::StaticOrient<Geo> {
+  FF_HD explicit FastSigns(const Geo& geo) : dev::StaticOrient<Geo>(geo) {}
   FF_HD int side(Index a, Index b, Index c) {
     const double* p[4] = {g.P(a), g.P(b), g.P(c), g.s};
     return certain(g.exact_s ? pred::sign_beyond_bound<4>(p, nullptr, g.s_bound)
