@@ -92,9 +92,10 @@
 // shared-memory tiles (the projection is an atomic minimum in global memory:
 // thrust functors have no shared memory); the Parallel Banding Algorithm's
 // bands (one thread per column and row computes the same exact transform);
-// OpenGL rendering (a rasteriser in functors); §6.4.2's two passes (the
-// checks and insertions loop over whole stars, so each item runs the staged
-// predicate with its filter first).
+// OpenGL rendering (a rasteriser in functors). §6.4.2's two passes (not in
+// the thesis' gHull) run the read-only checks — Algorithm 9's edge check and
+// the exact location — on the static filter first; the steps that change
+// stars (creation, insertion) run the staged predicate in one pass.
 #pragma once
 
 #ifndef FF_KERNELS_NS
