@@ -222,6 +222,7 @@ struct Stars {
   uint32_t* cap;
   uint32_t* link;
   uint32_t* cert;
+  uint32_t* broken;  // set when an insertion finds a star that is not convex (check_stars throws)
 };
 
 FF_HD inline uint32_t find_in(const uint32_t* L, uint32_t k, uint32_t x) {
@@ -266,7 +267,8 @@ FF_HD inline int splay_insert(const Geo& g, const Stars& S, uint32_t s, uint32_t
       S.cnt[s] = 0;
       return 2;
     }
-    return 0;  // unreachable for a convex star (the reference throws); the check then finds it again
+    atomic_store(S.broken, uint32_t{1});  // no fan cone: not a convex star (the reference throws too)
+    return 0;
   }
   // Case 2: the beyond triangles form one run i0 .. i0 + beyond - 1
   uint32_t i0 = nx(beneath_at, k);
@@ -406,17 +408,26 @@ struct SegmentStart {
   const uint64_t* ins;
   FF_HD bool operator()(uint32_t i) const { return i == 0 || (ins[i] >> 32) != (ins[i - 1] >> 32); }
 };
-// Lines 7-8: the room each star needs (its link plus one per insertion).
-struct Need {
-  Stars S;
+// The sorted, unique insertions ins[0, m) and the starts seg[0, nseg) of
+// their runs, one run per star: run i is ins[lo, hi), into star v.
+struct Runs {
   const uint64_t* ins;
   const uint32_t* seg;
   uint32_t nseg, m;
+  FF_HD uint32_t get(uint32_t i, uint32_t& lo, uint32_t& hi) const {
+    lo = seg[i], hi = i + 1 < nseg ? seg[i + 1] : m;
+    return static_cast<uint32_t>(ins[lo] >> 32);
+  }
+};
+// Lines 7-8: the room each star needs (its link plus one per insertion).
+struct Need {
+  Stars S;
+  Runs runs;
   uint32_t* extra;
   uint32_t* short_of_room;
   FF_HD void operator()(uint32_t i) const {
-    const uint32_t lo = seg[i], hi = i + 1 < nseg ? seg[i + 1] : m;
-    const uint32_t v = static_cast<uint32_t>(ins[lo] >> 32);
+    uint32_t lo, hi;
+    const uint32_t v = runs.get(i, lo, hi);
     extra[v] = hi - lo;
     if (S.cnt[v] + (hi - lo) > S.cap[v]) atomic_store(short_of_room, uint32_t{1});
   }
@@ -452,19 +463,17 @@ struct Move {
 struct Apply {
   Geo g;
   Stars S;
-  const uint64_t* ins;
-  const uint32_t* seg;
-  uint32_t nseg, m;
+  Runs runs;
   uint8_t* changed;
   uint32_t* extra;
   unsigned long long* counts;  // [0] successful insertions, [1] deaths
   FF_HD void operator()(uint32_t i) const {
-    const uint32_t lo = seg[i], hi = i + 1 < nseg ? seg[i + 1] : m;
-    const uint32_t v = static_cast<uint32_t>(ins[lo] >> 32);
+    uint32_t lo, hi;
+    const uint32_t v = runs.get(i, lo, hi);
     extra[v] = 0;
     unsigned long long splayed = 0, died = 0;
     for (uint32_t t = lo; t < hi; ++t) {
-      const int r = splay_insert(g, S, v, static_cast<uint32_t>(ins[t]));
+      const int r = splay_insert(g, S, v, static_cast<uint32_t>(runs.ins[t]));
       splayed += r == 1;
       died += r == 2;
     }
@@ -513,8 +522,10 @@ struct MarkLabels {
     if (labels[px] != kNo) atomic_store(in_s + labels[px], uint32_t{1});
   }
 };
-struct IsSet32 {
-  const uint32_t* flag;
+// item i's flag is set (for copy_if over indices)
+template <class T>
+struct IsSet {
+  const T* flag;
   FF_HD bool operator()(uint32_t i) const { return flag[i] != 0; }
 };
 struct CreateRoom {
@@ -585,18 +596,12 @@ struct TriLess {
 // as digital_voronoi.cuh's faces; depth measured from the side's plane.
 struct View {
   int axis, a0, a1, side;
-  FF_HD explicit View(uint32_t f) : axis(static_cast<int>(f / 2)), side(static_cast<int>(f % 2)) {
-    a0 = axis == 0 ? 1 : 0;
-    a1 = axis == 2 ? 1 : 2;
-  }
+  FF_HD explicit View(uint32_t f)
+      : axis(static_cast<int>(f / 2)),
+        a0(static_cast<int>(first_axis(f / 2))),
+        a1(static_cast<int>(second_axis(f / 2))),
+        side(static_cast<int>(f % 2)) {}
 };
-FF_HD inline double depth_of(const View& w, const double* X, double R) { return w.side ? R - X[w.axis] : X[w.axis]; }
-FF_HD inline uint32_t pixel_of(double x, uint32_t R) {
-  if (!(x > 0)) return 0;
-  const double f = x < R ? x : R;
-  const uint32_t p = static_cast<uint32_t>(f);
-  return p < R ? p : R - 1;
-}
 FF_HD inline uint32_t float_bits(float x) {
   uint32_t b;
   std::memcpy(&b, &x, sizeof b);
@@ -730,9 +735,8 @@ struct DepthTest {
     for (int j = 0; j < 3; ++j) X[j] = sc[3 * static_cast<std::size_t>(p) + j] * to_render;
     uint32_t any = kNo;
     for (uint32_t f = 0; f < 6; ++f) {
-      const View w(f);
-      const uint32_t u = pixel_of(X[w.a0], R), v = pixel_of(X[w.a1], R);
-      const uint64_t key = maps[static_cast<std::size_t>(f) * R * R + static_cast<std::size_t>(v) * R + u];
+      const OnFace at = on_face(X, R, f);  // its pixel and depth on the render grid (digital_voronoi.cuh)
+      const uint64_t key = maps[static_cast<std::size_t>(f) * R * R + static_cast<std::size_t>(at.v) * R + at.u];
       if (key == kNoKey) {
         if (drop_all) continue;
         role[p] = kCandidate;
@@ -742,7 +746,7 @@ struct DepthTest {
       const uint32_t vertex = static_cast<uint32_t>(key);
       if (any == kNo) any = vertex;
       const double D = bits_float(static_cast<uint32_t>(key >> 32));
-      if (depth_of(w, X, R) - D <= 1.0 && !drop_all) {
+      if (at.h - D <= 1.0 && !drop_all) {
         role[p] = kCandidate;
         start[p] = vertex;
         return;
@@ -1018,10 +1022,6 @@ struct BoxFilter {
     uncertain[t] = !sure;
   }
 };
-struct IsMarked {
-  const uint8_t* flag;
-  FF_HD bool operator()(uint32_t i) const { return flag[i] != 0; }
-};
 // A dropped point strictly inside the verified inner ball or box (Stage 6).
 struct InnerRegion {
   const double* xyz;
@@ -1034,21 +1034,10 @@ struct InnerRegion {
     if (ball.strictly_inside(x) || box.strictly_inside(x)) role[p] = kInside;
   }
 };
-struct IsOutside {
-  const uint32_t* outside;
-  FF_HD bool operator()(uint32_t i) const { return outside[i] != 0; }
-};
 struct HasRole {
   const uint8_t* role;
   uint8_t want;
   FF_HD bool operator()(uint32_t p) const { return role[p] == want; }
-};
-struct IsAliveStar {
-  const uint8_t* status;
-  FF_HD bool operator()(uint32_t p) const { return status[p] == kAlive; }
-};
-struct IsNoKey {
-  FF_HD bool operator()(uint64_t k) const { return k == kNoKey; }
 };
 
 // ---- the whole computation -----------------------------------------------------------------
@@ -1092,17 +1081,6 @@ std::size_t select_indices(std::size_t n, backend::Buffer<uint32_t>& out, Pred p
   });
   return m;
 }
-template <class Pred>
-std::size_t select_from(const backend::Buffer<uint32_t>& in, std::size_t n, backend::Buffer<uint32_t>& out, Pred pred) {
-  if (out.size() < n) out.resize(n);
-  std::size_t m = 0;
-  backend::run_step<kGrain>(n, [&](auto policy) {
-    m = static_cast<std::size_t>(
-        thrust::copy_if(policy, in.begin(), in.begin() + static_cast<std::ptrdiff_t>(n), out.begin(), pred) - out.begin());
-  });
-  return m;
-}
-
 // Stage 2's members: a star each, all of them to be checked in Stage 3.
 // (Functors that kernels run live at namespace scope: nvcc's launch stubs
 // name them from outside any class.)
@@ -1145,7 +1123,7 @@ struct InnerFacets {
     backend::Buffer<uint8_t> mark(F);
     backend::Buffer<uint32_t> list;
     for_range(F, make(raw(mark)));
-    const std::size_t k = select_indices(F, list, IsMarked{raw(mark)});
+    const std::size_t k = select_indices(F, list, IsSet<uint8_t>{raw(mark)});
     std::vector<uint32_t> ids(k);
     if (k) thrust::copy(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(k), ids.begin());
     std::vector<Tri> out;
@@ -1224,7 +1202,7 @@ class Ghull {
     for (uint32_t x : {r_, tet_[0], tet_[1], tet_[2], tet_[3]}) in_s[x] = 1;
     labels = backend::Buffer<uint32_t>();
     sites = backend::Buffer<uint32_t>();
-    nm_ = select_indices(n, members_, IsSet32{raw(in_s)});
+    nm_ = select_indices(n, members_, IsSet<uint32_t>{raw(in_s)});
     in_s = backend::Buffer<uint32_t>();
     st_.captured = nm_;
     status_.resize(n), beg_.resize(n), cnt_.resize(n), cap_.resize(n), cert_.resize(4 * n), changed_.resize(n),
@@ -1244,6 +1222,7 @@ class Ghull {
       for_range<64>(nm_, Create{g_, stars(), raw(members_), static_cast<uint32_t>(nm_), raw(off), raw(nbr), raw(room),
                                 raw(newbeg), r_});
       link_end_ = total;
+      check_stars();
     }
     off = backend::Buffer<uint32_t>();
     nbr = backend::Buffer<uint32_t>();
@@ -1252,7 +1231,7 @@ class Ghull {
     if (stage2_stars) *stage2_stars = copy_stars();
     // ---- Stage 3
     splay();
-    st_.approx_vertices = count_alive();
+    st_.approx_vertices = count_status(kAlive);
     clock_.mark("stage 3: star splaying");
     if (stop_after_stage3) {
       build_triangles();
@@ -1339,7 +1318,13 @@ class Ghull {
     return h;
   }
   Stars stars() {
-    return {raw(status_), raw(beg_), raw(cnt_), raw(cap_), raw(link_), raw(cert_)};
+    return {raw(status_), raw(beg_), raw(cnt_), raw(cap_), raw(link_), raw(cert_), raw(broken_)};
+  }
+  // after the steps that insert into stars: a star that was not convex is a
+  // bug, reported, never a hull computed from it
+  void check_stars() {
+    if (backend::read_one(broken_, 0))
+      throw std::logic_error("hull3 ghull: an insertion met a star that is not convex (no fan cone holds the point)");
   }
   static void check_edge_list(uint64_t total) {
     if (total >= 0xffffffffull) throw std::invalid_argument("hull3 ghull: the edge list exceeds 32-bit offsets");
@@ -1423,13 +1408,13 @@ class Ghull {
       // the runs of one star each
       const std::size_t nseg = select_indices(m, seg, SegmentStart{raw(ins)});
       fill_buf(flag, 1, uint32_t{0});
-      for_range(nseg, Need{stars(), raw(ins), raw(seg), static_cast<uint32_t>(nseg), static_cast<uint32_t>(m), raw(extra_),
-                           raw(flag)});
+      const Runs runs{raw(ins), raw(seg), static_cast<uint32_t>(nseg), static_cast<uint32_t>(m)};
+      for_range(nseg, Need{stars(), runs, raw(extra_), raw(flag)});
       if (backend::read_one(flag, 0)) grow();
       for_range(nm_, ClearChanged{raw(members_), raw(changed_)});
       const unsigned long long before = backend::read_one(counts, 0) + backend::read_one(counts, 1);
-      for_range<64>(nseg, Apply{g_, stars(), raw(ins), raw(seg), static_cast<uint32_t>(nseg), static_cast<uint32_t>(m),
-                                raw(changed_), raw(extra_), raw(counts)});
+      for_range<64>(nseg, Apply{g_, stars(), runs, raw(changed_), raw(extra_), raw(counts)});
+      check_stars();
       // (the reference's progress argument: some demanded insertion succeeds)
       if (backend::read_one(counts, 0) + backend::read_one(counts, 1) == before)
         throw std::logic_error("hull3 ghull: star splaying made no progress");
@@ -1459,7 +1444,7 @@ class Ghull {
     two_passes(count, LocateAll{loc, raw(list), raw(start_), raw(role_), raw(face), raw(outside), raw(bad)});
     if (backend::read_one(bad, 0))
       throw std::logic_error("hull3 ghull: a point inside r's cone lies in no triangle's cone (the stars are not a hull)");
-    const std::size_t k = select_indices(count, which, IsOutside{raw(outside)});
+    const std::size_t k = select_indices(count, which, IsSet<uint32_t>{raw(outside)});
     if (k == 0) return 0;
     const uint64_t first_beg = link_end_;
     check_edge_list(first_beg + 8 * k);
@@ -1467,6 +1452,7 @@ class Ghull {
     link_end_ = first_beg + 8 * k;
     for_range<64>(k, AddStar{g_, stars(), raw(list), raw(face), raw(which), static_cast<uint32_t>(first_beg), r_,
                              raw(role_), raw(changed_)});
+    check_stars();
     nm_ = select_indices(n_, members_, HasRole{raw(role_), kMember});
     return k;
   }
@@ -1532,7 +1518,6 @@ class Ghull {
     });
     return c;
   }
-  std::size_t count_alive() { return count_status(kAlive); }
 
   const PointSet& ps_;
   std::size_t n_;
@@ -1548,6 +1533,7 @@ class Ghull {
   std::size_t nm_ = 0;
   backend::Buffer<uint8_t> status_, changed_, role_;
   backend::Buffer<uint32_t> beg_, cnt_, cap_, cert_, link_, extra_, start_;
+  backend::Buffer<uint32_t> broken_ = backend::Buffer<uint32_t>(1, 0u);
   uint64_t link_end_ = 0;
   backend::Buffer<Tri> tris_;
   std::size_t ntris_ = 0;
