@@ -2288,7 +2288,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     clock0 = now;
   };
 
-  std::atomic<std::size_t> exact_count{0};
+  std::atomic<std::size_t> exact_count{0}, gmp_count{0};
   // 1. every simplex's centre, rounded (parallel); flat[s] when zero volume
   std::vector<double> C(m * static_cast<std::size_t>(d));
   std::vector<std::uint8_t> flat(m, 0);
@@ -2309,6 +2309,15 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           continue;
         if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
 #endif
+        // zero volume decided by the exact (unperturbed) orientation first:
+        // on lattices most simplices the filter leaves are flat, and the
+        // predicate's integer stages decide that for a fraction of the GMP
+        // solve's cost (which finds the same zero determinant)
+        if (pred::orient_d_exact(d, p) == 0) {
+          flat[s] = 1;
+          continue;
+        }
+        if (timing) gmp_count.fetch_add(1, std::memory_order_relaxed);
         if (cs.solve(p, weighted ? w : nullptr))
           cs.rounded(&C[s * d]);
         else
@@ -2317,7 +2326,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     });
   });
 
-  if (timing) std::fprintf(stderr, "voronoi: %zu of %zu centres by the exact path\n", exact_count.load(), m);
+  if (timing)
+    std::fprintf(stderr, "voronoi: %zu of %zu centres by the exact path, %zu of them not flat (GMP)\n", exact_count.load(), m,
+                 gmp_count.load());
   lap("centres");
   // 2. groups: runs of equal rounded centres, split by exact comparison
   std::vector<std::uint32_t> order;
@@ -2337,42 +2348,98 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     return std::memcmp(&C[a * static_cast<std::size_t>(d)], &C[b * static_cast<std::size_t>(d)], 8 * d) == 0;
   };
   arena.execute([&] { tbb::parallel_sort(order.begin(), order.end(), key_less); });
+  // Whether the non-flat simplices a and b have the same exact centre (1),
+  // not (0), or this cannot tell (-1). With c_a and rho_a a's orthosphere
+  // (|c_a - x|^2 - w_x = rho_a on a's vertices), power_d of a's vertices
+  // and a point v is 0 exactly when |c_a - v|^2 - w_v = rho_a (the lifted
+  // points on one hyperplane). All of b's vertices so: c_a solves b's
+  // equations, whose solution is unique (b not flat): c_b = c_a. One of
+  // them not so while a and b share a vertex u: were c_b = c_a, then rho_b
+  // = |c_a - u|^2 - w_u = rho_a and every vertex of b would be so — the
+  // centres differ. No shared vertex: -1, and the exact centres decide. (In
+  // a regular or furthest-site triangulation two cells with one centre and
+  // different radii cannot both be empty (or both hold every point), so
+  // that case is a guard, not a path the tests reach.) Unweighted: w = 0,
+  // the circumsphere. On lattices the exact power
+  // tests are the predicates' integer stages, far cheaper than GMP centres.
+  auto same_centre = [&](std::uint32_t a, std::uint32_t b) {
+    const std::int64_t* A = S + static_cast<std::size_t>(a) * k;
+    const std::int64_t* B = S + static_cast<std::size_t>(b) * k;
+    const double* q[kMaxD + 2];
+    double qw[kMaxD + 2];
+    for (std::size_t j = 0; j < k; ++j) q[j] = pt(A[j]), qw[j] = weighted ? wt(A[j]) : 0.0;
+    bool shared = false, all_on = true;
+    for (std::size_t j = 0; j < k; ++j) {
+      if (std::find(A, A + k, B[j]) != A + k) {
+        shared = true;
+        continue;
+      }
+      if (!all_on) continue;
+      q[k] = pt(B[j]), qw[k] = weighted ? wt(B[j]) : 0.0;
+      all_on = pred::power_d_exact(d, q, qw) == 0;
+    }
+    return all_on ? 1 : shared ? 0 : -1;
+  };
+  std::atomic<std::size_t> group_members{0}, group_gmp{0};
   std::vector<std::int64_t> group(m, -1);  // provisional ids: the first simplex (smallest index) of the group
-  {
-    CentreSolver cs;
-    cs.d = d;
-    const double* p[kMaxD + 1];
-    double w[kMaxD + 1];
-    std::size_t a = 0;
-    while (a < order.size()) {
-      std::size_t b = a + 1;
-      while (b < order.size() && key_eq(order[a], order[b])) ++b;
-      if (b - a == 1) {
-        group[order[a]] = order[a];
-      } else {
-        std::vector<std::unique_ptr<ExactCentre>> reps;
-        std::vector<std::uint32_t> rep_id;
+  // the runs (each [runs[r], runs[r + 1]) of `order`), grouped in parallel:
+  // a run's members are written by the run's task alone
+  std::vector<std::size_t> runs;
+  for (std::size_t a = 0; a < order.size(); ++a)
+    if (a == 0 || !key_eq(order[a - 1], order[a])) runs.push_back(a);
+  runs.push_back(order.size());
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size() - 1, 64), [&](const tbb::blocked_range<std::size_t>& rg) {
+      std::unique_ptr<CentreSolver> cs;  // made on the first exact centre of this piece
+      const double* p[kMaxD + 1];
+      double w[kMaxD + 1];
+      auto exact_of = [&](std::uint32_t s) {
+        if (!cs) cs = std::make_unique<CentreSolver>(), cs->d = d;
+        for (std::size_t j = 0; j < k; ++j) {
+          p[j] = pt(S[s * k + j]);
+          if (weighted) w[j] = wt(S[s * k + j]);
+        }
+        cs->solve(p, weighted ? w : nullptr);
+        auto e = std::make_unique<ExactCentre>();
+        e->take(*cs);
+        return e;
+      };
+      std::vector<std::unique_ptr<ExactCentre>> reps;  // null until needed
+      std::vector<std::uint32_t> rep_id;
+      for (std::size_t run = rg.begin(); run != rg.end(); ++run) {
+        const std::size_t a = runs[run], b = runs[run + 1];
+        if (b - a == 1) {
+          group[order[a]] = order[a];
+          continue;
+        }
+        // a run's members grouped by exact centre: against each
+        // representative first by same_centre (exact power tests), then,
+        // where that cannot tell, by the exact centres (GMP, made on demand)
+        reps.clear();
+        rep_id.clear();
+        if (timing) group_members += b - a;
         for (std::size_t x = a; x < b; ++x) {  // in simplex order (the sort's tie-break)
           const std::uint32_t s = order[x];
-          for (std::size_t j = 0; j < k; ++j) {
-            p[j] = pt(S[s * k + j]);
-            if (weighted) w[j] = wt(S[s * k + j]);
-          }
-          cs.solve(p, weighted ? w : nullptr);
-          auto e = std::make_unique<ExactCentre>();
-          e->take(cs);
+          std::unique_ptr<ExactCentre> mine;
           std::size_t r = 0;
-          while (r < reps.size() && !reps[r]->equals(*e)) ++r;
+          for (; r < reps.size(); ++r) {
+            const int same = same_centre(rep_id[r], s);
+            if (same == 1) break;
+            if (same == 0) continue;
+            if (!reps[r]) reps[r] = exact_of(rep_id[r]);
+            if (!mine) mine = exact_of(s);
+            if (timing) ++group_gmp;
+            if (reps[r]->equals(*mine)) break;
+          }
           if (r == reps.size()) {
-            reps.push_back(std::move(e));
+            reps.push_back(std::move(mine));
             rep_id.push_back(s);
           }
           group[s] = rep_id[r];
         }
       }
-      a = b;
-    }
-  }
+    });
+  });
   // final vertex ids in order of each group's first simplex (canonical order)
   {
     std::vector<std::int64_t> id(m, -1);
@@ -2389,6 +2456,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   }
   C = {};
   const std::size_t nv = out.nv;
+  if (timing)
+    std::fprintf(stderr, "voronoi: %zu simplices in runs of equal rounded centres, %zu GMP comparisons, %zu vertices\n",
+                 group_members.load(), group_gmp.load(), nv);
   lap("groups");
 
   // 3. each group's vertex set, sorted (CSR over groups)
@@ -2484,6 +2554,12 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
       return false;
     };
     std::vector<std::int64_t> bgroup(nb_, -1), bstamp(nb_, -1), sstamp(m, -1);
+    // each point's answer for the plane of hull facet h, kept while h is
+    // built: a point on the plane lies in many of its boundary facets and
+    // zero-volume simplices, each of which asked again (one exact
+    // orientation per incidence; most are exactly 0, decided by the
+    // predicates' exact stages)
+    std::vector<std::int64_t> on_stamp(n, -1), off_stamp(n, -1);
     for (std::size_t b0 = 0; b0 < nb_; ++b0) {
       if (bgroup[b0] >= 0 || !nondegenerate(b0)) continue;
       const std::int64_t h = static_cast<std::int64_t>(hull_facets.size());
@@ -2496,8 +2572,13 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         // repeated row (exactly 0, which only the exact stage can tell: the
         // neighbouring facets share d - 1 vertices with it)
         if (std::find(base.begin(), base.begin() + d, v) != base.begin() + d) return true;
+        const std::size_t u = static_cast<std::size_t>(v);
+        if (on_stamp[u] == h) return true;
+        if (off_stamp[u] == h) return false;
         rows[d] = pt(v);
-        return pred::orient_d_exact(d, rows) == 0;
+        const bool on = pred::orient_d_exact(d, rows) == 0;
+        (on ? on_stamp : off_stamp)[u] = h;
+        return on;
       };
       std::vector<std::int64_t> pts_on;
       std::vector<std::size_t> queue{b0}, flats;
@@ -2676,7 +2757,11 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     std::vector<std::pair<std::int64_t, std::int64_t>> extra;
     Csr rv, rg;
   };
-  const std::size_t chunk = 2048, nchunks = (n + chunk - 1) / chunk;
+  // about four pieces per worker (a fixed 2048 left inputs of a few thousand
+  // points, the 4D and 5D lattices, on one thread)
+  const std::size_t workers = static_cast<std::size_t>(std::max(1, arena.max_concurrency()));
+  const std::size_t chunk = std::clamp<std::size_t>((n + 4 * workers - 1) / (4 * workers), 16, 2048),
+                    nchunks = (n + chunk - 1) / chunk;
   std::vector<Chunk> chunks(nchunks);
   std::vector<std::uint8_t> vertex(n, 0);  // P_i is a vertex of Q: i has a cell with interior
   std::atomic<bool> ties{false};           // some point of a positive simplex is no vertex

@@ -197,6 +197,60 @@ def test_vertices_correctly_rounded_adversarial():
     assert check_rounding(Voronoi(sph)) > 10
 
 
+def check_grouping(vor):
+    """One Voronoi vertex per distinct exact centre (Fraction): two
+    simplices share a vertex exactly when their exact centres are equal —
+    also where different centres round to the same doubles. Returns the
+    number of (non-flat) simplices that share their vertex with another."""
+    by_centre, by_vertex = {}, {}
+    for s in range(len(vor.simplices)):
+        w = None if vor.weights is None else vor.weights[vor.simplices[s]]
+        c = exact_centre(vor.points[vor.simplices[s]], w)
+        g = int(vor.simplex_vertex[s])
+        if c is None:
+            assert g == -1
+            continue
+        by_centre.setdefault(tuple(c), set()).add(g)
+        by_vertex.setdefault(g, set()).add(tuple(c))
+    assert all(len(v) == 1 for v in by_centre.values())
+    assert all(len(c) == 1 for c in by_vertex.values())
+    assert len(by_vertex) == len(vor.vertices)
+    return sum(1 for s in range(len(vor.simplices)) if vor.simplex_vertex[s] >= 0) - len(by_vertex)
+
+
+def test_vertices_grouped_by_exact_centre():
+    """Simplices whose exact centres are equal give one vertex, and those
+    whose centres differ give two even where both round to the same doubles
+    (module.cpp, voronoi_core: the groups by exact power tests, GMP where
+    those cannot tell)."""
+    d2 = 2.0 ** -40
+    # a square with one corner moved along the circle through the others:
+    # the second triangle's centre is (1, 1) + O(2^-80), rounding to (1, 1)
+    sq = np.array([[0, 0], [2, 0], [0, 2], [2 + d2, 2 - d2]])
+    vor = Voronoi(sq)
+    assert vor.vertices.tolist() == [[1.0, 1.0], [1.0, 1.0]]
+    check_grouping(vor)
+    cube = np.array(list(itertools.product([0.0, 2.0], repeat=3)))
+    cube[-1] = [2 + d2, 2 - d2, 2.0]
+    vor = Voronoi(cube)
+    assert vor.vertices.tolist().count([1.0, 1.0, 1.0]) >= 2
+    check_grouping(vor)
+    # weighted: the same with a weight moved instead of a point
+    vor = Voronoi(np.array([[0, 0], [2, 0], [0, 2], [2, 2]], float), weights=np.array([0, 0, 0, -2 * d2 * d2]))
+    assert len(vor.vertices) == 2
+    check_grouping(vor)
+    # lattices, moved lattices (2 ulp, then + 1), weight ties: shared vertices
+    rng = np.random.default_rng(11)
+    for d, k in ((2, 7), (3, 4), (4, 3)):
+        g = np.array(list(itertools.product(range(k), repeat=d)), float)
+        moved = g.copy()
+        rows = rng.choice(len(g), len(g) // 5, replace=False)
+        moved[rows] = np.nextafter(np.nextafter(moved[rows], np.inf), np.inf)
+        assert check_grouping(Voronoi(g)) > 0
+        assert check_grouping(Voronoi(moved + 1.0)) > 0
+        assert check_grouping(Voronoi(g, weights=rng.integers(0, 2, len(g)).astype(float) * 0.25)) > 0
+
+
 def test_round_ratio_against_fraction():
     rnd = random.Random(9)
     cases = [(1, 3, 0), (2, 3, 0), (1, 1, -1075), (1, 1, -1076), (3, 2, -1076), (5, 4, -1075), (1, 1, 1024),
@@ -924,3 +978,23 @@ def test_spatial_module():
         fs.no_such_name
     assert not hasattr(fs, "__path__")
     assert "cKDTree" in dir(fs) and "Voronoi" in dir(fs)
+
+
+@pytest.mark.parametrize("d,k", [(2, 9), (3, 5), (4, 3), (5, 3)])
+def test_same_diagram_at_any_thread_count(d, k):
+    """The centres, their groups (in parallel runs) and the regions and
+    ridges (in parallel pieces of points, about four per worker) give the
+    same diagram on 1, 2 and 16 threads: grids, moved grids, weight ties."""
+    g = np.array(list(itertools.product(range(k), repeat=d)), float)
+    rng = np.random.default_rng(d)
+    moved = g.copy()
+    rows = rng.choice(len(g), len(g) // 5, replace=False)
+    moved[rows] = np.nextafter(moved[rows], np.inf)
+    for p, w in ((g, None), (moved + 1.0, None), (g, rng.integers(0, 2, len(g)).astype(float) * 0.25)):
+        base = Voronoi(p, weights=w, threads=1)
+        for t in (2, 16):
+            v = Voronoi(p, weights=w, threads=t)
+            assert np.array_equal(v.vertices, base.vertices)
+            assert np.array_equal(v.simplex_vertex, base.simplex_vertex)
+            assert np.array_equal(v.ridge_points, base.ridge_points)
+            assert v.ridge_vertices == base.ridge_vertices and v.regions == base.regions
