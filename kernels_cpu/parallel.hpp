@@ -48,6 +48,14 @@ namespace flipflop::cpu {
 constexpr std::uint32_t kNone = ~std::uint32_t{0};
 constexpr std::size_t kChunk = std::size_t{1} << 13;  // points per work unit
 
+// The thread count for a call on n items: `threads`, but 1 where it is 0
+// (the runtime's default) and n is below `sequential_below` — small inputs,
+// whose parallel rounds cost more in wake-ups and joins than they save (the
+// caller measures its threshold).
+inline int threads_for_size(int threads, std::size_t n, std::size_t sequential_below) {
+  return threads == 0 && n < sequential_below ? 1 : threads;
+}
+
 // f() inside a task arena of exactly `threads` threads, also more than the
 // machine's cores (TBB caps its worker pool at the core count unless told
 // otherwise); threads == 0: the runtime's default.

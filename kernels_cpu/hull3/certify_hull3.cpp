@@ -63,6 +63,9 @@ certify::Report certify_hull3_witnessed(const PointSet& ps, const std::vector<Tr
                                         certify::Level level, const Hull3Witness& w, int threads) {
   if (ps.dim != 3) return Report::fail("input-dimension", "hull3 needs 3D points");
   if (Report r = check_witness_frame(ps, tris, w); !r.ok) return r;
+  // one thread below 4096 points by default (1 / 2 threads, uniform cube:
+  // 3375 points 0.16 / 0.18 ms, 10^4 0.33 / 0.26 ms)
+  threads = threads_for_size(threads, ps.size(), 4096);
   return certify_in_parallel(ps, threads, [&](const certify::Speedups& sp) -> Report {
     certify::detail::Hull3Surface ck;
     if (Report r = certify::detail::hull3_surface(ps, tris, level, sp, &w.tet, ck); !r.ok) return r;
