@@ -1,6 +1,6 @@
 """Every call of issue 39's list against scipy.spatial on integer grids, the same grids with
 20 % of the points moved by 2 ulp (+1.0), and uniform random points, 2D..5D, in one process,
-medians of 3 (docs/performance/python_scipy.md, stop 71):
+medians of 3 (docs/performance/python_scipy.md, stop 71; `Voronoi` in 4D and 5D too since stop 74):
 
     build/python-venv/bin/python docs/bench/measure_scipy_matrix.py [DIMS]   # e.g. 45 for 4D and 5D
 
@@ -28,8 +28,7 @@ for d in (int(x) for x in (sys.argv[1] if len(sys.argv) > 1 else '2345')):
             "ConvexHull": (lambda: flipflop.ConvexHull(p), lambda: ss.ConvexHull(p)),
             "Delaunay": (lambda: flipflop.Delaunay(p), lambda: ss.Delaunay(p)),
         }
-        if d <= 3:
-            calls["Voronoi"] = (lambda: flipflop.Voronoi(p), lambda: ss.Voronoi(p))
+        calls["Voronoi"] = (lambda: flipflop.Voronoi(p), lambda: ss.Voronoi(p))
         fd, sd = flipflop.Delaunay(p), ss.Delaunay(p)
         calls["find_simplex"] = (lambda: fd.find_simplex(qq), lambda: sd.find_simplex(qq))
         def tr(cls):
