@@ -14,9 +14,12 @@
 # answer. It does not assert the fixed set's factors (kCaught): another set
 # may come less close to a bound's edge. An input that comes closer than the
 # fixed set (it would catch the bound weakened by half the listed factor) is
-# printed in hexadecimal floating point; add it to kKept in the test, and
-# halve the factor in kCaught, so that CI's fixed set catches that weakening
-# on every run.
+# printed in hexadecimal floating point. To keep them (CI's fixed set then
+# catches that weakening on every run):
+#   python3 fuzz/filter_sensitivity_keep.py --inc proptests/filter_sensitivity_kept.inc \
+#     BUILD_DIR/sensitivity-runs/*.log > /tmp/kept.inc
+#   mv /tmp/kept.inc proptests/filter_sensitivity_kept.inc
+# then rerun the test and lower kCaught's factors to what it now prints.
 #
 # Logs under BUILD_DIR/sensitivity-runs/<seed-or-run>.log. Exits non-zero when
 # any run failed; prints each bound's closest input of the runs.

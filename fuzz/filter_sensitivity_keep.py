@@ -1,16 +1,18 @@
 #!/usr/bin/env python3
-"""fuzz/filter_sensitivity_keep.py LOG... — from the logs of
+"""fuzz/filter_sensitivity_keep.py [--inc FILE] LOG... — from the logs of
 fuzz/filter_sensitivity.sh (or of the test binary run with
 FLIPFLOP_SENSITIVITY_SEED), each bound and shape's closest input among the
 lines "closer than the fixed set", as entries for
 proptests/filter_sensitivity_kept.inc, with the ratio that run measured and the
 factor kCaught can then list (the smallest power of two F with ratio * F > 1).
 
-    python3 fuzz/filter_sensitivity_keep.py build/sensitivity-runs/*.log
+    python3 fuzz/filter_sensitivity_keep.py --inc proptests/filter_sensitivity_kept.inc \
+        build/sensitivity-runs/*.log > /tmp/kept.inc && mv /tmp/kept.inc proptests/filter_sensitivity_kept.inc
 
-Prints the entries; paste the new ones into the .inc file (one per shape: an
-entry for a shape that has one already replaces it when its ratio is larger),
-rerun the test, and set kCaught from the ratios it prints."""
+With --inc, the file's own entries (their ratios read from the comment line
+above each) compete too, and the whole merged file is printed, header
+included: one entry per shape, the largest ratio. Then rerun the test and set
+kCaught from the ratios it prints."""
 import math
 import re
 import sys
@@ -22,8 +24,37 @@ RATIO = re.compile(r"max \|det\|/bound among wrong signs ([0-9.eE+-]+)")
 SEED = re.compile(r"seed (0x[0-9a-f]+)")
 
 
+HEADER = """// proptests/filter_sensitivity_kept.inc — kKept of filter_sensitivity_test.cpp: inputs
+// from longer runs with other seeds (fuzz/filter_sensitivity.sh), chosen by
+// fuzz/filter_sensitivity_keep.py: per bound and shape the closest to the bound's
+// edge, with the ratio and seed of the run that found it."""
+KEPT = re.compile(r"^\s*// (.+?) k=(\d) (plain|lifted): ratio ([0-9.eE+-]+), caught at .* \(seed (\S+)\)$")
+ENTRY = re.compile(r'^\s*\{Bound::\w+, \d, (?:true|false), "(.*)"\},$')
+
+
+def read_inc(path, best):
+    pending = None
+    with open(path) as f:
+        for line in f:
+            m = KEPT.match(line.rstrip("\n"))
+            if m:
+                pending = ((m.group(1), int(m.group(2)), m.group(3) == "lifted"), float(m.group(4)), m.group(5))
+                continue
+            m = ENTRY.match(line.rstrip("\n"))
+            if m and pending:
+                key, r, seed = pending
+                if key not in best or r > best[key][0]:
+                    best[key] = (r, m.group(1), seed)
+                pending = None
+
+
 def main(paths):
     best = {}  # (bound, k, lifted) -> (ratio, text, seed)
+    inc = None
+    if paths and paths[0] == "--inc":
+        inc, paths = paths[1], paths[2:]
+        read_inc(inc, best)
+        print(HEADER)
     for path in paths:
         seed, ratio = "?", {}
         with open(path) as f:
