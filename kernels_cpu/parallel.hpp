@@ -25,6 +25,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -36,6 +37,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "kernels_cpu/tsan.hpp"
@@ -58,14 +60,19 @@ inline int threads_for_size(int threads, std::size_t n, std::size_t sequential_b
 
 // f() inside a task arena of exactly `threads` threads, also more than the
 // machine's cores (TBB caps its worker pool at the core count unless told
-// otherwise); threads == 0: the runtime's default.
+// otherwise: the cap is raised for the call then, and only then — a
+// global_control is process-wide, and lowering it would also throttle other
+// threads' TBB work while f runs, e.g. a small hull that threads_for_size
+// sends to one thread); threads == 0: the runtime's default.
 template <class F>
 void with_threads(int threads, const F& f) {
   if (threads <= 0) {
     f();
     return;
   }
-  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  std::optional<tbb::global_control> allow;
+  if (threads > tbb::info::default_concurrency())
+    allow.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   tbb::task_arena arena(threads);
   arena.execute([&] { f(); });
 }

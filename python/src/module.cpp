@@ -2356,12 +2356,13 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // equations, whose solution is unique (b not flat): c_b = c_a. One of
   // them not so while a and b share a vertex u: were c_b = c_a, then rho_b
   // = |c_a - u|^2 - w_u = rho_a and every vertex of b would be so — the
-  // centres differ. No shared vertex: -1, and the exact centres decide. (In
-  // a regular or furthest-site triangulation two cells with one centre and
-  // different radii cannot both be empty (or both hold every point), so
-  // that case is a guard, not a path the tests reach.) Unweighted: w = 0,
-  // the circumsphere. On lattices the exact power
-  // tests are the predicates' integer stages, far cheaper than GMP centres.
+  // centres differ. No shared vertex: -1, and the exact centres decide. (For
+  // the cells of a regular or furthest-site triangulation they then always
+  // differ: one centre with two radii would put one cell's vertices strictly
+  // inside the other's sphere, or outside it. The comparison keeps the answer
+  // exact for any simplices given.) Unweighted: w = 0, the circumsphere. On
+  // lattices the exact power tests are the predicates' integer stages, far
+  // cheaper than GMP centres.
   auto same_centre = [&](std::uint32_t a, std::uint32_t b) {
     const std::int64_t* A = S + static_cast<std::size_t>(a) * k;
     const std::int64_t* B = S + static_cast<std::size_t>(b) * k;
