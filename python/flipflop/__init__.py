@@ -1046,7 +1046,12 @@ class Delaunay(_QhullUser):
         """For each point of xi (shape (..., d)), the index of a simplex that
         contains it (closed; decided exactly), -1 outside the hull. Simplices
         of zero volume (the canonical answer's on degenerate input) are never
-        returned: a point on one lies in a neighbour of positive volume.
+        returned: a point on one lies in a neighbour of positive volume. A
+        point on a face shared by several simplices gets one fixed choice
+        among them (the one holding the point moved infinitesimally towards
+        the first simplex of positive volume), the same for any batch and at
+        any thread count; scipy's choice there depends on Qhull's walk. The
+        queries run in parallel pieces on the object's threads.
 
         bruteforce and tol are scipy's and accepted: the search is exact, so
         the answer is the same with either; tol (a tolerance of scipy's
@@ -1061,7 +1066,7 @@ class Delaunay(_QhullUser):
                              f"got {q.shape}")
         q = np.ascontiguousarray(q.reshape(-1, self.ndim))
         s64, n64 = self._int64()
-        return _intc(_flipflop.find_simplex(self.points, s64, n64, q, self._signs()).reshape(shape))
+        return _intc(_flipflop.find_simplex(self.points, s64, n64, q, self._signs(), self._threads).reshape(shape))
 
     # ---- their computation -----------------------------------------------------------
 

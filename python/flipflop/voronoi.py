@@ -138,11 +138,11 @@ class Voronoi(_QhullUser):
             if self._incremental:  # the kernel kept for in-place insertion (add_points)
                 simplices, _redundant, _neighbors = _kept_triangulation(self, "Voronoi", a, w, False, self._threads,
                                                                         self.furthest_site)
-            else:
-                simplices, _redundant = _flipflop.triangulate(a, w, backend, False, self._threads,
-                                                              self.furthest_site)
+            else:  # with the neighbours the certificate gives (None where it does not)
+                simplices, _redundant, _neighbors = _flipflop.triangulate_with_neighbors(
+                    a, w, backend, False, self._threads, self.furthest_site)
             (vertices, simplex_vertex, ridge_points, r_off, r_val, g_off,
-             g_val) = _flipflop.voronoi(a, w, simplices, self._threads)
+             g_val) = _flipflop.voronoi(a, w, simplices, self._threads, _neighbors)
         except ValueError as e:
             raise ValueError(f"Voronoi: {e}") from None
         self.points = a

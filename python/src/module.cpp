@@ -1259,10 +1259,13 @@ std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_
   return order;
 }
 
-// Exact point location: for each query, a simplex that contains it (closed;
-// among several, the one a visibility walk reaches first, else the first of
-// a scan in index order), -1 when outside all. Simplices of zero volume
-// contain nothing (the canonical answer may hold them; they cover no volume).
+// Exact point location: for each query, a simplex that contains it (closed),
+// -1 when outside all. Among several (a query on a shared face), the one of
+// positive volume holding x' below — the query moved infinitesimally towards
+// the first simplex of positive volume — strictly inside: unique, so the
+// same for any batch of queries, any visiting order and any thread count.
+// Simplices of zero volume contain nothing (the canonical answer may hold
+// them; they cover no volume).
 //
 // The walk: from the current simplex, cross a facet that has the query
 // strictly on its far side (exact orient_d, ties broken by moving the query
@@ -1286,7 +1289,12 @@ std::vector<std::size_t> morton_order(const double* q, std::size_t n, std::size_
 // facet of a flat simplex is strictly seen (degenerate facets only), the walk
 // steps on to a neighbour (not the one it came from, where it can); a walk
 // that does not settle within 4m + 16 steps ends in the scan, which decides
-// every query exactly.
+// every query exactly by the walk's own test (x' strictly inside a simplex of
+// positive volume).
+//   Why x' is strictly inside exactly one simplex of positive volume: such a
+// simplex has no degenerate facet, so x' is strictly on one side of each of
+// its facets' hyperplanes; these simplices tile the hull with disjoint
+// interiors, and x' lies in the hull's interior whenever x is in the hull.
 using Signs = nb::ndarray<const std::int8_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
 // Every index of the rows of c names one of n points (what: the caller, for
@@ -1538,7 +1546,7 @@ DoubleArray barycentric_transforms(const Points& p, const Cells& c, const Signs&
 }
 
 IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const Points& q,
-                        std::optional<Signs> signs) {
+                        std::optional<Signs> signs, int threads) {
   const PointSet ps = point_set(p, std::nullopt);
   const std::size_t m = c.shape(0), k = c.shape(1), d = k - 1;
   if (q.shape(1) != d) throw std::invalid_argument("query points must have the points' dimension");
@@ -1599,31 +1607,27 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
     for (std::size_t j = 0; j < d; ++j) lo[j] = hi[j] = ps.point(0)[j];
     for (std::size_t i = 1; i < ps.size(); ++i)
       for (std::size_t j = 0; j < d; ++j) lo[j] = std::min(lo[j], ps.point(i)[j]), hi[j] = std::max(hi[j], ps.point(i)[j]);
-    std::size_t cur = 0, prev = m;  // prev: where the walk came from (m: nowhere)
-    for (const std::size_t qi : morton_order(q.data(), q.shape(0), d)) {
-      const double* x = q.data() + qi * d;
+    // One query: the walk from `cur` (updated: where it ended), else the
+    // scan. The answer does not depend on where the walk starts (header:
+    // the simplex of positive volume holding x' strictly inside), so the
+    // queries run in parallel pieces of the Morton order, each piece's walks
+    // chained, with the same answer at any thread count.
+    auto locate = [&](const double* x, std::size_t& cur) -> std::int64_t {
       bool boxed = true;
       for (std::size_t j = 0; j < d; ++j) boxed &= x[j] >= lo[j] && x[j] <= hi[j];
-      if (!boxed) continue;  // out[qi] stays -1
-      long found = -1;
-      bool outside = false;
+      if (!boxed) return -1;
+      std::size_t prev = m;  // where the walk came from (m: nowhere)
       for (std::size_t steps = 0; steps < 4 * m + 16; ++steps) {
         // the simplex's sign; a flat one's under SoS (header)
         const int sign = own[cur] != 0 ? own[cur] : positive;
         long exit_facet = -1;
         for (std::size_t j = 0; j < k && exit_facet < 0; ++j)
           if (side(cur, j, x) * sign < 0) exit_facet = static_cast<long>(j);
-        if (exit_facet < 0 && own[cur] != 0) {
-          found = static_cast<long>(cur);
-          break;
-        }
+        if (exit_facet < 0 && own[cur] != 0) return static_cast<std::int64_t>(cur);
         std::int64_t next = -1;
         if (exit_facet >= 0) {
           next = neighbour(cur, static_cast<std::size_t>(exit_facet));
-          if (next < 0) {
-            outside = true;
-            break;
-          }
+          if (next < 0) return -1;  // beyond a boundary facet: outside the hull
         } else {  // a flat simplex with the query in its hyperplane: on to a neighbour
           for (std::size_t j = 0; j < k && (next < 0 || static_cast<std::size_t>(next) == prev); ++j)
             next = neighbour(cur, (j + steps) % k);
@@ -1632,15 +1636,34 @@ IndexArray find_simplex(const Points& p, const Cells& c, const Cells& nbr, const
         prev = cur;
         cur = static_cast<std::size_t>(next);
       }
-      if (found < 0 && !outside)  // the walk did not settle: scan
-        for (std::size_t s = 0; s < m && found < 0; ++s) {
-          if (own[s] == 0) continue;
-          bool in = true;
-          for (std::size_t j = 0; j < k && in; ++j) in = orient(s, static_cast<long>(j), x) * own[s] >= 0;
-          if (in) found = static_cast<long>(s);
-        }
-      out[qi] = found;
-    }
+      // the walk did not settle: the scan, by the walk's own test (x'
+      // strictly inside, never 0 on a simplex of positive volume), so that
+      // it finds the walk's answer
+      for (std::size_t s = 0; s < m; ++s) {
+        if (own[s] == 0) continue;
+        bool in = true;
+        for (std::size_t j = 0; j < k && in; ++j) in = side(s, j, x) * own[s] > 0;
+        if (in) return static_cast<std::int64_t>(s);
+      }
+      return -1;
+    };
+    const std::vector<std::size_t> order = morton_order(q.data(), q.shape(0), d);
+    const std::size_t nq = order.size();
+    // pieces of at least 64 queries, about four per worker
+    const std::size_t workers =
+        static_cast<std::size_t>(threads > 0 ? threads : tbb::info::default_concurrency());
+    const std::size_t pieces = own[ref] == 0 ? 1 : std::max<std::size_t>(1, std::min(4 * workers, nq / 64));
+    auto run_pieces = [&](std::size_t first, std::size_t last) {
+      for (std::size_t piece = first; piece < last; ++piece) {
+        std::size_t cur = ref;
+        for (std::size_t i = nq * piece / pieces; i < nq * (piece + 1) / pieces; ++i)
+          out[order[i]] = locate(q.data() + order[i] * d, cur);
+      }
+    };
+    if (pieces == 1)  // (all flat: nothing is found, each query scans)
+      run_pieces(0, 1);
+    else
+      cpu::with_threads(threads, [&] { cpu::par_for(pieces, 1, run_pieces); });
   }
   return index_array(std::move(out), q.shape(0), 0, true);
 }
@@ -2270,7 +2293,8 @@ struct VoronoiResult {
   std::size_t nv = 0;
 };
 
-VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_t m, int threads) {
+VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_t m, int threads,
+                           const std::int64_t* given_nbr = nullptr) {
   const int d = ps.dim;
   const std::size_t k = static_cast<std::size_t>(d + 1), n = ps.size();
   VoronoiResult out;
@@ -2292,6 +2316,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // 1. every simplex's centre, rounded (parallel); flat[s] when zero volume
   std::vector<double> C(m * static_cast<std::size_t>(d));
   std::vector<std::uint8_t> flat(m, 0);
+  // every coordinate an integer below 2^20: the predicates' own lattice test
+  // (StaticFilter::small_integers; their integer stage decides such calls)
+  const bool lattice = pred::StaticFilter::for_points(ps.coords.data(), n, d).small_integers();
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
       CentreSolver cs;
@@ -2303,6 +2330,15 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           p[j] = pt(S[s * k + j]);
           if (weighted) w[j] = wt(S[s * k + j]);
         }
+        // on an integer lattice the exact orientation first: the
+        // predicates' integer stage decides it in about the time the
+        // long double filter takes to fail on a zero-volume simplex, and
+        // most of a lattice's canonical simplices have zero volume (the 6^4
+        // grid: 20,352 of 35,352); the same test as below, only earlier
+        if (lattice && pred::orient_d_exact(d, p) == 0) {
+          flat[s] = 1;
+          continue;
+        }
 #ifdef FLIPFLOP_VORONOI_FILTER
         if (d <= 3 ? centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])
                    : centre_filtered_gauss(d, p, weighted ? w : nullptr, &C[s * d]))
@@ -2313,7 +2349,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         // on lattices most simplices the filter leaves are flat, and the
         // predicate's integer stages decide that for a fraction of the GMP
         // solve's cost (which finds the same zero determinant)
-        if (pred::orient_d_exact(d, p) == 0) {
+        if (!lattice && pred::orient_d_exact(d, p) == 0) {  // (a lattice's: asked above)
           flat[s] = 1;
           continue;
         }
@@ -2484,8 +2520,11 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
 
   lap("group vertex sets");
   // 4. neighbours; the hull's exact facets ("infinite groups")
-  const std::vector<std::int64_t> nbr =
-      facet_neighbors(m, k, n, [&](std::size_t i, std::size_t l) { return S[i * k + l]; });
+  // (the caller's, where the triangulation's certificate gave them: the same
+  // array, simplex across the facet opposite each vertex or -1)
+  std::vector<std::int64_t> matched;
+  if (!given_nbr) matched = facet_neighbors(m, k, n, [&](std::size_t i, std::size_t l) { return S[i * k + l]; });
+  const std::int64_t* const nbr = given_nbr ? given_nbr : matched.data();
   std::vector<std::uint8_t> layer(m, 0);  // zero-volume simplices lying in a hull facet
   std::vector<std::vector<std::int64_t>> hull_facets;  // each: the points on it, sorted
   {
@@ -3100,7 +3139,8 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
 
 // (vertices, simplex_vertex, ridge_points, ridge_offsets, ridge_values,
 // region_offsets, region_values); see voronoi_core.
-nb::tuple voronoi(const Points& p, const std::optional<Vector>& w, const Cells& c, int threads) {
+nb::tuple voronoi(const Points& p, const std::optional<Vector>& w, const Cells& c, int threads,
+                  const std::optional<Cells>& neighbors) {
   const PointSet ps = point_set(p, w);
   const int d = ps.dim;
   if (d < 2 || d > ref::rtd::kMaxDim) throw std::invalid_argument("Voronoi expects points of shape (n, d) with d = 2..9");
@@ -3110,10 +3150,17 @@ nb::tuple voronoi(const Points& p, const std::optional<Vector>& w, const Cells& 
   for (std::size_t x = 0; x < m * c.shape(1); ++x)
     if (c.data()[x] < 0 || static_cast<std::size_t>(c.data()[x]) >= n)
       throw std::invalid_argument("simplices name a point that does not exist");
+  if (neighbors) {
+    if (neighbors->shape(0) != m || neighbors->shape(1) != c.shape(1))
+      throw std::invalid_argument("neighbors must have the simplices' shape");
+    for (std::size_t x = 0; x < m * c.shape(1); ++x)
+      if (neighbors->data()[x] < -1 || neighbors->data()[x] >= static_cast<std::int64_t>(m))
+        throw std::invalid_argument("neighbors name a simplex that does not exist");
+  }
   VoronoiResult r;
   {
     nb::gil_scoped_release nogil;
-    r = voronoi_core(ps, c.data(), m, threads);
+    r = voronoi_core(ps, c.data(), m, threads, neighbors ? neighbors->data() : nullptr);
   }
   const std::size_t nr = r.ridge_points.size() / 2;
   return nb::make_tuple(double_array(std::move(r.vertices), r.nv, static_cast<std::size_t>(d)),
@@ -3168,7 +3215,7 @@ NB_MODULE(_flipflop, m) {
       .def("__len__", &IncrementalHull::size);
   m.def("neighbors", &neighbors, nb::arg("simplices"));
   m.def("find_simplex", &find_simplex, nb::arg("points"), nb::arg("simplices"), nb::arg("neighbors"),
-        nb::arg("queries"), nb::arg("signs").none() = nb::none());
+        nb::arg("queries"), nb::arg("signs").none() = nb::none(), nb::arg("threads") = 0);
   m.def("simplex_signs", &simplex_signs, nb::arg("points"), nb::arg("simplices"));
   m.def("barycentric_transforms", &barycentric_transforms, nb::arg("points"), nb::arg("simplices"), nb::arg("signs"));
   m.def("power_signs", &power_signs, nb::arg("points"), nb::arg("weights").none(), nb::arg("cells"));
@@ -3184,6 +3231,7 @@ NB_MODULE(_flipflop, m) {
   m.def("dimension_of", &gen::dimension_of);
   m.def("_reads_in_place", &reads_in_place, nb::arg("points"), nb::arg("weights").none());
   m.def("instant_flip", &instant_flip, nb::arg("points"), nb::arg("w"), nb::arg("u"));
-  m.def("voronoi", &voronoi, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"), nb::arg("threads"));
+  m.def("voronoi", &voronoi, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"), nb::arg("threads"),
+        nb::arg("neighbors").none() = nb::none());
   m.def("_round_ratio", &_round_ratio, nb::arg("M"), nb::arg("D"), nb::arg("E"));
 }

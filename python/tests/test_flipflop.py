@@ -762,6 +762,71 @@ def test_find_simplex_3d_against_brute_force(kind):
     assert np.array_equal(t.find_simplex(qi[:12].reshape(3, 4, 3).astype(np.float64)).ravel(), got[:12])
 
 
+def det_int(m):
+    """Exact det m for an int64 array (..., k, k) of small integers, by
+    Laplace expansion along the first row (every product fits int64)."""
+    k = m.shape[-1]
+    if k == 1:
+        return m[..., 0, 0]
+    total = np.zeros(m.shape[:-2], dtype=np.int64)
+    for j in range(k):
+        term = m[..., 0, j] * det_int(np.delete(m[..., 1:, :], j, axis=-1))
+        total = total + term if j % 2 == 0 else total - term
+    return total
+
+
+def orient_int_d(v):
+    """Exact sign of det [[v_0, 1], ..., [v_d, 1]] for int64 rows v (..., d+1, d):
+    (-1)^d det [v_1 - v_0, ..., v_d - v_0] (row 0 subtracted, expanded along the
+    1-column)."""
+    d = v.shape[-1]
+    return (-1) ** d * np.sign(det_int(v[..., 1:, :] - v[..., :1, :]))
+
+
+@pytest.mark.parametrize("d", [2, 3, 4, 5])
+def test_find_simplex_one_choice_on_shared_faces(d):
+    # Queries on vertices, edges and facets shared by several simplices of a
+    # grid's canonical triangulation (points at even integers, queries at
+    # integers): find_simplex returns the one simplex of positive volume that
+    # holds the query moved infinitesimally towards the vertices of the first
+    # simplex of positive volume (x' = x + e (v0 - x) + e^2 (v1 - x) + ...),
+    # decided here by brute force over all simplices in integer arithmetic;
+    # the same choice at 1, 2 and 16 threads and query by query (any batch)
+    k = {2: 5, 3: 3, 4: 3, 5: 2}[d]
+    pi = np.array(list(np.ndindex(*([k] * d))), dtype=np.int64) * 2
+    if d == 5:
+        pi = np.vstack([pi, [[1, 1, 1, 1, 1]]])  # (the cube and its centre)
+    rng = np.random.default_rng(40 + d)
+    qi = np.vstack([rng.integers(0, 2 * (k - 1) + 1, (70, d)), pi[:10], rng.integers(-1, 2 * k, (10, d))])
+    t = flipflop.Delaunay(pi.astype(np.float64))
+    S = t.simplices.astype(np.int64)
+    v = pi[S]  # (m, d+1, d)
+    own = orient_int_d(v)
+    ref = int(np.flatnonzero(own != 0)[0])
+
+    def orient_with(x):  # (len(x), m, d+1): each simplex with vertex j replaced by x
+        out = np.empty((len(x),) + S.shape, dtype=np.int64)
+        for j in range(d + 1):
+            w = np.broadcast_to(v, (len(x),) + v.shape).copy()
+            w[:, :, j] = x[:, None, :]
+            out[:, :, j] = orient_int_d(w)
+        return out
+
+    side = orient_with(qi)
+    for l in range(d + 1):  # ties: the first non-zero of x, v0, v1, ...
+        side = np.where(side != 0, side, orient_with(pi[S[ref, l]][None, :]))
+    inside = (own != 0)[None, :] & (side * own[None, :, None] > 0).all(axis=2)
+    assert (inside.sum(axis=1) <= 1).all()
+    expected = np.where(inside.any(axis=1), inside.argmax(axis=1), -1)
+    q = qi.astype(np.float64)
+    for threads in (1, 2, 16):
+        got = flipflop.Delaunay(pi.astype(np.float64), threads=threads).find_simplex(q)
+        assert np.array_equal(got, expected), (threads, np.flatnonzero(got != expected)[:5])
+    assert np.array_equal([t.find_simplex(x) for x in q], expected)
+    assert np.array_equal(t.find_simplex(q[::-1]), expected[::-1])
+    assert (expected >= 0).sum() > 60
+
+
 def test_delaunay_3d_extreme_magnitudes_and_bad_input():
     # scaled by a power of two the answer is the same (orient3d scales by s^3,
     # the power test by s^5 with weights scaled by s^2); subnormal coordinates

@@ -998,3 +998,30 @@ def test_same_diagram_at_any_thread_count(d, k):
             assert np.array_equal(v.simplex_vertex, base.simplex_vertex)
             assert np.array_equal(v.ridge_points, base.ridge_points)
             assert v.ridge_vertices == base.ridge_vertices and v.regions == base.regions
+
+
+@pytest.mark.parametrize("d,k", [(3, 5), (4, 3), (5, 3)])
+def test_certificate_neighbours_give_the_same_diagram(d, k):
+    """Voronoi takes the triangulation's neighbours from its certificate
+    where the kernel gives them (3D..9D) instead of matching facets again:
+    the same arrays as _flipflop.neighbors, and the same diagram as without
+    them, on grids, moved grids, weight ties and random points; neighbours
+    of the wrong shape or naming no simplex are refused."""
+    g = np.array(list(itertools.product(range(k), repeat=d)), float)
+    rng = np.random.default_rng(10 + d)
+    moved = g.copy()
+    rows = rng.choice(len(g), len(g) // 5, replace=False)
+    moved[rows] = np.nextafter(moved[rows], -np.inf)
+    cases = ((g, None), (moved + 1.0, None), (g, rng.integers(0, 2, len(g)).astype(float) * 0.25),
+             (rng.random((300, d)), None))
+    for p, w in cases:
+        s, _, nb = _ff.triangulate_with_neighbors(p, w, "cpu", False, 0, False)
+        assert nb is not None and np.array_equal(nb, _ff.neighbors(s))
+        with_nb, without = _ff.voronoi(p, w, s, 0, nb), _ff.voronoi(p, w, s, 0)
+        assert all(np.array_equal(a, b) for a, b in zip(with_nb, without))
+    with pytest.raises(ValueError, match="shape"):
+        _ff.voronoi(p, w, s, 0, np.ascontiguousarray(nb[:-1]))
+    bad = nb.copy()
+    bad[0, 0] = len(s)
+    with pytest.raises(ValueError, match="no.* exist|does not exist"):
+        _ff.voronoi(p, w, s, 0, bad)
