@@ -117,8 +117,9 @@ python: build
 #       the peers with make test's Release flags through its ccache, whose
 #       objects they then are (150 s of compile; peers/CMakeLists.txt),
 #       the test drivers at -O0 (FLIPFLOP_TESTS_OPT; the libraries at -O1) and
-#       without UBSan's null and alignment checks (FLIPFLOP_TESTS_FLAGS; the
-#       libraries keep them);
+#       without UBSan (FLIPFLOP_TESTS_FLAGS, stop 76; until then without its
+#       null and alignment checks only): ASan still checks the drivers' memory
+#       accesses, and every library keeps every UBSan check but vptr;
 #       the benchmarks (ctest bench.*) are not run, nor cli.progress_line (the
 #       terminal protocol of a 3*10^6-point reference run: 61 s under ASan;
 #       make test runs it), nor cli.demo (make demo's job: 10^5-10^6-point
@@ -134,13 +135,26 @@ SAN_CASES ?= 100
 # checks on polymorphic objects: mostly CGAL's and Boost's; flipflop has one
 # interface, ref::KernelPoint, whose misuse after destruction ASan reports).
 # Every other UBSan check stays on.
-ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fsanitize-recover=null
+# -fno-tree-pta: GCC's points-to analysis, whose time grows with the
+# addressable variables ASan makes of every stack array, was 272 of the 595 s
+# that predicates.cpp took to compile here (-ftime-report, the 2-core "AMD
+# EPYC" VM, stop 76); without it 266 s. The tests run ASan's checks either
+# way; only alias-based optimisations of -O1 are lost.
+ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fno-tree-pta -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fsanitize-recover=null
+# Drivers make asan does not build (FLIPFLOP_TESTS_SKIP): the predicates'
+# own arithmetic, whose run time is the test side's GMP oracle and whose
+# compile time the heaviest (ASan stage, this VM: oracle_sos_test 45 s of
+# compile + 134 s of tests, predicates_int_lattice_test 116 + 11,
+# predicates_stages_test 71 + 34, filter_sensitivity_test 27 s for no case
+# outside [long]). make test runs them in full; the fuzz stage runs the
+# predicates (fuzz_predicates) under clang's ASan and UBSan's arithmetic checks.
+ASAN_SKIP := oracle_sos_test;predicates_int_lattice_test;predicates_stages_test;filter_sensitivity_test
 
 asan: deps
 	@cmake $(call generator,build-asan) -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
 	  -DFLIPFLOP_OMP_KERNELS=OFF -DFLIPFLOP_EXAMPLES=OFF -DFLIPFLOP_FUZZ_REPLAYS=OFF -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF \
-	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=null,alignment" -DFLIPFLOP_MPI=OFF \
-	  -DFLIPFLOP_CHECKED_TESTS=OFF \
+	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=undefined" -DFLIPFLOP_MPI=OFF \
+	  -DFLIPFLOP_CHECKED_TESTS=OFF -DFLIPFLOP_TESTS_SKIP="$(ASAN_SKIP)" \
 	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
 	  { cat build-asan.configure.log; exit 1; }
@@ -159,7 +173,10 @@ asan: deps
 #       TSan here; make test runs them) — their property, large-input and
 #       rejection tests run the same OpenMP kernels here. The CGAL/Qhull peers
 #       and Catch2's main uninstrumented, the peers at -O0: no selected case
-#       calls a peer (peers/CMakeLists.txt).
+#       calls a peer (peers/CMakeLists.txt). The test drivers at -O0
+#       (FLIPFLOP_TESTS_OPT; the libraries they test at -O1): the selected
+#       cases spend their time in the kernels, and the drivers were 514 of
+#       the stage's 1372 s of compilation at -O1 (2-core "AMD EPYC" VM, stop 76).
 TSAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fsanitize=thread -fsanitize-ignorelist=$(CURDIR)/.ci/tsan.ignorelist
 TSAN_TESTS := kernels_test predicates_device_test hull3_cpu_test hull3_witness_test hull2_cpu_test rt2_cpu_test certify_rt2_cpu_test rt2_witness_test \
               rt3_cpu_test certify_rt3_cpu_test distributed_test rtd_hull_d_test \
@@ -174,7 +191,7 @@ ARCHER     := $(firstword $(wildcard /usr/lib/llvm-14/lib/libarcher.so /usr/lib/
 tsan: deps
 	@test -n "$(ARCHER)" || { echo "tsan: libarcher.so (libomp-14-dev) not found"; exit 1; }
 	@CC=clang CXX=clang++ cmake $(call generator,build-tsan) -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_TSAN=ON -DFLIPFLOP_LONG_TESTS=ON \
-	  -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF -DFLIPFLOP_PEERS_FLAGS=-O0 \
+	  -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF -DFLIPFLOP_PEERS_FLAGS=-O0 -DFLIPFLOP_TESTS_OPT=-O0 \
 	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" -DCMAKE_C_FLAGS="$(TSAN_FLAGS)" $(CCCL_ARG) \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan.configure.log 2>&1 || \
 	  { cat build-tsan.configure.log; exit 1; }

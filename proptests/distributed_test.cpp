@@ -92,7 +92,7 @@ std::vector<std::string> families(int dim) {
 }  // namespace
 
 TEST_CASE("distributed: every family, parts and blocks give the single-machine hull, each part certifies it",
-          "[distributed]") {
+          "[distributed][long]") {
   std::mt19937_64 rng(20261129);
   std::printf("distributed: seed 20261129\n");
   for (int dim : {2, 3})

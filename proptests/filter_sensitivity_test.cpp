@@ -899,11 +899,11 @@ const Expect kCaught[] = {
     {Bound::dd_apriori, 5, false, 0x1p20},       {Bound::dd_apriori, 5, true, 0x1p20},
     {Bound::dd_running, 3, false, 4},            {Bound::dd_running, 3, true, 0},
     {Bound::dd_running, 4, false, 4},            {Bound::dd_running, 4, true, 4},
-    {Bound::dd_running, 5, false, 8192},         {Bound::dd_running, 5, true, 32768},
+    {Bound::dd_running, 5, false, 8192},         {Bound::dd_running, 5, true, 16384},
     {Bound::plane_form, 3, false, 2},            {Bound::plane_form, 4, false, 2},
     {Bound::plane_form, 5, false, 4},            {Bound::plane_form, 6, false, 4},
-    {Bound::plane_form, 7, false, 4},            {Bound::plane_form, 8, false, 8},
-    {Bound::dd_wide, 6, false, 128},             {Bound::dd_wide, 6, true, 128},
+    {Bound::plane_form, 7, false, 4},            {Bound::plane_form, 8, false, 4},
+    {Bound::dd_wide, 6, false, 64},              {Bound::dd_wide, 6, true, 128},
     {Bound::dd_wide, 7, false, 256},             {Bound::dd_wide, 7, true, 512},
 };
 constexpr double kKernelCaught = 16;

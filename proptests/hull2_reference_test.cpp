@@ -166,7 +166,7 @@ TEST_CASE("hull2 reference: every 2D family, small n — equal to brute::hull2 a
 }
 
 TEST_CASE("hull2 reference: every 2D family up to 2000 points — certified, three algorithms identical",
-          "[hull2][reference]") {
+          "[hull2][reference][long]") {
   std::size_t runs = 0;
   for (const std::string& fam : families2d()) {
     if (fam == "collinear2") continue;  // lower-dimensional, rejected (tested above)

@@ -136,7 +136,7 @@ void add_grid(std::vector<std::vector<double>>& rows, int k, double w_step = -1)
 }  // namespace
 
 TEST_CASE("rt3 cli: rt3, dt3 and rtd --dim 3 write the reference's bytes with the cpu backend at 1, 2, 8 threads",
-          "[cli]") {
+          "[cli][long]") {
   TempDir t("flipflop_rt3_cli_");
   struct Gen {
     const char* kind;

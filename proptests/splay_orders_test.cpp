@@ -141,7 +141,7 @@ bool spans_3d(const PointSet& ps) { return ps.size() >= 4 && affine_dimension(ps
 
 }  // namespace
 
-TEST_CASE("splay: every order of splaying insertions reaches the brute-force hull: generator families", "[splay][orders]") {
+TEST_CASE("splay: every order of splaying insertions reaches the brute-force hull: generator families", "[splay][orders][long]") {
   Totals tot;
   // 7 points: a random, a lattice and a cospherical family (each search
   // reaches 4 000 - 25 000 states); 5 and 6 points: every family.

@@ -127,7 +127,7 @@ TEST_CASE("splay: star splaying from the pipeline's, random, and randomly ordere
   });
 }
 
-TEST_CASE("splay: every generator family: brute force (60 points) and certifier (1000 points)", "[splay]") {
+TEST_CASE("splay: every generator family: brute force (60 points) and certifier (1000 points)", "[splay][long]") {
   for (const std::string& fam : test::splay_families())
     for (std::uint64_t seed = 1; seed <= 2; ++seed) {
       INFO(fam << " seed " << seed);

@@ -235,7 +235,7 @@ TEST_CASE("strict: view equals CGAL: 4..40 points, random and degenerate", "[str
   });
 }
 
-TEST_CASE("strict: view equals CGAL on every generator family", "[strict]") {
+TEST_CASE("strict: view equals CGAL on every generator family", "[strict][long]") {
   for (const std::string& fam : test::splay_families())
     for (std::size_t n : {8u, 50u, 3000u}) {
       const PointSet ps = test::family3(fam, n, 5);

@@ -453,7 +453,15 @@ inline InnerBox inner_box(const PointSet& ps, const std::vector<Index>& poly, co
       b.lo[j] = centre[j] + t * (lo[j] - centre[j]);
       b.hi[j] = centre[j] + t * (hi[j] - centre[j]);
     }
-    if (!(b.lo[0] < b.hi[0] && b.lo[1] < b.hi[1])) continue;  // also NaN / Inf
+    // finite corners only: near the largest doubles lo - centre or
+    // hi - centre overflows to an infinity, which the comparisons below let
+    // through, and the exact test refuses a non-finite corner (the fuzz
+    // stage's hull2 target, stop 76: y in {-DBL_MAX, 0, 1.1e301, DBL_MAX}
+    // threw "exact predicate on a non-finite value";
+    // fuzz/corpus/hull2/crash-7ef39146...)
+    if (!(std::isfinite(b.lo[0]) && std::isfinite(b.lo[1]) && std::isfinite(b.hi[0]) && std::isfinite(b.hi[1])))
+      continue;
+    if (!(b.lo[0] < b.hi[0] && b.lo[1] < b.hi[1])) continue;  // empty
     const double corners[4][2] = {{b.lo[0], b.lo[1]}, {b.hi[0], b.lo[1]}, {b.hi[0], b.hi[1]}, {b.lo[0], b.hi[1]}};
     bool inside = true;
     for (std::size_t k = 0; k < poly.size() && inside; ++k)
