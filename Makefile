@@ -8,7 +8,7 @@ PKGS  := cmake g++ make clang lld libomp-14-dev libgmp-dev libmpfr-dev libcgal-d
          python3-venv python3-pip python3-scipy python3-pytest python3-hypothesis python3-matplotlib ccache ninja-build libtet1.5-dev \
          libopenmpi-dev openmpi-bin python3-dask python3-distributed
 
-.PHONY: all deps configure build demo test python sanitize asan tsan clean cuda
+.PHONY: all deps configure build demo test python sanitize asan asan-full tsan clean cuda
 
 all: build
 
@@ -101,7 +101,71 @@ python: build
 	  $(PYVENV)/bin/python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 # ---- sanitizers (run by .ci/run) ---------------------------------------------
-# asan: AddressSanitizer + UndefinedBehaviorSanitizer build of the whole test
+# asan: one clang build (build-asan) of the libraries with AddressSanitizer,
+#       UBSan's arithmetic and control checks and libFuzzer's coverage
+#       (-fsanitize=fuzzer-no-link), shared by two jobs: a selection of the
+#       test suite (ASAN_TESTS, below; its [long] cases and the full
+#       RapidCheck count are make test's) and the libFuzzer targets, which
+#       link the same libraries (FLIPFLOP_FUZZ_SHARED_LIBS) and which .ci/run
+#       then runs (fuzz/run_all.sh SECONDS build-asan). Until stop 77 the
+#       ASan suite was a gcc build of its own (now make asan-full, below) and
+#       the fuzz stage compiled instrumented copies of every library again with
+#       clang: on the 2-core "AMD EPYC" VM (L3 8 MiB) the two stages were
+#       1433 + 664 s of .ci/run's 4543 s (stop 76), and CI stopped stop 75's run
+#       at 5400 s. What this build leaves out and where it runs instead:
+#       the other test drivers and the [long] cases (make test, in Release;
+#       make asan-full runs every driver under gcc's ASan + UBSan), UBSan's
+#       checks other than the arithmetic and control ones (make asan-full),
+#       the thrust/OpenMP kernels' tests (make tsan, make test; the fuzz
+#       targets hull2, kernels, rt2, hull3 and rt3 run those kernels here),
+#       the corpus replays (each fuzz target runs its corpus first), the
+#       checked reference, the example, flipflop-mpi. The CGAL/Qhull peers and
+#       Catch2's main are compiled uninstrumented (FLIPFLOP_SANITIZE_THIRD_PARTY=OFF),
+#       the peers at -O1 (the reference and CLI drivers use CGAL as an
+#       oracle on small inputs).
+#       The libraries at -O2 with their assertions (CMAKE_BUILD_TYPE=None:
+#       no NDEBUG, where the fuzz stage's own build is Release), the test
+#       drivers at -O0 with ASan only (no UBSan, no coverage).
+SAN_CASES ?= 100
+# UBSan's checks in make asan: the fuzz targets' set (fuzz/CMakeLists.txt:
+# flipflop_fuzz_ubsan, whose comment gives the measured cost of the others).
+ASAN_UBSAN := signed-integer-overflow,shift,float-cast-overflow,integer-divide-by-zero,bool,enum,return,unreachable,vla-bound
+ASAN_FLAGS := -O2 -g1 -fno-omit-frame-pointer -fsanitize=address,$(ASAN_UBSAN) -fno-sanitize-recover=undefined \
+              -fsanitize-ignorelist=$(CURDIR)/.ci/ubsan.ignorelist -fsanitize=fuzzer-no-link
+# The test drivers make asan builds and runs (FLIPFLOP_TESTS_ONLY): the input
+# layer and the command line, the predicates' composed path, the certifiers,
+# every reference algorithm and every CPU kernel, one driver each where
+# several test the same code (the orders, invariance, oracle, strict-view and
+# checked drivers are make test's).
+ASAN_TESTS := io_test cli_test gen_test gen_planes_test values_test regression_test inner_ball_test \
+              predicates_mixed_test sos_test certify_test rtd_certify_test \
+              hull2_reference_test ffhull_reference_test splay_reference_test splay_stars_test \
+              twist_flip_hull_test twist_flip_precondition_test twist_flip_stages_test \
+              rt2_reference_test rt2_strict_test rtd_reference_test rtd_strict_test \
+              instant_flip_insert_test instant_flip_dynamic_test instant_flip_timeline_test instant_flip_rebuild_test \
+              instant_flip_perturbation_order_test instant_flip_rt_plus_2_test instant_flip_cli_test \
+              kernels_test hull2_cpu_test hull3_cpu_test hull3_witness_test rt2_cpu_test certify_rt2_cpu_test \
+              rt2_witness_test rt3_cpu_test certify_rt3_cpu_test rtd_hull_d_test rtd_cavity_test rtd_flips_test \
+              distributed_test
+asan_space := $(subst ,, )
+ASAN_TESTS_LIST = $(subst $(asan_space),;,$(strip $(ASAN_TESTS)))
+
+asan: deps
+	@CC=clang CXX=clang++ cmake $(call generator,build-asan) -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF \
+	  -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF -DFLIPFLOP_TESTS_ONLY="$(ASAN_TESTS_LIST)" \
+	  -DFLIPFLOP_FUZZ=ON -DFLIPFLOP_FUZZ_SHARED_LIBS=ON -DFLIPFLOP_EXAMPLES=OFF -DFLIPFLOP_FUZZ_REPLAYS=OFF \
+	  -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF -DFLIPFLOP_PEERS_FLAGS=-O1 -DFLIPFLOP_MPI=OFF -DFLIPFLOP_CHECKED_TESTS=OFF \
+	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=undefined,fuzzer-no-link" $(CCCL_ARG) \
+	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
+	  { cat build-asan.configure.log; exit 1; }
+	cmake --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure --no-tests=error -j $(JOBS) \
+	  -E '^(bench\.|cli\.progress_line$$|cli\.demo$$)'
+
+# asan-full: (not run by .ci/run since stop 77; make asan was this until then)
+#       AddressSanitizer + UndefinedBehaviorSanitizer build of the whole test
 #       suite but the test cases tagged [long] (the deterministic sweeps and the
 #       large inputs, FLIPFLOP_LONG_TESTS=OFF), with fewer RapidCheck cases per
 #       property: the sanitizers multiply run time; the Release suite (make
@@ -140,7 +204,7 @@ SAN_CASES ?= 100
 # that predicates.cpp took to compile here (-ftime-report, the 2-core "AMD
 # EPYC" VM, stop 76); without it 266 s. The tests run ASan's checks either
 # way; only alias-based optimisations of -O1 are lost.
-ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fno-tree-pta -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fsanitize-recover=null
+ASAN_FULL_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fno-tree-pta -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=undefined -fsanitize-recover=null
 # Drivers make asan does not build (FLIPFLOP_TESTS_SKIP): the predicates'
 # own arithmetic, whose run time is the test side's GMP oracle and whose
 # compile time the heaviest (ASan stage, this VM: oracle_sos_test 45 s of
@@ -148,18 +212,18 @@ ASAN_FLAGS := -O1 -g1 -fno-omit-frame-pointer -fno-tree-pta -fsanitize=address,u
 # predicates_stages_test 71 + 34, filter_sensitivity_test 27 s for no case
 # outside [long]). make test runs them in full; the fuzz stage runs the
 # predicates (fuzz_predicates) under clang's ASan and UBSan's arithmetic checks.
-ASAN_SKIP := oracle_sos_test;predicates_int_lattice_test;predicates_stages_test;filter_sensitivity_test
+ASAN_FULL_SKIP := oracle_sos_test;predicates_int_lattice_test;predicates_stages_test;filter_sensitivity_test
 
-asan: deps
-	@cmake $(call generator,build-asan) -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
+asan-full: deps
+	@cmake $(call generator,build-asan-full) -S . -B build-asan-full -DCMAKE_BUILD_TYPE=None -DFLIPFLOP_CUDA=OFF -DFLIPFLOP_RC_CASES=$(SAN_CASES) -DFLIPFLOP_LONG_TESTS=OFF \
 	  -DFLIPFLOP_OMP_KERNELS=OFF -DFLIPFLOP_EXAMPLES=OFF -DFLIPFLOP_FUZZ_REPLAYS=OFF -DFLIPFLOP_SANITIZE_THIRD_PARTY=OFF \
 	  -DFLIPFLOP_TESTS_OPT=-O0 -DFLIPFLOP_TESTS_FLAGS="-fno-sanitize=undefined" -DFLIPFLOP_MPI=OFF \
-	  -DFLIPFLOP_CHECKED_TESTS=OFF -DFLIPFLOP_TESTS_SKIP="$(ASAN_SKIP)" \
-	  -DCMAKE_CXX_FLAGS="$(ASAN_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FLAGS)" \
-	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan.configure.log 2>&1 || \
-	  { cat build-asan.configure.log; exit 1; }
-	cmake --build build-asan -j $(JOBS)
-	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  -DFLIPFLOP_CHECKED_TESTS=OFF -DFLIPFLOP_TESTS_SKIP="$(ASAN_FULL_SKIP)" \
+	  -DCMAKE_CXX_FLAGS="$(ASAN_FULL_FLAGS)" -DCMAKE_C_FLAGS="$(ASAN_FULL_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > build-asan-full.configure.log 2>&1 || \
+	  { cat build-asan-full.configure.log; exit 1; }
+	cmake --build build-asan-full -j $(JOBS)
+	cd build-asan-full && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$(CURDIR)/.ci/ubsan.supp ctest --output-on-failure --no-tests=error -j $(JOBS) \
 	  -E '^(bench\.|cli\.progress_line$$|cli\.demo$$)' 
 
@@ -203,4 +267,4 @@ tsan: deps
 sanitize: asan tsan
 
 clean:
-	rm -rf python/build $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log build-tsan build-tsan.configure.log
+	rm -rf python/build $(BUILD) $(BUILD).configure.log build-asan build-asan.configure.log build-asan-full build-asan-full.configure.log build-tsan build-tsan.configure.log
