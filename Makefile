@@ -127,9 +127,9 @@ python: build
 #       no NDEBUG, where the fuzz stage's own build is Release), the test
 #       drivers at -O0 with ASan only (no UBSan, no coverage).
 SAN_CASES ?= 100
-# UBSan's checks in make asan: the fuzz targets' set (fuzz/CMakeLists.txt:
-# flipflop_fuzz_ubsan, whose comment gives the measured cost of the others).
-ASAN_UBSAN := signed-integer-overflow,shift,float-cast-overflow,integer-divide-by-zero,bool,enum,return,unreachable,vla-bound
+# UBSan's checks in make asan: the fuzz targets' set (.ci/fuzz_ubsan_checks;
+# fuzz/CMakeLists.txt gives the measured cost of the others).
+ASAN_UBSAN := $(shell grep '^[a-z]' .ci/fuzz_ubsan_checks)
 ASAN_FLAGS := -O2 -g1 -fno-omit-frame-pointer -fsanitize=address,$(ASAN_UBSAN) -fno-sanitize-recover=undefined \
               -fsanitize-ignorelist=$(CURDIR)/.ci/ubsan.ignorelist -fsanitize=fuzzer-no-link
 # The test drivers make asan builds and runs (FLIPFLOP_TESTS_ONLY): the input
