@@ -125,13 +125,14 @@ TEST_CASE("ghull cuda-omp: every generator family up to 3000 points equals the r
   });
 }
 
-TEST_CASE("ghull cuda-omp: any grid, fill and render size give the reference's hull (shrinking)", "[ghull_cuda_omp]") {
+TEST_CASE("ghull cuda-omp: any grid, fill, render size and band count give the reference's hull (shrinking)", "[ghull_cuda_omp]") {
   test::prop_scaled("coarse and fine digital spaces: only the work changes", 20, [] {
     const PointSet ps = *test::thinned(test::family_points(3, 4, 1500, false));
     kernels::GhullOptions o;
     o.grid = *rc::gen::element<std::uint32_t>(4, 8, 16, 64, 256);
     o.render = *rc::gen::element<std::uint32_t>(0, 4, 32);
     o.fill = *rc::gen::element(0.3, 0.8, 0.98);
+    o.bands = *rc::gen::element<std::uint32_t>(0, 1, 3, 7, 64);
     check_rc(ps, o);
   });
 }

@@ -116,6 +116,38 @@ std::string voronoi_error(const std::vector<double>& s, std::uint32_t G, const s
   return "";
 }
 
+// The labels by the definition (ghull.hpp): per pixel the site of least
+// site_distance over all the face's sites; of several, the one whose pixel
+// (u, v) is least, u first.
+std::vector<std::uint32_t> brute_labels(const std::vector<double>& s, std::uint32_t G,
+                                        const std::vector<std::uint32_t>& sites) {
+  const std::size_t GG = std::size_t{G} * G;
+  std::vector<std::uint32_t> labels(6 * GG, kNone);
+  for (std::uint32_t f = 0; f < 6; ++f) {
+    struct Site {
+      std::int64_t u, v, hq;  // its pixel, its squared height in D's units
+      std::uint32_t p;
+    };
+    std::vector<Site> on_face;
+    for (std::size_t q = 0; q < GG; ++q)
+      if (const std::uint32_t p = sites[f * GG + q]; p != kNone) {
+        const Seen at = seen_from(s, G, f, p);
+        on_face.push_back({at.u, at.v, std::llround(at.h * at.h * 65536.0), p});
+      }
+    for (std::uint32_t q = 0; q < GG; ++q) {
+      const std::int64_t i = q % G, j = q / G;
+      std::int64_t best = std::numeric_limits<std::int64_t>::max(), bu = 0, bv = 0;
+      std::uint32_t l = kNone;
+      for (const Site& t : on_face) {
+        const std::int64_t d = ((i - t.u) * (i - t.u) + (j - t.v) * (j - t.v)) * 65536 + t.hq;  // brute_distance
+        if (d < best || (d == best && (t.u < bu || (t.u == bu && t.v < bv)))) best = d, bu = t.u, bv = t.v, l = t.p;
+      }
+      labels[f * GG + q] = l;
+    }
+  }
+  return labels;
+}
+
 // The working sets by geometry: each pixel's four corners in 3D (integer
 // points of B's surface); the pixels sharing a corner are that vertex's.
 void brute_working_sets(const std::vector<std::uint32_t>& labels, std::uint32_t G, std::uint32_t n,
@@ -255,6 +287,52 @@ TEST_CASE("ghull stage 1: digital Voronoi labels are nearest sites (exact, brute
     const std::vector<std::uint32_t> labels = st::digital_voronoi(c.s, c.G, &sites);
     REQUIRE(labels.size() == 6 * std::size_t{c.G} * c.G);
     REQUIRE(voronoi_error(c.s, c.G, sites, labels) == "");
+    REQUIRE(diff(labels, brute_labels(c.s, c.G, sites)) == "");  // the tie rule too
+  }
+}
+
+// PBA's bands (digital_voronoi.cuh): every band count, dividing G or not,
+// one band, one pixel a band and more bands than pixels, gives the labels of
+// the definition, ties included. The ramps put the sites of a row or column
+// at heights rising (falling) with the position, so that the parabola least
+// at a band's first pixel lies bands before (after) it: the colouring's walk
+// back (forward) over other bands' survivors, and merges that empty whole
+// bands.
+TEST_CASE("ghull stage 1: PBA's bands give the definition's labels at any band count", "[ghull][cuda-omp]") {
+  std::mt19937_64 rng(76);
+  for (int k = 0; k < 160; ++k) {
+    Case c;
+    if (k % 2 == 0) {
+      c = make_case(rng, 1, 48, 150);
+    } else {  // ramps on face z = 0 (rows) or on face x = 0 (columns: the same pattern along y)
+      c.G = std::uniform_int_distribution<std::uint32_t>(2, 64)(rng);
+      const double G = c.G;
+      const double slope = std::vector<double>{0.25, 0.5, 1, 2, 3}[rng() % 5];
+      const bool rising = rng() % 2, columns = rng() % 2;
+      const std::uint32_t lines = 1 + static_cast<std::uint32_t>(rng() % 4);
+      for (std::uint32_t l = 0; l < lines; ++l) {
+        const double w = static_cast<double>(rng() % c.G) + 0.5;
+        for (std::uint32_t a = 0; a < c.G; ++a) {
+          if (rng() % 8 == 0) continue;  // a few positions without a site
+          const double t = rising ? a : c.G - 1 - a;
+          const double h = std::min(G - 0.25, 0.25 + slope * t + 0.01 * static_cast<double>(rng() % 3));
+          if (columns)
+            c.s.insert(c.s.end(), {h, w, a + 0.5});  // face 0 (x = 0): u along y, v along z
+          else
+            c.s.insert(c.s.end(), {a + 0.5, w, h});  // face 4 (z = 0): u along x, v along y
+        }
+      }
+      if (c.s.empty()) c.s = {0.5, 0.5, 0.5};
+    }
+    INFO("case " << k << ": " << describe(c));
+    std::vector<std::uint32_t> sites;
+    const std::vector<std::uint32_t> first = st::digital_voronoi(c.s, c.G, &sites, 1);
+    const std::vector<std::uint32_t> want = brute_labels(c.s, c.G, sites);
+    REQUIRE(diff(first, want) == "");
+    for (std::uint32_t m : {2u, 3u, 4u, 5u, 7u, 8u, 13u, 32u, c.G / 2 + 1, c.G, 2 * c.G + 1, 0u}) {
+      INFO("bands " << m);
+      REQUIRE(diff(st::digital_voronoi(c.s, c.G, nullptr, m), want) == "");
+    }
   }
 }
 

@@ -37,19 +37,25 @@
 //                 Hq_s = round(h_s^2 2^Q)   (kQ = 16 fractional bits),
 //             an integer — the squared distance with the squared height in
 //             fixed point. PBA [CTMT10] computes the diagram by the separable
-//             transform, and so does this, exactly: pass 1, one thread per
-//             (face, column u): g(u, j) = min over the column's sites of
-//             (j - v_s)^2 2^Q + Hq_s and its site, for every row j; pass 2,
-//             one thread per (face, row j): label(i, j) = the site of
-//             min over columns u of (i - u)^2 2^Q + g(u, j) (columns without
-//             a site skipped). min over all sites = min over columns of the
-//             min within the column, so the two passes give the least D.
-//             Each pass is a 1D lower envelope of parabolas
-//             (Felzenszwalb–Huttenlocher): a stack of the parabolas that are
-//             least somewhere, then a sweep over the positions. PBA's bands
-//             (a row split among threads, merged afterwards) and its
-//             transposes for coalesced access are not done: one thread per
-//             line, its stack a slice of a preallocated buffer.
+//             transform, and so does this, exactly: pass 1 over the columns
+//             (face, u): g(u, j) = min over the column's sites of
+//             (j - v_s)^2 2^Q + Hq_s and its site, for every row j; pass 2
+//             over the rows (face, j): label(i, j) = the site of min over
+//             columns u of (i - u)^2 2^Q + g(u, j) (columns without a site
+//             skipped). min over all sites = min over columns of the min
+//             within the column, so the two passes give the least D. Each
+//             pass is a 1D lower envelope of parabolas per line
+//             (Felzenszwalb–Huttenlocher's stack of the parabolas that are
+//             least somewhere, then a sweep over the positions), computed
+//             with PBA's bands: every line cut into m bands, one thread per
+//             (line, band) builds the band's own stack, log2 m rounds merge
+//             neighbouring groups of bands, and one thread per (line, band)
+//             colours the band's pixels (BandStacks' comment below).
+//             PBA's phase 1 is a nearest-site sweep per column band, which
+//             holds for sites of equal weight only; here the sites carry
+//             their heights Hq_s, so pass 1 is an envelope pass like pass 2.
+//             PBA's transposes for coalesced access are not done: the
+//             passes read the pixels in place.
 // Exactness: every comparison is in int64, no floating point after Hq. The
 // parabolas y = (x - a)^2 2^Q + y_a and y = (x - b)^2 2^Q + y_b, a < b, meet
 // at x = N / (2^{Q+1} d), N = (b^2 - a^2) 2^Q + y_b - y_a, d = b - a; two
@@ -59,9 +65,10 @@
 // so Hq <= 2^38; every value y (an Hq, a g, a D) is below
 // 2 2^22 2^16 + 2^38 < 2^40; |N| < 2^38 + 2^40 < 2^41; N d < 2^52 and
 // x d 2^{Q+1} < 2^39 — all far below 2^63. Ties between sites of equal D go
-// to one of them, the same on every run (each line is one thread's
-// sequential sweep). The digital diagram only decides where star splaying
-// starts (ghull.hpp): this fixed point cannot change the hull.
+// to the site of least pixel (u, v), u first (pass 2 keeps the least column,
+// pass 1 the least row in it), at every band count and thread count. The
+// digital diagram only decides where star splaying starts (ghull.hpp): this
+// fixed point cannot change the hull.
 //
 // ============================================================================
 // Stage 2's dual: the working sets
@@ -119,9 +126,12 @@ constexpr int kQ = 16;                      // fractional bits of the squared he
 constexpr int64_t kOne = int64_t{1} << kQ;  // 1 pixel^2 in D's units
 // Grains (backend::run_step): below them one thread does the step in the
 // OpenMP build. Per point-face or per vertex items are a few operations;
-// per line items sweep G pixels (twice).
+// per band items sweep a band's pixels.
 constexpr std::size_t kItemGrain = 4096;
-constexpr std::size_t kLineGrain = 256;
+constexpr std::size_t kBandGrain = 1024;  // per (line, band) items: up to kBandLength pixels each
+// PBA's band length by default (digital_voronoi's bands = 0): G / 32 bands a
+// line, one thread per 32 pixels of a column or row in each step.
+constexpr std::uint32_t kBandLength = 32;
 
 // ---- the grid ------------------------------------------------------------------------
 // The two axes a face of axis `axis` spans, in increasing order.
@@ -207,41 +217,212 @@ FF_HD inline bool before(Meet s, int64_t x) { return s.num < x * s.d * (2 * kOne
 // The lower envelope of y = (x - a)^2 2^Q + line.value(a) over the positions
 // a in [0, G) with line.has(a), evaluated at x = 0 .. G-1: line.put(x, y, a)
 // with a the least parabola there (line.none(x) where the line has none).
-// stack: G entries of scratch. Felzenszwalb–Huttenlocher, with the meeting
-// points compared exactly (Meet): the top parabola leaves the stack when the
-// new one meets it no later than it meets the one below (it is least at no
-// point but a tie); the stack's meeting points then increase strictly and
-// the sweep moves up at each one it passes.
-template <class Line>
-FF_HD void lower_envelope(const Line& line, uint32_t G, uint32_t* stack) {
-  uint32_t m = 0;
-  for (uint32_t x = 0; x < G; ++x) {
-    if (!line.has(x)) continue;
-    const int64_t yx = line.value(x);
-    while (m >= 2) {
-      const uint32_t t = stack[m - 1], s = stack[m - 2];
-      const int64_t yt = line.value(t);
-      if (!not_after(meet(t, yt, x, yx), meet(s, line.value(s), t, yt))) break;
-      --m;
-    }
-    stack[m++] = x;
-  }
-  if (m == 0) {
-    for (uint32_t x = 0; x < G; ++x) line.none(x);
-    return;
-  }
-  uint32_t k = 0;
-  int64_t yk = line.value(stack[0]);
-  for (uint32_t x = 0; x < G; ++x) {
-    while (k + 1 < m) {
-      const int64_t yn = line.value(stack[k + 1]);
-      if (!before(meet(stack[k], yk, stack[k + 1], yn), x)) break;
-      ++k, yk = yn;
-    }
-    const int64_t dx = static_cast<int64_t>(x) - stack[k];
-    line.put(x, dx * dx * kOne + yk, stack[k]);
-  }
+// Felzenszwalb–Huttenlocher's stack, with the meeting points compared exactly
+// (Meet): the top parabola t leaves the stack when the new one x meets it no
+// later than t meets the one below, s (`hidden`: t is least at no point but
+// a tie). The stack is then the strict lower hull of the points (a, a^2 2^Q
+// + value(a)) — a set that does not depend on the order of the pushes and
+// pops that found it —, its meeting points b_0 < b_1 < ... increase
+// strictly, and the parabola put at x is stack element k = #{b_i < x}: the
+// least at x, a tie going to the smaller position.
+//
+// PBA's bands [CTMT10] (thesis §7.2): a line is cut into m bands of
+// consecutive positions, and each step is one thread per (line, band)
+// instead of per line:
+//   build  each band's own stack, over its positions only (BandStacks);
+//   merge  log2 m rounds; round r merges groups of 2^r bands pairwise
+//          (MergeBands): the left group's top leaves while it is hidden by
+//          the element below it and the right group's bottom, the right
+//          group's bottom leaves while it is hidden by the left's top and
+//          the element above it — the lower tangent of two x-separated
+//          strictly convex chains (the merge of divide-and-conquer hulls:
+//          an element leaves only when it lies on or above a segment
+//          between two points of the union, so it is no strict hull vertex
+//          of the union; where neither test removes anything, the two ends
+//          are both chains' points of tangency). Each band keeps its
+//          survivors as the slice [lo, hi) of its own positions' scratch,
+//          so the groups' lists are the bands' slices in order, empty ones
+//          skipped;
+//   color  each band sweeps its own positions (ColorBand), starting from the
+//          list element least at its first position x0: the last element at
+//          a position <= x0, then back while the element before it meets it
+//          at or after x0, forward while the one after it meets it before
+//          x0 (k = #{b_i < x0} from any start, b strictly increasing).
+// The result is the strict lower hull of the whole line, as one thread's
+// stack finds it, so every band count gives the same labels; m = 1 is
+// Felzenszwalb–Huttenlocher's single sweep.
+FF_HD inline bool hidden(uint32_t s, int64_t ys, uint32_t t, int64_t yt, uint32_t x, int64_t yx) {
+  return not_after(meet(t, yt, x, yx), meet(s, ys, t, yt));
 }
+
+// m bands of B = ceil(G / m) positions (m clamped to [1, G] and lowered so
+// that no band is empty); band b holds positions [b B, min(G, (b + 1) B)).
+struct Banding {
+  uint32_t G, m, B;
+  FF_HD uint32_t begin(uint32_t b) const { return b * B < G ? b * B : G; }
+  FF_HD uint32_t end(uint32_t b) const { return (b + 1) * B < G ? (b + 1) * B : G; }
+};
+inline Banding banding(uint32_t G, uint32_t m) {
+  if (m < 1) m = 1;
+  if (m > G) m = G;
+  const uint32_t B = (G + m - 1) / m;
+  return {G, (G + B - 1) / B, B};
+}
+
+// The survivors of line `line`'s bands: band b's slice [lo, hi) of the
+// line's scratch (positions, increasing), bands in order.
+struct BandList {
+  const uint32_t* st;  // the line's scratch (G entries)
+  const uint32_t* lo;  // the line's m slice starts
+  const uint32_t* hi;  // ... and ends
+  uint32_t m;
+  struct Ref {
+    uint32_t band, at;  // at: an index into st within band's slice
+  };
+  FF_HD bool last_before(uint32_t b, Ref& r) const {  // the last element of bands < b
+    for (uint32_t c = b; c-- > 0;)
+      if (hi[c] > lo[c]) return r = {c, hi[c] - 1}, true;
+    return false;
+  }
+  FF_HD bool first_from(uint32_t b, uint32_t e, Ref& r) const {  // the first element of bands [b, e)
+    for (uint32_t c = b; c < e; ++c)
+      if (hi[c] > lo[c]) return r = {c, lo[c]}, true;
+    return false;
+  }
+  FF_HD bool prev(Ref r, Ref& p) const {
+    if (r.at > lo[r.band]) return p = {r.band, r.at - 1}, true;
+    return last_before(r.band, p);
+  }
+  FF_HD bool next(Ref r, Ref& n) const {
+    if (r.at + 1 < hi[r.band]) return n = {r.band, r.at + 1}, true;
+    return first_from(r.band + 1, m, n);
+  }
+};
+
+// build: item t = line m + b.
+template <class Lines>
+struct BandStacks {
+  Lines lines;
+  Banding bd;
+  uint32_t* stack;  // G per line
+  uint32_t* lo;     // m per line
+  uint32_t* hi;
+  FF_HD void operator()(uint32_t t) const {
+    const uint32_t l = t / bd.m, b = t % bd.m;
+    const auto line = lines(l);
+    uint32_t* st = stack + std::size_t{l} * bd.G;
+    const uint32_t x0 = bd.begin(b), x1 = bd.end(b);
+    uint32_t top = x0;
+    for (uint32_t x = x0; x < x1; ++x) {
+      if (!line.has(x)) continue;
+      const int64_t yx = line.value(x);
+      while (top - x0 >= 2) {
+        const uint32_t u = st[top - 1], s = st[top - 2];
+        if (!hidden(s, line.value(s), u, line.value(u), x, yx)) break;
+        --top;
+      }
+      st[top++] = x;
+    }
+    lo[t] = x0;
+    hi[t] = top;
+  }
+};
+
+// merge, round with groups of `half` bands: item t = line pairs + p merges
+// bands [p 2 half, p 2 half + half) with [p 2 half + half, p 2 half + 2 half).
+template <class Lines>
+struct MergeBands {
+  Lines lines;
+  Banding bd;
+  uint32_t half, pairs;
+  const uint32_t* stack;
+  uint32_t* lo;
+  uint32_t* hi;
+  FF_HD void operator()(uint32_t t) const {
+    const uint32_t l = t / pairs, s0 = (t % pairs) * 2 * half, mid = s0 + half;
+    if (mid >= bd.m) return;
+    const uint32_t e = mid + half < bd.m ? mid + half : bd.m;
+    const auto line = lines(l);
+    uint32_t* L0 = lo + std::size_t{l} * bd.m;
+    uint32_t* H0 = hi + std::size_t{l} * bd.m;
+    const BandList list{stack + std::size_t{l} * bd.G, L0, H0, bd.m};
+    using Ref = BandList::Ref;
+    for (;;) {
+      Ref a, x;  // the left group's top, the right group's bottom
+      bool left = false;
+      for (uint32_t c = mid; c-- > s0;)
+        if (H0[c] > L0[c]) {
+          a = {c, H0[c] - 1}, left = true;
+          break;
+        }
+      if (!left || !list.first_from(mid, e, x)) return;
+      const uint32_t pa = list.st[a.at], px = list.st[x.at];
+      const int64_t ya = line.value(pa), yx = line.value(px);
+      Ref r;
+      if (list.prev(a, r) && r.band >= s0) {
+        const uint32_t pr = list.st[r.at];
+        if (hidden(pr, line.value(pr), pa, ya, px, yx)) {
+          --H0[a.band];
+          continue;
+        }
+      }
+      if (list.next(x, r) && r.band < e) {
+        const uint32_t pr = list.st[r.at];
+        if (hidden(pa, ya, px, yx, pr, line.value(pr))) {
+          ++L0[x.band];
+          continue;
+        }
+      }
+      return;
+    }
+  }
+};
+
+// color: item t = line m + b.
+template <class Lines>
+struct ColorBand {
+  Lines lines;
+  Banding bd;
+  const uint32_t* stack;
+  const uint32_t* lo;
+  const uint32_t* hi;
+  FF_HD void operator()(uint32_t t) const {
+    const uint32_t l = t / bd.m, b = t % bd.m;
+    const auto line = lines(l);
+    const BandList list{stack + std::size_t{l} * bd.G, lo + std::size_t{l} * bd.m, hi + std::size_t{l} * bd.m, bd.m};
+    using Ref = BandList::Ref;
+    const uint32_t x0 = bd.begin(b), x1 = bd.end(b);
+    Ref k;  // the last element at a position <= x0, else the first one
+    bool found = list.hi[b] > list.lo[b] && list.st[list.lo[b]] == x0;
+    if (found)
+      k = {b, list.lo[b]};
+    else
+      found = list.last_before(b, k) || list.first_from(b, bd.m, k);
+    if (!found) {  // no parabola on the whole line
+      for (uint32_t x = x0; x < x1; ++x) line.none(x);
+      return;
+    }
+    uint32_t pk = list.st[k.at];
+    int64_t yk = line.value(pk);
+    Ref r;
+    while (list.prev(k, r)) {  // back while the one before is least at x0 (a tie: the smaller position)
+      const uint32_t pr = list.st[r.at];
+      const int64_t yr = line.value(pr);
+      if (before(meet(pr, yr, pk, yk), x0)) break;
+      k = r, pk = pr, yk = yr;
+    }
+    for (uint32_t x = x0; x < x1; ++x) {
+      while (list.next(k, r)) {
+        const uint32_t pn = list.st[r.at];
+        const int64_t yn = line.value(pn);
+        if (!before(meet(pk, yk, pn, yn), x)) break;
+        k = r, pk = pn, yk = yn;
+      }
+      const int64_t dx = static_cast<int64_t>(x) - pk;
+      line.put(x, dx * dx * kOne + yk, pk);
+    }
+  }
+};
 
 // Pass 1's line: column u of face f; its parabolas are the sites, value Hq;
 // writes g and its site (arg) per row.
@@ -275,27 +456,21 @@ struct RowLine {
   FF_HD void put(uint32_t i, int64_t, uint32_t u) const { labels[at(i)] = arg[at(u)]; }
   FF_HD void none(uint32_t i) const { labels[at(i)] = kNoSite; }
 };
-// Item t = f G + line.
-struct Columns {
+// Line l = f G + (column u or row j).
+struct ColumnLines {
   const double* scaled;
   const uint32_t* sites;
   uint64_t* g;
   uint32_t* arg;
-  uint32_t* stack;
   uint32_t G;
-  FF_HD void operator()(uint32_t t) const {
-    lower_envelope(ColumnLine{scaled, sites, g, arg, G, t / G, t % G}, G, stack + std::size_t{t} * G);
-  }
+  FF_HD ColumnLine operator()(uint32_t l) const { return {scaled, sites, g, arg, G, l / G, l % G}; }
 };
-struct Rows {
+struct RowLines {
   const uint64_t* g;
   const uint32_t* arg;
   uint32_t* labels;
-  uint32_t* stack;
   uint32_t G;
-  FF_HD void operator()(uint32_t t) const {
-    lower_envelope(RowLine{g, arg, labels, G, t / G, t % G}, G, stack + std::size_t{t} * G);
-  }
+  FF_HD RowLine operator()(uint32_t l) const { return {g, arg, labels, G, l / G, l % G}; }
 };
 
 template <class V>
@@ -311,22 +486,43 @@ inline void check_grid(std::uint32_t G, const char* who) {
 
 // Stage 1. scaled: device pointer, 3 doubles per point, every coordinate in
 // (0, G); labels, sites: resized to 6 G^2 (pixel index f G^2 + v G + u).
-inline void digital_voronoi(const double* scaled, std::uint32_t n, std::uint32_t G,
-                            backend::Buffer<std::uint32_t>& labels, backend::Buffer<std::uint32_t>& sites) {
+// One envelope pass over the 6 G lines of G positions, in m bands per line
+// (PBA's build, merge and color steps). stack: G per line; lo, hi: m per
+// line (banding(G, m).m).
+template <class Lines>
+void banded_envelopes(const Lines& lines, const Banding& bd, uint32_t* stack, uint32_t* lo, uint32_t* hi) {
+  const std::size_t count = 6 * std::size_t{bd.G}, items = count * bd.m;
+  backend::for_range<kBandGrain>(items, BandStacks<Lines>{lines, bd, stack, lo, hi});
+  for (uint32_t half = 1; half < bd.m; half *= 2) {
+    const uint32_t pairs = (bd.m + 2 * half - 1) / (2 * half);
+    backend::for_range<kBandGrain>(count * pairs, MergeBands<Lines>{lines, bd, half, pairs, stack, lo, hi});
+  }
+  backend::for_range<kBandGrain>(items, ColorBand<Lines>{lines, bd, stack, lo, hi});
+}
+
+// Stage 1. scaled: device pointer, 3 doubles per point, every coordinate in
+// (0, G); labels, sites: resized to 6 G^2 (pixel index f G^2 + v G + u).
+// bands: PBA's bands per line in both passes (0: G / kBandLength; any count
+// gives the same labels). Returns the band count used (banding()).
+inline std::uint32_t digital_voronoi(const double* scaled, std::uint32_t n, std::uint32_t G,
+                            backend::Buffer<std::uint32_t>& labels, backend::Buffer<std::uint32_t>& sites,
+                            std::uint32_t bands = 0) {
   check_grid(G, "ghull: digital_voronoi");
   const std::size_t P = 6 * std::size_t{G} * G;
+  const Banding bd = banding(G, bands ? bands : G / kBandLength);
   labels.resize(P);
   sites.resize(P);
   backend::Buffer<uint64_t> g(P, ~uint64_t{0});  // the projection's minima, then pass 1's g
-  backend::Scratch<uint32_t> arg(P), stack(P);
+  backend::Scratch<uint32_t> arg(P), stack(P), lo(6 * std::size_t{G} * bd.m), hi(6 * std::size_t{G} * bd.m);
   backend::run_step_async<kItemGrain>(P, [&](auto policy) {
     thrust::fill(policy, sites.begin(), sites.end(), kNoSite);
   });
   const std::size_t items = 6 * std::size_t{n};
   backend::for_range<kItemGrain>(items, ProjectHeight{scaled, G, ptr(g)});
   backend::for_range<kItemGrain>(items, ProjectIndex{scaled, G, ptr(g), ptr(sites)});
-  backend::for_range<kLineGrain>(6 * std::size_t{G}, Columns{scaled, ptr(sites), ptr(g), ptr(arg), ptr(stack), G});
-  backend::for_range<kLineGrain>(6 * std::size_t{G}, Rows{ptr(g), ptr(arg), ptr(labels), ptr(stack), G});
+  banded_envelopes(ColumnLines{scaled, ptr(sites), ptr(g), ptr(arg), G}, bd, ptr(stack), ptr(lo), ptr(hi));
+  banded_envelopes(RowLines{ptr(g), ptr(arg), ptr(labels), G}, bd, ptr(stack), ptr(lo), ptr(hi));
+  return bd.m;
 }
 
 // ---- Stage 2's dual ------------------------------------------------------------------------
@@ -448,10 +644,10 @@ inline std::uint32_t scaled_count(const std::vector<double>& scaled, const char*
 namespace flipflop::FF_KERNELS_NS {
 
 std::vector<std::uint32_t> ghull_stages::digital_voronoi(const std::vector<double>& scaled, std::uint32_t grid,
-                                                         std::vector<std::uint32_t>* sites) {
+                                                         std::vector<std::uint32_t>* sites, std::uint32_t bands) {
   const std::uint32_t n = ghull_detail::scaled_count(scaled, "ghull_stages::digital_voronoi");
   std::vector<std::uint32_t> labels, s;
-  ghull_detail::digital_voronoi(scaled.data(), n, grid, labels, s);
+  ghull_detail::digital_voronoi(scaled.data(), n, grid, labels, s, bands);
   if (sites) *sites = std::move(s);
   return labels;
 }

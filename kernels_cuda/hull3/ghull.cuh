@@ -91,8 +91,8 @@
 // Not done as the thesis does (said here and in the docs): Algorithm 8's
 // shared-memory tiles (the projection is an atomic minimum in global memory:
 // thrust functors have no shared memory); the Parallel Banding Algorithm's
-// bands (one thread per column and row computes the same exact transform);
-// OpenGL rendering (a rasteriser in functors). §6.4.2's two passes (not in
+// transposes (its bands are done: digital_voronoi.cuh); OpenGL rendering (a
+// rasteriser in functors). §6.4.2's two passes (not in
 // the thesis' gHull) run the read-only checks — Algorithm 9's edge check and
 // the exact location — on the static filter first; the steps that change
 // stars (creation, insertion) run the staged predicate in one pass.
@@ -1190,7 +1190,7 @@ class Ghull {
     // ---- Stage 1
     const uint32_t G = grid_;
     backend::Buffer<uint32_t> labels, sites;
-    ghull_detail::digital_voronoi(raw(scaled_), static_cast<uint32_t>(n), G, labels, sites);
+    st_.bands = ghull_detail::digital_voronoi(raw(scaled_), static_cast<uint32_t>(n), G, labels, sites, opt_.bands);
     clock_.mark("stage 1: digital Voronoi");
     // ---- Stage 2
     backend::Buffer<uint32_t> off, nbr;

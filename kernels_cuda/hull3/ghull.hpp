@@ -35,6 +35,10 @@ struct GhullOptions {
   // Stage 4's depth maps: render x render pixels per side (0: grid / 2; the
   // thesis uses 512 with a 1024 grid).
   std::uint32_t render = 0;
+  // Stage 1's Parallel Banding Algorithm: bands per column and row of a
+  // side (0: grid / 32, one thread per 32 pixels of a line in each step).
+  // Every count gives the same diagram; only the parallelism changes.
+  std::uint32_t bands = 0;
   // The points are scaled into this fraction of B (§7.3.2, the slicing
   // problem's remedy; the thesis uses 0.8).
   double fill = 0.8;
@@ -45,6 +49,7 @@ struct GhullOptions {
 
 struct GhullStats {
   std::uint64_t grid = 0, render = 0;         // the sizes used
+  std::uint64_t bands = 0;                    // Stage 1: PBA's bands per line used
   std::uint64_t captured = 0;                 // |S'|: points whose digital Voronoi cell meets B's boundary
   std::uint64_t working_pairs = 0;            // Stage 2: (point, neighbour) pairs of the dual
   std::uint64_t approx_vertices = 0;          // Stage 3: vertices of CH(S')
@@ -87,9 +92,12 @@ namespace flipflop::kernels_omp::ghull_stages {
 // Returns per pixel the label (a point index) of its nearest site, or ~0u
 // where the face has no site at all; `sites` (optional) receives per pixel
 // the point projected onto it (the one nearest the face, ties to the smaller
-// index), or ~0u.
+// index), or ~0u. Of several sites at the least distance, the label is the
+// one whose pixel (u, v) is least, u first. `bands`: the Parallel Banding
+// Algorithm's bands per column and row (0: the kernel's default, grid / 32;
+// any count gives the same labels).
 std::vector<std::uint32_t> digital_voronoi(const std::vector<double>& scaled, std::uint32_t grid,
-                                           std::vector<std::uint32_t>* sites = nullptr);
+                                           std::vector<std::uint32_t>* sites = nullptr, std::uint32_t bands = 0);
 
 // The squared distance, in the exact integer units Stage 1 compares, from
 // pixel `pixel` of face `face` to the site of point p (scaled as above).
