@@ -55,9 +55,9 @@ bool check(const std::string& what, const PointSet& ps, ref::Hull3Stats* stats =
 }
 
 // gHull (kernels_cuda/hull3/ghull.hpp) against the same reference
-bool check_ghull(const std::string& what, const PointSet& ps) {
+bool check_ghull(const std::string& what, const PointSet& ps, const kernels::GhullOptions& opt = {}) {
   kernels::GhullStats st;
-  const std::string got = outcome([&] { return kernels_cuda::hull3_ghull(ps, {}, &st); });
+  const std::string got = outcome([&] { return kernels_cuda::hull3_ghull(ps, opt, &st); });
   const std::string expect = outcome([&] { return ref::hull3_ffhull(ps); });
   const bool ok = got == expect && st.handed_back == 0;
   std::printf("%s ghull %-22s n=%-8zu |S'| %llu, candidates %llu, added %llu, misses %llu, splay rounds %llu%s\n",
@@ -90,6 +90,12 @@ int main() {
     const PointSet ps = gen::generate(fam, 1000000, o);
     ok = check(std::string(fam) + " (large)", ps) && ok;
     ok = check_ghull(std::string(fam) + " (large)", ps) && ok;
+    // Stage 1's PBA at other band counts (one band: one thread per line)
+    for (std::uint32_t bands : {1u, 7u, 256u}) {
+      kernels::GhullOptions g;
+      g.bands = bands;
+      ok = check_ghull(std::string(fam) + " (large, " + std::to_string(bands) + " bands)", ps, g) && ok;
+    }
   }
   // almost flat slabs (heights one ulp apart): the exact kernel point's side
   // tests on the device (dev::orient3d_centroid); the run must take that path
