@@ -356,7 +356,8 @@ int run_compute(const ComputeArgs& a) {
       // kernels_cuda/hull3/ghull: gHull's five stages (thesis ch. 7) and the exact verification
       kernels::GhullStats g;
       tris = kernels::hull3_ghull_gpu(backend, ps, {}, &g, &gpu_times);
-      counts = "grid " + std::to_string(g.grid) + ", bands " + std::to_string(g.bands) + ", captured (|S'|) " + std::to_string(g.captured) +
+      counts = "grid " + std::to_string(g.grid) + ", bands " + std::to_string(g.bands) + ", captured (|S'|) " +
+               std::to_string(g.captured) +
                ", working pairs " + std::to_string(g.working_pairs) + ", CH(S') vertices " +
                std::to_string(g.approx_vertices) + ", depth-test candidates " + std::to_string(g.depth_candidates) +
                ", added " + std::to_string(g.added) + ", depth misses " + std::to_string(g.depth_misses) +

@@ -484,8 +484,6 @@ inline void check_grid(std::uint32_t G, const char* who) {
                                 std::to_string(kMaxGrid) + "]");
 }
 
-// Stage 1. scaled: device pointer, 3 doubles per point, every coordinate in
-// (0, G); labels, sites: resized to 6 G^2 (pixel index f G^2 + v G + u).
 // One envelope pass over the 6 G lines of G positions, in m bands per line
 // (PBA's build, merge and color steps). stack: G per line; lo, hi: m per
 // line (banding(G, m).m).
@@ -505,8 +503,8 @@ void banded_envelopes(const Lines& lines, const Banding& bd, uint32_t* stack, ui
 // bands: PBA's bands per line in both passes (0: G / kBandLength; any count
 // gives the same labels). Returns the band count used (banding()).
 inline std::uint32_t digital_voronoi(const double* scaled, std::uint32_t n, std::uint32_t G,
-                            backend::Buffer<std::uint32_t>& labels, backend::Buffer<std::uint32_t>& sites,
-                            std::uint32_t bands = 0) {
+                                     backend::Buffer<std::uint32_t>& labels, backend::Buffer<std::uint32_t>& sites,
+                                     std::uint32_t bands = 0) {
   check_grid(G, "ghull: digital_voronoi");
   const std::size_t P = 6 * std::size_t{G} * G;
   const Banding bd = banding(G, bands ? bands : G / kBandLength);
