@@ -24,21 +24,42 @@
 //       - one per product of a level (det_by_minors levels 2..N: N - 1);
 //       - the additions of each level: level r adds r terms, a term passes
 //         through at most r - 1 of them: Σ_{r=2..N} (r - 1) = N(N-1)/2.
-//     For a lifted entry, each monomial d_ij^2 takes 2 (the difference,
-//     squared) + 1 (the square) + (N - 2) (the sum over N - 1 monomials and
-//     the weight difference) roundings, and w_i - w_k takes 1 + (N - 1);
-//     both are <= N + 1, i.e. N more than a plain entry. Hence
+//     For a lifted entry (differences<K>: the N - 1 monomials summed left to
+//     right, then w_i - w_k subtracted), each monomial d_ij^2 takes 2 (the
+//     difference, squared) + 1 (the square) + (N - 2) (the sum of the
+//     monomials) + 1 (the weight difference subtracted) roundings, and
+//     w_i - w_k takes 1 + 1; both are <= N + 2, i.e. N + 1 more than a plain
+//     entry. Hence
 //         m_plain(N)  = N + (N - 1) + N(N-1)/2,
-//         m_lifted(N) = m_plain(N) + N,
+//         m_lifted(N) = m_plain(N) + N + 1,
 //     and |computed - exact| <= gamma_m · per(|T|), where per(|T|) is the
 //     permanent of the entries' magnitudes, a lifted entry counting as
 //     Σ_j d_ij^2 + |w_i - w_k| (exact). per(|T|) <= N! Π_c m_c for any column
-//     bounds m_c >= max_i |t_ic|.
+//     bounds m_c >= max_i |t_ic|. (Until 2026-12-05 this paragraph counted
+//     N + 1 roundings for a lifted entry and m_plain(N) + N, one short; the
+//     constant gamma_m of that count was nonetheless sound: it is
+//     gamma_{m-1} of the count here, which (1') shows is enough.)
+// (1') The last rounding is not charged. Every path ends in the same last
+//     operation, the last addition of level N (with_last_row's accumulator;
+//     for N = 2 the one subtraction), so with r its exact result on the
+//     computed operands, |r - exact| <= gamma_{m-1} per(|T|) and the
+//     computed det is fl(r). Rounding to nearest is monotone and fixes 0, so
+//     fl(r) has the sign of r or is 0, and |fl(r)| <= (1 + u)|r| (exactly
+//     |r| where r is subnormal). Hence |fl(r)| > (1 + u) gamma_{m-1} per
+//     gives |r| > |r - exact|: sign(fl(r)) = sign(r) = sign(exact). A fused
+//     multiply-add in place of the last addition (nvcc's default, or
+//     contraction on the host) is again one rounding of an exact result, and
+//     it only removes a product's rounding from the other paths. The factor
+//     (1 + u) is inside the slack of (2). For N = 2 this is 24u M^2 against
+//     32u M^2 with the last rounding charged (orient2d's static bound):
+//     filter_sensitivity_test's k = 3 set holds a wrong sign of fl(det) at
+//     0.67 of it, so the bound is within 1.5x of the worst case there.
 // (2) The bounds m_c are themselves computed: from rounded entries (|t| <=
 //     |fl(t)| / (1 - u)), multiplied in floating point (N - 1 roundings down)
 //     and multiplied by the constant (1 more). All of it is covered by the
 //     factor (1 + 2^-30) on the constant (needs (1 - u)^{-3N} <= 1 + 2^-30,
-//     true for N <= 7 by a margin of 2^20).
+//     true for N <= 7 by a margin of 2^20; it also covers the (1 + u) of
+//     (1')).
 // (3) Underflow. Sums and differences are exact when their result is
 //     subnormal (IEEE 754 gradual underflow), so only products can lose more
 //     than the relative bound: at most 2^-1075 absolutely each.
@@ -80,18 +101,20 @@ namespace flipflop::pred {
 
 namespace filter_detail {
 
-// number of roundings along the path of one term of det T (see (1))
+// number of roundings along the path of one term of det T (see (1)), the
+// last one included
 FF_HD constexpr int rounding_depth(int n, bool lifted) {
-  return n + (n - 1) + n * (n - 1) / 2 + (lifted ? n : 0);
+  return n + (n - 1) + n * (n - 1) / 2 + (lifted ? n + 1 : 0);
 }
 FF_HD constexpr double factorial(int n) {  // a loop: no recursion on the device
   double f = 1.0;
   for (int i = 2; i <= n; ++i) f *= i;
   return f;
 }
-// C_N of (1)-(3): gamma_m N! (1 + 2^-30) + 2^-100, rounded up generously.
+// C_N of (1)-(3): gamma_{m-1} N! (1 + 2^-30) + 2^-100, rounded up
+// generously; m - 1: the last rounding cannot change the sign ((1')).
 FF_HD constexpr double bound_constant(int n, bool lifted) {
-  const double m = rounding_depth(n, lifted);
+  const double m = rounding_depth(n, lifted) - 1;
   const double u = 0x1p-53;
   return (m * u / (1.0 - m * u)) * factorial(n) * (1.0 + 0x1p-30) + 0x1p-100;
 }
@@ -268,8 +291,10 @@ FF_HD inline int semi_static_sign(const double* const* p, const double* w) {
 //     when r != K - 1). det Λ is affine in that row: with c_j the cofactor of
 //     Λ at (K-1, j),
 //         det Λ(q) = det Λ(k) + Σ_j (q_j - k_j) c_j,
-//     so |det Λ(q) - fl(det T(k))| <= bound(1)-(4) on the rows with k in place
-//     + U, U = Σ_j e_j |c_j|. The cofactor c_j is ± the determinant of rows
+//     so |det Λ(q) - r| <= bound(1)-(4) on the rows with k in place + U,
+//     U = Σ_j e_j |c_j|, r the exact result of det T(k)'s last operation
+//     ((1'): fl(r) is the computed value, and the test's factor 1 + 2^-40
+//     covers |fl(r)| <= (1 + u)|r|). The cofactor c_j is ± the determinant of rows
 //     0..K-2 on the columns other than j (the 1-column included); subtracting
 //     row 0 gives the (N-1) x (N-1) determinant of differences x_i - x_0 on
 //     the coordinate columns c != j, so |c_j| <= (N-1)! Π_{c != j} G_c with

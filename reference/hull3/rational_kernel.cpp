@@ -19,10 +19,12 @@ namespace flipflop::ref {
 // the cofactors of that row, each ± a 2 x 2 determinant of differences of
 // input coordinates, so |c_j| <= 2 (2M)^2 with M the largest input magnitude.
 // With q's coordinates among the values of the StaticFilter (its `extra`),
-// |fl(det T(q)) - det Λ(q)| <= plain bound(4) (static_filter.hpp), hence
-//     |fl(det T(q)) - det Λ(s)| <= bound(4) + U,   U = 8 M^2 Σ_j e_j,
-// and a computed |det T(q)| above that has the sign of det Λ(s) (non-zero, so
-// the perturbation does not matter). U is computed upwards: five roundings to
+// |r - det Λ(q)| <= plain bound(4) (static_filter.hpp (1')), r the exact
+// result of det T(q)'s last operation, whose rounding fl(r) is the computed
+// value: |fl(r)| <= (1 + u)|r| and fl(r) has the sign of r or is 0. Hence
+//     |r - det Λ(s)| <= bound(4) + U,   U = 8 M^2 Σ_j e_j,
+// and a computed |det T(q)| above (bound(4) + U)(1 + 2^-40) has the sign of
+// det Λ(s) (non-zero, so the perturbation does not matter). U is computed upwards: five roundings to
 // nearest are covered by the factor 1 + 2^-20 and the sum by 1 + 2^-40; M^2 Σ e
 // is only used when M and Σ e are at least 2^-300 (no product underflows),
 // Σ e == 0 (q exact) gives U = 0, and an overflow gives +inf (no decision).
