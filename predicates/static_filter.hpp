@@ -50,10 +50,11 @@
 //     multiply-add in place of the last addition (nvcc's default, or
 //     contraction on the host) is again one rounding of an exact result, and
 //     it only removes a product's rounding from the other paths. The factor
-//     (1 + u) is inside the slack of (2). For N = 1 (k = 2, plain) the one
-//     difference is the last operation: gamma_0 = 0, the bound is (3)'s
-//     underflow term alone, and fl(a - b) has the sign of a - b (a
-//     difference of doubles rounds to 0 only when it is 0). For N = 2 this is 24u M^2 against
+//     (1 + u) is inside the slack of (2). (6) below argues the same way for
+//     the permanent bound. For N = 1 (k = 2, plain) the one difference is
+//     the last operation: gamma_0 = 0, the bound is (3)'s underflow term
+//     alone, and fl(a - b) has the sign of a - b (a difference of doubles
+//     rounds to 0 only when it is 0). For N = 2 this is 24u M^2 against
 //     32u M^2 with the last rounding charged (orient2d's static bound):
 //     filter_sensitivity_test's k = 3 set holds a wrong sign of fl(det) at
 //     0.67 of it, so the bound is within 1.5x of the worst case there.

@@ -24,8 +24,9 @@ namespace flipflop::ref {
 // value: |fl(r)| <= (1 + u)|r| and fl(r) has the sign of r or is 0. Hence
 //     |r - det Λ(s)| <= bound(4) + U,   U = 8 M^2 Σ_j e_j,
 // and a computed |det T(q)| above (bound(4) + U)(1 + 2^-40) has the sign of
-// det Λ(s) (non-zero, so the perturbation does not matter). U is computed upwards: five roundings to
-// nearest are covered by the factor 1 + 2^-20 and the sum by 1 + 2^-40; M^2 Σ e
+// det Λ(s) (non-zero, so the perturbation does not matter). U is computed
+// upwards: five roundings to nearest are covered by the factor 1 + 2^-20 and
+// the sum by 1 + 2^-40; M^2 Σ e
 // is only used when M and Σ e are at least 2^-300 (no product underflows),
 // Σ e == 0 (q exact) gives U = 0, and an overflow gives +inf (no decision).
 RationalKernel::RationalKernel(const PointSet& ps, pred::RationalPoint p)
