@@ -121,6 +121,38 @@ struct PlaneForm {
     if (-s > bound) return -1;
     return 0;  // also for NaN and infinities
   }
+
+  // Whether det Λ(x) < 0 for every x with |x - c| <= r, certainly (c: a
+  // point of doubles, r > 0): a ball strictly on the negative side of the
+  // tuple's hyperplane. det Λ(x) = Σ N_j (x_j - t0_j) is affine in x, so on
+  // the ball it is at most det Λ(c) + r |N|. det Λ(c) <= s + bound (sign()'s
+  // s and bound at x = c, the derivation above), and |N| <= |n| + |N - n|
+  // <= |n| + Σ e_j <= |n| + Σ w_j (the 1-norm bounds the 2-norm; e_j <= w_j).
+  // Computed: room = fl(-s - bound), one rounding of a difference (relative
+  // u, exact where subnormal); |n| = sqrt of the rounded sum of squares,
+  // within a relative (D + 2) u of the exact one once that sum is at least
+  // 2^-800 (an underflowing square then loses at most 2^-1075 against it);
+  // Σ w_j, non-negative terms, relative D u; the product by r, u. The factors
+  // 1 +- 2^-40 cover all of these for D <= 9, and 2^-1000 an underflowing
+  // product: reach < room (1 - 2^-40) gives s + bound + r (|n| + Σ w_j) < 0.
+  // False where it cannot tell: a facet of (almost) zero volume (|n|^2 below
+  // 2^-800), NaN or infinity anywhere. Used for a certifier's inner ball
+  // (kernels_cpu/rtd/hull_d.cpp, propose_ball).
+  bool ball_below(const double* c, double r) const {
+    double s = 0.0, b = 0.0, nn = 0.0, wsum = 0.0;
+    for (int j = 0; j < D; ++j) {
+      const double a = c[j] - base[j];
+      s += n[j] * a;
+      b += w[j] * std::fabs(a);
+      nn += n[j] * n[j];
+      wsum += w[j];
+    }
+    if (!(std::fabs(s) <= 0x1.fffffffffffffp+1023) || !(nn >= 0x1p-800) || !(r > 0.0)) return false;
+    const double bound = b * (1.0 + 0x1p-40) + D * 0x1p-1072;
+    const double room = -s - bound;
+    const double reach = r * (std::sqrt(nn) + wsum) * (1.0 + 0x1p-40) + 0x1p-1000;
+    return reach < room * (1.0 - 0x1p-40);  // false for NaN and infinities
+  }
 };
 
 // The same orientation against the per-input static bound instead of a

@@ -18,6 +18,7 @@
 #include "predicates/staged.hpp"
 #include "kernels_cpu/rtd/ridge_table.hpp"
 #include "kernels_cpu/rtd/visible_region.hpp"
+#include "reference/certify/ball_test.hpp"
 #include "reference/certify/inner_box.hpp"
 #include "reference/dimension.hpp"
 #include "reference/rtd/convex_surface.hpp"
@@ -93,6 +94,42 @@ certify::BoxTest<D> propose_box(const PointSet& ps, const std::vector<std::vecto
     return certify::detail::NegativeInsideFormTest<D>(forms[k], t);
   }, std::min(D, 6));
   return inside ? box : certify::BoxTest<D>{};
+}
+
+// A ball strictly inside the convex region the facets bound (hull_d's
+// convention), or an empty one: centred at `centre`, radius 0.999999 times
+// the smallest floating-point distance from it to a facet's hyperplane
+// (forms: the facets' plane forms, propose_box's), then verified per facet
+// by PlaneForm::ball_below (the whole closed ball strictly on the facet's
+// inner side, certainly; no exact stage: a facet it cannot decide, one of
+// zero volume included, leaves no ball). A point that BallTest says is
+// strictly inside (ball_test.hpp: |p - c|^2 + 2^-990 < r^2 (1 - 2^-40) in
+// floating point, the rounding of a sum of D <= 9 squares far inside that
+// margin, so |p - c| < r exactly) is strictly inside every facet, exactly
+// and under the perturbation, as for the box. Radii outside [2^-400, 2^400]:
+// no ball (the squares stay normal and finite). Normal input fills a ball,
+// not a box: 2x10^4 normal 5D points, 10,863 walks with the box alone.
+// That the facets bound a convex region is the caller's to know.
+template <int D>
+certify::BallTest<D> propose_ball(const std::vector<pred::PlaneForm<D>>& forms, const double* centre) {
+  certify::BallTest<D> ball;  // limit 0: empty
+  double dmin = HUGE_VAL;
+  for (const pred::PlaneForm<D>& f : forms) {
+    double nn = 0.0;
+    for (int c = 0; c < D; ++c) nn += f.n[c] * f.n[c];
+    const double d = -f.value(centre) / std::sqrt(nn);
+    if (!(d >= 0.0)) return ball;  // NaN, a flat facet, or the centre outside
+    dmin = std::min(dmin, d);
+  }
+  const double r = 0.999999 * dmin;
+  if (!(r >= 0x1p-400 && r <= 0x1p400)) return ball;
+  const bool inside = certify::detail::smallest_failing(forms.size(), par_for_range(512), [&](std::size_t k) {
+    return !forms[k].ball_below(centre, r);
+  }) == forms.size();
+  if (!inside) return ball;
+  for (int c = 0; c < D; ++c) ball.s[c] = centre[c];
+  ball.limit = r * r * (1.0 - 0x1p-40);
+  return ball;
 }
 
 template <int D>
@@ -909,6 +946,7 @@ std::string certify_points(const Certifier& ck, const std::vector<std::vector<In
   for (char x : vertex) vertices += x != 0;
   std::vector<pred::PlaneForm<D>> forms;
   certify::BoxTest<D> box;
+  certify::BallTest<D> ball;
   if (n - vertices >= h) {
     const std::array<double, 2 * D> bb = brio::bounding_box<D>(ps);  // lo, then hi
     double mean[D] = {}, half[D];
@@ -918,14 +956,18 @@ std::string certify_points(const Certifier& ck, const std::vector<std::vector<In
     for (int c = 0; c < D; ++c)
       mean[c] /= static_cast<double>(vertices), half[c] = 0.5 * (bb[static_cast<std::size_t>(D + c)] - bb[static_cast<std::size_t>(c)]);
     box = propose_box<D>(ps, facets, mean, half, forms);
+    ball = propose_ball<D>(forms, mean);
   }
   // the other points: a visibility walk in the cones (v, f) (points_inside),
   // in Morton order of their bounding box so that consecutive walks start
   // near their target
   std::vector<Index> order =
-      par_select(n, [&](std::size_t q) { return !vertex[q] && q != v && !box.strictly_inside(ps.point(q)); });
+      par_select(n, [&](std::size_t q) {
+        return !vertex[q] && q != v && !box.strictly_inside(ps.point(q)) && !ball.strictly_inside(ps.point(q));
+      });
   if (stats) {
     stats->box = !box.empty();
+    stats->ball = ball.limit > 0.0;
     stats->walked = order.size();
   }
   certify::detail::morton_sort(ps, order, par_for_range());

@@ -135,9 +135,10 @@ class HullDIncremental {
 //                   linear time": then the facets are those of a convex
 //                   polytope P star-shaped from v, and of conv(their vertices))
 //   points-inside   every other point that is not a vertex strictly inside P:
-//                   strictly inside an axis-aligned box verified strictly
-//                   inside every facet (reference/certify/inner_box.hpp;
-//                   tried where the points outnumber the facets), or by a
+//                   strictly inside an axis-aligned box or a ball verified
+//                   strictly inside every facet (reference/certify/
+//                   inner_box.hpp, hull_d.cpp propose_ball; both tried where
+//                   the points outnumber the facets), or by a
 //                   visibility walk in the cone triangulation {(v, f)} (a
 //                   scan of every facet where the walk does not settle)
 // When every point is a vertex (no such v), v is an auxiliary point: the
@@ -147,6 +148,7 @@ class HullDIncremental {
 // against every facet (quadratic).
 struct HullDCertifyStats {
   bool box = false;          // an inner box was verified
+  bool ball = false;         // an inner ball was verified
   std::size_t walked = 0;    // points that took the walk (not vertices, not in the box)
 };
 std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
