@@ -304,14 +304,25 @@ class HullBuilder {
   }
 
   // Quickhull's loop: while some facet has an outside set, insert its
-  // furthest point.
+  // furthest point. The facets are taken first in, first out, as Qhull
+  // walks its facet list (new facets appended): the older facets' furthest
+  // points, the more extreme ones, go in before the new facets' outside sets
+  // are split further, so fewer points are made apexes only to be buried.
+  // Measured against last in, first out (one build each, AMD EPYC 2-core VM,
+  // medians of 6-300 runs): 2x10^4 normal 5D points 964 -> 731 apexes,
+  // 72,747 -> 53,707 facets created, build 54.7 -> 38 ms; 1296 normal 4D
+  // points 1.85 -> 1.22 ms; 10^5 in the 5D cube 418 -> 312 ms; 10^5 normal
+  // 4D points, four seeds, 27-37 -> 20-30 ms (one seed even); 2000 normal 6D
+  // points 110 -> 95 ms, 800 normal 7D points 580 -> 551 ms. A slot may be
+  // queued again after reuse: then its entries are visited in turn, and those
+  // that find it dead or without outside points skip it.
   void grow() {
-    while (!work_.empty()) {
-      const std::uint32_t f = work_.back();
-      work_.pop_back();
+    for (std::size_t head = 0; head < work_.size(); ++head) {
+      const std::uint32_t f = work_[head];
       if (!alive(f) || out_[f].empty()) continue;
       insert(f);
     }
+    work_.clear();
   }
 
   // orient_d(t, q) of a d-tuple and a point (SoS, never 0 for distinct ids)
