@@ -593,7 +593,7 @@ def _hull_d(a: np.ndarray, backend: str, threads: int, facets: Optional[np.ndarr
         # x-f0] (the 1-column of the predicates' matrix last): outward in the
         # det convention after a swap in odd d
         if facets is None:
-            facets = _native("ConvexHull", _flipflop.hull_d, a)
+            facets = _native("ConvexHull", _flipflop.hull_d, a, threads)
         if d % 2 == 1:
             facets[:, -2:] = facets[:, -1:-3:-1]
     else:

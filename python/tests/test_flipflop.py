@@ -976,3 +976,20 @@ def test_find_simplex_signs_cached_and_checked():
         _flipflop.find_simplex(t.points, s64, n64, q, signs[:-1])
     with pytest.raises(ValueError):
         _flipflop.find_simplex(t.points, s64, n64, q, np.full(t.nsimplex, 2, dtype=np.int8))
+
+
+@pytest.mark.parametrize("d", [4, 5, 6])
+def test_convex_hull_d_same_answer_at_any_thread_count(d):
+    """ConvexHull in 4D..9D runs the hull kernel and its certifier on
+    `threads` workers (python/src/module.cpp hull_d): the same canonical
+    facets and neighbours at 1, 2 and 3 threads and the default, equal to
+    scipy's facets as sets; a negative count is a ValueError."""
+    a = np.random.default_rng(40 + d).standard_normal((1500, d))
+    base = flipflop.ConvexHull(a)
+    for t in (1, 2, 3):
+        h = flipflop.ConvexHull(a, threads=t)
+        assert np.array_equal(h.simplices, base.simplices)
+        assert np.array_equal(h.neighbors, base.neighbors)
+    assert {tuple(sorted(s)) for s in base.simplices} == {tuple(sorted(s)) for s in ss.ConvexHull(a).simplices}
+    with pytest.raises(ValueError):
+        flipflop.ConvexHull(a, threads=-1)
