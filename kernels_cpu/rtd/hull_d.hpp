@@ -149,7 +149,7 @@ class HullDIncremental {
 struct HullDCertifyStats {
   bool box = false;          // an inner box was verified
   bool ball = false;         // an inner ball was verified
-  std::size_t walked = 0;    // points that took the walk (not vertices, not in the box)
+  std::size_t walked = 0;    // points that took the walk (not vertices, not in the box or the ball)
 };
 std::string hull_d_problem(const PointSet& ps, const std::vector<std::vector<Index>>& facets,
                            HullDCertifyStats* stats = nullptr);
