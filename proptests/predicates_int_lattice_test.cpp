@@ -46,6 +46,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <type_traits>
 #include <utility>
@@ -538,6 +539,34 @@ TEST_CASE("small_integer_minor: near-lattice minors equal the exact expansion mi
 // the ErrDouble minor.
 namespace {
 
+// A random minor of a K-row Λ: r = 1..K rows and as many columns (masks).
+template <int K>
+void random_minor(std::mt19937_64& g, unsigned& rows, unsigned& cols) {
+  const int r = 1 + static_cast<int>(g() % K);
+  rows = cols = 0;
+  while (__builtin_popcount(rows) < r) rows |= 1u << (g() % K);
+  while (__builtin_popcount(cols) < r) cols |= 1u << (g() % K);
+}
+
+// A call's rows: the points x (weights w, null for a plain call), K
+// distinct ids in arbitrary order (a shuffled 0..K-1 times 10, plus 0..9),
+// and its exact Λ for GMP.
+template <int K>
+struct CallRows {
+  const double* p[K];
+  const double* wp;
+  PointId ids[K];
+  pred::exact::IntLambda G;
+  CallRows(const double (&x)[K][K], const double* w, std::mt19937_64& g) : wp(w) {
+    for (int i = 0; i < K; ++i) p[i] = x[i];
+    std::vector<int> perm(static_cast<size_t>(K));
+    for (int i = 0; i < K; ++i) perm[static_cast<size_t>(i)] = i;
+    std::shuffle(perm.begin(), perm.end(), g);
+    for (int i = 0; i < K; ++i) ids[i] = static_cast<PointId>(10 * perm[static_cast<size_t>(i)] + g() % 10);
+    G = pred::exact::build_lambda(K, p, wp);
+  }
+};
+
 template <int K>
 void perturbed_lattice_call(std::mt19937_64& g, long (&tally)[5]) {
   const bool lifted = K >= 4 && (g() & 1) != 0;
@@ -561,17 +590,11 @@ void perturbed_lattice_call(std::mt19937_64& g, long (&tally)[5]) {
       for (int j = 0; j < nc; ++j) move(x[i][j]);
     }
   }
-  const double* p[K];
-  for (int i = 0; i < K; ++i) p[i] = x[i];
-  const double* wp = lifted ? w : nullptr;
-  PointId ids[K];
-  {
-    std::vector<int> perm(static_cast<size_t>(K));
-    for (int i = 0; i < K; ++i) perm[static_cast<size_t>(i)] = i;
-    std::shuffle(perm.begin(), perm.end(), g);
-    for (int i = 0; i < K; ++i) ids[i] = static_cast<PointId>(10 * perm[static_cast<size_t>(i)] + uni(0, 9));
-  }
-  const pred::exact::IntLambda G = pred::exact::build_lambda(K, p, wp);
+  const CallRows<K> call(x, lifted ? w : nullptr, g);
+  const double* const* p = call.p;
+  const double* wp = call.wp;
+  const PointId* ids = call.ids;
+  const pred::exact::IntLambda& G = call.G;
   constexpr unsigned kAll = (1u << K) - 1u;
   const int det = pred::exact::minor_sign(G, kAll, kAll);
   const bool window = xp::call_range<K>(p, wp).fits(lifted ? K : K - 1);
@@ -584,12 +607,7 @@ void perturbed_lattice_call(std::mt19937_64& g, long (&tally)[5]) {
   if (window) xp::build_lambda<xp::Dbl, K>(p, wp, D);
   for (int rep = 0; rep < 4; ++rep) {
     unsigned rows = kAll, cols = kAll;
-    if (rep > 0) {
-      const int r = uni(1, K);
-      rows = cols = 0;
-      while (__builtin_popcount(rows) < r) rows |= 1u << uni(0, K - 1);
-      while (__builtin_popcount(cols) < r) cols |= 1u << uni(0, K - 1);
-    }
+    if (rep > 0) random_minor<K>(g, rows, cols);
     const int ref = pred::exact::minor_sign(G, rows, cols);
     INFO("rows " << rows << " cols " << cols);
     REQUIRE((xp::MinorLaplace<xp::XDbl, K>::sign(X, rows, cols)) == ref);
@@ -1047,4 +1065,156 @@ TEST_CASE("int lattice: lf(k) = ceil(log2 k!) for every row count", "[predicates
     INFO("k " << k << ", k! " << f);
     CHECK(xp::log2_factorial_ceil(k) == b);
   }
+}
+
+// The near-lattice polynomial stage (near_lattice.hpp: every value split as
+// n + a 2^-60 + b 2^-1074, minors as polynomials in the two units, the
+// leading coefficient's sign) against GMP on lattices with points moved by
+// some ulp. K = 3..8 points, plain and lifted, on {0..2}^d plus an offset
+// (0, 1, -3, 2^10 or 2^20: ulps 2^-52 .. 2^-32), some points copied, some
+// on a plane (a constant coordinate); each point moved with probability 1/3
+// by 1..3 ulp in every coordinate, or in one, or its weight (a moved 0 is a
+// subnormal: the η unit), weights 0 or small integers. Properties:
+//   (a) every minor NlMinors decides (the full Λ and random row/column
+//       subsets, asked in a random order so that the row-set cache is hit
+//       and missed) has the sign of pred::exact::minor_sign on the exact Λ;
+//   (b) near_lattice_sign (exact and SoS, rows sorted by id) equals GMP's
+//       exact and SoS signs wherever it decides, and so does the whole path
+//       after the filters and lambda_exact_sorted;
+//   (c) not vacuous: most calls decided, det Λ = 0 among them (the SoS
+//       search runs on the stage's minors), calls with both units, with two
+//       or more moved rows, and refusals (five moved rows) all occur.
+// Planted errors caught here: the monomials read ε's degree first (the
+// subnormal unit η ordered like ε); the moved rows' permutation sign
+// dropped; the Laplace sign of the column subset's positions dropped.
+namespace {
+
+template <int K>
+void near_lattice_poly_call(std::mt19937_64& g, long (&tally)[8]) {
+  const bool lifted = K >= 4 && (g() & 1) != 0;
+  const int nc = lifted ? K - 2 : K - 1;
+  auto uni = [&](int lo, int hi) { return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  const double offset = std::vector<double>{0.0, 1.0, -3.0, 0x1p10, 0x1p20}[static_cast<size_t>(uni(0, 4))];
+  const int flat = uni(0, 3) == 0 ? uni(0, nc - 1) : -1;  // a constant coordinate
+  double x[K][K], w[K];
+  int moved = 0;
+  bool subnormal = false, ulp_unit = false;
+  for (int i = 0; i < K; ++i) {
+    const int copy = i > 0 && uni(0, 6) == 0 ? uni(0, i - 1) : -1;
+    for (int j = 0; j < nc; ++j) x[i][j] = copy >= 0 ? x[copy][j] : (j == flat ? offset : offset + uni(0, 2));
+    w[i] = copy >= 0 ? w[copy] : (uni(0, 2) == 0 ? uni(0, 3) : 0.0);
+    if (copy >= 0 || uni(0, 2) != 0) continue;
+    ++moved;
+    auto move = [&](double& v) {
+      for (int u = uni(1, 3); u > 0; --u) v = std::nextafter(v, (g() & 1) ? 1e9 : -1e9);
+      subnormal |= std::fabs(v) < 0x1p-1000 && v != 0.0;
+      ulp_unit |= std::fabs(v) >= 0x1p-1000;
+    };
+    const int how = uni(0, 5);
+    if (lifted && how == 0) {
+      move(w[i]);
+    } else if (how == 1) {
+      move(x[i][uni(0, nc - 1)]);
+    } else {
+      for (int j = 0; j < nc; ++j) move(x[i][j]);
+    }
+  }
+  const CallRows<K> c(x, lifted ? w : nullptr, g);
+  constexpr unsigned kAll = (1u << K) - 1u;
+  INFO("K " << K << (lifted ? " lifted" : " plain") << " offset " << offset << " moved " << moved);
+  xp::NlMinors<K> N;
+  if (!xp::nl_build<K>(c.p, c.wp, N.L)) {
+    // refused: five or more moved rows (copies of moved points count), or
+    // a lifted coefficient beyond int64 (a ~ 2^29 at the offset 2^20)
+    int rows_moved = 0;
+    for (int i = 0; i < K; ++i) {
+      bool mv = lifted && w[i] != std::rint(w[i]);
+      for (int j = 0; j < nc; ++j) mv = mv || x[i][j] != std::rint(x[i][j]);
+      rows_moved += mv;
+    }
+    REQUIRE((rows_moved >= 5 || (lifted && offset == 0x1p20)));
+    ++tally[7];
+    return;
+  }
+  // (a) minors, the full Λ first, then random subsets (cache hits and misses)
+  for (int rep = 0; rep < 6; ++rep) {
+    unsigned rows = kAll, cols = kAll;
+    if (rep > 0) random_minor<K>(g, rows, cols);
+    const int s = N.sign(rows, cols);
+    if (s == 2) continue;
+    INFO("rows " << rows << " cols " << cols);
+    REQUIRE(s == pred::exact::minor_sign(c.G, rows, cols));
+    ++tally[0];
+  }
+  // (b) exact and SoS signs, rows sorted by id
+  const int det = pred::exact::minor_sign(c.G, kAll, kAll);
+  const int sos = pred::stage::gmp_sos(K, c.ids, c.p, c.wp);
+  int order[K];
+  const int parity = pred::sort_rows_by_id(K, c.ids, order);
+  const double* sp[K];
+  double sw[K];
+  for (int i = 0; i < K; ++i) {
+    sp[i] = c.p[order[i]];
+    sw[i] = w[order[i]];
+  }
+  const int e = xp::near_lattice_sign<K>(sp, lifted ? sw : nullptr, false);
+  const int ss = xp::near_lattice_sign<K>(sp, lifted ? sw : nullptr, true);
+  if (e != 2) REQUIRE(e * parity == det);
+  if (ss != 2) {
+    REQUIRE(ss * parity == sos);
+    ++tally[1];
+    tally[2] += det == 0;
+    tally[3] += subnormal && ulp_unit;
+    tally[4] += moved >= 2;
+    tally[5] += det == 0 && moved >= 1;
+  } else {
+    ++tally[6];
+  }
+  REQUIRE(pred::lambda_exact_sorted<K>(c.ids, c.p, c.wp, true) == sos);
+  REQUIRE((pred::lambda_sign_after_filters<K, PointId, false>(c.ids, c.p, c.wp)) == sos);
+}
+
+// one call of each K, in order
+template <int... K>
+void near_lattice_poly_calls(std::mt19937_64& g, long (&tally)[8], std::integer_sequence<int, K...>) {
+  (near_lattice_poly_call<K>(g, tally), ...);
+}
+
+}  // namespace
+
+TEST_CASE("near-lattice polynomial stage: minors, exact and SoS signs equal GMP",
+          "[predicates][stages][int_lattice]") {
+  std::mt19937_64 g(0x6e6c);
+  long t[8] = {};
+  for (int n = 0; n < 300; ++n) near_lattice_poly_calls(g, t, std::integer_sequence<int, 3, 4, 5, 6, 7, 8>{});
+  std::printf("near-lattice polynomials: minors decided %ld; calls decided %ld (det 0: %ld, both units %ld, "
+              "2+ moved rows %ld, moved with det 0 %ld), undecided %ld, refused %ld\n",
+              t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7]);
+  CHECK(t[0] > 4000);
+  CHECK(t[1] > 1200);
+  CHECK(t[2] > 300);
+  CHECK(t[3] > 50);
+  CHECK(t[4] > 400);
+  CHECK(t[5] > 100);
+  CHECK(t[7] > 5);
+}
+
+TEST_CASE("near-lattice polynomial stage: the split of a value", "[predicates][stages][int_lattice]") {
+  long long n, a, b;
+  REQUIRE(xp::nl_split(3.0, n, a, b));
+  CHECK((n == 3 && a == 0 && b == 0));
+  REQUIRE(xp::nl_split(std::nextafter(1.0, 2.0), n, a, b));  // 1 + 2^-52
+  CHECK((n == 1 && a == 256 && b == 0));
+  REQUIRE(xp::nl_split(std::nextafter(1.0, 0.0), n, a, b));  // 1 - 2^-53
+  CHECK((n == 1 && a == -128 && b == 0));
+  REQUIRE(xp::nl_split(-2 * std::numeric_limits<double>::denorm_min(), n, a, b));
+  CHECK((n == 0 && a == 0 && b == -2));
+  REQUIRE(xp::nl_split(std::nextafter(0x1p20, 0.0), n, a, b));  // 2^20 - 2^-33
+  CHECK((n == 1048576 && a == -(1LL << 27) && b == 0));
+  CHECK(!xp::nl_split(0.5, n, a, b));        // not near an integer
+  CHECK(!xp::nl_split(1e-300, n, a, b));     // a remainder of neither unit
+  CHECK(!xp::nl_split(0x1p27, n, a, b));     // beyond 2^26
+  CHECK(!xp::nl_split(std::nan(""), n, a, b));
+  CHECK(xp::nl_split(1.0 + 0x1p-20, n, a, b));   // a = 2^40: the bound
+  CHECK(!xp::nl_split(1.0 + 0x1p-19, n, a, b));  // a = 2^41
 }
