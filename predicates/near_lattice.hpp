@@ -21,31 +21,36 @@
 // and any minor is the polynomial Σ c_ij ε^i η^j evaluated at those units:
 // an identity, no approximation. Lemma (the leading coefficient decides):
 // order the monomials by η's degree j, then by ε's degree i; let c_ij be the
-// first non-zero coefficient in that order. If every |c| < 2^50, there are
-// fewer than 64 monomials and i < 17, then every later monomial is at most
-// ε^(i+1) η^j (same j: i' >= i + 1; larger j: ε^i' η^j' <= η^(j+1) <= ε^(i+1) η^j
-// because η = 2^-1074 <= 2^(-60 (i+1))), so the later terms sum to less than
-// 64 · 2^50 · 2^-60 ε^i η^j = ε^i η^j / 16 <= |c_ij| ε^i η^j: the minor has the
-// sign of c_ij. Degrees stay below 8 here (a minor with m <= 4 moved rows has
-// degree at most m + 1: one lifted entry per Leibniz term), so an 8 x 8 array
-// holds every monomial, and the check |c| < 2^50 runs on the result.
+// first non-zero coefficient in that order. If i < 17 and the other
+// coefficients' absolute values sum to S < 2^60, then every later monomial
+// is at most ε^(i+1) η^j (same j: i' >= i + 1; larger j: ε^i' η^j' <=
+// η^(j+1) <= ε^(i+1) η^j because η = 2^-1074 <= 2^(-60 (i+1))), so the later
+// terms sum to at most S 2^-60 ε^i η^j < ε^i η^j <= |c_ij| ε^i η^j: the minor
+// has the sign of c_ij. Degrees stay below 8 here (a minor with m <= 6 moved
+// rows has degree at most m + 1: one lifted entry per term), so the
+// exponents e = 8 i + j fit a 64-slot accumulator, and the check (S below
+// 2^58 in binary64, a margin for its rounding) runs on the result (NlAcc).
 //
 // ============================================================================
 // A minor: Laplace along its moved rows
 // ============================================================================
 // Rows whose values all split with a = b = 0 are integer rows (constant
 // polynomials); the others are moved. A minor of r kept rows, m of them
-// moved (m <= 4, else 2: the caller's expansion stages decide), with the
+// moved (m <= 6, else 2: the caller's expansion stages decide), with the
 // moved rows brought to the top (the permutation's sign), is by Laplace's
 // expansion along those rows
 //     Σ_S (-1)^(Σ S + m(m-1)/2) det(moved rows, columns S) · det(integer rows, columns not in S)
-// over the m-subsets S of the kept columns (positions 0..r-1). The moved
-// minors are expanded by Leibniz term by term into the accumulator; the
-// integer minors of every column subset come from one pass of Laplace levels
-// in int64 (the minor of the last t integer rows on a column set T, from the
-// level t-1 minors of T minus one column), bottom row first. That pass cannot
+// over the m-subsets S of the kept columns (positions 0..r-1). Both kinds of
+// minors come from Laplace levels: the minor of the last t rows on a column
+// set T from the minors of the last t - 1 rows on T less one column, bottom
+// row first, so that the minors of a row set also serve the row sets the
+// perturbation's search reaches by dropping top rows. The integer rows'
+// levels are computed whole when a row set is first asked (int64, a few
+// hundred products); the moved rows' minors (polynomials) on demand and
+// memoised per column set, and only where the integer cofactor is not 0
+// (most of them are 0 on a lattice). The integer minors are int64 and cannot
 // overflow when H = Π max(1, |row|_2) over the integer rows is below 2^62:
-// every level-t minor and every partial sum of its expansion is at most the
+// every level-t minor and the sum of any of its expansion's terms is at most the
 // product of its rows' norms (|Σ_c a_c M(T\c)| <= |a|_2 (Σ_U M(U)^2)^(1/2) =
 // |a|_2 det(B B^T)^(1/2) <= |a|_2 Π |b|_2 by Cauchy-Binet and Hadamard, B the
 // lower rows). The check runs in binary64 on the rows' squared norms with a
@@ -66,27 +71,34 @@
 namespace flipflop::pred::xp {
 
 // v = n + a 2^-60 + b 2^-1074 exactly, within the bounds above; false otherwise
+// (rint and trunc without a library call: adding and subtracting 1.5 2^52
+// rounds a binary64 of magnitude below 2^51 to the nearest integer, exactly,
+// in the default rounding mode that the predicates assume throughout)
 inline bool nl_split(double v, long long& n, long long& a, long long& b) {
   if (!(std::fabs(v) <= 0x1p26)) return false;  // (NaN too)
-  const double nd = std::rint(v);
+  constexpr double kRound = 0x1.8p52;
+  const double nd = (v + kRound) - kRound;  // rint(v)
   const double r = v - nd;  // exact (Sterbenz; r = v where nd = 0)
   n = static_cast<long long>(nd);
   a = b = 0;
   if (r == 0.0) return true;
   const double s = r * 0x1p60;  // exact: a power of two, no overflow (|r| <= 1/2)
-  if (std::fabs(s) <= 0x1p40 && s == std::trunc(s)) {
+  if (std::fabs(s) <= 0x1p40 && (s + kRound) - kRound == s) {
     a = static_cast<long long>(s);
     return true;
   }
   if (std::fabs(r) < 0x1p-1000) {
     const double t = r * 0x1p600 * 0x1p474;  // r 2^1074, exact: below 2^74
-    if (std::fabs(t) <= 0x1p40 && t == std::trunc(t)) {
+    if (std::fabs(t) <= 0x1p40 && (t + kRound) - kRound == t) {
       b = static_cast<long long>(t);
       return true;
     }
   }
   return false;
 }
+
+// At most this many moved rows in a minor (degree m + 1 <= 7 below).
+inline constexpr int kNlMaxMoved = 6;
 
 // A polynomial entry: up to six monomials ε^i η^j, e = 8 i + j, non-zero c.
 struct NlEntry {
@@ -112,7 +124,7 @@ struct NearLattice {
 
 // Λ (w non-null: lifted, column K-2 the heights, K-1 the 1-column) of K
 // points as polynomials; false where a value does not split, a lifted
-// coefficient overflows, or more than four rows are moved.
+// coefficient overflows, or more than kNlMaxMoved rows are moved.
 template <int K>
 inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L) {
   const int ncoord = w ? K - 2 : K - 1;
@@ -139,15 +151,19 @@ inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L)
       // cεη = 2 Σ a b, cηη = Σ b^2 (checked: |n| <= 2^26, |a|, |b| <= 2^40)
       long long c0 = -nw, ce = -aw, ch = -bw, cee = 0, ceh = 0, chh = 0;
       bool over = false;
-      for (int j = 0; j < ncoord; ++j) {
-        long long t;
-        over |= __builtin_mul_overflow(n[j], n[j], &t) || __builtin_add_overflow(c0, t, &c0);
-        over |= __builtin_mul_overflow(2 * n[j], a[j], &t) || __builtin_add_overflow(ce, t, &ce);
-        over |= __builtin_mul_overflow(2 * n[j], b[j], &t) || __builtin_add_overflow(ch, t, &ch);
-        over |= __builtin_mul_overflow(a[j], a[j], &t) || __builtin_add_overflow(cee, t, &cee);
-        over |= __builtin_mul_overflow(a[j], b[j], &t) || __builtin_mul_overflow(t, 2LL, &t) ||
-                __builtin_add_overflow(ceh, t, &ceh);
-        over |= __builtin_mul_overflow(b[j], b[j], &t) || __builtin_add_overflow(chh, t, &chh);
+      if (!mv) {  // an integer row: c0 alone, below 8 2^52 + 2^26 (no overflow)
+        for (int j = 0; j < ncoord; ++j) c0 += n[j] * n[j];
+      } else {
+        for (int j = 0; j < ncoord; ++j) {
+          long long t;
+          over |= __builtin_mul_overflow(n[j], n[j], &t) || __builtin_add_overflow(c0, t, &c0);
+          over |= __builtin_mul_overflow(2 * n[j], a[j], &t) || __builtin_add_overflow(ce, t, &ce);
+          over |= __builtin_mul_overflow(2 * n[j], b[j], &t) || __builtin_add_overflow(ch, t, &ch);
+          over |= __builtin_mul_overflow(a[j], a[j], &t) || __builtin_add_overflow(cee, t, &cee);
+          over |= __builtin_mul_overflow(a[j], b[j], &t) || __builtin_mul_overflow(t, 2LL, &t) ||
+                  __builtin_add_overflow(ceh, t, &ceh);
+          over |= __builtin_mul_overflow(b[j], b[j], &t) || __builtin_add_overflow(chh, t, &chh);
+        }
       }
       if (over) return false;
       NlEntry& e = L.a[i][K - 2];
@@ -173,48 +189,7 @@ inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L)
     }
     L.norm2[i] = s;
   }
-  return moved <= 4;
-}
-
-// The permutations of 0..m-1 (m <= 4) with their signs, for Leibniz.
-struct NlPerms {
-  int count;
-  int p[24][4];
-  int sign[24];
-};
-struct NlPermTable {
-  NlPerms t[5];
-};
-inline const NlPerms& nl_perms(int m) {
-  static const NlPermTable table = [] {
-    NlPermTable all;
-    NlPerms* t = all.t;
-    for (int m = 0; m <= 4; ++m) {
-      int v[4] = {0, 1, 2, 3};
-      t[m].count = 0;
-      // every arrangement of 0..m-1 in lexicographic order, parity by inversions
-      auto rec = [&](auto&& self, int k, unsigned used) -> void {
-        if (k == m) {
-          int inv = 0;
-          for (int x = 0; x < m; ++x)
-            for (int y = x + 1; y < m; ++y) inv += v[x] > v[y];
-          NlPerms& P = t[m];
-          for (int x = 0; x < 4; ++x) P.p[P.count][x] = x < m ? v[x] : 0;
-          P.sign[P.count] = (inv & 1) ? -1 : 1;
-          ++P.count;
-          return;
-        }
-        for (int c = 0; c < m; ++c)
-          if (!(used & (1u << c))) {
-            v[k] = c;
-            self(self, k + 1, used | (1u << c));
-          }
-      };
-      rec(rec, 0, 0u);
-    }
-    return all;
-  }();
-  return table.t[m];
+  return moved <= kNlMaxMoved;
 }
 
 inline int nl_popcount(unsigned x) {  // x < 256 (no popcnt instruction assumed)
@@ -222,47 +197,159 @@ inline int nl_popcount(unsigned x) {  // x < 256 (no popcnt instruction assumed)
   return kBits[x & 15u] + kBits[(x >> 4) & 15u];
 }
 
-// The minors of one call: L, and the integer rows' Laplace levels for the
-// last few row sets asked (the perturbation's search asks for many minors on
-// the same rows: first every column dropped with row 0).
+// The column masks of K columns ordered by popcount: mask[start[t] ..
+// start[t + 1] - 1] are those of t columns, increasing.
+template <int K>
+struct NlMasks {
+  unsigned mask[1u << K];
+  int start[K + 2];
+  // mask k's columns, increasing, and the mask less each of them
+  unsigned char col[1u << K][K];
+  unsigned char sub[1u << K][K];
+  constexpr NlMasks() : mask{}, start{}, col{}, sub{} {
+    int k = 0;
+    for (int t = 0; t <= K; ++t) {
+      start[t] = k;
+      for (unsigned T = 0; T < (1u << K); ++T) {
+        int c = 0;
+        for (unsigned U = T; U; U &= U - 1) ++c;
+        if (c != t) continue;
+        int u = 0;
+        for (int j = 0; j < K; ++j)
+          if (T & (1u << j)) {
+            col[k][u] = static_cast<unsigned char>(j);
+            sub[k][u++] = static_cast<unsigned char>(T & ~(1u << j));
+          }
+        mask[k++] = T;
+      }
+    }
+    start[K + 1] = k;
+  }
+};
+template <int K>
+inline constexpr NlMasks<K> kNlMasks{};
+
+// A minor of moved rows as a sparse polynomial: at most 36 monomials, since a
+// minor of t <= 6 rows has total degree at most t + 1 <= 7 (one lifted
+// entry per term) and there are 36 monomials ε^i η^j with i + j <= 7; the
+// exponent e = 8 i + j then stays below 64.
+struct NlPoly {
+  int n;
+  unsigned char e[36];
+  long long c[36];
+};
+
+// A dense accumulator over the exponents e = 8 i + j < 64, `used` its
+// touched slots, `over` set on any int64 overflow.
+struct NlAcc {
+  std::uint64_t used = 0;
+  bool over = false;
+  long long c[64];
+  void add(int e, long long v) {
+    if (!(used >> e & 1u)) {
+      used |= std::uint64_t{1} << e;
+      c[e] = v;
+    } else {
+      over |= __builtin_add_overflow(c[e], v, &c[e]);
+    }
+  }
+  // += d x
+  template <class Poly>
+  void add_scaled(const Poly& x, long long d) {
+    for (int t = 0; t < x.n; ++t) {
+      long long v;
+      over |= __builtin_mul_overflow(d, x.c[t], &v);
+      add(x.e[t], v);
+    }
+  }
+  // += ± x p
+  void add_product(const NlEntry& x, const NlPoly& p, bool negate) {
+    for (int s = 0; s < x.n; ++s)
+      for (int t = 0; t < p.n; ++t) {
+        long long v;
+        over |= __builtin_mul_overflow(x.c[s], p.c[t], &v);
+        if (negate) over |= __builtin_sub_overflow(0LL, v, &v);
+        add(x.e[s] + p.e[t], v);
+      }
+  }
+  // the non-zero monomials, in increasing e; false on overflow
+  bool to_poly(NlPoly& p) const {
+    p.n = 0;
+    if (over) return false;
+    for (std::uint64_t u = used; u; u &= u - 1) {
+      const int e = __builtin_ctzll(u);
+      if (c[e] == 0) continue;
+      if (p.n == 36) return false;  // (cannot happen: the degree bound above)
+      p.e[p.n] = static_cast<unsigned char>(e);
+      p.c[p.n++] = c[e];
+    }
+    return true;
+  }
+  // The sign of the polynomial at the units (the lemma above, with the
+  // bound on the later monomials' sum: below 2^58 in binary64, a margin
+  // over the 2^60 it needs for 36 terms of int64), 0 for the zero
+  // polynomial, 2 on overflow or beyond that bound.
+  int lead_sign() const {
+    if (over) return 2;
+    // the leading monomial: η's degree first (e mod 8), then ε's
+    int lead = -1;
+    for (std::uint64_t u = used; u; u &= u - 1) {
+      const int e = __builtin_ctzll(u);
+      if (c[e] != 0 && (lead < 0 || (e & 7) < (lead & 7) || ((e & 7) == (lead & 7) && e < lead))) lead = e;
+    }
+    if (lead < 0) return 0;
+    double later = 0.0;
+    for (std::uint64_t u = used & ~(std::uint64_t{1} << lead); u; u &= u - 1)
+      later += std::fabs(static_cast<double>(c[__builtin_ctzll(u)]));
+    if (!(later < 0x1p58)) return 2;
+    return c[lead] > 0 ? 1 : -1;
+  }
+};
+
+// The minors of one call: L, the integer rows' Laplace levels for the last
+// few row sets asked, and the moved rows' Laplace levels as polynomials,
+// both computed on demand and kept (the perturbation's search asks for many
+// minors on the same rows: first every column dropped with row 0).
 template <int K>
 class NlMinors {
  public:
   NearLattice<K> L;
 
   // The sign of the minor on rows kr and columns kc (bit masks, equal
-  // popcounts), or 2 where this stage cannot decide it (more than four
-  // moved rows kept, an overflow, a coefficient of 2^50 or more).
+  // popcounts), or 2 where this stage cannot decide it (more than six
+  // moved rows kept, an overflow, the lemma's bound).
+  //
+  // With the moved rows brought to the top (rowpar: the permutation's
+  // parity), Laplace's expansion along them is
+  //     Σ_S (-1)^(Σ pos S + m(m-1)/2) P(S) M(kc \ S)
+  // over the m-subsets S of kc (pos: a column's position in kc), with P(S)
+  // the moved rows' minor on S (a polynomial, moved_minor) and M the
+  // integer rows' minor (int64, int_slot). Terms with M = 0 cost nothing:
+  // their P is not computed (on lattices most of the integer minors are 0).
   int sign(unsigned kr, unsigned kc) {
-    int mv[4], m = 0, rowpar = 0, r = 0;
-    unsigned ints = 0;
+    int mv[kNlMaxMoved], m = 0, rowpar = 0, r = 0;
+    unsigned ints = 0, mset = 0;
     for (int i = 0; i < K; ++i) {
       if (!(kr & (1u << i))) continue;
       if (L.moved[i]) {
-        if (m == 4) return 2;
+        if (m == kNlMaxMoved) return 2;
         rowpar += r - m;  // moved to the top past the integer rows above it
         mv[m++] = i;
+        mset |= 1u << i;
       } else {
         ints |= 1u << i;
       }
       ++r;
     }
     if (r == 0) return 1;
-    const long long* M = levels(ints);
-    if (!M) return 2;
-    if (m == 0) return (M[kc] > 0) - (M[kc] < 0);
-    // the accumulator: monomial e = 8 i + j, `used` its touched slots
-    long long acc[64];
-    std::uint64_t used = 0;
-    bool over = false;
-    auto add = [&](int e, long long v) {
-      if (!(used >> e & 1u)) {
-        used |= std::uint64_t{1} << e;
-        acc[e] = v;
-      } else {
-        over |= __builtin_add_overflow(acc[e], v, &acc[e]);
-      }
-    };
+    const int slot = int_slot(ints);
+    if (slot < 0) return 2;
+    const long long* M = M_[slot];
+    if (m == 0) {
+      const long long D = M[kc];
+      return (D > 0) - (D < 0);
+    }
+    NlAcc acc;
     if (m == 1) {
       // one moved row: Σ_c (-1)^(pos c) L[mv][c] M(kc \ c)
       const NlEntry* row = L.a[mv[0]];
@@ -270,115 +357,58 @@ class NlMinors {
       for (unsigned U = kc; U; U &= U - 1, sg = -sg) {
         const unsigned bit = U & (0u - U);
         const long long D = M[kc & ~bit];
-        if (D == 0) continue;
-        const NlEntry& e = row[__builtin_ctz(bit)];
-        const long long d = sg * D;
-        for (int t = 0; t < e.n; ++t) {
-          long long v;
-          over |= __builtin_mul_overflow(d, e.c[t], &v);
-          add(e.e[t], v);
-        }
-      }
-    } else if (m == 2) {
-      // two moved rows: Σ_{c0 < c1} (-1)^(pos c0 + pos c1 + 1) M(kc \ {c0, c1})
-      // (L[mv0][c0] L[mv1][c1] - L[mv0][c1] L[mv1][c0])
-      const NlEntry* r0 = L.a[mv[0]];
-      const NlEntry* r1 = L.a[mv[1]];
-      int p0 = 0;
-      for (unsigned U0 = kc; U0; U0 &= U0 - 1, ++p0) {
-        const unsigned b0 = U0 & (0u - U0);
-        const int c0 = __builtin_ctz(b0);
-        int p1 = p0 + 1;
-        for (unsigned U1 = U0 & (U0 - 1); U1; U1 &= U1 - 1, ++p1) {
-          const unsigned b1 = U1 & (0u - U1);
-          const int c1 = __builtin_ctz(b1);
-          const long long D = M[kc & ~(b0 | b1)];
-          if (D == 0) continue;
-          const long long d = ((p0 + p1 + 1 + rowpar) & 1) ? -D : D;
-          for (int flip = 0; flip < 2; ++flip) {
-            const NlEntry& x = flip ? r0[c1] : r0[c0];
-            const NlEntry& y = flip ? r1[c0] : r1[c1];
-            const long long dd = flip ? -d : d;
-            for (int s = 0; s < x.n; ++s) {
-              long long u;
-              over |= __builtin_mul_overflow(dd, x.c[s], &u);
-              for (int t = 0; t < y.n; ++t) {
-                long long v;
-                over |= __builtin_mul_overflow(u, y.c[t], &v);
-                add(x.e[s] + y.e[t], v);
-              }
-            }
-          }
-        }
+        if (D != 0) acc.add_scaled(row[__builtin_ctz(bit)], sg * D);
       }
     } else {
-      const NlPerms& P = nl_perms(m);
-      // every m-subset S of kc, Laplace along the moved rows
-      for (unsigned S = kc; S; S = (S - 1) & kc) {
-        if (nl_popcount(S) != m) continue;
+      moved_rows(mv, m, mset);
+      const NlMasks<K>& T = kNlMasks<K>;
+      const int base = rowpar + m * (m - 1) / 2;
+      for (int k = T.start[m]; k < T.start[m + 1]; ++k) {
+        const unsigned S = T.mask[k];
+        if (S & ~kc) continue;
         const long long D = M[kc & ~S];
         if (D == 0) continue;
-        int sc[4], k = 0, possum = 0;
-        for (unsigned U = S; U; U &= U - 1) {
-          const unsigned bit = U & (0u - U);
-          possum += nl_popcount(kc & (bit - 1u));
-          sc[k++] = __builtin_ctz(bit);
-        }
-        const long long base = ((possum + m * (m - 1) / 2 + rowpar) & 1) ? -D : D;
-        for (int x = 0; x < P.count; ++x) {
-          const NlEntry* ent[4];
-          bool zero = false;
-          for (int y = 0; y < m; ++y) {
-            ent[y] = &L.a[mv[y]][sc[P.p[x][y]]];
-            zero = zero || ent[y]->n == 0;
-          }
-          if (zero) continue;
-          // every choice of one monomial per entry (at most 2 · 2 · 2 · 6)
-          int idx[4] = {0, 0, 0, 0};
-          while (true) {
-            long long v = P.sign[x] < 0 ? -base : base;
-            int e = 0;
-            for (int y = 0; y < m; ++y) {
-              over |= __builtin_mul_overflow(v, ent[y]->c[idx[y]], &v);
-              e += ent[y]->e[idx[y]];
-            }
-            add(e, v);
-            int y = m - 1;
-            while (y >= 0 && ++idx[y] == ent[y]->n) idx[y--] = 0;
-            if (y < 0) break;
-          }
-        }
+        const NlPoly* p = moved_minor(S);
+        if (!p) return 2;
+        int possum = base;
+        for (unsigned U = S; U; U &= U - 1) possum += nl_popcount(kc & ((U & (0u - U)) - 1u));
+        acc.add_scaled(*p, (possum & 1) ? -D : D);
       }
     }
-    if (over) return 2;
-    // the leading coefficient: η's degree first (e mod 8), then ε's
-    int lead = -1;
-    for (std::uint64_t u = used; u; u &= u - 1) {
-      const int e = __builtin_ctzll(u);
-      const long long v = acc[e];
-      if (!(v > -0x1p50 && v < 0x1p50)) return 2;
-      if (v != 0 && (lead < 0 || (e & 7) < (lead & 7) || ((e & 7) == (lead & 7) && e < lead))) lead = e;
-    }
-    if (lead >= 0) return acc[lead] > 0 ? 1 : -1;
-    return 0;
+    return acc.lead_sign();
   }
 
  private:
+  // the integer rows' minors: slots of row sets (key_), M_[s][T] for every
+  // column set T of at most as many columns as the set has rows
   static constexpr int kSlots = 4;
   unsigned key_[kSlots] = {~0u, ~0u, ~0u, ~0u};
   int next_ = 0;
   long long M_[kSlots][1u << K];
+  // the moved rows' minors: P_[T] of the last |T| rows pmv_[..pm_ - 1]
+  // (pkey_ their mask, ~0u: none), phave_[T] 0 not computed, 1 computed,
+  // 2 out of reach (an overflow)
+  unsigned pkey_ = ~0u;
+  int pmv_[kNlMaxMoved];
+  int pm_ = 0;
+  unsigned char phave_[1u << K];
+  NlPoly P_[1u << K];
 
-  // The minors of the integer rows `ints` (increasing) on every column set
-  // of at most that many columns: M[T], T a mask of Λ's columns, the rows'
-  // Laplace levels from the bottom row up; null where H >= 2^62 (above).
-  const long long* levels(unsigned ints) {
-    // A cached set whose bottom rows are `ints` serves too: the levels of
-    // the last t rows are the same (the search drops rows from the top:
-    // row 0 first).
-    const unsigned low = ints & (0u - ints);
+  // Is the set `sub` the last rows of the cached set `key` (the cached set
+  // less some of its top rows)? Laplace levels built from the bottom row up
+  // then serve: the minors of the last t rows are the same.
+  static bool suffix_of(unsigned sub, unsigned key) {
+    const unsigned low = sub & (0u - sub);
+    return key != ~0u && !(sub & ~key) && (key & ~sub) < (low ? low : ~0u);
+  }
+
+  // The slot for the integer rows `ints`; -1 where H >= 2^62 (above). The
+  // levels run on tables of each column set's columns and subsets (NlMasks),
+  // even positions first: any subset of an expansion's terms is bounded like
+  // the whole (the row with the other entries zeroed).
+  int int_slot(unsigned ints) {
     for (int s = 0; s < kSlots; ++s)
-      if (key_[s] != ~0u && !(ints & ~key_[s]) && (key_[s] & ~ints) < (low ? low : ~0u)) return M_[s];
+      if (suffix_of(ints, key_[s])) return s;
     int ir[K], q = 0;
     double h = 1.0;
     for (int i = 0; i < K; ++i)
@@ -386,24 +416,68 @@ class NlMinors {
         ir[q++] = i;
         h *= L.norm2[i] > 1.0 ? L.norm2[i] : 1.0;
       }
-    if (!(h * (1.0 + 0x1p-30) < 0x1p124)) return nullptr;
+    if (!(h * (1.0 + 0x1p-30) < 0x1p124)) return -1;
     const int slot = next_;
     next_ = (next_ + 1) % kSlots;
     key_[slot] = ints;
     long long* M = M_[slot];
     M[0] = 1;
-    for (unsigned T = 1; T < (1u << K); ++T) {
-      const int t = nl_popcount(T);
-      if (t > q) continue;
+    const NlMasks<K>& T = kNlMasks<K>;
+    for (int t = 1; t <= q; ++t) {
       const long long* row = L.n[ir[q - t]];
-      long long sum = 0, sg = 1;
-      for (unsigned U = T; U; U &= U - 1, sg = -sg) {
-        const unsigned bit = U & (0u - U);
-        sum += sg * row[__builtin_ctz(bit)] * M[T & ~bit];
+      for (int k = T.start[t]; k < T.start[t + 1]; ++k) {
+        const unsigned char* col = T.col[k];
+        const unsigned char* sub = T.sub[k];
+        long long sum = 0;
+        for (int u = 0; u < t; u += 2) sum += row[col[u]] * M[sub[u]];
+        for (int u = 1; u < t; u += 2) sum -= row[col[u]] * M[sub[u]];
+        M[T.mask[k]] = sum;
       }
-      M[T] = sum;
     }
-    return M;
+    return slot;
+  }
+
+  // The moved rows of the next minors (increasing; mset their mask).
+  void moved_rows(const int* mv, int m, unsigned mset) {
+    if (suffix_of(mset, pkey_)) return;
+    pkey_ = mset;
+    pm_ = m;
+    for (int i = 0; i < m; ++i) pmv_[i] = mv[i];
+    for (unsigned T = 0; T < (1u << K); ++T) phave_[T] = 0;
+  }
+
+  // The polynomial minor of the last |C| moved rows on the columns C (null
+  // on an overflow), by Laplace along the top one of them:
+  //     P(C) = Σ_{c in C} (-1)^(pos c) L[row][c] P(C \ c).
+  const NlPoly* moved_minor(unsigned C) {
+    if (phave_[C] == 1) return &P_[C];
+    if (phave_[C] == 2) return nullptr;
+    const int t = nl_popcount(C);
+    const NlEntry* row = L.a[pmv_[pm_ - t]];
+    NlPoly& p = P_[C];
+    bool ok = true;
+    if (t == 1) {
+      const NlEntry& x = row[__builtin_ctz(C)];
+      p.n = x.n;
+      for (int i = 0; i < x.n; ++i) {
+        p.e[i] = static_cast<unsigned char>(x.e[i]);
+        p.c[i] = x.c[i];
+      }
+    } else {
+      NlAcc acc;
+      bool negate = false;
+      for (unsigned U = C; U && ok; U &= U - 1, negate = !negate) {
+        const unsigned bit = U & (0u - U);
+        const NlEntry& x = row[__builtin_ctz(bit)];
+        if (x.n == 0) continue;
+        const NlPoly* q = moved_minor(C & ~bit);
+        if (!q) ok = false;
+        else if (q->n != 0) acc.add_product(x, *q, negate);
+      }
+      ok = ok && acc.to_poly(p);
+    }
+    phave_[C] = ok ? 1 : 2;
+    return ok ? &p : nullptr;
   }
 };
 
