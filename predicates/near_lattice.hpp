@@ -61,6 +61,13 @@
 // 20 % of its points moved by 2 ulp, a moved 0 a subnormal): the XDbl
 // expansion stages took 71,012 det_translated calls at 43,000 instructions
 // and 33,092 sos_expansions calls at 121,000, 65 % of the run's 10.9 G.
+// This stage's first form (stop 81) expanded three or four moved rows by
+// Leibniz, monomial choice by choice, for every minor, and refused five
+// moved rows and any coefficient of 2^50: the 112,873 seven-row calls of
+// that run, replayed alone (near_lattice_sign, best of 3), took 5.13 us a
+// call with 2,567 refusals; with the moved rows' memoised levels, the
+// integer levels on tables and the bound on the later coefficients' sum,
+// 3.70 us with 438 refusals (docs/performance/predicates.md, stop 82).
 #pragma once
 
 #if !defined(__CUDA_ARCH__)
