@@ -1083,14 +1083,15 @@ TEST_CASE("int lattice: lf(k) = ceil(log2 k!) for every row count", "[predicates
 //       after the filters and lambda_exact_sorted;
 //   (c) not vacuous: most calls decided, det Λ = 0 among them (the SoS
 //       search runs on the stage's minors), calls with both units, with two
-//       or more moved rows, and refusals (seven moved rows, int64 overflow) all occur.
+//       or more moved rows, with five or six, and refusals (seven moved
+//       rows, int64 overflow) all occur.
 // Planted errors caught here: the monomials read ε's degree first (the
 // subnormal unit η ordered like ε); the moved rows' permutation sign
 // dropped; the Laplace sign of the column subset's positions dropped.
 namespace {
 
 template <int K>
-void near_lattice_poly_call(std::mt19937_64& g, long (&tally)[8]) {
+void near_lattice_poly_call(std::mt19937_64& g, long (&tally)[9]) {
   const bool lifted = K >= 4 && (g() & 1) != 0;
   const int nc = lifted ? K - 2 : K - 1;
   auto uni = [&](int lo, int hi) { return lo + static_cast<int>(g() % static_cast<std::uint64_t>(hi - lo + 1)); };
@@ -1168,6 +1169,9 @@ void near_lattice_poly_call(std::mt19937_64& g, long (&tally)[8]) {
     tally[3] += subnormal && ulp_unit;
     tally[4] += moved >= 2;
     tally[5] += det == 0 && moved >= 1;
+    int rows_moved = 0;  // (five and six: beyond stop 81's Leibniz branches)
+    for (int i = 0; i < K; ++i) rows_moved += N.L.moved[i];
+    tally[8] += rows_moved >= 5;
   } else {
     ++tally[6];
   }
@@ -1177,7 +1181,7 @@ void near_lattice_poly_call(std::mt19937_64& g, long (&tally)[8]) {
 
 // one call of each K, in order
 template <int... K>
-void near_lattice_poly_calls(std::mt19937_64& g, long (&tally)[8], std::integer_sequence<int, K...>) {
+void near_lattice_poly_calls(std::mt19937_64& g, long (&tally)[9], std::integer_sequence<int, K...>) {
   (near_lattice_poly_call<K>(g, tally), ...);
 }
 
@@ -1186,11 +1190,11 @@ void near_lattice_poly_calls(std::mt19937_64& g, long (&tally)[8], std::integer_
 TEST_CASE("near-lattice polynomial stage: minors, exact and SoS signs equal GMP",
           "[predicates][stages][int_lattice]") {
   std::mt19937_64 g(0x6e6c);
-  long t[8] = {};
+  long t[9] = {};
   for (int n = 0; n < 300; ++n) near_lattice_poly_calls(g, t, std::integer_sequence<int, 3, 4, 5, 6, 7, 8>{});
   std::printf("near-lattice polynomials: minors decided %ld; calls decided %ld (det 0: %ld, both units %ld, "
-              "2+ moved rows %ld, moved with det 0 %ld), undecided %ld, refused %ld\n",
-              t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7]);
+              "2+ moved rows %ld, moved with det 0 %ld, 5+ moved rows %ld), undecided %ld, refused %ld\n",
+              t[0], t[1], t[2], t[3], t[4], t[5], t[8], t[6], t[7]);
   CHECK(t[0] > 4000);
   CHECK(t[1] > 1200);
   CHECK(t[2] > 300);
@@ -1198,6 +1202,7 @@ TEST_CASE("near-lattice polynomial stage: minors, exact and SoS signs equal GMP"
   CHECK(t[4] > 400);
   CHECK(t[5] > 100);
   CHECK(t[7] > 0);
+  CHECK(t[8] > 10);
 }
 
 TEST_CASE("near-lattice polynomial stage: the split of a value", "[predicates][stages][int_lattice]") {
