@@ -1874,58 +1874,303 @@ double round_ratio(const mpz_t M, const mpz_t D, long E, mpz_t q, mpz_t r, mpz_t
   return sg < 0 ? -x : x;
 }
 
-// x = mant * 2^exp with |mant| < 2^53 an integer (x != 0)
+// x = mant * 2^exp with |mant| < 2^53 an odd integer (x != 0): the
+// largest exponent, so the exact solvers' integers carry no trailing zeros
+// (an integer coordinate's unit is 1, a subnormal's 2^-1074 at the least)
 inline void split_double(double x, std::int64_t& mant, long& ex) {
   int e;
   const double m = std::frexp(x, &e);
   mant = static_cast<std::int64_t>(std::ldexp(m, 53));
   ex = static_cast<long>(e) - 53;
+  const int tz = __builtin_ctzll(static_cast<std::uint64_t>(mant));
+  mant >>= tz;  // exact: the low tz bits are zero (arithmetic shift keeps the sign)
+  ex += tz;
 }
+
+// Inputs whose magnitudes fall into two clusters far apart (a lattice with
+// zeros moved by some ulp: subnormals beside values near 1): one common unit
+// 2^E makes every integer of the plain solver below as long as the whole
+// range (1,076 bits), and GMP's cost grows with that. SplitCentre writes
+// every value as a polynomial in eps = 2^-T instead, with integer
+// coefficients of the cluster's own size: a coordinate x = a_0 2^E_H (the
+// large cluster, E_H its least exponent) or a_1 eps 2^E_H = a_1 2^E_L (the
+// tiny one, E_L its least exponent, T = E_H - E_L); a weight (units
+// 2^(2 E_H)) a_0 or a_2 eps^2. The same elimination then runs in Z[eps]:
+// Bareiss' divisions and the back-substitution's are exact there too (the
+// identities they rest on are polynomial identities in the entries, and
+// their quotients are minors and Cramer numerators of the polynomial
+// matrix, which have integer coefficients), done from the lowest
+// coefficient up (q_j = (t_(j+l) - sum_(i<j) q_i p_(l+j-i)) / p_l, p_l the
+// divisor's lowest non-zero coefficient: exact). Evaluating at eps = 2^-T is
+// a ring homomorphism, so the results evaluate to the plain solver's
+// determinant and numerators; multiplied by eps^-K (K the largest degree)
+// they become integers, M_l and D with c_l = M_l / D 2^E_H, and D = 0 there
+// means zero volume whatever the polynomial was.
+constexpr int kPolyLen = 2 * kMaxD + 3;  // degrees <= 2 d + 2 (row b: 2, each elimination step: + 1 or 2)
+struct Poly {
+  Mpz c[kPolyLen];
+  int deg = -1;  // -1: zero; coefficients above deg are not read
+  void trim() {
+    while (deg >= 0 && mpz_sgn(c[deg].v) == 0) --deg;
+  }
+  void clear() { deg = -1; }
+  void set(const Poly& o) {
+    deg = o.deg;
+    for (int i = 0; i <= deg; ++i) mpz_set(c[i].v, o.c[i].v);
+  }
+  void swap(Poly& o) {
+    const int n = std::max(deg, o.deg);
+    for (int i = 0; i <= n; ++i) mpz_swap(c[i].v, o.c[i].v);
+    std::swap(deg, o.deg);
+  }
+  void zero_to(int n) {  // deg = n, coefficients 0..n zero
+    for (int i = 0; i <= n; ++i) mpz_set_ui(c[i].v, 0);
+    deg = n;
+  }
+};
+// out = a b - e f (out distinct from the operands)
+inline void poly_mul_sub(Poly& out, const Poly& a, const Poly& b, const Poly& e, const Poly& f) {
+  const int n1 = a.deg < 0 || b.deg < 0 ? -1 : a.deg + b.deg, n2 = e.deg < 0 || f.deg < 0 ? -1 : e.deg + f.deg;
+  out.zero_to(std::max(n1, n2));
+  if (n1 >= 0)
+    for (int i = 0; i <= a.deg; ++i)
+      if (mpz_sgn(a.c[i].v))
+        for (int j = 0; j <= b.deg; ++j) mpz_addmul(out.c[i + j].v, a.c[i].v, b.c[j].v);
+  if (n2 >= 0)
+    for (int i = 0; i <= e.deg; ++i)
+      if (mpz_sgn(e.c[i].v))
+        for (int j = 0; j <= f.deg; ++j) mpz_submul(out.c[i + j].v, e.c[i].v, f.c[j].v);
+  out.trim();
+}
+// q = t / p, exact in Z[eps] (p != 0; q distinct from t and p); acc scratch
+inline void poly_divexact(Poly& q, const Poly& t, const Poly& p, mpz_t acc) {
+  if (t.deg < 0) {
+    q.clear();
+    return;
+  }
+  int l = 0;
+  while (mpz_sgn(p.c[l].v) == 0) ++l;
+  const int qd = t.deg - p.deg;
+  for (int j = 0; j <= qd; ++j) {
+    mpz_set(acc, t.c[j + l].v);
+    for (int i = std::max(0, j - (p.deg - l)); i < j; ++i) mpz_submul(acc, q.c[i].v, p.c[l + j - i].v);
+    mpz_divexact(q.c[j].v, acc, p.c[l].v);
+  }
+  q.deg = qd;
+  q.trim();
+}
+
+struct SplitCentre {
+  int d = 2;
+  Poly P[kMaxD + 1][kMaxD], W[kMaxD + 1], X[kMaxD][kMaxD + 1], N[kMaxD], Dn, t, u, z;  // z: always zero
+  Mpz acc;
+  long EH = 0, T = 0;
+
+  // Whether the values split into two clusters (a gap of at least kGap
+  // binary orders between consecutive magnitudes); E_H and T when they do
+  static constexpr int kGap = 128;
+  bool classify(const double* const* p, const double* w) {
+    int es[(kMaxD + 1) * kMaxD];
+    int n = 0;
+    for (int k = 0; k <= d; ++k)
+      for (int l = 0; l < d; ++l)
+        if (p[k][l] != 0) std::frexp(p[k][l], &es[n++]);
+    if (n < 2) return false;
+    std::sort(es, es + n);
+    int cut = -1, best = kGap - 1;  // the split: es[cut] below, es[cut + 1] above
+    for (int i = 0; i + 1 < n; ++i)
+      if (es[i + 1] - es[i] > best) best = es[i + 1] - es[i], cut = i;
+    if (cut < 0) return false;
+    const int split_e = es[cut + 1];
+    long eh = std::numeric_limits<long>::max(), el = std::numeric_limits<long>::max();
+    std::int64_t mant;
+    long ex;
+    for (int k = 0; k <= d; ++k)
+      for (int l = 0; l < d; ++l)
+        if (p[k][l] != 0) {
+          int e;
+          std::frexp(p[k][l], &e);
+          split_double(p[k][l], mant, ex);
+          long& least = e >= split_e ? eh : el;
+          least = std::min(least, ex);
+        }
+    EH = eh, T = eh - el;
+    if (w)
+      for (int k = 0; k <= d; ++k)
+        if (w[k] != 0) {
+          split_double(w[k], mant, ex);
+          if (ex < 2 * el) return false;  // finer than eps^2 units: the plain solver
+        }
+    return true;
+  }
+
+  // a double as a polynomial: coordinates (scale 1) a_0 or a_1 eps, weights
+  // (scale 2) a_0 or a_2 eps^2
+  void load(Poly& out, double x, int scale) {
+    out.clear();
+    if (x == 0) return;
+    std::int64_t mant;
+    long ex;
+    split_double(x, mant, ex);
+    const long sh0 = ex - scale * EH;
+    const int k = sh0 >= 0 ? 0 : scale;
+    const long sh = sh0 + k * T;  // >= 0: classify's choice of E_L
+    out.zero_to(k);
+    mpz_set_si(out.c[k].v, static_cast<long>(mant));
+    mpz_mul_2exp(out.c[k].v, out.c[k].v, static_cast<mp_bitcnt_t>(sh));
+  }
+
+  // 1: M, Dn (D > 0) and E filled; 0: zero volume
+  int solve(const double* const* p, const double* w, Mpz* M, mpz_t D, long& E) {
+    for (int k = 0; k <= d; ++k) {
+      for (int l = 0; l < d; ++l) load(P[k][l], p[k][l], 1);
+      if (w) load(W[k], w[k], 2);
+    }
+    for (int k = 1; k <= d; ++k) {
+      Poly& b = X[k - 1][d];
+      b.clear();
+      for (int l = 0; l < d; ++l) {
+        Poly& v = X[k - 1][l];  // P_k - P_0
+        const int n = std::max(P[k][l].deg, P[0][l].deg);
+        v.zero_to(n);
+        for (int i = 0; i <= P[k][l].deg; ++i) mpz_add(v.c[i].v, v.c[i].v, P[k][l].c[i].v);
+        for (int i = 0; i <= P[0][l].deg; ++i) mpz_sub(v.c[i].v, v.c[i].v, P[0][l].c[i].v);
+        v.trim();
+        poly_mul_sub(t, v, v, z, z);
+        add_into(b, t);
+      }
+      if (w) {
+        sub_into(b, W[k]);
+        add_into(b, W[0]);
+      }
+    }
+    // Bareiss in Z[eps], as CentreSolver::eliminate
+    for (int k = 0; k < d; ++k) {
+      if (X[k][k].deg < 0) {
+        int rr = k + 1;
+        while (rr < d && X[rr][k].deg < 0) ++rr;
+        if (rr == d) return 0;
+        for (int j = k; j <= d; ++j) X[k][j].swap(X[rr][j]);
+      }
+      for (int i = k + 1; i < d; ++i)
+        for (int j = k + 1; j <= d; ++j) {
+          poly_mul_sub(t, X[i][j], X[k][k], X[i][k], X[k][j]);
+          if (k > 0)
+            poly_divexact(X[i][j], t, X[k - 1][k - 1], acc.v);
+          else
+            X[i][j].swap(t);
+        }
+    }
+    Dn.set(X[d - 1][d - 1]);
+    for (int i = d - 1; i >= 0; --i) {
+      // t = X[i][d] Dn - sum_(j > i) X[i][j] N_j
+      poly_mul_sub(t, X[i][d], Dn, z, z);
+      for (int j = i + 1; j < d; ++j) {
+        poly_mul_sub(u, X[i][j], N[j], z, z);
+        sub_into(t, u);
+      }
+      poly_divexact(N[i], t, X[i][i], acc.v);
+    }
+    // M_l = N_l + P0_l 2 Dn, D = 2 Dn; times eps^-K into integers
+    for (int i = 0; i <= Dn.deg; ++i) mpz_mul_2exp(Dn.c[i].v, Dn.c[i].v, 1);
+    int K = Dn.deg;
+    for (int l = 0; l < d; ++l) {
+      poly_mul_sub(t, P[0][l], Dn, z, z);
+      add_into(N[l], t);
+      K = std::max(K, N[l].deg);
+    }
+    auto to_int = [&](const Poly& a, mpz_t out) {
+      mpz_set_ui(out, 0);
+      for (int i = 0; i <= a.deg; ++i) {  // Horner in 2^T: sum a_i 2^(T (deg - i)), a_0 the leading term
+        if (i > 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(T));
+        mpz_add(out, out, a.c[i].v);
+      }
+      mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(T * (K - std::max(a.deg, 0))));
+    };
+    to_int(Dn, D);
+    if (mpz_sgn(D) == 0) return 0;
+    for (int l = 0; l < d; ++l) to_int(N[l], M[l].v);
+    if (mpz_sgn(D) < 0) {
+      mpz_neg(D, D);
+      for (int l = 0; l < d; ++l) mpz_neg(M[l].v, M[l].v);
+    }
+    E = EH;
+    return 1;
+  }
+
+ private:
+  // a += b, or a -= b
+  static void add_into(Poly& a, const Poly& b, bool subtract = false) {
+    if (b.deg > a.deg) {
+      for (int i = a.deg + 1; i <= b.deg; ++i) mpz_set_ui(a.c[i].v, 0);
+      a.deg = b.deg;
+    }
+    for (int i = 0; i <= b.deg; ++i) (subtract ? mpz_sub : mpz_add)(a.c[i].v, a.c[i].v, b.c[i].v);
+    a.trim();
+  }
+  static void sub_into(Poly& a, const Poly& b) { add_into(a, b, true); }
+};
 
 // The exact centre of a simplex of d + 1 points (weights optional):
 // c_l = M[l] / D * 2^E with D > 0, or D = 0 for a simplex of zero volume.
 // All coordinates are integers times 2^E and all weights integers times 2^(2E)
 // (E the least exponent among them; a weight's halved, rounded down), so in
 // units of 2^E: v_k = P_k - P_0 (k = 1..d) and b_k = |v_k|^2 - (W_k - W_0) are
-// integers and the centre is P_0 + x with 2 v_k . x = b_k, solved by Cramer's
-// rule: x_l = det(V with column l replaced by b) / (2 det V), each
-// determinant by fraction-free (Bareiss) elimination, exact.
+// integers and the centre is P_0 + x with 2 v_k . x = b_k, solved exactly:
+// y = 2 x solves V y = b, and by Cramer's rule y_l = N_l / det V with N_l
+// the determinant of V with column l replaced by b. One fraction-free
+// (Bareiss) elimination of the augmented matrix X = [V | b], rows swapped
+// where a pivot is 0, gives both: its last pivot X[d-1][d-1] is det V' and
+// X[d-1][d] is N'_(d-1) (V' = V with its rows permuted, N' accordingly: the
+// swaps change every determinant's sign together, so y_l = N'_l / det V').
+// Each row i of the eliminated X is a combination of the equations, so
+// sum_(j >= i) X[i][j] y_j = X[i][d]; with y_j = N'_j / det V' this is
+// fraction-free back-substitution,
+//   N'_i = (X[i][d] det V' - sum_(j > i) X[i][j] N'_j) / X[i][i],
+// an exact division (N'_i is an integer; X[i][i] is a non-zero pivot). This
+// costs one elimination instead of the d + 1 of d + 1 determinants (5D:
+// 40 + 15 multiplications of big integers instead of 180).
 struct CentreSolver {
   int d = 2;
-  Mpz P[kMaxD + 1][kMaxD], W[kMaxD + 1], A[kMaxD][kMaxD], B[kMaxD], M[kMaxD], Dn, t, q, r, tmp;
+  Mpz P[kMaxD + 1][kMaxD], W[kMaxD + 1], X[kMaxD][kMaxD + 1], M[kMaxD], Dn, t, q, r, tmp;
   long E = 0;
 
-  Mpz X[kMaxD][kMaxD];
-  long det(int skip_col_for_b, mpz_t out) {  // det of A with column skip replaced by B (skip < 0: none) into out
-    for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j) mpz_set(X[i][j].v, j == skip_col_for_b ? B[i].v : A[i][j].v);
-    int sign = 1;
-    for (int k = 0; k + 1 < d; ++k) {
+  // Bareiss on X (d x (d + 1)) and back-substitution into M[l] = N'_l,
+  // Dn = det V'; false when det V = 0
+  bool eliminate() {
+    for (int k = 0; k < d; ++k) {
       if (mpz_sgn(X[k][k].v) == 0) {
         int rr = k + 1;
         while (rr < d && mpz_sgn(X[rr][k].v) == 0) ++rr;
-        if (rr == d) {
-          mpz_set_ui(out, 0);
-          return 0;
-        }
-        for (int j = 0; j < d; ++j) mpz_swap(X[k][j].v, X[rr][j].v);
-        sign = -sign;
+        if (rr == d) return false;
+        for (int j = k; j <= d; ++j) mpz_swap(X[k][j].v, X[rr][j].v);
       }
       for (int i = k + 1; i < d; ++i)
-        for (int j = k + 1; j < d; ++j) {
+        for (int j = k + 1; j <= d; ++j) {
           mpz_mul(t.v, X[i][j].v, X[k][k].v);
           mpz_submul(t.v, X[i][k].v, X[k][j].v);
           if (k > 0) mpz_divexact(t.v, t.v, X[k - 1][k - 1].v);
           mpz_swap(X[i][j].v, t.v);
         }
     }
-    mpz_set(out, X[d - 1][d - 1].v);
-    if (sign < 0) mpz_neg(out, out);
-    return mpz_sgn(out);
+    mpz_set(Dn.v, X[d - 1][d - 1].v);
+    for (int i = d - 1; i >= 0; --i) {
+      mpz_mul(t.v, X[i][d].v, Dn.v);
+      for (int j = i + 1; j < d; ++j) mpz_submul(t.v, X[i][j].v, M[j].v);
+      mpz_divexact(M[i].v, t.v, X[i][i].v);
+    }
+    return true;
   }
+
+  std::unique_ptr<SplitCentre> split;  // made on first use
+  bool used_split = false;             // the last solve's path (for the tests)
 
   // false: zero volume
   bool solve(const double* const* p, const double* w) {
+    if (!split) split = std::make_unique<SplitCentre>();
+    split->d = d;
+    used_split = split->classify(p, w);
+    if (used_split) return split->solve(p, w, M, Dn.v, E) == 1;
     E = std::numeric_limits<long>::max();
     std::int64_t mant;
     long ex;
@@ -1963,22 +2208,21 @@ struct CentreSolver {
       }
     }
     for (int k = 1; k <= d; ++k) {
-      mpz_set_ui(B[k - 1].v, 0);
+      mpz_t& b = X[k - 1][d].v;
+      mpz_set_ui(b, 0);
       for (int l = 0; l < d; ++l) {
-        mpz_sub(A[k - 1][l].v, P[k][l].v, P[0][l].v);
-        mpz_addmul(B[k - 1].v, A[k - 1][l].v, A[k - 1][l].v);
+        mpz_sub(X[k - 1][l].v, P[k][l].v, P[0][l].v);
+        mpz_addmul(b, X[k - 1][l].v, X[k - 1][l].v);
       }
       if (w) {
-        mpz_sub(B[k - 1].v, B[k - 1].v, W[k].v);
-        mpz_add(B[k - 1].v, B[k - 1].v, W[0].v);
+        mpz_sub(b, b, W[k].v);
+        mpz_add(b, b, W[0].v);
       }
     }
-    if (det(-1, Dn.v) == 0) return false;
+    if (!eliminate()) return false;
+    // x_l = y_l / 2 = M_l / (2 Dn); M_l = N'_l + P0_l * 2 Dn
     mpz_mul_2exp(Dn.v, Dn.v, 1);
-    for (int l = 0; l < d; ++l) {
-      det(l, M[l].v);
-      mpz_addmul(M[l].v, P[0][l].v, Dn.v);  // M_l = N_l + P0_l * D
-    }
+    for (int l = 0; l < d; ++l) mpz_addmul(M[l].v, P[0][l].v, Dn.v);
     if (mpz_sgn(Dn.v) < 0) {
       mpz_neg(Dn.v, Dn.v);
       for (int l = 0; l < d; ++l) mpz_neg(M[l].v, M[l].v);
@@ -3189,6 +3433,32 @@ double _round_ratio(const std::string& M, const std::string& D, long E) {
   return round_ratio(a.v, b.v, E, q.v, r.v, tmp.v);
 }
 
+// The exact solver alone, for the tests: the centre of the simplex `points`
+// ((d + 1) x d, optional weights) as decimal strings (M_0..M_(d-1), D) and E
+// with c_l = M_l / D * 2^E exactly and whether SplitCentre solved it, or
+// None for a simplex of zero volume.
+nb::object _exact_centre(const std::vector<std::vector<double>>& points, std::optional<std::vector<double>> weights) {
+  const int d = static_cast<int>(points.size()) - 1;
+  if (d < 1 || d > kMaxD) throw std::invalid_argument("need d + 1 points, 1 <= d <= 9");
+  for (const auto& q : points)
+    if (static_cast<int>(q.size()) != d) throw std::invalid_argument("each point needs d coordinates");
+  if (weights && static_cast<int>(weights->size()) != d + 1) throw std::invalid_argument("need d + 1 weights");
+  auto cs = std::make_unique<CentreSolver>();
+  cs->d = d;
+  const double* p[kMaxD + 1];
+  for (int k = 0; k <= d; ++k) p[k] = points[static_cast<std::size_t>(k)].data();
+  if (!cs->solve(p, weights ? weights->data() : nullptr)) return nb::none();
+  auto str = [](const mpz_t v) {
+    std::string out(mpz_sizeinbase(v, 10) + 2, '\0');
+    mpz_get_str(out.data(), 10, v);
+    out.resize(std::strlen(out.c_str()));
+    return out;
+  };
+  nb::list M;
+  for (int l = 0; l < d; ++l) M.append(str(cs->M[l].v));
+  return nb::make_tuple(M, str(cs->Dn.v), cs->E, cs->used_split);
+}
+
 }  // namespace
 
 NB_MODULE(_flipflop, m) {
@@ -3242,4 +3512,5 @@ NB_MODULE(_flipflop, m) {
   m.def("voronoi", &voronoi, nb::arg("points"), nb::arg("weights").none(), nb::arg("simplices"), nb::arg("threads"),
         nb::arg("neighbors").none() = nb::none());
   m.def("_round_ratio", &_round_ratio, nb::arg("M"), nb::arg("D"), nb::arg("E"));
+  m.def("_exact_centre", &_exact_centre, nb::arg("points"), nb::arg("weights").none());
 }
