@@ -1960,6 +1960,54 @@ inline void poly_divexact(Poly& q, const Poly& t, const Poly& p, mpz_t acc) {
   q.trim();
 }
 
+// The elimination both exact solvers run (CentreSolver over Z, SplitCentre
+// over Z[eps]; CentreSolver's comment derives it): fraction-free (Bareiss)
+// elimination of X = [V | b] (d x (d + 1)) with row swaps where a pivot is
+// 0, then fraction-free back-substitution N'_i = (X[i][d] det V' -
+// sum_(j > i) X[i][j] N'_j) / X[i][i]. Dn = det V'; false when det V = 0.
+// R supplies the ring's operations on its elements El: is_zero, swap,
+// set, mul_sub (out = a b - e f), mul, submul (acc -= a b) and divexact
+// (q = t / p, exact); t is scratch.
+template <class R, class El>
+bool bareiss_cramer(R& r, int d, El (*X)[kMaxD + 1], El* N, El& Dn, El& t) {
+  for (int k = 0; k < d; ++k) {
+    if (r.is_zero(X[k][k])) {
+      int rr = k + 1;
+      while (rr < d && r.is_zero(X[rr][k])) ++rr;
+      if (rr == d) return false;
+      for (int j = k; j <= d; ++j) r.swap(X[k][j], X[rr][j]);
+    }
+    for (int i = k + 1; i < d; ++i)
+      for (int j = k + 1; j <= d; ++j) {
+        r.mul_sub(t, X[i][j], X[k][k], X[i][k], X[k][j]);
+        if (k > 0)
+          r.divexact(X[i][j], t, X[k - 1][k - 1]);
+        else
+          r.swap(X[i][j], t);
+      }
+  }
+  r.set(Dn, X[d - 1][d - 1]);
+  for (int i = d - 1; i >= 0; --i) {
+    r.mul(t, X[i][d], Dn);
+    for (int j = i + 1; j < d; ++j) r.submul(t, X[i][j], N[j]);
+    r.divexact(N[i], t, X[i][i]);
+  }
+  return true;
+}
+
+struct IntRing {
+  static bool is_zero(const Mpz& a) { return mpz_sgn(a.v) == 0; }
+  static void swap(Mpz& a, Mpz& b) { mpz_swap(a.v, b.v); }
+  static void set(Mpz& a, const Mpz& b) { mpz_set(a.v, b.v); }
+  static void mul_sub(Mpz& out, const Mpz& a, const Mpz& b, const Mpz& e, const Mpz& f) {
+    mpz_mul(out.v, a.v, b.v);
+    mpz_submul(out.v, e.v, f.v);
+  }
+  static void mul(Mpz& out, const Mpz& a, const Mpz& b) { mpz_mul(out.v, a.v, b.v); }
+  static void submul(Mpz& acc, const Mpz& a, const Mpz& b) { mpz_submul(acc.v, a.v, b.v); }
+  static void divexact(Mpz& q, const Mpz& t, const Mpz& p) { mpz_divexact(q.v, t.v, p.v); }
+};
+
 struct SplitCentre {
   int d = 2;
   Poly P[kMaxD + 1][kMaxD], W[kMaxD + 1], X[kMaxD][kMaxD + 1], N[kMaxD], Dn, t, u, z;  // z: always zero
@@ -2044,33 +2092,7 @@ struct SplitCentre {
         add_into(b, W[0]);
       }
     }
-    // Bareiss in Z[eps], as CentreSolver::eliminate
-    for (int k = 0; k < d; ++k) {
-      if (X[k][k].deg < 0) {
-        int rr = k + 1;
-        while (rr < d && X[rr][k].deg < 0) ++rr;
-        if (rr == d) return 0;
-        for (int j = k; j <= d; ++j) X[k][j].swap(X[rr][j]);
-      }
-      for (int i = k + 1; i < d; ++i)
-        for (int j = k + 1; j <= d; ++j) {
-          poly_mul_sub(t, X[i][j], X[k][k], X[i][k], X[k][j]);
-          if (k > 0)
-            poly_divexact(X[i][j], t, X[k - 1][k - 1], acc.v);
-          else
-            X[i][j].swap(t);
-        }
-    }
-    Dn.set(X[d - 1][d - 1]);
-    for (int i = d - 1; i >= 0; --i) {
-      // t = X[i][d] Dn - sum_(j > i) X[i][j] N_j
-      poly_mul_sub(t, X[i][d], Dn, z, z);
-      for (int j = i + 1; j < d; ++j) {
-        poly_mul_sub(u, X[i][j], N[j], z, z);
-        sub_into(t, u);
-      }
-      poly_divexact(N[i], t, X[i][i], acc.v);
-    }
+    if (!bareiss_cramer(*this, d, X, N, Dn, t)) return 0;
     // M_l = N_l + P0_l 2 Dn, D = 2 Dn; times eps^-K into integers
     for (int i = 0; i <= Dn.deg; ++i) mpz_mul_2exp(Dn.c[i].v, Dn.c[i].v, 1);
     int K = Dn.deg;
@@ -2097,6 +2119,18 @@ struct SplitCentre {
     E = EH;
     return 1;
   }
+
+  // the ring Z[eps] for bareiss_cramer (u, z, acc: scratch)
+  static bool is_zero(const Poly& a) { return a.deg < 0; }
+  static void swap(Poly& a, Poly& b) { a.swap(b); }
+  static void set(Poly& a, const Poly& b) { a.set(b); }
+  void mul_sub(Poly& out, const Poly& a, const Poly& b, const Poly& e, const Poly& f) { poly_mul_sub(out, a, b, e, f); }
+  void mul(Poly& out, const Poly& a, const Poly& b) { poly_mul_sub(out, a, b, z, z); }
+  void submul(Poly& acc_p, const Poly& a, const Poly& b) {
+    poly_mul_sub(u, a, b, z, z);
+    sub_into(acc_p, u);
+  }
+  void divexact(Poly& q, const Poly& t_p, const Poly& p) { poly_divexact(q, t_p, p, acc.v); }
 
  private:
   // a += b, or a -= b
@@ -2134,33 +2168,6 @@ struct CentreSolver {
   int d = 2;
   Mpz P[kMaxD + 1][kMaxD], W[kMaxD + 1], X[kMaxD][kMaxD + 1], M[kMaxD], Dn, t, q, r, tmp;
   long E = 0;
-
-  // Bareiss on X (d x (d + 1)) and back-substitution into M[l] = N'_l,
-  // Dn = det V'; false when det V = 0
-  bool eliminate() {
-    for (int k = 0; k < d; ++k) {
-      if (mpz_sgn(X[k][k].v) == 0) {
-        int rr = k + 1;
-        while (rr < d && mpz_sgn(X[rr][k].v) == 0) ++rr;
-        if (rr == d) return false;
-        for (int j = k; j <= d; ++j) mpz_swap(X[k][j].v, X[rr][j].v);
-      }
-      for (int i = k + 1; i < d; ++i)
-        for (int j = k + 1; j <= d; ++j) {
-          mpz_mul(t.v, X[i][j].v, X[k][k].v);
-          mpz_submul(t.v, X[i][k].v, X[k][j].v);
-          if (k > 0) mpz_divexact(t.v, t.v, X[k - 1][k - 1].v);
-          mpz_swap(X[i][j].v, t.v);
-        }
-    }
-    mpz_set(Dn.v, X[d - 1][d - 1].v);
-    for (int i = d - 1; i >= 0; --i) {
-      mpz_mul(t.v, X[i][d].v, Dn.v);
-      for (int j = i + 1; j < d; ++j) mpz_submul(t.v, X[i][j].v, M[j].v);
-      mpz_divexact(M[i].v, t.v, X[i][i].v);
-    }
-    return true;
-  }
 
   std::unique_ptr<SplitCentre> split;  // made on first use
   bool used_split = false;             // the last solve's path (for the tests)
@@ -2219,7 +2226,8 @@ struct CentreSolver {
         mpz_add(b, b, W[0].v);
       }
     }
-    if (!eliminate()) return false;
+    IntRing ring;
+    if (!bareiss_cramer(ring, d, X, M, Dn, t)) return false;  // M[l] = N'_l, Dn = det V'
     // x_l = y_l / 2 = M_l / (2 Dn); M_l = N'_l + P0_l * 2 Dn
     mpz_mul_2exp(Dn.v, Dn.v, 1);
     for (int l = 0; l < d; ++l) mpz_addmul(M[l].v, P[0][l].v, Dn.v);
