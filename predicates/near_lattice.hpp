@@ -123,7 +123,7 @@ struct NlEntry {
 
 template <int K>
 struct NearLattice {
-  NlEntry a[K][K];
+  NlEntry a[K][K];    // the moved rows' entries (integer rows: not filled)
   long long n[K][K];  // the constant coefficients (integer rows: the whole entry)
   double norm2[K];    // Σ_j n_ij^2 over all K columns, binary64
   bool moved[K];
@@ -131,7 +131,10 @@ struct NearLattice {
 
 // Λ (w non-null: lifted, column K-2 the heights, K-1 the 1-column) of K
 // points as polynomials; false where a value does not split, a lifted
-// coefficient overflows, or more than kNlMaxMoved rows are moved.
+// coefficient overflows, or more than kNlMaxMoved rows are moved. Only the
+// moved rows' polynomial entries (a) are filled: the minors read an integer
+// row through its constants (n) alone, so its entries are not built (on the
+// moved 3^5 grid most rows of a call are integer rows).
 template <int K>
 inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L) {
   const int ncoord = w ? K - 2 : K - 1;
@@ -143,24 +146,36 @@ inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L)
       if (!nl_split(p[i][j], n[j], a[j], b[j])) return false;
       mv = mv || a[j] != 0 || b[j] != 0;
     }
-    for (int j = 0; j < ncoord; ++j) {
-      NlEntry& e = L.a[i][j];
-      e.n = 0;
-      e.add(0, n[j]);
-      e.add(8, a[j]);
-      e.add(1, b[j]);
-    }
+    long long nw = 0, aw = 0, bw = 0;
     if (w) {
-      long long nw, aw, bw;
       if (!nl_split(w[i], nw, aw, bw)) return false;
       mv = mv || aw != 0 || bw != 0;
-      // c0 = Σ n^2 - n_w, cε = 2 Σ n a - a_w, cη = 2 Σ n b - b_w, cεε = Σ a^2,
-      // cεη = 2 Σ a b, cηη = Σ b^2 (checked: |n| <= 2^26, |a|, |b| <= 2^40)
-      long long c0 = -nw, ce = -aw, ch = -bw, cee = 0, ceh = 0, chh = 0;
-      bool over = false;
-      if (!mv) {  // an integer row: c0 alone, below 8 2^52 + 2^26 (no overflow)
+    }
+    if (mv && ++moved > kNlMaxMoved) return false;
+    long long* ni = L.n[i];
+    for (int j = 0; j < ncoord; ++j) ni[j] = n[j];
+    ni[K - 1] = 1;
+    if (!mv) {
+      // an integer row: the lifted entry is c0 alone, below 8 2^52 + 2^26
+      // (no overflow)
+      if (w) {
+        long long c0 = -nw;
         for (int j = 0; j < ncoord; ++j) c0 += n[j] * n[j];
-      } else {
+        ni[K - 2] = c0;
+      }
+    } else {
+      for (int j = 0; j < ncoord; ++j) {
+        NlEntry& e = L.a[i][j];
+        e.n = 0;
+        e.add(0, n[j]);
+        e.add(8, a[j]);
+        e.add(1, b[j]);
+      }
+      if (w) {
+        // c0 = Σ n^2 - n_w, cε = 2 Σ n a - a_w, cη = 2 Σ n b - b_w, cεε = Σ a^2,
+        // cεη = 2 Σ a b, cηη = Σ b^2 (checked: |n| <= 2^26, |a|, |b| <= 2^40)
+        long long c0 = -nw, ce = -aw, ch = -bw, cee = 0, ceh = 0, chh = 0;
+        bool over = false;
         for (int j = 0; j < ncoord; ++j) {
           long long t;
           over |= __builtin_mul_overflow(n[j], n[j], &t) || __builtin_add_overflow(c0, t, &c0);
@@ -171,32 +186,30 @@ inline bool nl_build(const double* const* p, const double* w, NearLattice<K>& L)
                   __builtin_add_overflow(ceh, t, &ceh);
           over |= __builtin_mul_overflow(b[j], b[j], &t) || __builtin_add_overflow(chh, t, &chh);
         }
+        if (over) return false;
+        NlEntry& e = L.a[i][K - 2];
+        e.n = 0;
+        e.add(0, c0);
+        e.add(8, ce);
+        e.add(1, ch);
+        e.add(16, cee);
+        e.add(9, ceh);
+        e.add(2, chh);
+        ni[K - 2] = c0;
       }
-      if (over) return false;
-      NlEntry& e = L.a[i][K - 2];
-      e.n = 0;
-      e.add(0, c0);
-      e.add(8, ce);
-      e.add(1, ch);
-      e.add(16, cee);
-      e.add(9, ceh);
-      e.add(2, chh);
+      NlEntry& one = L.a[i][K - 1];
+      one.n = 0;
+      one.add(0, 1);
     }
-    NlEntry& one = L.a[i][K - 1];
-    one.n = 0;
-    one.add(0, 1);
     L.moved[i] = mv;
-    moved += mv;
     double s = 0.0;
     for (int j = 0; j < K; ++j) {
-      const NlEntry& e = L.a[i][j];
-      L.n[i][j] = (e.n > 0 && e.e[0] == 0) ? e.c[0] : 0;
-      const double v = static_cast<double>(L.n[i][j]);
+      const double v = static_cast<double>(ni[j]);
       s += v * v;
     }
     L.norm2[i] = s;
   }
-  return moved <= kNlMaxMoved;
+  return true;
 }
 
 inline int nl_popcount(unsigned x) {  // x < 256 (no popcnt instruction assumed)
