@@ -2835,9 +2835,15 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     rr = {};
     // non-degenerate: spans a (d-1)-flat (the facet of a positive simplex, or
     // a projection along some axis has non-zero (d-1)-volume)
+    // (each boundary facet decided once: the seeds' loop below and the
+    // search within a hull facet ask for the same facets, and a degenerate
+    // one costs d exactly zero orientations)
+    std::vector<std::int8_t> nd_memo(nb_, -1);
     auto nondegenerate = [&](std::size_t b) {
       const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
       if (!flat[s]) return true;
+      if (nd_memo[b] >= 0) return nd_memo[b] == 1;
+      nd_memo[b] = 1;
       fvert(b, f);
       double proj[kMaxD][kMaxD];
       const double* rows[kMaxD + 1];
@@ -2851,6 +2857,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         }
         if (pred::orient_d_exact(d - 1, rows) != 0) return true;
       }
+      nd_memo[b] = 0;
       return false;
     };
     std::vector<std::int64_t> bgroup(nb_, -1), bstamp(nb_, -1), sstamp(m, -1);
