@@ -27,13 +27,13 @@ namespace flipflop::pred::fast {
 inline int orient2d(const StaticFilter& f, Pt a, Pt b, Pt c) {
   const double* p[3] = {a.x, b.x, c.x};
   if (const int s = plain_filters<3>(f, p)) return s;
-  return pred::after_filters::orient2d(a, b, c, f.dd_window());
+  return pred::after_filters::orient2d(a, b, c, f.dd_window(), f.lattice(3, false));
 }
 
 inline int orient3d(const StaticFilter& f, Pt a, Pt b, Pt c, Pt d) {
   const double* p[4] = {a.x, b.x, c.x, d.x};
   if (const int s = plain_filters<4>(f, p)) return s;
-  return pred::after_filters::orient3d(a, b, c, d, f.dd_window());
+  return pred::after_filters::orient3d(a, b, c, d, f.dd_window(), f.lattice(4, false));
 }
 
 inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
@@ -41,7 +41,7 @@ inline int power2d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d) {
   const double w[4] = {a.w, b.w, c.w, d.w};
   if (const int s = static_sign<4>(f, p, w)) return s;
   if (const int s = semi_static_sign<4>(p, w)) return s;
-  return pred::after_filters::power2d(a, b, c, d, f.dd_window());
+  return pred::after_filters::power2d(a, b, c, d, f.dd_window(), f.lattice(4, true));
 }
 
 // power3d's stages after the static filter: for a caller that inlines
@@ -50,7 +50,7 @@ inline int power3d_after_static(const StaticFilter& f, WPt a, WPt b, WPt c, WPt 
   const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
   if (const int s = semi_static_sign<5>(p, w)) return s;
-  return pred::after_filters::power3d(a, b, c, d, e, f.dd_window());
+  return pred::after_filters::power3d(a, b, c, d, e, f.dd_window(), f.lattice(5, true));
 }
 
 inline int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e) {

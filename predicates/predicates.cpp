@@ -428,8 +428,8 @@ namespace {
 #if defined(FLIPFLOP_FMA_DISPATCH)
 template <int K>
 __attribute__((target("fma"))) int after_filters_fma(const PointId* id, const double* const* p,
-                                                     const double* w, bool window) {
-  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window);
+                                                     const double* w, bool window, int lattice) {
+  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window, lattice);
 }
 template <int K>
 __attribute__((target("fma"))) int dd_filter_fma(const double* const* p, const double* w) {
@@ -437,53 +437,54 @@ __attribute__((target("fma"))) int dd_filter_fma(const double* const* p, const d
 }
 #endif
 template <int K>
-int after_filters_any(const PointId* id, const double* const* p, const double* w, bool window) {
+int after_filters_any(const PointId* id, const double* const* p, const double* w, bool window, int lattice) {
 #if defined(FLIPFLOP_FMA_ALWAYS)
-  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window);
+  return lambda_sign_after_filters<K, PointId, true>(id, p, w, window, lattice);
 #else
 #if defined(FLIPFLOP_FMA_DISPATCH)
-  if (__builtin_cpu_supports("fma")) return after_filters_fma<K>(id, p, w, window);
+  if (__builtin_cpu_supports("fma")) return after_filters_fma<K>(id, p, w, window, lattice);
 #endif
-  return lambda_sign_after_filters<K, PointId, false>(id, p, w, window);
+  return lambda_sign_after_filters<K, PointId, false>(id, p, w, window, lattice);
 #endif
 }
 }  // namespace
 
 // staged.hpp: lambda_sign_staged's out-of-line stages after the filters on the host
 template <int K>
-int lambda_sign_after_filters_host(const PointId* ids, const double* const* p, const double* w, bool window) {
-  return after_filters_any<K>(ids, p, w, window);
+int lambda_sign_after_filters_host(const PointId* ids, const double* const* p, const double* w, bool window,
+                                   int lattice) {
+  return after_filters_any<K>(ids, p, w, window, lattice);
 }
-template int lambda_sign_after_filters_host<2>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<3>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<4>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<5>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<6>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<7>(const PointId*, const double* const*, const double*, bool);
-template int lambda_sign_after_filters_host<8>(const PointId*, const double* const*, const double*, bool);
+template int lambda_sign_after_filters_host<2>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<3>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<4>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<5>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<6>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<7>(const PointId*, const double* const*, const double*, bool, int);
+template int lambda_sign_after_filters_host<8>(const PointId*, const double* const*, const double*, bool, int);
 
 namespace after_filters {
-int orient2d(Pt a, Pt b, Pt c, bool dd_window) {
+int orient2d(Pt a, Pt b, Pt c, bool dd_window, int lattice) {
   const PointId id[3] = {a.id, b.id, c.id};
   const double* p[3] = {a.x, b.x, c.x};
-  return after_filters_any<3>(id, p, nullptr, dd_window);
+  return after_filters_any<3>(id, p, nullptr, dd_window, lattice);
 }
-int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window) {
+int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window, int lattice) {
   const PointId id[4] = {a.id, b.id, c.id, d.id};
   const double* p[4] = {a.x, b.x, c.x, d.x};
-  return after_filters_any<4>(id, p, nullptr, dd_window);
+  return after_filters_any<4>(id, p, nullptr, dd_window, lattice);
 }
-int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window) {
+int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window, int lattice) {
   const PointId id[4] = {a.id, b.id, c.id, d.id};
   const double* p[4] = {a.x, b.x, c.x, d.x};
   const double w[4] = {a.w, b.w, c.w, d.w};
-  return after_filters_any<4>(id, p, w, dd_window);
+  return after_filters_any<4>(id, p, w, dd_window, lattice);
 }
-int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window) {
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window, int lattice) {
   const PointId id[5] = {a.id, b.id, c.id, d.id, e.id};
   const double* p[5] = {a.x, b.x, c.x, d.x, e.x};
   const double w[5] = {a.w, b.w, c.w, d.w, e.w};
-  return after_filters_any<5>(id, p, w, dd_window);
+  return after_filters_any<5>(id, p, w, dd_window, lattice);
 }
 }  // namespace after_filters
 

@@ -213,14 +213,15 @@ int power3d(const StaticFilter& f, WPt a, WPt b, WPt c, WPt d, WPt e);
 // The same after the static and semi-static (or permanent) filters
 // (staged.hpp, lambda_sign_after_filters): fast.hpp runs those inline and
 // calls these only when they have failed. `dd_window`: the input's
-// StaticFilter::dd_window(). On an x86-64 host with FMA (checked once per
+// StaticFilter::dd_window(); `lattice`: its StaticFilter::lattice(k, lifted)
+// (0: nothing known). On an x86-64 host with FMA (checked once per
 // call by __builtin_cpu_supports) the double-double filter runs in its FMA
 // instantiation (dd_filter.hpp): the same signs, fewer instructions.
 namespace after_filters {
-int orient2d(Pt a, Pt b, Pt c, bool dd_window);
-int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window);
-int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window);
-int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window);
+int orient2d(Pt a, Pt b, Pt c, bool dd_window, int lattice = 0);
+int orient3d(Pt a, Pt b, Pt c, Pt d, bool dd_window, int lattice = 0);
+int power2d(WPt a, WPt b, WPt c, WPt d, bool dd_window, int lattice = 0);
+int power3d(WPt a, WPt b, WPt c, WPt d, WPt e, bool dd_window, int lattice = 0);
 }  // namespace after_filters
 
 // Host-only path for k = 9..11 rows (kMaxStagedK < k <= kMaxLambdaK): a

@@ -159,10 +159,12 @@ FF_HD FF_DEVICE_NOINLINE int lambda_int_sorted(const Id* ids, const xp::IntLambd
 // not apply (the integer stage below then decides). 3^5 grid Delaunay
 // (rtd --dim 5, compute + certify, one thread): 1296 -> 1174 M instructions
 // (callgrind) against the scan and build of Λ in int64 before the same walk.
-// `known`: every value is known to be such an integer (the tests skipped).
+// `known`: every value is known to be such an integer (the tests skipped);
+// `bounded` (with known): the walk's bound is known to hold as well
+// (StaticFilter::walk_bounded), and it is not computed.
 template <int K, class Id>
 FF_HD FF_DEVICE_NOINLINE int lambda_small_int_sorted(const Id* ids, const double* const* p, const double* w,
-                                                     bool known) {
+                                                     bool known, bool bounded) {
   const double* sp[K];
   double sw[K];
   const int parity = sorted_rows<K>(ids, p, w, sp, sw);
@@ -172,7 +174,7 @@ FF_HD FF_DEVICE_NOINLINE int lambda_small_int_sorted(const Id* ids, const double
     xp::small_integer_differences<K, true>(sp, w ? sw : nullptr, m);
   else if (!xp::small_integer_differences<K>(sp, w ? sw : nullptr, m))
     return 2;
-  const int s = xp::int_lattice_sos_dbl_rows<K>(m, ids != nullptr);
+  const int s = xp::int_lattice_sos_dbl_rows<K>(m, ids != nullptr, known && bounded);
   return s == 2 ? 2 : parity * s;
 }
 
@@ -262,9 +264,12 @@ FF_HD int flat_sign_sorted(const Id* ids, const double* const* p, const double* 
 // window (StaticFilter::dd_window()); Fma: dd_filter_sign's choice of
 // two_product (predicates.cpp instantiates it inside a target("fma")
 // function on a host with FMA, hence FF_FORCEINLINE).
+// `lattice` (with ids; StaticFilter::lattice of the caller's filter): 1 every
+// value is known to be a small integer, 2 the binary64 walk's bound is known
+// to hold too (lambda_small_int_sorted's `known` and `bounded`); 0 neither.
 template <int K, class Id, bool Fma = false>
 FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* const* p, const double* w,
-                                                   bool window = false) {
+                                                   bool window = false, int lattice = 0) {
   if (repeated_id(K, ids)) return 0;
   if constexpr (K <= xp::kIntLambdaMaxK) {
     // Integer lattices (small integers, dyadic grids: the exactly degenerate
@@ -279,7 +284,8 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
     // leaves. K = 8 (and 9..11, predicates.cpp lambda_sign_high): only the
     // walk by ranks modulo p, where every minor is below 2^60; the stages
     // below take the rest.
-    if (const int s = lambda_small_int_sorted<K>(ids, p, w, false); s != 2) return s;
+    if (const int s = lambda_small_int_sorted<K>(ids, p, w, ids && lattice >= 1, ids && lattice >= 2); s != 2)
+      return s;
     xp::IntScan S;
     if (xp::int_lambda_scan<K>(p, w, S)) {
       if constexpr (K >= 3 && K <= 5) {
@@ -362,17 +368,19 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
 // build (THRUST_DEVICE_SYSTEM) keeps the device's inline path, so that it
 // runs the code the GPU runs.
 template <int K>
-int lambda_sign_after_filters_host(const PointId* ids, const double* const* p, const double* w, bool window);
+int lambda_sign_after_filters_host(const PointId* ids, const double* const* p, const double* w, bool window,
+                                   int lattice);
 #endif
 
 // lambda_sign_staged's call of the stages after the filters: out of line on
 // the host for PointId rows (above), inline otherwise (the device, other ids).
 template <int K, class Id>
-FF_HD FF_FORCEINLINE int after_filters_call(const Id* ids, const double* const* p, const double* w, bool window) {
+FF_HD FF_FORCEINLINE int after_filters_call(const Id* ids, const double* const* p, const double* w, bool window,
+                                            int lattice) {
 #if !defined(__CUDACC__) && !defined(THRUST_DEVICE_SYSTEM)
-  if constexpr (std::is_same_v<Id, PointId>) return lambda_sign_after_filters_host<K>(ids, p, w, window);
+  if constexpr (std::is_same_v<Id, PointId>) return lambda_sign_after_filters_host<K>(ids, p, w, window, lattice);
 #endif
-  return lambda_sign_after_filters<K>(ids, p, w, window);
+  return lambda_sign_after_filters<K>(ids, p, w, window, lattice);
 }
 
 // The whole default path for K points. `f` may be null (no static filter);
@@ -389,19 +397,20 @@ FF_HD inline int lambda_sign_staged(const StaticFilter* f, const Id* ids, const 
     return lambda_sign_high(f, K, id, p, w);
   } else {
     if (repeated_id(K, ids)) return 0;
+    const int lattice = f && ids ? f->lattice(K, w != nullptr) : 0;
     if constexpr (K >= kLatticeFirstK)
-      if (f && ids && f->small_integers())
-        if (const int s = lambda_small_int_sorted<K>(ids, p, w, true); s != 2) return s;
+      if (lattice >= 1)
+        if (const int s = lambda_small_int_sorted<K>(ids, p, w, true, lattice >= 2); s != 2) return s;
     if constexpr (K == 3 || K == 4) {
       // orient2d, orient3d: the static and the permanent filter in one
       // evaluation (static_filter.hpp, plain_filters)
       if (f && !w) {
         if (const int s = plain_filters<K>(*f, p)) return s;
-        return after_filters_call<K>(ids, p, w, f->dd_window());
+        return after_filters_call<K>(ids, p, w, f->dd_window(), lattice);
       }
     }
     if (const int s = static_semi_static_sign<K>(f, p, w)) return s;
-    return after_filters_call<K>(ids, p, w, f && f->dd_window());
+    return after_filters_call<K>(ids, p, w, f && f->dd_window(), lattice);
   }
 }
 
@@ -431,7 +440,8 @@ inline auto with_k(int k, F&& f) {
   EXT template int flat_sign_sorted<K, PointId>(const PointId*, const double* const*, const double*);         \
   EXT template int lambda_exact_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool, \
                                                    bool);                                                     \
-  EXT template int lambda_small_int_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool);  \
+  EXT template int lambda_small_int_sorted<K, PointId>(const PointId*, const double* const*, const double*, bool,   \
+                                                       bool);                                                     \
   EXT template int lambda_int_build_sorted<K, PointId>(const PointId*, const double* const*, const double*,   \
                                                        const xp::IntScan&);
 // EXT = extern: the declarations; empty: the definitions (predicates.cpp)

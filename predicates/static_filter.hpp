@@ -398,6 +398,30 @@ class StaticFilter {
     // multiple of 2^-202 below 2^150 in magnitude
     f.dd_window_ = lsb >= -202 && M < 0x1p150 && W < 0x1p150;
     f.small_int_ = small_int;
+    // Where every value is such an integer: the calls of k rows whose walk in
+    // binary64 (exact_expansion.hpp, int_lattice_sos_dbl_rows) needs no
+    // per-call test of its bound H^2 = Π_j max(1, |D_j|^2) < 2^51 over the
+    // columns of D (k - 1 rows of differences to the last row). From the
+    // magnitudes alone, as every bound here (the kernels' filters are built
+    // from representatives that keep the largest magnitude and the lowest
+    // bit, not the values' signs: parallel.hpp): a coordinate column's
+    // differences are at most 2M, a lifted one's (|x|^2 - w over at most
+    // k - 2 coordinates, in [-W, (k - 2) M^2 + W]) at most (k - 2) M^2 + 2W,
+    // and |D_j|^2 is at most k - 1 times their square. The products of
+    // integers below 2^53 are exact but for the last few factors; the margin
+    // (1 + 2^-40) covers their roundings upward (under 30 of 2^-53 each).
+    if (small_int && n > 0)
+      for (int k = 3; k <= 8; ++k) {
+        const double rows = static_cast<double>(k - 1);
+        const double coord = filter_detail::max_of(1.0, rows * (2.0 * M) * (2.0 * M));
+        const double lift = static_cast<double>(k - 2) * M * M + 2.0 * W;
+        const double lifted = filter_detail::max_of(1.0, rows * lift * lift);
+        double plain_h2 = 1.0, lifted_h2 = lifted;
+        for (int c = 0; c < k - 1; ++c) plain_h2 *= coord;
+        for (int c = 0; c < k - 2; ++c) lifted_h2 *= coord;
+        if (plain_h2 * (1.0 + 0x1p-40) < 0x1p51) f.walk_bounded_ |= 1u << (2 * k);
+        if (lifted_h2 * (1.0 + 0x1p-40) < 0x1p51) f.walk_bounded_ |= 1u << (2 * k + 1);
+      }
     for (int k = 2; k <= 8; ++k) {
       const int N = k - 1;
       // plain: degree N
@@ -446,6 +470,19 @@ class StaticFilter {
   // centre; calls without ids, the unperturbed ones, never take this path).
   FF_HD bool small_integers() const { return small_int_; }
 
+  // Where small_integers(): the calls of k rows, lifted (with weights) or not,
+  // whose binary64 SoS walk is within its bound for any rows of these values
+  // (for_points: from the largest magnitudes), so that it skips its per-call
+  // test (3^5 grid Delaunay: a fifth of the walk's instructions). The same
+  // contract as small_integers(): only for calls on the scanned values.
+  FF_HD bool walk_bounded(int k, bool lifted) const {
+    return k >= 3 && k <= 8 && ((walk_bounded_ >> (2 * k + (lifted ? 1 : 0))) & 1u) != 0;
+  }
+  // Both as one level for the stages after the filters (staged.hpp,
+  // lambda_sign_after_filters' `lattice`): 0 neither, 1 small_integers(), 2
+  // also walk_bounded(k, lifted).
+  FF_HD int lattice(int k, bool lifted) const { return !small_int_ ? 0 : walk_bounded(k, lifted) ? 2 : 1; }
+
   // Test hook: every bound multiplied by `factor` (a weakened filter for the
   // sensitivity check of the test suite; never used by the library).
   StaticFilter scaled_for_testing(double factor) const {
@@ -462,6 +499,7 @@ class StaticFilter {
   double lifted_[9];
   bool dd_window_ = false;
   bool small_int_ = false;
+  std::uint32_t walk_bounded_ = 0;  // bit 2k (plain) and 2k + 1 (lifted): walk_bounded(k, lifted)
 };
 
 // The plain determinant of det Λ's differences T against a bound derived

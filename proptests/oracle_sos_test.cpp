@@ -115,22 +115,30 @@ std::vector<std::pair<std::string, int>> library_paths(const Spec& s, const Inst
     out.push_back({"orient2d(f)", pred::orient2d(f, pt(0), pt(1), pt(2))});
     out.push_back({"fast::orient2d", pred::fast::orient2d(f, pt(0), pt(1), pt(2))});
     out.push_back({"after_filters::orient2d", pred::after_filters::orient2d(pt(0), pt(1), pt(2), dd)});
+    out.push_back({"after_filters::orient2d, the filter's lattice level",
+                   pred::after_filters::orient2d(pt(0), pt(1), pt(2), dd, f.lattice(3, false))});
   } else if (s.kind == Kind::orient3d) {
     out.push_back({"orient3d default", pred::orient3d(pt(0), pt(1), pt(2), pt(3))});
     out.push_back({"orient3d(f)", pred::orient3d(f, pt(0), pt(1), pt(2), pt(3))});
     out.push_back({"fast::orient3d", pred::fast::orient3d(f, pt(0), pt(1), pt(2), pt(3))});
     out.push_back({"after_filters::orient3d", pred::after_filters::orient3d(pt(0), pt(1), pt(2), pt(3), dd)});
+    out.push_back({"after_filters::orient3d, the filter's lattice level",
+                   pred::after_filters::orient3d(pt(0), pt(1), pt(2), pt(3), dd, f.lattice(4, false))});
   } else if (s.kind == Kind::power2d) {
     out.push_back({"power2d default", pred::power2d(wpt(0), wpt(1), wpt(2), wpt(3))});
     out.push_back({"power2d(f)", pred::power2d(f, wpt(0), wpt(1), wpt(2), wpt(3))});
     out.push_back({"fast::power2d", pred::fast::power2d(f, wpt(0), wpt(1), wpt(2), wpt(3))});
     out.push_back({"after_filters::power2d", pred::after_filters::power2d(wpt(0), wpt(1), wpt(2), wpt(3), dd)});
+    out.push_back({"after_filters::power2d, the filter's lattice level",
+                   pred::after_filters::power2d(wpt(0), wpt(1), wpt(2), wpt(3), dd, f.lattice(4, true))});
   } else if (s.kind == Kind::power3d) {
     out.push_back({"power3d default", pred::power3d(wpt(0), wpt(1), wpt(2), wpt(3), wpt(4))});
     out.push_back({"power3d(f)", pred::power3d(f, wpt(0), wpt(1), wpt(2), wpt(3), wpt(4))});
     out.push_back({"fast::power3d", pred::fast::power3d(f, wpt(0), wpt(1), wpt(2), wpt(3), wpt(4))});
     out.push_back({"after_filters::power3d",
                    pred::after_filters::power3d(wpt(0), wpt(1), wpt(2), wpt(3), wpt(4), dd)});
+    out.push_back({"after_filters::power3d, the filter's lattice level",
+                   pred::after_filters::power3d(wpt(0), wpt(1), wpt(2), wpt(3), wpt(4), dd, f.lattice(5, true))});
   } else if (s.kind == Kind::orient_d) {
     std::vector<Pt> pts;
     for (int i = 0; i < k; ++i) pts.push_back(pt(i));
