@@ -461,7 +461,8 @@ class StaticFilter {
   // such as a k^d grid, weights included): the calls' determinants are then
   // exactly zero more often than not, and lambda_sign_staged goes to the
   // integer walk (lambda_small_int_sorted) before the float filters, which
-  // cannot decide a zero (staged.hpp, kLatticeFirstK). Like the bounds, it
+  // cannot decide a zero (staged.hpp, kLatticeFirstK); below that, the
+  // stages after the filters are told so (lattice()). Like the bounds, it
   // holds only for calls whose values are among the scanned ones (`extra`
   // included): there the walk is told to skip its per-value tests, so a call
   // with ids on any other value (an auxiliary point left out of the scan)
