@@ -383,6 +383,16 @@ HULL3 = {
     # strict_hull3.hpp documents. (The libFuzzer input as found: a point-set
     # byte stream cut short after 5 points.)
     "regression_strict_duplicate_vertex": bytes([8, 0, 0, 4, 10, 2, 4, 0, 8, 8, 15, 2, 0, 0, 10, 10, 2]),
+    # Regression (CI's seed 5750008963199692262 of ghull_cuda_omp_test, stop
+    # 85): subnormal coordinates beside ones near 1; the GPU hulls' scaled
+    # line-1 keys underflowed, picked a fourth point on the plane of the first
+    # three and handed the choice back to the host (kernels_cuda/spread.cuh
+    # now repairs it by exact reductions; hull3_check requires no hand-back).
+    "regression_subnormal_line1": point_set([
+        raw(math.nextafter(1.0, 0.0), 0.0, 0.0),
+        raw(math.nextafter(1.0, 0.0), math.nextafter(1.0, 2.0), 0.0),
+        raw(-5e-324, 5e-324, 0.0),
+        raw(0.0, 1.0, 5e-324)]),
 }
 
 

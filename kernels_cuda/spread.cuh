@@ -2,8 +2,9 @@
 // ffHull, ghull.cuh's gHull, rt3.cuh's triangulation): the bounding box of the
 // points, and thesis Algorithm 7 line 1's four spread-out points by arg-max
 // reductions of floating keys (a heuristic: the points are accepted only when
-// exactly affinely independent, else the reference's rule decides — and
-// rejects input that does not span R^3).
+// exactly affinely independent; where they are not, further reductions on
+// exact signs repair them, and only input that does not span R^3 reaches the
+// reference's rule, which rejects it).
 #pragma once
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 
+#include "kernels_cuda/device_predicates.cuh"
 #include "predicates/predicates.hpp"
 #include "reference/hull3/ffhull.hpp"
 #include "reference/point_set.hpp"
@@ -90,13 +93,51 @@ struct TetKey {
   }
 };
 
-// Line 1 by reductions (argmax(key): the arg-max of the key over every point,
-// a reduction where the points live); exactly independent, else the
-// reference's rule (ref::ffhull::initial_tetrahedron, which throws
-// std::invalid_argument for input that does not span R^3). (a, b, c) is
-// counter-clockwise seen from outside: d on its inner side. by_reference
-// (optional): set when the reference's rule chose the points (a sequential
-// pass over the input on the host: the kernels count it as a hand-back).
+// Line 1's exact repair: key 1 for the points that qualify, -inf for the
+// others, so that the arg-max (ties: the least index) is the least qualifying
+// point, or a point that does not qualify when none does (the caller checks).
+// mode 0: differs from A; 1: off the line AB (some coordinate-plane projection
+// of A, B, p has a nonzero exact area: the cross product's components);
+// 2: off the plane ABC (exact orient3d). Exact signs: device_predicates.cuh's
+// staged path without ids (no perturbation; exact for every finite double,
+// subnormals and 1e±300 included), so the same answer on the device and in
+// the OpenMP build.
+struct OffKey {
+  const double* xyz;
+  int mode;
+  double A[3], B[3], C[3];
+  FF_HD static bool off_line(const double* a, const double* b, const double* p) {
+    for (int j = 0; j < 3; ++j) {
+      const int u = j, v = j == 2 ? 0 : j + 1;
+      const double pa[2] = {a[u], a[v]}, pb[2] = {b[u], b[v]}, pp[2] = {p[u], p[v]};
+      const double* rows[3] = {pa, pb, pp};
+      if (lambda<3>(nullptr, static_cast<const PointId*>(nullptr), rows, nullptr) != 0) return true;
+    }
+    return false;
+  }
+  FF_HD bool qualifies(const double* p) const {
+    if (mode == 0) return p[0] != A[0] || p[1] != A[1] || p[2] != A[2];
+    if (mode == 1) return off_line(A, B, p);
+    const double* rows[4] = {A, B, C, p};
+    return lambda<4>(nullptr, static_cast<const PointId*>(nullptr), rows, nullptr) != 0;
+  }
+  FF_HD Best operator()(std::size_t i) const {
+    return {qualifies(xyz + 3 * i) ? 1.0 : -HUGE_VAL, static_cast<Index>(i)};
+  }
+};
+
+// Line 1 by reductions (argmax(key): the arg-max of the key, a TetKey or an
+// OffKey, over every point, a reduction where the points live). The floating
+// keys' four points are kept where exactly independent; where a step's point
+// is not (equal to a, on the line ab, on the plane abc: floating keys that
+// tie, underflow or round, e.g. subnormal coordinates beside ones near 1),
+// that step is repeated with an OffKey, whose answer is exact. Only input
+// that does not span R^3 leaves a step without a point: then the reference's
+// rule (ref::ffhull::initial_tetrahedron, a sequential pass on the host)
+// throws its std::invalid_argument. (a, b, c) is counter-clockwise seen from
+// outside: d on its inner side. by_reference (optional): set when the
+// reference's rule ran (the kernels count it as work handed back; it can
+// only return for a bug, which is then reported as one).
 template <class Argmax>
 std::array<Index, 4> spanning_tetrahedron(const PointSet& ps, const double* xyz, const Argmax& argmax,
                                           bool* by_reference = nullptr) {
@@ -109,26 +150,44 @@ std::array<Index, 4> spanning_tetrahedron(const PointSet& ps, const double* xyz,
     if (big > 0 && std::isfinite(big)) std::frexp(big, &e);
     key.scale = std::ldexp(1.0, -e);
   }
+  OffKey off{xyz, 0, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  // the exact repair of one step: the least qualifying point, or the
+  // reference's rejection of input that does not span R^3
+  const auto repair = [&](int mode) {
+    off.mode = mode;
+    const Index m = argmax(off);
+    if (off.qualifies(ps.point(m))) return m;
+    if (by_reference) *by_reference = true;
+    ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+    throw std::logic_error("hull3 line 1: no point off the span of the others, yet the input spans R^3");
+  };
   key.mode = 0;
   const Index a = argmax(key);
+  const double* A = ps.point(a);
+  for (int j = 0; j < 3; ++j) off.A[j] = A[j];
   key.mode = 1;
-  const Index b = argmax(key);
-  const double *A = ps.point(a), *Bp = ps.point(b);
+  Index b = argmax(key);
+  if (!off.qualifies(ps.point(b))) b = repair(0);
+  const double* Bp = ps.point(b);
+  for (int j = 0; j < 3; ++j) off.B[j] = Bp[j];
   const double sc = key.scale;
   for (int j = 0; j < 3; ++j) key.A[j] = A[j] * sc, key.u[j] = Bp[j] * sc - A[j] * sc;
   key.mode = 2;
-  const Index c = argmax(key);
+  Index c = argmax(key);
+  off.mode = 1;
+  if (!off.qualifies(ps.point(c))) c = repair(1);
   const double* Cp = ps.point(c);
+  for (int j = 0; j < 3; ++j) off.C[j] = Cp[j];
   const double v[3] = {Cp[0] * sc - A[0] * sc, Cp[1] * sc - A[1] * sc, Cp[2] * sc - A[2] * sc};
   key.N[0] = key.u[1] * v[2] - key.u[2] * v[1];
   key.N[1] = key.u[2] * v[0] - key.u[0] * v[2];
   key.N[2] = key.u[0] * v[1] - key.u[1] * v[0];
   key.mode = 3;
-  const Index d = argmax(key);
-  const int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
+  Index d = argmax(key);
+  int o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
   if (o == 0) {
-    if (by_reference) *by_reference = true;
-    return ref::ffhull::initial_tetrahedron(ps);  // throws for input not spanning R^3
+    d = repair(2);
+    o = pred::orient3d_exact(A, Bp, Cp, ps.point(d));
   }
   if (o < 0) return {a, c, b, d};
   return {a, b, c, d};

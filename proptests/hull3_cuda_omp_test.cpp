@@ -2,7 +2,9 @@
 // (hull3.cuh), built against thrust's OpenMP backend (kernels_omp), against
 // the exact sequential reference ref::hull3_ffhull: byte-identical canonical
 // text for every input, degenerate inputs included, the same rejection (same
-// message) of input that does not span R^3, and ffHull's counters' lemmas.
+// message) of input that does not span R^3, ffHull's counters' lemmas, and no
+// work handed back to the host; line 1's reductions (kernels_cuda/spread.cuh)
+// on their own, with floating keys that pick the worst points.
 //
 // Oracle: ref::hull3_ffhull (itself tested against brute force and CGAL in
 // ffhull_reference_test.cpp); certify::hull3 at Level::canonical on the
@@ -10,7 +12,8 @@
 //
 // Case counts (RC_PARAMS max_success = 2000 under ctest, divided per property
 // by prop_scaled): degenerate / random sets of 4..60 points 2000 / 4 = 500;
-// every generator family at 4..3000 points 2000 / 20 = 100; the deterministic
+// every generator family at 4..3000 points 2000 / 20 = 100; line 1 with
+// adversarial keys 2000 / 4 = 500; the deterministic
 // sweep: every 3D family x 6 sizes (4..10000: above the kernel's parallel threshold of
 // 4096, half the time of 20000) x 2 seeds; five large inputs of
 // 10^4..10^5 points.
@@ -24,12 +27,15 @@
 #include <cstdint>
 #include <random>
 #include <iostream>
+#include <limits>
 #include <set>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 
 #include "gen/generate.hpp"
 #include "kernels_cuda/hull3/hull3.hpp"
+#include "kernels_cuda/spread.cuh"
 #include "proptests/support/families.hpp"
 #include "proptests/support/hull3_expect.hpp"
 #include "proptests/support/large_n.hpp"
@@ -60,7 +66,8 @@ using test::vertex_count;
 // only removed vertices are labelled.
 bool counts_ok(const PointSet& ps, const ref::Hull3Stats& st, std::size_t V) {
   return st.insertions == st.flips_1_3 && 4 + st.insertions + st.discarded_early == ps.size() &&
-         4 + st.insertions == V + st.flips_3_1 && st.labelled_non_extreme <= st.flips_3_1;
+         4 + st.insertions == V + st.flips_3_1 && st.labelled_non_extreme <= st.flips_3_1 &&
+         st.handed_back == 0;  // issue 36: a returned hull never ran the reference's line 1
 }
 
 // kernels_omp == reference, counters consistent. Returns the text.
@@ -85,6 +92,57 @@ TEST_CASE("hull3 cuda-omp: degenerate and random small sets equal the reference 
     const PointSet ps = *test::degenerate_points(3, 4, 60, false);
     check_rc(ps);
   });
+}
+
+// Line 1 (spread.cuh) with an arg-max that answers every floating key with an
+// arbitrary point (drawn per case: the heuristic's worst misses, a point
+// repeated, collinear or coplanar choices) and the exact keys honestly, by a
+// sequential reduction with BestOf's tie rule: the repair alone must give four
+// exactly independent points, (a, b, c) counter-clockwise from outside, without
+// the reference's rule; and reject, with the reference's message, exactly the
+// input the reference rejects.
+TEST_CASE("hull3 cuda-omp: line 1's exact repair spans R^3 whatever the floating keys pick (shrinking)",
+          "[hull3_cuda_omp]") {
+  test::prop_scaled("adversarial TetKey answers: four independent points, never the reference's rule", 4, [] {
+    const PointSet ps = *test::degenerate_points(3, 4, 60, false);
+    const std::vector<std::size_t> pick = *rc::gen::container<std::vector<std::size_t>>(
+        5, rc::gen::inRange<std::size_t>(0, ps.size()));
+    const auto argmax = [&](const auto& key) -> Index {
+      if constexpr (std::is_same_v<std::decay_t<decltype(key)>, dev::TetKey>) {
+        return static_cast<Index>(pick[static_cast<std::size_t>(key.mode)]);
+      } else {
+        dev::Best b{-HUGE_VAL, std::numeric_limits<Index>::max()};
+        for (std::size_t i = 0; i < ps.size(); ++i) b = dev::BestOf()(b, key(i));
+        return b.id;
+      }
+    };
+    const std::string expect = ref_text(ps);
+    bool by_reference = false;
+    std::array<Index, 4> t{};
+    try {
+      t = dev::spanning_tetrahedron(ps, ps.coords.data(), argmax, &by_reference);
+    } catch (const std::invalid_argument& e) {
+      RC_ASSERT(by_reference);
+      RC_ASSERT(is_error(expect));
+      RC_ASSERT(expect.find(e.what()) != std::string::npos);
+      return;
+    }
+    RC_ASSERT(!is_error(expect));
+    RC_ASSERT(!by_reference);
+    RC_ASSERT(pred::orient3d_exact(ps.point(t[0]), ps.point(t[1]), ps.point(t[2]), ps.point(t[3])) > 0);
+  });
+}
+
+// CI's seed 5750008963199692262 (stop 85's run; hull3_expect.hpp): line 1's
+// keys picked four coplanar points, the reference's rule ran and the run
+// counted a hand-back. Both GPU hulls (ffHull here, gHull in
+// ghull_cuda_omp_test.cpp) now repair it on the device.
+TEST_CASE("hull3 cuda-omp: subnormal coordinates beside unit ones stay on the device", "[hull3_cuda_omp]") {
+  const PointSet ps = test::subnormal_line1_points();
+  ref::Hull3Stats st;
+  REQUIRE(omp_text(ps, &st) == ref_text(ps));
+  REQUIRE_FALSE(is_error(ref_text(ps)));
+  CHECK(st.handed_back == 0);
 }
 
 TEST_CASE("hull3 cuda-omp: every generator family up to 3000 points equals the reference (shrinking)",

@@ -1340,7 +1340,7 @@ class Ghull {
       r_ = thrust::reduce(policy, first + 1, first + n, uint32_t{0}, LexLess{g_.xyz});
     });
     bool by_reference = false;
-    const auto t = dev::spanning_tetrahedron(ps_, g_.xyz, [&](const dev::TetKey& key) {
+    const auto t = dev::spanning_tetrahedron(ps_, g_.xyz, [&](const auto& key) {
       dev::Best best{-HUGE_VAL, kNo};
       backend::run_step<kGrain>(n, [&](auto policy) {
         best = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),

@@ -60,9 +60,11 @@ struct GhullStats {
   std::uint64_t splay_insertions = 0;         // successful insertions (Case 2)
   std::uint64_t dead_stars = 0;               // stars that died (Case 3) or were created dead
   std::uint64_t edge_list_growths = 0;        // Algorithm 9 lines 7-8
-  // Work handed to the host or the reference: 1 when the four spanning
-  // points of Stage 0 came from the reference's sequential rule (the
-  // reductions' four points were exactly coplanar), else 0. Every stage runs
+  // Work handed to the host or the reference: 1 when Stage 0 ran the
+  // reference's sequential rule for its four spanning points, else 0. Since
+  // the floating keys' misses are repaired by exact reductions (spread.cuh),
+  // that rule only runs to reject input that does not span R^3, so a
+  // returned hull counts 0; the counter stays as the check. Every stage runs
   // on the device otherwise; Stage 6 checks on the host the few triangles
   // its device filter leaves undecided for its inner ball and box (no point
   // is decided there).

@@ -407,7 +407,8 @@ using dev::Best;
 using dev::BestOf;
 using dev::TetKey;
 
-Index argmax(TempStorage& temp, std::size_t n, const TetKey& key) {
+template <class Key>  // TetKey or OffKey (spread.cuh)
+Index argmax(TempStorage& temp, std::size_t n, const Key& key) {
   Best b{-HUGE_VAL, kNone};
   run_with(temp, n, [&](auto policy) {
     b = thrust::transform_reduce(policy, thrust::counting_iterator<std::size_t>(0),
@@ -1425,12 +1426,12 @@ class Hull3 {
   uint32_t T_ = 0;
 };
 
-// Line 1 by reductions; exactly independent, else the reference's rule.
-// by_reference: the reductions' points were exactly coplanar and the
-// reference's sequential rule chose (a hand-back, counted in the stats).
+// Line 1 by reductions (spread.cuh: floating keys, repaired by exact ones).
+// by_reference: the reference's sequential rule ran (a hand-back, counted in
+// the stats; it only rejects input that does not span R^3).
 std::array<Index, 4> initial_tetrahedron(TempStorage& temp, const PointSet& ps, const double* xyz, bool* by_reference) {
   return dev::spanning_tetrahedron(
-      ps, xyz, [&](const TetKey& key) { return argmax(temp, ps.size(), key); }, by_reference);
+      ps, xyz, [&](const auto& key) { return argmax(temp, ps.size(), key); }, by_reference);
 }
 
 // Runs f, turning a failed allocation of device memory (std::bad_alloc, from

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -24,6 +25,19 @@ inline std::size_t vertex_count(const std::vector<Triangle>& tris) {
   std::set<Index> v;
   for (const Triangle& t : tris) v.insert(t.begin(), t.end());
   return v.size();
+}
+
+// CI's seed 5750008963199692262 of ghull_cuda_omp_test (stop 85), shrunk by
+// RapidCheck: subnormal coordinates beside ones near 1, where the GPU hulls'
+// scaled line-1 keys underflow (z * 2^-1 of the smallest subnormal is 0) and
+// pick a fourth point on the plane of the first three (kernels_cuda/spread.cuh).
+inline PointSet subnormal_line1_points() {
+  const double tiny = std::numeric_limits<double>::denorm_min(), below1 = std::nextafter(1.0, 0.0);
+  PointSet ps;
+  ps.dim = 3;
+  ps.coords = Values(std::vector<double>{below1, 0, 0, below1, std::nextafter(1.0, 2.0), 0, -tiny, tiny, 0,
+                                         0, 1, tiny});
+  return ps;
 }
 
 inline std::string hull3_reference_text(const PointSet& ps) {

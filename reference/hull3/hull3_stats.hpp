@@ -28,9 +28,11 @@ struct Hull3Stats {
   // centroid (an initial tetrahedron whose rounded centroid is not strictly
   // inside, §6.4.2), decided on the device by the exact expansion stage
   std::uint64_t exact_kernel_point = 0;
-  // the GPU ffHull: runs whose four initial points came from the reference's
-  // sequential rule (the reductions' floating keys chose four exactly
-  // coplanar points: extreme anisotropy) — work handed back to the host
+  // the GPU ffHull: runs that ran the reference's sequential rule for their
+  // four initial points — work handed back to the host. Since the floating
+  // keys' misses are repaired by exact reductions (kernels_cuda/spread.cuh),
+  // the rule only runs to reject input that does not span R^3: a returned
+  // hull counts 0, and the tests check that it does.
   std::uint64_t handed_back = 0;
 };
 
