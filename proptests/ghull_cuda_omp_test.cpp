@@ -25,9 +25,7 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cmath>
 #include <iostream>
-#include <limits>
 #include <set>
 #include <string>
 #include <vector>
