@@ -284,6 +284,50 @@ TEST_CASE("rtd certify: the linear boundary check rejects a double cover and a r
   }
 }
 
+// Facets are matched bucket by bucket (certify_rtd.cpp, tiling): the first
+// failing facet in key order must still be the one named, sequentially and
+// on oneTBB. The fan around the octagon's centre with one triangle replaced:
+// the facet (0,1) then lies in three triangles, or in two on the same side,
+// and (0,3) — a larger key — in three as well.
+TEST_CASE("rtd certify: facet-manifold names the first facet in key order, at 1, 2 and 8 threads") {
+  const PointSet ps = polygon_with_center(8);
+  const auto fan = [](std::vector<Index> replaced, std::vector<Index> by) {
+    std::vector<std::vector<Index>> s;
+    for (int k = 0; k < 8; ++k) s.push_back({0, static_cast<Index>(1 + k), static_cast<Index>(1 + (k + 1) % 8)});
+    if (!replaced.empty()) *std::find(s.begin(), s.end(), replaced) = by;
+    else s.push_back(by);
+    return canonical_simplices(s, Orientation::orient_d);
+  };
+  // the simplices of S holding both 0 and 1, in S's order
+  const auto on01 = [](const std::vector<std::vector<Index>>& S) {
+    std::vector<std::string> r;
+    for (const auto& t : S)
+      if (std::find(t.begin(), t.end(), 0u) != t.end() && std::find(t.begin(), t.end(), 1u) != t.end()) {
+        std::string o = "(";
+        for (std::size_t i = 0; i < t.size(); ++i) o += (i ? "," : "") + std::to_string(t[i]);
+        r.push_back(o + ")");
+      }
+    return r;
+  };
+  const auto check = [&](const std::vector<std::vector<Index>>& S, const std::string& detail) {
+    const certify::Report seq = certify::rtd(ps, S);
+    INFO(seq.message());
+    REQUIRE(!seq.ok);
+    REQUIRE(seq.condition == "facet-manifold");
+    REQUIRE(seq.detail == detail);
+    for (int threads : {1, 2, 8}) REQUIRE(cpu::certify_rtd(ps, S, certify::Level::canonical, false, threads).message() == seq.message());
+  };
+  SECTION("(0,1,3) added: (0,1) lies in three triangles") {
+    check(fan({}, {0, 1, 3}), "facet (0,1) lies in three or more simplices");
+  }
+  SECTION("(0,8,1) replaced by (0,1,3): (0,1,2) and (0,1,3) on the same side of (0,1)") {
+    const auto S = fan({0, 8, 1}, {0, 1, 3});
+    const std::vector<std::string> two = on01(S);
+    REQUIRE(two.size() == 2);
+    check(S, "simplices " + two[0] + " and " + two[1] + " lie on the same side of their common facet (0,1)");
+  }
+}
+
 TEST_CASE("rtd certify on oneTBB: the sequential verdict and message at 1, 2 and 8 threads, several violations") {
   using certify::Level;
   std::size_t failures = 0, passes = 0, items = 0;

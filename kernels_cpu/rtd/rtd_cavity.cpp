@@ -70,7 +70,15 @@ class Builder {
 
  public:
   Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest) : furthest_(furthest) {
-    const std::size_t guess = 8 * order.size() * static_cast<std::size_t>(D) + 64;
+    // Room for the slots the run will use, so that the arrays do not move:
+    // each move copies them into fresh pages, and a fresh page costs about
+    // 2.4 us on the 2-core VM (a page fault; 3^5 grid: 24,000 slots at the
+    // end against 9,800 reserved before, two moves, 27 % of the run's
+    // faults). Reserved memory is not touched until used, so the guess may
+    // be high: about twice the slots at the end on random points (random
+    // 4D: 32 a point, 5D: 150) and on grids (3^5: 97), capped at 2^22.
+    constexpr std::size_t kPerPoint = D <= 2 ? 6 : D == 3 ? 16 : D == 4 ? 64 : 256;
+    const std::size_t guess = std::min<std::size_t>(kPerPoint * order.size(), std::size_t{1} << 22) + 64;
     tv_.reserve(guess * W);
     tn_.reserve(guess * W);
     mark_.reserve(guess);
@@ -167,6 +175,7 @@ class Builder {
     std::vector<char> vertex(n_, 0);
     std::vector<Index> flat;
     const std::size_t slots = mark_.size();
+    flat.reserve(slots * W);
     for (std::size_t s = 0; s < slots; ++s) {
       const std::uint32_t* v = tv_.data() + s * W;
       if (v[0] == kDead || is_virtual(static_cast<std::uint32_t>(s))) continue;
@@ -348,13 +357,23 @@ class Builder {
       }
       tn_[static_cast<std::size_t>(s) * W + static_cast<std::size_t>(h.i)] = h.out;
       tn_[h.out] = s * W + static_cast<std::uint32_t>(h.i);
+      // the horizon ridge's D vertices sorted once; the key of the cone
+      // facet opposite corner j is that list without h.v[j] (sorted still),
+      // instead of a sort per facet (3^5 grid: link_cone 82 M -> see
+      // docs/performance/python_scipy.md, stop 87)
+      typename RidgeTable<D>::Key ridge;
+      {
+        int c = 0;
+        for (int q = 0; q < W; ++q)
+          if (q != h.i) ridge[static_cast<std::size_t>(c++)] = h.v[q];
+        RidgeTable<D>::sort(ridge);
+      }
       for (int j = 0; j < W; ++j) {
         if (j == h.i) continue;
         typename RidgeTable<kKey>::Key key;
-        int c = 0;
-        for (int q = 0; q < W; ++q)
-          if (q != j && q != h.i) key[static_cast<std::size_t>(c++)] = h.v[q];
-        RidgeTable<kKey>::sort(key);
+        const std::uint32_t x = h.v[j];
+        for (int c = 0; c < kKey; ++c)
+          key[static_cast<std::size_t>(c)] = ridge[static_cast<std::size_t>(c + (ridge[static_cast<std::size_t>(c)] >= x))];
         const std::uint32_t half = s * W + static_cast<std::uint32_t>(j);
         const std::uint32_t other = ridges_.offer(key, half);
         if (other != RidgeTable<kKey>::kOpen) tn_[half] = other, tn_[other] = half;
