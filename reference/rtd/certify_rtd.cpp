@@ -343,14 +343,39 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
   };
   F.d = d;
   F.across.assign(halves, -1);
-  // bucket v's halves, sorted, into `buf`; its pairs linked in F; the first
-  // failure's message (empty: none)
-  const auto match_bucket = [&](std::size_t v, std::vector<Half>& buf) -> std::string {
+  // Where a key's other d - 1 vertices fit 64 bits together (b bits each,
+  // every index below 2^b: 5D up to 65,536 points), a large bucket is sorted
+  // as (packed vertices, position) pairs: their order is the keys' in
+  // lexicographic order, ties by position (stable), at a fraction of the
+  // moves of a stable sort of the halves (3^5 grid: buckets of 460 halves on
+  // average).
+  int bits = 1;
+  while (bits < 32 && (std::size_t{1} << bits) < n) ++bits;
+  const bool packable = (d - 1) * bits <= 64;
+  struct Buffers {
+    std::vector<Half> buf, tmp;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> packed;
+  };
+  // bucket v's halves, sorted, into `b.buf`; its pairs linked in F; the
+  // first failure's message (empty: none)
+  const auto match_bucket = [&](std::size_t v, Buffers& bufs) -> std::string {
+    std::vector<Half>& buf = bufs.buf;
     buf.resize(start[v + 1] - start[v]);
     for (std::size_t k = 0; k < buf.size(); ++k) make_half(code[start[v] + k], buf[k]);
     if (buf.size() <= 32) {
       for (std::size_t x = 1; x < buf.size(); ++x)
         for (std::size_t y = x; y > 0 && rest_less(buf[y], buf[y - 1]); --y) std::swap(buf[y], buf[y - 1]);
+    } else if (packable) {
+      bufs.packed.resize(buf.size());
+      for (std::size_t k = 0; k < buf.size(); ++k) {
+        std::uint64_t x = 0;
+        for (int j = 1; j < d; ++j) x = (x << bits) | buf[k].key[static_cast<std::size_t>(j)];
+        bufs.packed[k] = {x, static_cast<std::uint32_t>(k)};
+      }
+      std::sort(bufs.packed.begin(), bufs.packed.end());
+      bufs.tmp.resize(buf.size());
+      for (std::size_t k = 0; k < buf.size(); ++k) bufs.tmp[k] = buf[bufs.packed[k].second];
+      buf.swap(bufs.tmp);
     } else {
       std::stable_sort(buf.begin(), buf.end(), rest_less);
     }
@@ -373,15 +398,15 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
     return {};
   };
   struct Piece {
-    std::vector<Half> buf;
+    Buffers bufs;
     const decltype(match_bucket)* match;
-    bool operator()(std::size_t v) { return !(*match)(v, buf).empty(); }
+    bool operator()(std::size_t v) { return !(*match)(v, bufs).empty(); }
   };
   if (const std::size_t bad =
           detail::smallest_failing_by_piece(n, for_range, [&](std::size_t) { return Piece{{}, &match_bucket}; });
       bad < n) {
-    std::vector<Half> buf;
-    return match_bucket(bad, buf);
+    Buffers bufs;
+    return match_bucket(bad, bufs);
   }
   // the boundary: the halves left unmatched, in (simplex, position) order
   std::vector<std::pair<std::uint32_t, int>> boundary;
