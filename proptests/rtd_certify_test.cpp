@@ -294,8 +294,13 @@ TEST_CASE("rtd certify: facet-manifold names the first facet in key order, at 1,
   const auto fan = [](std::vector<Index> replaced, std::vector<Index> by) {
     std::vector<std::vector<Index>> s;
     for (int k = 0; k < 8; ++k) s.push_back({0, static_cast<Index>(1 + k), static_cast<Index>(1 + (k + 1) % 8)});
-    if (!replaced.empty()) *std::find(s.begin(), s.end(), replaced) = by;
-    else s.push_back(by);
+    if (replaced.empty()) {
+      s.push_back(by);
+    } else {
+      const auto at = std::find(s.begin(), s.end(), replaced);
+      REQUIRE(at != s.end());
+      *at = by;
+    }
     return canonical_simplices(s, Orientation::orient_d);
   };
   // the simplices of S holding both 0 and 1, in S's order

@@ -298,8 +298,8 @@ std::string tiling(const Checker& ck, const std::vector<std::vector<Index>>& S, 
   // the codes s (d+1) + i, a stable pass in (simplex, position) order), then
   // each bucket — the facets whose smallest vertex is that point: 150 on
   // average on 20,000 random 4D points, 460 on the 3^5 grid — made into keys
-  // and sorted stably by its other vertices. Equal
-  // keys share their smallest vertex, so each bucket is matched on its own,
+  // and sorted stably by its other vertices. Equal keys share their smallest
+  // vertex, so each bucket is matched on its own,
   // in one pass over the buckets (in parallel pieces; the first failure in
   // bucket order is the first in the global order). Only the codes and one
   // bucket's keys at a time are held: 8 bytes a half instead of a key array
