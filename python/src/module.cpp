@@ -2659,7 +2659,12 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // exact for any simplices given.) Unweighted: w = 0, the circumsphere. On
   // lattices the exact power tests are the predicates' integer stages, far
   // cheaper than GMP centres.
-  auto same_centre = [&](std::uint32_t a, std::uint32_t b) {
+  // `on`: the points already asked against a's sphere, sorted, each with its
+  // answer (a run's members share few points: the 3^5 grid's 32 runs of
+  // about 120 simplices each have the 32 corners of one unit cube, where
+  // asking each member's vertices made 5 power tests a member)
+  using OnSphere = std::vector<std::pair<std::int64_t, bool>>;
+  auto same_centre = [&](std::uint32_t a, std::uint32_t b, OnSphere& on) {
     const std::int64_t* A = S + static_cast<std::size_t>(a) * k;
     const std::int64_t* B = S + static_cast<std::size_t>(b) * k;
     const double* q[kMaxD + 2];
@@ -2672,8 +2677,14 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         continue;
       }
       if (!all_on) continue;
+      auto it = std::lower_bound(on.begin(), on.end(), std::pair<std::int64_t, bool>{B[j], false});
+      if (it != on.end() && it->first == B[j]) {
+        all_on = it->second;
+        continue;
+      }
       q[k] = pt(B[j]), qw[k] = weighted ? wt(B[j]) : 0.0;
       all_on = pred::power_d_exact(d, q, qw) == 0;
+      on.insert(it, {B[j], all_on});
     }
     return all_on ? 1 : shared ? 0 : -1;
   };
@@ -2686,7 +2697,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     if (a == 0 || !key_eq(order[a - 1], order[a])) runs.push_back(a);
   runs.push_back(order.size());
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size() - 1, 64), [&](const tbb::blocked_range<std::size_t>& rg) {
+    // (grain 1: a lattice has a few long runs — the 3^5 grid 32 of about 120
+    // simplices — which a grain of 64 left to one thread)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size() - 1, 1), [&](const tbb::blocked_range<std::size_t>& rg) {
       std::unique_ptr<CentreSolver> cs;  // made on the first exact centre of this piece
       const double* p[kMaxD + 1];
       double w[kMaxD + 1];
@@ -2703,6 +2716,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
       };
       std::vector<std::unique_ptr<ExactCentre>> reps;  // null until needed
       std::vector<std::uint32_t> rep_id;
+      std::vector<OnSphere> rep_on;  // each representative's points asked
       for (std::size_t run = rg.begin(); run != rg.end(); ++run) {
         const std::size_t a = runs[run], b = runs[run + 1];
         if (b - a == 1) {
@@ -2714,13 +2728,14 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         // where that cannot tell, by the exact centres (GMP, made on demand)
         reps.clear();
         rep_id.clear();
+        rep_on.clear();
         if (timing) group_members += b - a;
         for (std::size_t x = a; x < b; ++x) {  // in simplex order (the sort's tie-break)
           const std::uint32_t s = order[x];
           std::unique_ptr<ExactCentre> mine;
           std::size_t r = 0;
           for (; r < reps.size(); ++r) {
-            const int same = same_centre(rep_id[r], s);
+            const int same = same_centre(rep_id[r], s, rep_on[r]);
             if (same == 1) break;
             if (same == 0) continue;
             if (!reps[r]) reps[r] = exact_of(rep_id[r]);
@@ -2731,6 +2746,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           if (r == reps.size()) {
             reps.push_back(std::move(mine));
             rep_id.push_back(s);
+            rep_on.emplace_back();
           }
           group[s] = rep_id[r];
         }
@@ -2800,50 +2816,82 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         if (l != j) f[c++] = S[s * k + l];
       std::sort(f.begin(), f.begin() + d);
     };
-    // ridges of boundary facets: (sorted d-1 vertices, boundary facet)
+    // ridges of boundary facets: (sorted d-1 vertices, boundary facet); the
+    // vertices as 32-bit ids (n < 2^31: voronoi() checks it), a record of
+    // 36 bytes where 64-bit ids made 72
     struct RidgeRec {
-      std::array<std::int64_t, kMaxD - 1> v;  // d - 1 vertices, -1 after them
+      std::array<std::int32_t, kMaxD - 1> v;  // d - 1 vertices, -1 after them
       std::uint32_t b;
     };
-    std::vector<RidgeRec> rr;
-    rr.reserve(nb_ * d);
+    std::vector<RidgeRec> rr(nb_ * static_cast<std::size_t>(d));
     std::array<std::int64_t, kMaxD> f;
     for (std::size_t b = 0; b < nb_; ++b) {
       fvert(b, f);
       for (int drop = 0; drop < d; ++drop) {
-        RidgeRec x{};
+        RidgeRec& x = rr[b * static_cast<std::size_t>(d) + static_cast<std::size_t>(drop)];
         x.v.fill(-1);
         int c = 0;
         for (int l = 0; l < d; ++l)
-          if (l != drop) x.v[c++] = f[l];
+          if (l != drop) x.v[c++] = static_cast<std::int32_t>(f[l]);
         x.b = static_cast<std::uint32_t>(b);
-        rr.push_back(x);
       }
     }
-    std::sort(rr.begin(), rr.end(), [](const RidgeRec& a, const RidgeRec& b) {
-      return a.v != b.v ? a.v < b.v : a.b < b.b;
-    });
-    std::vector<std::vector<std::uint32_t>> adj(nb_);
-    for (std::size_t a = 0; a < rr.size();) {
-      std::size_t b = a + 1;
-      while (b < rr.size() && rr[b].v == rr[a].v) ++b;
-      for (std::size_t x = a; x < b; ++x)
-        for (std::size_t y = a; y < b; ++y)
-          if (x != y) adj[rr[x].b].push_back(rr[y].b);
-      a = b;
+    // sorted by (vertices, facet); where the d - 1 vertices fit 64 bits
+    // together (bits each: n's width), as one integer key beside the facet
+    // (the records' lexicographic sort took 4 ms of the 3^5 grid's 24,480)
+    int bits = 1;
+    while (bits < 31 && (std::size_t(1) << bits) < n) ++bits;
+    const bool packed = (d - 1) * bits <= 64;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+    if (packed) {
+      keyed.resize(rr.size());
+      for (std::size_t x = 0; x < rr.size(); ++x) {
+        std::uint64_t key = 0;
+        for (int l = 0; l + 1 < d; ++l) key = (key << bits) | static_cast<std::uint64_t>(rr[x].v[l]);
+        keyed[x] = {key, rr[x].b};
+      }
+      rr = {};
+      std::sort(keyed.begin(), keyed.end());
+    } else {
+      std::sort(rr.begin(), rr.end(), [](const RidgeRec& a, const RidgeRec& b) {
+        return a.v != b.v ? a.v < b.v : a.b < b.b;
+      });
     }
+    // adjacency of boundary facets across their ridges (CSR: adj_off, adj)
+    std::vector<std::size_t> adj_off(nb_ + 1, 0);
+    std::vector<std::uint32_t> adj;
+    auto ridge_runs = [&](auto&& same, auto&& facet, std::size_t total, auto&& visit) {
+      for (std::size_t a = 0; a < total;) {
+        std::size_t b = a + 1;
+        while (b < total && same(a, b)) ++b;
+        for (std::size_t x = a; x < b; ++x)
+          for (std::size_t y = a; y < b; ++y)
+            if (x != y) visit(facet(x), facet(y));
+        a = b;
+      }
+    };
+    auto both_passes = [&](auto&& same, auto&& facet, std::size_t total) {
+      ridge_runs(same, facet, total, [&](std::uint32_t from, std::uint32_t) { ++adj_off[from + 1]; });
+      for (std::size_t b = 0; b < nb_; ++b) adj_off[b + 1] += adj_off[b];
+      adj.resize(adj_off[nb_]);
+      std::vector<std::size_t> cur(adj_off.begin(), adj_off.end() - 1);
+      ridge_runs(same, facet, total, [&](std::uint32_t from, std::uint32_t to) { adj[cur[from]++] = to; });
+    };
+    if (packed)
+      both_passes([&](std::size_t a, std::size_t b) { return keyed[a].first == keyed[b].first; },
+                  [&](std::size_t x) { return keyed[x].second; }, keyed.size());
+    else
+      both_passes([&](std::size_t a, std::size_t b) { return rr[a].v == rr[b].v; }, [&](std::size_t x) { return rr[x].b; },
+                  rr.size());
     rr = {};
+    keyed = {};
     // non-degenerate: spans a (d-1)-flat (the facet of a positive simplex, or
-    // a projection along some axis has non-zero (d-1)-volume)
-    // (each boundary facet decided once: the seeds' loop below and the
-    // search within a hull facet ask for the same facets, and a degenerate
-    // one costs d exactly zero orientations)
-    std::vector<std::int8_t> nd_memo(nb_, -1);
+    // a projection along some axis has non-zero (d-1)-volume); a degenerate
+    // one costs d exactly zero orientations, so only the seeds' loop below
+    // asks, for facets no earlier hull facet's search has reached
     auto nondegenerate = [&](std::size_t b) {
       const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
       if (!flat[s]) return true;
-      if (nd_memo[b] >= 0) return nd_memo[b] == 1;
-      nd_memo[b] = 1;
       fvert(b, f);
       double proj[kMaxD][kMaxD];
       const double* rows[kMaxD + 1];
@@ -2857,28 +2905,37 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         }
         if (pred::orient_d_exact(d - 1, rows) != 0) return true;
       }
-      nd_memo[b] = 0;
       return false;
     };
-    std::vector<std::int64_t> bgroup(nb_, -1), bstamp(nb_, -1), sstamp(m, -1);
+    // bstamp: the last hull facet whose search reached the boundary facet
+    // (all its points on that facet's plane). A non-degenerate one so
+    // reached spans that plane and would seed the same hull facet again; a
+    // degenerate one seeds none: the seeds' loop skips both, unasked (on the
+    // 3^5 grid 4,816 facets of zero-volume simplices were asked, 20,160
+    // exact orientations, most of them exactly zero)
+    std::vector<std::int64_t> bstamp(nb_, -1), sstamp(m, -1);
     // each point's answer for the plane of hull facet h, kept while h is
     // built: a point on the plane lies in many of its boundary facets and
     // zero-volume simplices, each of which asked again (one exact
     // orientation per incidence; most are exactly 0, decided by the
     // predicates' exact stages)
     std::vector<std::int64_t> on_stamp(n, -1), off_stamp(n, -1);
+    // what h's search has settled: zero-volume simplices and boundary facets
+    // found not in its plane (the layers of a lattice's hull facet meet each
+    // such neighbour from several sides), points already in its list
+    std::vector<std::int64_t> s_off(m, -1), b_off(nb_, -1), listed(n, -1);
     for (std::size_t b0 = 0; b0 < nb_; ++b0) {
-      if (bgroup[b0] >= 0 || !nondegenerate(b0)) continue;
+      if (bstamp[b0] >= 0 || !nondegenerate(b0)) continue;
       const std::int64_t h = static_cast<std::int64_t>(hull_facets.size());
       std::array<std::int64_t, kMaxD> base;
       fvert(b0, base);
       const double* rows[kMaxD + 1];
       for (int r = 0; r < d; ++r) rows[r] = pt(base[r]);
+      // a vertex of the base facet is on its plane: no determinant with a
+      // repeated row (exactly 0, which only the exact stage can tell: the
+      // neighbouring facets share d - 1 vertices with it)
+      for (int r = 0; r < d; ++r) on_stamp[static_cast<std::size_t>(base[r])] = h;
       auto on_plane = [&](std::int64_t v) {
-        // a vertex of the base facet is on its plane: no determinant with a
-        // repeated row (exactly 0, which only the exact stage can tell: the
-        // neighbouring facets share d - 1 vertices with it)
-        if (std::find(base.begin(), base.begin() + d, v) != base.begin() + d) return true;
         const std::size_t u = static_cast<std::size_t>(v);
         if (on_stamp[u] == h) return true;
         if (off_stamp[u] == h) return false;
@@ -2888,6 +2945,11 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         return on;
       };
       std::vector<std::int64_t> pts_on;
+      auto list = [&](std::int64_t v) {
+        if (listed[static_cast<std::size_t>(v)] == h) return;
+        listed[static_cast<std::size_t>(v)] = h;
+        pts_on.push_back(v);
+      };
       std::vector<std::size_t> queue{b0}, flats;
       bstamp[b0] = h;
       while (!queue.empty() || !flats.empty()) {
@@ -2895,15 +2957,17 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           const std::size_t s = flats.back();
           flats.pop_back();
           layer[s] = 1;
-          for (std::size_t j = 0; j < k; ++j) pts_on.push_back(S[s * k + j]);
+          for (std::size_t j = 0; j < k; ++j) list(S[s * k + j]);
           for (std::size_t j = 0; j < k; ++j) {
             const std::int64_t t2 = nbr[s * k + j];
-            if (t2 < 0 || !flat[t2] || sstamp[t2] == h) continue;
+            if (t2 < 0 || !flat[t2] || sstamp[t2] == h || s_off[t2] == h) continue;
             bool all = true;
             for (std::size_t l = 0; l < k && all; ++l) all = on_plane(S[t2 * k + l]);
             if (all) {
               sstamp[t2] = h;
               flats.push_back(static_cast<std::size_t>(t2));
+            } else {
+              s_off[t2] = h;
             }
           }
           continue;
@@ -2912,19 +2976,21 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         queue.pop_back();
         std::array<std::int64_t, kMaxD> fb;
         fvert(b, fb);
-        for (int l = 0; l < d; ++l) pts_on.push_back(fb[l]);
-        if (bgroup[b] < 0 && nondegenerate(b)) bgroup[b] = h;
+        for (int l = 0; l < d; ++l) list(fb[l]);
         const std::size_t s = static_cast<std::size_t>(bf[b]) / k;
-        if (flat[s] && sstamp[s] != h) {
+        if (flat[s] && sstamp[s] != h && s_off[s] != h) {
           bool all = true;
           for (std::size_t l = 0; l < k && all; ++l) all = on_plane(S[s * k + l]);
           if (all) {
             sstamp[s] = h;
             flats.push_back(s);
+          } else {
+            s_off[s] = h;
           }
         }
-        for (std::uint32_t b2 : adj[b]) {
-          if (bstamp[b2] == h) continue;
+        for (std::size_t x = adj_off[b]; x != adj_off[b + 1]; ++x) {
+          const std::uint32_t b2 = adj[x];
+          if (bstamp[b2] == h || b_off[b2] == h) continue;
           std::array<std::int64_t, kMaxD> f2;
           fvert(b2, f2);
           bool all = true;
@@ -2932,11 +2998,12 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           if (all) {
             bstamp[b2] = h;
             queue.push_back(b2);
+          } else {
+            b_off[b2] = h;
           }
         }
       }
-      std::sort(pts_on.begin(), pts_on.end());
-      pts_on.erase(std::unique(pts_on.begin(), pts_on.end()), pts_on.end());
+      std::sort(pts_on.begin(), pts_on.end());  // (each listed once)
       hull_facets.push_back(std::move(pts_on));
     }
   }
@@ -3075,7 +3142,10 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // the ridges (i, j), j > i, of point i (see 6 below); tie: whether ties
   // were found (vertex[] and the extra candidates are then known)
   struct Scratch {
-    std::vector<std::pair<std::int64_t, std::int64_t>> e;  // (j, simplex or -1)
+    // (j, simplex or -1) as j 2^32 + simplex + 1: the pairs' order, sorted
+    // as one integer (j < n < 2^31, simplex + 1 < m + 1 <= 2^32: voronoi()
+    // checks both)
+    std::vector<std::uint64_t> e;
     std::vector<std::int64_t> around, cs, gs, star, seq, order;
     std::vector<Set> sets;
     std::vector<std::uint8_t> adj;
@@ -3094,13 +3164,16 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     e.clear();
     for (std::size_t x = 0; x < cnt; ++x)
       for (std::size_t l = 0; l < k; ++l)
-        if (S[st[x] * k + l] > i) e.push_back({S[st[x] * k + l], st[x]});
-    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) e.push_back({ex[x], -1});
+        if (S[st[x] * k + l] > i)
+          e.push_back(static_cast<std::uint64_t>(S[st[x] * k + l]) << 32 | static_cast<std::uint64_t>(st[x] + 1));
+    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) e.push_back(static_cast<std::uint64_t>(ex[x]) << 32);
     std::sort(e.begin(), e.end());
+    auto e_point = [&](std::size_t x) { return static_cast<std::int64_t>(e[x] >> 32); };
+    auto e_simplex = [&](std::size_t x) { return static_cast<std::int64_t>(e[x] & 0xffffffffu) - 1; };
     for (std::size_t a = 0; a < e.size();) {
       std::size_t b = a + 1;
-      while (b < e.size() && e[b].first == e[a].first) ++b;
-      const std::int64_t j = e[a].first;
+      const std::int64_t j = e_point(a);
+      while (b < e.size() && e_point(b) == j) ++b;
       const std::size_t a0 = a;
       a = b;
       if (tie && !vertex[j]) continue;
@@ -3116,7 +3189,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           if (holds(gq.data() + gq_off[g], gq.data() + gq_off[g + 1], j)) cs.push_back(g);
       } else {
         for (std::size_t x = a0; x < b; ++x)
-          if (group[e[x].second] >= 0) cs.push_back(group[e[x].second]);
+          if (group[e_simplex(x)] >= 0) cs.push_back(group[e_simplex(x)]);
         std::sort(cs.begin(), cs.end());
         cs.erase(std::unique(cs.begin(), cs.end()), cs.end());
       }
@@ -3153,9 +3226,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         gs.clear();
         star.clear();
         for (std::size_t x = a0; x < b; ++x)
-          if (e[x].second >= 0) {
-            star.push_back(e[x].second);
-            const std::int64_t g = group[e[x].second];
+          if (e_simplex(x) >= 0) {
+            star.push_back(e_simplex(x));
+            const std::int64_t g = group[e_simplex(x)];
             if (tie && g >= 0) gs.push_back(g);
           }
         if (tie) {
