@@ -57,6 +57,7 @@
 #include "kernels_cuda/gpu.hpp"
 #endif
 #include "predicates/expansion.hpp"
+#include "predicates/lambda_filter.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
@@ -2511,6 +2512,81 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
 }
 #endif
 
+// The centre of a simplex of a small-integer lattice (every coordinate an
+// integer below 2^20 in magnitude, weights, if any, integers below 2^40) in
+// 64-bit integers: the same system as CentreSolver's, 2 v_k . x = b_k with
+// v_k = p_k - p_0 and b_k = |v_k|^2 - (w_k - w_0) (k = 1..D), by Cramer's
+// rule. The Laplace minors over column subsets of the D x (D + 1) matrix
+// [2V | b] (pred::minor_levels, rows 0..|S|-1) hold det 2V (columns 0..D-1)
+// and, for each l, the minor without column l, which is det of 2V with
+// column l replaced by b after D - 1 - l transpositions (b moved from last to
+// place l): x_l = N_l / det 2V, and c_l = (p_0l det + N_l) / det. Exactness:
+// every minor is below Hadamard's bound H = prod_j max(1, |column j|), every
+// product in the expansion below max|entry| H and every partial sum below
+// (D + 1) max|entry| H, which must be below 2^61 (a factor 4 above the
+// roundings of its computation in binary64; int64 holds 2^63). With det and
+// the numerator below 2^53, binary64 holds them exactly and the division is
+// correctly rounded, as CentreSolver::rounded (an exact 0 written as +0).
+// Returns 1 (written), 0 (zero volume: det 2V = 2^D det V = 0, exactly), or
+// -1 where a bound fails (the general path decides). The 6^4 grid: 35,352
+// simplices, 20,352 of zero volume, each an exact orientation and the rest a
+// long double solve before.
+template <int D>
+int lattice_centre(const double* const* p, const double* w, double* out) {
+  constexpr int N = D + 1;  // columns of [2V | b]; row D is 0 and never read (levels up to D)
+  long long t[N * N] = {};
+  for (int k = 1; k <= D; ++k) {
+    long long b = 0;
+    for (int l = 0; l < D; ++l) {
+      const long long v = static_cast<long long>(p[k][l]) - static_cast<long long>(p[0][l]);
+      t[(k - 1) * N + l] = 2 * v;
+      b += v * v;
+    }
+    if (w) b -= static_cast<long long>(w[k]) - static_cast<long long>(w[0]);
+    t[(k - 1) * N + D] = b;
+  }
+  double h = 1.0, mx = 1.0;
+  for (int j = 0; j < N; ++j) {
+    double sq = 0.0;
+    for (int i = 0; i < D; ++i) {
+      const double x = static_cast<double>(t[i * N + j]);
+      sq += x * x;
+      mx = std::max(mx, std::fabs(x));
+    }
+    h *= std::max(1.0, std::sqrt(sq));
+  }
+  if (!(N * mx * h < 0x1p61)) return -1;
+  long long m[1 << N];
+  pred::minor_levels<N, D, long long>(t, m);
+  const long long det = m[(1 << D) - 1];
+  if (det == 0) return 0;
+  constexpr long long kExact = 1LL << 53;
+  if (det >= kExact || det <= -kExact) return -1;
+  double c[D];
+  for (int l = 0; l < D; ++l) {
+    long long nl = m[((1 << N) - 1) & ~(1 << l)];
+    if ((D - 1 - l) & 1) nl = -nl;
+    const __int128 num = static_cast<__int128>(static_cast<long long>(p[0][l])) * det + nl;
+    if (num >= kExact || num <= -kExact) return -1;
+    c[l] = num == 0 ? 0.0 : static_cast<double>(static_cast<long long>(num)) / static_cast<double>(det);
+  }
+  for (int l = 0; l < D; ++l) out[l] = c[l];
+  return 1;
+}
+
+// lattice_centre for the run-time dimension (2..6; -1 beyond: minor_levels
+// takes up to 7 columns)
+inline int lattice_centre_d(int d, const double* const* p, const double* w, double* out) {
+  switch (d) {
+    case 2: return lattice_centre<2>(p, w, out);
+    case 3: return lattice_centre<3>(p, w, out);
+    case 4: return lattice_centre<4>(p, w, out);
+    case 5: return lattice_centre<5>(p, w, out);
+    case 6: return lattice_centre<6>(p, w, out);
+    default: return -1;
+  }
+}
+
 // An exact centre kept for comparison: c_l = M[l] / D * 2^E.
 struct ExactCentre {
   int d = 0;
@@ -2579,6 +2655,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // every coordinate an integer below 2^20: the predicates' own lattice test
   // (StaticFilter::small_integers; their integer stage decides such calls)
   const bool lattice = pred::StaticFilter::for_points(ps.coords.data(), n, d).small_integers();
+  const bool int_centres = lattice && d <= 6 && (!weighted || std::all_of(ps.weights.begin(), ps.weights.end(), [](double x) {
+                             return x == std::trunc(x) && std::fabs(x) < 0x1p40;
+                           }));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
       CentreSolver cs;
@@ -2589,6 +2668,13 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         for (std::size_t j = 0; j < k; ++j) {
           p[j] = pt(S[s * k + j]);
           if (weighted) w[j] = wt(S[s * k + j]);
+        }
+        // on an integer lattice (integer weights) the centre, or zero
+        // volume, in 64-bit integers where the bounds hold
+        if (int_centres) {
+          const int r = lattice_centre_d(d, p, weighted ? w : nullptr, &C[s * d]);
+          if (r == 0) flat[s] = 1;
+          if (r >= 0) continue;
         }
         // on an integer lattice the exact orientation first: the
         // predicates' integer stage decides it in about the time the

@@ -160,6 +160,32 @@ def test_vertices_correctly_rounded_4d_5d_weighted_and_near_degenerate(d):
         assert check_rounding(Voronoi(q)) > 20
 
 
+@pytest.mark.parametrize("d", [2, 3, 4, 5, 6])
+def test_vertices_correctly_rounded_on_integer_lattices(d):
+    """Small-integer points (integer weights or none): the centres in 64-bit
+    integers by Cramer's rule where Hadamard's bound allows, the general path
+    where it does not (coordinates up to 2^19), zero volume decided exactly;
+    negative coordinates and -0.0 included. Every vertex against the Fraction
+    oracle, every zero-volume simplex without one."""
+    rng = np.random.default_rng(700 + d)
+    n = {2: 60, 3: 40, 4: 30, 5: 22, 6: 16}[d]
+    grid = np.array(list(itertools.product(range(7 if d == 2 else 3), repeat=d)), dtype=float)
+    grid = grid[rng.permutation(len(grid))[:n * 2]] - 1.0  # coordinates from -1
+    grid[grid == 0.0] = -0.0
+    flat_seen = checked = 0
+    for p, w in ((grid, None), (grid, rng.integers(-2, 3, len(grid)).astype(float)),
+                 (rng.integers(-40, 41, (n, d)).astype(float), None),
+                 (rng.integers(-40, 41, (n, d)).astype(float), rng.integers(-900, 901, n).astype(float)),
+                 (rng.integers(-2**19, 2**19, (n, d)).astype(float), None)):
+        vor = Voronoi(p) if w is None else Voronoi(p, weights=w)
+        c = check_rounding(vor)
+        assert c > 0
+        checked += c
+        flat_seen += int((vor.simplex_vertex == -1).sum())
+    assert checked > 50
+    assert flat_seen > 0  # the grids' zero-volume simplices were asked
+
+
 def test_vertices_correctly_rounded_weighted():
     rng = np.random.default_rng(3)
     p = rng.random((150, 2))
