@@ -8,7 +8,7 @@ flipflop and scipy alternating, medians of R runs (argv[1], default 3):
 Rows: Delaunay on integer grids k^d and on the same grids with 20 % of the points moved by
 2 ulp per coordinate (each coordinate stepped twice by np.nextafter in a random direction,
 seed 7: a moved 0 becomes a subnormal), the perturbed grids plus 1.0 (no subnormals),
-Voronoi of the perturbed 3^5 and 6^4 grids, Delaunay of random points in 4D and 5D, ConvexHull of standard normal points in 4D..7D and of
+Voronoi of the 3^5 and 6^4 grids and of the same grids perturbed, Delaunay of random points in 4D and 5D, ConvexHull of standard normal points in 4D..7D and of
 uniform cube points in 4D and 5D,
 find_simplex of 18,000 queries on the perturbed 3^5 grid. flipflop's calls include
 certification; both libraries' attributes are those computed eagerly."""
@@ -31,6 +31,8 @@ cases = [
     ("Delaunay, 6^4 grid", grid(6, 4), flipflop.Delaunay, ss.Delaunay),
     ("Delaunay, 6^4 grid, 20 % moved by 2 ulp", perturbed(grid(6, 4)), flipflop.Delaunay, ss.Delaunay),
     ("Delaunay, 20^3 grid, 20 % moved by 2 ulp", perturbed(grid(20, 3)), flipflop.Delaunay, ss.Delaunay),
+    ("Voronoi, 3^5 grid", grid(3, 5), flipflop.Voronoi, ss.Voronoi),
+    ("Voronoi, 6^4 grid", grid(6, 4), flipflop.Voronoi, ss.Voronoi),
     ("Voronoi, 3^5 grid, 20 % moved by 2 ulp", g35p, flipflop.Voronoi, ss.Voronoi),
     ("Voronoi, 3^5 grid, 20 % moved by 2 ulp, + 1", g35p + 1.0, flipflop.Voronoi, ss.Voronoi),
     ("Voronoi, 6^4 grid, 20 % moved by 2 ulp", perturbed(grid(6, 4)), flipflop.Voronoi, ss.Voronoi),
