@@ -39,7 +39,6 @@
 
 #include <gmp.h>
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
@@ -3229,12 +3228,10 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   // the ridges (i, j), j > i, of point i (see 6 below); tie: whether ties
   // were found (vertex[] and the extra candidates are then known)
   struct Scratch {
-    // the points j > i of i's simplices (and extra candidates), ascending,
-    // each with its entries es[js_off[x] .. js_off[x + 1]): the extra
-    // candidates' -1 first, then the simplices holding i and j in increasing
-    // order (pss' order) — the order of the sorted pairs (j, simplex)
-    std::vector<std::int64_t> js, es;
-    std::vector<std::size_t> js_off;
+    // (j, simplex or -1) as j 2^32 + simplex + 1: the pairs' order, sorted
+    // as one integer (j < n < 2^31, simplex + 1 < m + 1 <= 2^32: voronoi()
+    // checks both)
+    std::vector<std::uint64_t> e;
     std::vector<std::int64_t> around, cs, gs, star, seq, order;
     std::vector<Set> sets;
     std::vector<std::uint8_t> adj;
@@ -3242,47 +3239,29 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   std::vector<std::int64_t> ex_off(n + 1, 0), ex;  // the extra candidates by their first point (CSR)
   std::vector<std::int64_t> gq_off, gq;  // with ties: each cell's points that are vertices of Q
   auto qset = [&](std::int64_t g) { return Set{gq.data() + gq_off[g], gq.data() + gq_off[g + 1]}; };
-  // per thread: slot[j] = -1, or while a point is handled j's count, then
-  // its next entry's position (a counting sort of the pairs by j: sorting
-  // the pairs themselves took 14 % of the 6^4 grid's diagram)
-  tbb::enumerable_thread_specific<std::vector<std::int64_t>> slots([&] { return std::vector<std::int64_t>(n, -1); });
   auto ridges_of = [&](std::int64_t i, bool tie, Scratch& sc, Chunk& out_c) {
-    auto &js = sc.js, &es = sc.es;
-    auto& js_off = sc.js_off;
-    std::vector<std::int64_t>& slot = slots.local();
+    auto& e = sc.e;
     auto &around = sc.around, &cs = sc.cs, &gs = sc.gs, &star = sc.star, &seq = sc.seq, &order = sc.order;
     auto& sets = sc.sets;
     auto& adj = sc.adj;
     const std::int64_t* st = pss.data() + ps_off[i];
     const std::size_t cnt = static_cast<std::size_t>(ps_off[i + 1] - ps_off[i]);
     if (tie) cells_around(i, around);
-    js.clear();
-    auto count = [&](std::int64_t j) {
-      if (slot[j] < 0) slot[j] = 0, js.push_back(j);
-      ++slot[j];
-    };
-    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) count(ex[x]);
+    e.clear();
     for (std::size_t x = 0; x < cnt; ++x)
       for (std::size_t l = 0; l < k; ++l)
-        if (S[st[x] * k + l] > i) count(S[st[x] * k + l]);
-    std::sort(js.begin(), js.end());
-    js_off.resize(js.size() + 1);
-    std::size_t total = 0;
-    for (std::size_t x = 0; x < js.size(); ++x) {
-      js_off[x] = total;
-      total += static_cast<std::size_t>(slot[js[x]]);
-      slot[js[x]] = static_cast<std::int64_t>(js_off[x]);
-    }
-    js_off[js.size()] = total;
-    es.resize(total);
-    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) es[slot[ex[x]]++] = -1;
-    for (std::size_t x = 0; x < cnt; ++x)
-      for (std::size_t l = 0; l < k; ++l)
-        if (S[st[x] * k + l] > i) es[slot[S[st[x] * k + l]]++] = st[x];
-    for (std::int64_t j : js) slot[j] = -1;
-    for (std::size_t jx = 0; jx < js.size(); ++jx) {
-      const std::int64_t j = js[jx];
-      const std::size_t a0 = js_off[jx], b = js_off[jx + 1];
+        if (S[st[x] * k + l] > i)
+          e.push_back(static_cast<std::uint64_t>(S[st[x] * k + l]) << 32 | static_cast<std::uint64_t>(st[x] + 1));
+    for (std::int64_t x = ex_off[i]; x < ex_off[i + 1]; ++x) e.push_back(static_cast<std::uint64_t>(ex[x]) << 32);
+    std::sort(e.begin(), e.end());
+    auto e_point = [&](std::size_t x) { return static_cast<std::int64_t>(e[x] >> 32); };
+    auto e_simplex = [&](std::size_t x) { return static_cast<std::int64_t>(e[x] & 0xffffffffu) - 1; };
+    for (std::size_t a = 0; a < e.size();) {
+      std::size_t b = a + 1;
+      const std::int64_t j = e_point(a);
+      while (b < e.size() && e_point(b) == j) ++b;
+      const std::size_t a0 = a;
+      a = b;
       if (tie && !vertex[j]) continue;
       // the cells holding i and j. Without ties they are the cells of
       // the simplices holding edge ij when it is an edge of Q (each cell
@@ -3296,7 +3275,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           if (holds(gq.data() + gq_off[g], gq.data() + gq_off[g + 1], j)) cs.push_back(g);
       } else {
         for (std::size_t x = a0; x < b; ++x)
-          if (group[es[x]] >= 0) cs.push_back(group[es[x]]);
+          if (group[e_simplex(x)] >= 0) cs.push_back(group[e_simplex(x)]);
         std::sort(cs.begin(), cs.end());
         cs.erase(std::unique(cs.begin(), cs.end()), cs.end());
       }
@@ -3333,9 +3312,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         gs.clear();
         star.clear();
         for (std::size_t x = a0; x < b; ++x)
-          if (es[x] >= 0) {
-            star.push_back(es[x]);
-            const std::int64_t g = group[es[x]];
+          if (e_simplex(x) >= 0) {
+            star.push_back(e_simplex(x));
+            const std::int64_t g = group[e_simplex(x)];
             if (tie && g >= 0) gs.push_back(g);
           }
         if (tie) {
