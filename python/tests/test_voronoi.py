@@ -456,6 +456,32 @@ def test_hypercube_4d():
     assert len(vor.ridge_points) == 32 and all(abs(p[a] - p[b]).sum() == 1 for a, b in vor.ridge_points)
 
 
+@pytest.mark.parametrize("d,extra", [(6, 4200), (3, 60)])
+def test_redundant_points_leave_the_diagram_unchanged(d, extra):
+    """Points whose weight makes them redundant change nothing but their own
+    (empty) regions. The hypercube's corners make hull facets of many
+    boundary facets, which the hull-facet search joins across their ridges.
+    In 6D the 4,264 points make a ridge's five ids too wide for one 64-bit
+    key (13 bits each), so the diagram with them matches ridges by the record
+    sort and the one without them by the packed key: both must agree (a
+    record sort that joined no ridges changed the ridges here)."""
+    rng = np.random.default_rng(90 + d)
+    cube = np.array(list(itertools.product((0.0, 4.0), repeat=d)))
+    nc = len(cube)
+    # inside the cube: each within distance^2 6.25 d < 1000 of a corner (power 0)
+    p = np.vstack([cube, 1.5 + rng.random((extra, d))])
+    w = np.concatenate([np.zeros(nc), np.full(extra, -1000.0)])
+    small, big = Voronoi(cube), Voronoi(p, weights=w)
+    assert big.simplices.tolist() == small.simplices.tolist()
+    assert big.vertices.tolist() == [[2.0] * d]
+    assert big.vertices.tobytes() == small.vertices.tobytes()
+    assert big.ridge_points.tolist() == small.ridge_points.tolist()
+    assert len(small.ridge_points) == d * 2 ** (d - 1)  # the cube's edges
+    assert big.ridge_vertices == small.ridge_vertices
+    assert [big.regions[big.point_region[i]] for i in range(nc)] == [small.regions[small.point_region[i]] for i in range(nc)]
+    assert all(big.regions[big.point_region[i]] == [] for i in range(nc, nc + extra))
+
+
 def test_duplicates_have_empty_regions():
     rng = np.random.default_rng(4)
     p = rng.random((60, 2))
