@@ -51,7 +51,7 @@
 //   (cap_x(K+1) x 16 B): K = 4 39 KB, K = 5 78 KB, K = 8 820 KB (inside the
 //   4 MB of a TBB or OpenMP worker; only inputs outside the double window get
 //   there). XDbl on the device, permutations (MinorX): 7 cap_x(K+1) x 16 B
-//   (K = 5: 27 KB). The SoS memo: 2^(2K-1) bytes (K = 5: 512 B, K = 8: 32 KB).
+//   (K = 5: 27 KB). The SoS memo: 2^(2K-1) bytes for K <= 6 (K = 5: 512 B), 2.5 KB above.
 //   On the device each expansion stage is a call of its own
 //   (FF_DEVICE_NOINLINE: det_translated, sos_expansions, pulled_expansions,
 //   mixed_expansions, the minors), so a thread's stack is the deepest chain
@@ -993,6 +993,48 @@ FF_HD inline int minor_quick(const LambdaX<A, K, C>& L, LazyApprox<A, K, C>& app
   return small_integer_minor<A, K>(L, kept);
 }
 
+// sos_search's memo of minor signs by key (kept rows << (K-1) | kept
+// coordinate columns, 2K - 1 bits). K <= 6: a byte per key (2 KB at most).
+// Larger K: the table would be 2^(2K-1) bytes, set on every call (K = 8:
+// 32 KB, 32 % of a 6D Delaunay's instructions on points given twice), while
+// a search reads tens of minors: an open-addressed table of 512 keys, which
+// stops remembering at 384 (a minor not remembered is computed again: the
+// same sign). get: the sign, or 2 when not remembered.
+template <int K, bool Direct = (K <= 6)>
+struct SosMemo {
+  signed char v[1u << (2 * K - 1)];
+  FF_HD SosMemo() {
+    for (unsigned i = 0; i < (1u << (2 * K - 1)); ++i) v[i] = 2;
+  }
+  FF_HD int get(unsigned key) const { return v[key]; }
+  FF_HD void put(unsigned key, int s) { v[key] = static_cast<signed char>(s); }
+};
+template <int K>
+struct SosMemo<K, false> {
+  static constexpr unsigned kSlots = 512, kMax = 384, kEmpty = ~0u;
+  unsigned key[kSlots];
+  signed char v[kSlots];
+  unsigned n = 0;
+  FF_HD SosMemo() {
+    for (unsigned i = 0; i < kSlots; ++i) key[i] = kEmpty;
+  }
+  FF_HD static unsigned home(unsigned k) { return (k * 2654435761u) >> 23; }  // 9 bits
+  FF_HD int get(unsigned k) const {
+    for (unsigned i = home(k);; i = (i + 1) & (kSlots - 1)) {
+      if (key[i] == k) return v[i];
+      if (key[i] == kEmpty) return 2;
+    }
+  }
+  FF_HD void put(unsigned k, int s) {
+    if (n == kMax) return;
+    unsigned i = home(k);
+    while (key[i] != kEmpty && key[i] != k) i = (i + 1) & (kSlots - 1);
+    if (key[i] == kEmpty) ++n;
+    key[i] = k;
+    v[i] = static_cast<signed char>(s);
+  }
+};
+
 // The search over matchings in the dominance order for a Λ of K rows; with
 // det_is_zero the caller has decided det Λ = 0 and the memo starts with it.
 // minor(kr, kc) returns the sign of the minor on the kept rows / columns, or 2
@@ -1011,17 +1053,31 @@ FF_HD inline int minor_quick(const LambdaX<A, K, C>& L, LazyApprox<A, K, C>& app
 // pull's sign -1) — in that order, pulls smallest index first. So the search
 // is the one above without the height column, and a leaf whose complementary
 // minor is 0 tries minor_q and then the pulls of its kept rows.
+//
+// eq (optional, not with Pulled): eq[x K + y] the columns on which rows x and
+// y of Λ are exactly equal (bit j: column j). The subtree test of the lemma
+// below (the SoS search on an integer Λ by ranks): every leaf under a node is
+// 0 when F, the rows kept among those already decided, loses rank on the
+// columns left — in particular when two rows of F are equal on them (points
+// given twice: without this the search walks every leaf of the subtree under
+// the higher copy's "not perturbed", K = 8: thousands of leaves per call).
+// Such a node is skipped; the leaves skipped are all 0, so the first non-zero
+// leaf, and the answer, are the same.
 template <int K, bool Pulled = false, class MinorFn, class MinorQFn = std::nullptr_t>
-FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn, MinorQFn&& minor_q = nullptr) {
+FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn, MinorQFn&& minor_q = nullptr,
+                            const unsigned* eq = nullptr) {
   constexpr unsigned kAll = (1u << K) - 1u;
   constexpr unsigned kColMask = (1u << (K - 1)) - 1u;  // the 1-column (bit K-1) is always kept
-  signed char memo[1u << (2 * K - 1)];
-  for (unsigned i = 0; i < (1u << (2 * K - 1)); ++i) memo[i] = 2;
-  if (det_is_zero) memo[(kAll << (K - 1)) | (kAll & kColMask)] = 0;  // det Λ itself
+  SosMemo<K> memo;
+  if (det_is_zero) memo.put((kAll << (K - 1)) | (kAll & kColMask), 0);  // det Λ itself
   auto minor = [&](unsigned kr, unsigned kc) -> int {
-    signed char& slot = memo[(kr << (K - 1)) | (kc & kColMask)];
-    if (slot == 2) slot = static_cast<signed char>(minor_fn(kr, kc));
-    return slot;
+    const unsigned key = (kr << (K - 1)) | (kc & kColMask);
+    int s = memo.get(key);
+    if (s == 2) {
+      s = minor_fn(kr, kc);
+      memo.put(key, s);
+    }
+    return s;
   };
   int choice[K];
   unsigned skr[K], skc[K];
@@ -1049,6 +1105,21 @@ FF_HD inline int sos_search(bool det_is_zero, MinorFn&& minor_fn, MinorQFn&& min
       if (parity & 1) sg = -sg;
       kr &= ~(1u << r);
       kc &= ~(1u << c);
+    }
+    if (!Pulled && eq) {
+      // F: the kept rows among r .. K-1; two of them equal on kc: skip
+      const unsigned f = kr & ~((1u << r) - 1u);
+      bool dead = false;
+      if (opt == 0) {
+        for (int q = r + 1; q < K && !dead; ++q)
+          dead = ((f >> q) & 1u) && (kc & ~eq[r * K + q]) == 0;
+      } else {
+        for (int x = r + 1; x < K && !dead; ++x) {
+          if (!((f >> x) & 1u)) continue;
+          for (int y = x + 1; y < K && !dead; ++y) dead = ((f >> y) & 1u) && (kc & ~eq[x * K + y]) == 0;
+        }
+      }
+      if (dead) continue;
     }
     if (r == 0) {
       const int s = minor(kr, kc);
@@ -1244,15 +1315,51 @@ FF_HD inline void build_lambda(const double* const* p, const double* w, LambdaX<
 // When doubles_exact_minors holds, every minor in plain doubles, as
 // sos_sign_doubles. Stack: the double, ErrDouble and expansion Λ, the memo
 // (K = 5: about 2.9 KB, against 2.6 KB in sos_expansions' frame before).
+// The columns on which rows x and y of Λ are equal, for sos_search's eq:
+// coordinate and 1-columns compared as the doubles they are; a lifted column
+// (w) compared as doubles where lambda_doubles made it exact (exact), else
+// counted equal only for equal coordinates and weights.
+template <int K>
+FF_HD inline void lambda_row_eq(const double (&a)[K][K], const double* const* p, const double* w, bool exact,
+                                unsigned (&eq)[K * K]) {
+  const int ncoord = w ? K - 2 : K - 1;
+  for (int x = 0; x < K; ++x)
+    for (int y = x + 1; y < K; ++y) {
+      unsigned m = 1u << (K - 1);
+      bool coords = true;
+      for (int j = 0; j < ncoord; ++j) {
+        const bool e = p[x][j] == p[y][j];
+        coords = coords && e;
+        m |= e ? 1u << j : 0u;
+      }
+      if (w && (exact ? a[x][K - 2] == a[y][K - 2] : coords && w[x] == w[y])) m |= 1u << (K - 2);
+      eq[x * K + y] = eq[y * K + x] = m;
+    }
+}
+
+#if !defined(__CUDA_ARCH__) && defined(__SIZEOF_INT128__)
+// The greedy walk over several primes (defined below, after the walk modulo
+// one prime): 1 with the leaf's rows, columns and sign, 2 where it does not
+// apply or cannot decide.
+template <int K>
+int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg);
+#endif
+
 template <int K>
 FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, const Range& range) {
   double a[K][K];
   const bool exact = lambda_doubles<K>(p, w, a);
-  if (exact && doubles_exact_minors<K>(a, w != nullptr, range, K - 1))
-    return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
-      const double m = double_minor<K>(a, kr, kc);
-      return (m > 0.0) - (m < 0.0);
-    });
+  unsigned eq[K * K];
+  if (exact && doubles_exact_minors<K>(a, w != nullptr, range, K - 1)) {
+    lambda_row_eq<K>(a, p, w, true, eq);
+    return sos_search<K>(
+        true,
+        [&](unsigned kr, unsigned kc) -> int {
+          const double m = double_minor<K>(a, kr, kc);
+          return (m > 0.0) - (m < 0.0);
+        },
+        nullptr, eq);
+  }
   const int ncoord = w ? K - 2 : K - 1;
   // exact: a as it stands. Else lambda_doubles stopped at a row whose lifted
   // entry is not a double: every coordinate and 1-column entry is still
@@ -1285,7 +1392,10 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
   bool built = false;
   bool int_row[K];  // the point's Λ row is one of small integers (2^13: |x|^2 < 2^31)
   for (int i = 0; i < K; ++i) int_row[i] = small_integer_point(p[i], ncoord, w, i, 13);
-  return sos_search<K>(true, [&](unsigned kr, unsigned kc) -> int {
+  lambda_row_eq<K>(a, p, w, exact, eq);
+  // cheap: 2 instead of the exact expansion minor (the first pass below)
+  bool cheap = true;
+  auto minor_fn = [&](unsigned kr, unsigned kc) -> int {
     const Kept<K> kept(kr, kc);
     const int* ri = kept.ri;
     const int* ci = kept.ci;
@@ -1318,13 +1428,41 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
       const int s = sign_if_certain(errdouble_minor<K>(ap, kr, kc));
       if (s != 0) return s;
     }
+    if (cheap) return 2;
     if (!built) {
       build_lambda<Dbl, K>(p, w, L);
       built = true;
     }
     const int q = small_integer_minor<Dbl, K>(L, kept);
     return q != 2 ? q : MinorOf<Dbl, K>::sign(L, kr, kc);
-  });
+  };
+  // Three passes, each exact where it answers: (1) the search with the
+  // cheap minors only (exact zeros by pattern, signs by the ErrDouble
+  // filter), 2 at the first minor that would need expansions — points given
+  // twice end here, their zero minors all equal rows; (2) the walk by ranks
+  // modulo primes to the search's leaf, its minor then decided in full —
+  // exact zeros of other kinds (tensor grids of any spacing: rectangles'
+  // corners are cospherical) cost the search tens of expansion minors per
+  // call; (3) the search with every minor, where (2) does not apply.
+  // Measured one thread, rtd compute + certify (the 2-core VM): 16 random
+  // 6D points given twice 0.39 s (no eq, a 32 KB memo) -> 0.05 s after (1)
+  // alone, 0.24 s with (2) alone; a 5^4 grid of spacing 0.1, 1.10 -> 0.64 s.
+  if (const int s = sos_search<K>(true, minor_fn, nullptr, eq); s != 2) return s;
+  cheap = false;
+#if !defined(__CUDA_ARCH__) && defined(__SIZEOF_INT128__)
+  // the leaf sos_search would reach, found by rank tests modulo primes; its
+  // minor, not 0 by the walk, decided as the search decides it (a 0 there
+  // would contradict the walk: the search then runs, as without it)
+  {
+    unsigned kr = 0, kc = 0;
+    int sg = 1;
+    if (multiprime_walk<K>(p, w, kr, kc, sg) == 1) {
+      const int s = minor_fn(kr, kc);
+      if (s == 1 || s == -1) return sg * s;
+    }
+  }
+#endif
+  return sos_search<K>(true, minor_fn, nullptr, eq);
 }
 
 // The expansion stages' entry points, one function each, Dbl and XDbl apart.
@@ -1993,6 +2131,7 @@ FF_HD inline unsigned long long mod_of(long long v) {
 // columns (no branch per entry); only the columns in the mask are read.
 template <class P, int K>
 struct ModEchelon {
+  P ar{};  // the arithmetic (static for ModP31 / ModP61; multiprime_walk's prime chosen at run time)
   unsigned long long row[K][K];
   int piv[K] = {};
   int n = 0;
@@ -2002,7 +2141,7 @@ struct ModEchelon {
       const unsigned long long f = v[piv[t]];
       if (f == 0) continue;
       const unsigned long long g = row[t][piv[t]];
-      for (int j = 0; j < K; ++j) v[j] = P::cross(g, v[j], f, row[t][j]);
+      for (int j = 0; j < K; ++j) v[j] = ar.cross(g, v[j], f, row[t][j]);
     }
   }
   FF_HD void reduce_pattern(unsigned long long* v) const { reduce(v); }  // (the walk's zero tests)
@@ -2172,6 +2311,205 @@ FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L, bool sos = true) {
     for (int j = 0; j < n; ++j) t[i * n + j] = m[ri[i]][ci[j]];
   return sg * mod_det_sign<P>(t, n);
 }
+
+#if !defined(__CUDA_ARCH__) && defined(FLIPFLOP_INT128)
+// ---- The same walk modulo several primes: dyadic Λ of any size (host) ------
+// Every double is an integer times a power of two. Scaling every coordinate
+// by 2^-E and the lifted column by 2^-2E (E: the lowest set bit over the
+// call's coordinates, and half that of its weights) makes Λ an integer
+// matrix Λ' whose minors are Λ's times positive powers of two: the same
+// signs, so the same SoS leaf and sign (sos_search reads only minors' signs).
+// On tensor-product grids of non-dyadic spacing (np.mgrid with step 0.1:
+// rectangles' corners are cospherical whatever the spacing), on copies of
+// points and on decimal-coordinate floors the exactly degenerate calls read
+// tens of minors each, as expansions (a 4D 5^4 grid of spacing 0.1: 0.73 s
+// against 0.06 s for the integer grid); Λ' has entries of 55-110 bits.
+//   The walk (sos_walk's lemma and steps) needs only rank tests. Let every
+// minor of Λ' be below 2^B in magnitude (B = lf(K) + Σ_j b_j, b_j the bits
+// of column j, as int_lambda's bound) and p_1 .. p_N primes with Π p_i >
+// 2^B. Rows independent modulo some p_i are independent over Q (a minor
+// not 0 modulo p_i is not 0); rows dependent modulo every p_i are dependent
+// over Q (each maximal minor M is 0 modulo each p_i, so Π p_i divides M,
+// and |M| < Π p_i: M = 0). Each prime keeps its own echelon; the primes
+// agree on every test of the walk but with probability about 2^-60 per test
+// and prime, and where they do not, the walk returns 2 (the search then
+// decides). So a leaf reached with every prime agreeing is sos_search's
+// leaf; its minor is not 0, and the caller decides its sign.
+//   Primes 2^61 - c (the 12 smallest c: 1, 31, 45, ..., 579), each above
+// 2^60.99: N = floor(B / 60) + 1 of them, at most 12 (B < 720 bits: 5D
+// Delaunay calls on 55-bit coordinates have B about 400, 7D about 530, 9D
+// about 650); more: 2.
+// 2^61 - c is prime for these c (a test checks it: Miller-Rabin with the
+// first 12 prime bases, deterministic below 2^64)
+inline constexpr int kMultiprimeCount = 12;
+inline constexpr unsigned long long kMultiprimeC[kMultiprimeCount] = {1,   31,  45,  229, 259, 283,
+                                                                      339, 391, 403, 465, 531, 579};
+struct PseudoMersenne61 {
+  static constexpr unsigned long long kM = (1ull << 61) - 1ull;
+  unsigned long long p = kM, c = 1;
+  // s < 2^122: s = h 2^61 + l = h c + l (mod p), below 2^71 + 2^61 (c <
+  // 2^10); once more below 2^61 + 2^21 < 2p: one subtraction
+  unsigned long long red(uint128_t s) const {
+    const uint128_t t = static_cast<uint128_t>(static_cast<unsigned long long>(s >> 61)) * c +
+                        (static_cast<unsigned long long>(s) & kM);
+    unsigned long long r = (static_cast<unsigned long long>(t) & kM) + static_cast<unsigned long long>(t >> 61) * c;
+    return r >= p ? r - p : r;
+  }
+  unsigned long long mul(unsigned long long a, unsigned long long b) const {
+    return red(static_cast<uint128_t>(a) * b);
+  }
+  unsigned long long add(unsigned long long a, unsigned long long b) const {
+    const unsigned long long s = a + b;
+    return s >= p ? s - p : s;
+  }
+  unsigned long long sub(unsigned long long a, unsigned long long b) const { return a >= b ? a - b : a + (p - b); }
+  // a x - b y (ModEchelon's row operation)
+  unsigned long long cross(unsigned long long a, unsigned long long x, unsigned long long b,
+                           unsigned long long y) const {
+    return sub(mul(a, x), mul(b, y));
+  }
+  // 2^e, e >= 0: 2^61 = c (mod p)
+  unsigned long long pow2(int e) const {
+    unsigned long long r = 1ull << (e % 61);
+    for (int q = e / 61; q > 0; --q) r = mul(r, c);
+    return r;
+  }
+};
+
+// |v| = odd 2^low: the odd integer (below 2^53) of a finite v other than 0.
+inline unsigned long long odd_part(double v) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1);
+  if ((bits >> 52) & 0x7ff) mant |= std::uint64_t{1} << 52;
+  return mant >> ctz64(mant);
+}
+
+template <int K>
+int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg) {
+  constexpr int W = K - 1;  // D's columns: Λ's columns but the 1-column
+  constexpr int kMaxPrimes = kMultiprimeCount;
+  const unsigned long long* kC = kMultiprimeC;
+  const int ncoord = w ? K - 2 : K - 1;
+  // E, and the columns' bits over Λ' (|x 2^-E| < 2^(hi - E))
+  int lo[K][W], hi[K][W], lw[K], hw[K];
+  int E = 100000;
+  for (int i = 0; i < K; ++i) {
+    for (int j = 0; j < ncoord; ++j) {
+      lo[i][j] = hi[i][j] = 0;
+      if (p[i][j] == 0.0) continue;
+      if (!bit_span(p[i][j], lo[i][j], hi[i][j])) return 2;
+      if (lo[i][j] < E) E = lo[i][j];
+    }
+    lw[i] = hw[i] = 0;
+    if (w && w[i] != 0.0) {
+      if (!bit_span(w[i], lw[i], hw[i])) return 2;
+      const int half = lw[i] >= 0 ? lw[i] / 2 : -((1 - lw[i]) / 2);  // floor(lw / 2)
+      if (half < E) E = half;
+    }
+  }
+  if (E == 100000) return 2;  // every value 0
+  int B = log2_factorial_ceil(K);
+  int lifted_bits = 0;
+  for (int j = 0; j < ncoord; ++j) {
+    int b = 0;
+    for (int i = 0; i < K; ++i)
+      if (p[i][j] != 0.0 && hi[i][j] - E > b) b = hi[i][j] - E;
+    if (b > 240) return 2;
+    B += b;
+    if (2 * b > lifted_bits) lifted_bits = 2 * b;
+  }
+  if (w) {
+    // Σ x_j^2 2^-2E - w 2^-2E: at most ncoord + 1 <= 11 terms below 2^t each
+    for (int i = 0; i < K; ++i)
+      if (w[i] != 0.0 && hw[i] - 2 * E > lifted_bits) lifted_bits = hw[i] - 2 * E;
+    if (lifted_bits > 720) return 2;
+    B += lifted_bits + 4;
+  }
+  const int N = B / 60 + 1;
+  if (N > kMaxPrimes) return 2;
+  PseudoMersenne61 P[kMaxPrimes];
+  unsigned long long m[kMaxPrimes][W][W];
+  for (int q = 0; q < N; ++q) {
+    P[q].c = kC[q];
+    P[q].p = PseudoMersenne61::kM + 1ull - kC[q];
+    const PseudoMersenne61& F = P[q];
+    unsigned long long row[K][W];
+    for (int i = 0; i < K; ++i) {
+      unsigned long long h = 0;
+      for (int j = 0; j < ncoord; ++j) {
+        unsigned long long x = 0;
+        if (p[i][j] != 0.0) {
+          x = F.mul(odd_part(p[i][j]), F.pow2(lo[i][j] - E));
+          if (p[i][j] < 0.0 && x != 0) x = F.p - x;
+        }
+        row[i][j] = x;
+        h = F.add(h, F.mul(x, x));
+      }
+      if (w) {
+        if (w[i] != 0.0) {
+          unsigned long long y = F.mul(odd_part(w[i]), F.pow2(lw[i] - 2 * E));
+          h = w[i] > 0.0 ? F.sub(h, y) : F.add(h, y);
+        }
+        row[i][K - 2] = h;
+      }
+    }
+    for (int i = 0; i < W; ++i)
+      for (int j = 0; j < W; ++j) m[q][i][j] = F.sub(row[i][j], row[K - 1][j]);
+  }
+  using Ech = ModEchelon<PseudoMersenne61, W>;
+  Ech ech[kMaxPrimes];
+  for (int q = 0; q < N; ++q) ech[q].ar = P[q];
+  kr = kc = (1u << K) - 1u;
+  sg = 1;
+  for (int r = K - 2; r >= 0; --r) {
+    int yes = 0;
+    for (int q = 0; q < N; ++q) {
+      unsigned long long v[W];
+      for (int j = 0; j < W; ++j) v[j] = m[q][r][j];
+      yes += ech[q].add(v, kc);
+    }
+    if (yes == N) continue;  // not perturbed: F + row r independent on kc
+    if (yes != 0) return 2;  // the primes disagree
+    bool moved = false;
+    for (int c = K - 2; c >= 0 && !moved; --c) {  // options 1 .. K-1: columns K-2 .. 0
+      if (!((kc >> c) & 1u)) continue;
+      bool pivot[kMaxPrimes];
+      int pass = 0;
+      for (int q = 0; q < N; ++q) {
+        pivot[q] = ech[q].is_pivot(c);
+        if (!pivot[q]) {
+          ++pass;
+          continue;
+        }
+        unsigned long long e[W] = {};
+        e[c] = 1;
+        ech[q].reduce(e);
+        pass += Ech::first_nonzero(e, kc) >= 0;
+      }
+      if (pass == 0) continue;  // e_c in F's row space: F loses rank without c
+      if (pass != N) return 2;
+      const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
+      if (parity & 1) sg = -sg;
+      kr &= ~(1u << r);
+      kc &= ~(1u << c);
+      moved = true;
+      for (int q = 0; q < N && r > 0; ++q) {
+        if (!pivot[q]) continue;
+        ech[q].n = 0;  // re-pivot: F's rows again, on kc (independent there by the test)
+        for (int i = K - 2; i > r; --i) {
+          if (!((kr >> i) & 1u)) continue;
+          unsigned long long v[W];
+          for (int j = 0; j < W; ++j) v[j] = m[q][i][j];
+          if (!ech[q].add(v, kc)) return 2;
+        }
+      }
+    }
+    if (!moved) return 2;
+  }
+  return 1;
+}
+#endif
 
 // ---- The same walk in binary64 by Bareiss's elimination ------------------
 // Where every minor of D is small, the walk above runs exactly in doubles,

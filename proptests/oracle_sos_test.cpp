@@ -523,6 +523,75 @@ TEST_CASE("oracle: the integer walk decides lattice calls of 8..11 rows as the o
   CHECK(t[2] * 2 > t[1]);
 }
 
+// ---- the walk modulo several primes beyond 8 rows -------------------------------------------
+// k = 9..11 calls off the integer lattice that the run-time filter cannot
+// decide take the walk modulo primes (predicates.cpp lambda_walk_high,
+// exact_expansion.hpp multiprime_walk) and one GMP minor: random doubles
+// given twice or three times (ids apart), decimal tensor grids (k 0.1, k
+// 0.7: rectangles' corners cospherical), with equal or different weights
+// per copy. Against the oracle; not vacuous: the walk applies (at most 12
+// primes) to most calls, most of them with det Λ = 0.
+template <int K>
+void multiprime_high(Det& g, bool lifted, int reps, long (&t)[3]) {
+  const Spec s{lifted ? Kind::power_d : Kind::orient_d, lifted ? K - 2 : K - 1};
+  for (int fam = 0; fam < 3; ++fam)
+    for (int rep = 0; rep < reps; ++rep) {
+      Instance in;
+      in.d = s.d;
+      in.k = K;
+      in.x.assign(static_cast<size_t>(K * s.d), 0.0);
+      in.w.assign(static_cast<size_t>(K), 0.0);
+      const double step = g.uni(0, 1) ? 0.1 : 0.7;
+      for (double& v : in.x)
+        v = fam == 0 ? std::ldexp(static_cast<double>(g.rng() >> 11), -53) : g.uni(-2, 2) * step;
+      if (lifted)
+        for (double& v : in.w) v = fam == 2 ? g.uni(0, 2) * 0.01 : 0.0;
+      // copies: 1 .. K/2 rows take another row's coordinates (and weight, or not)
+      for (int c = g.uni(fam == 0 ? 1 : 0, K / 2); c > 0; --c) {
+        const int a = g.uni(0, K - 1), b = g.uni(0, K - 1);
+        for (int j = 0; j < s.d; ++j) in.p(a)[j] = in.p(b)[j];
+        if (g.uni(0, 1)) in.w[static_cast<size_t>(a)] = in.w[static_cast<size_t>(b)];
+      }
+      for (int i = 0; i < K; ++i) in.id.push_back(static_cast<PointId>(g.uni(0, 1000000)));
+      if (pred::repeated_id(K, in.id.data())) continue;
+      const so::Result r = oracle(s, in);
+      std::vector<const double*> p;
+      for (int i = 0; i < K; ++i) p.push_back(in.p(i));
+      const double* w = lifted ? in.w.data() : nullptr;
+      INFO(describe(s, in) << term_text(r));
+      CHECK(pred::lambda_sign(K, in.id.data(), p.data(), w, Mode::filtered) == r.sign);
+      unsigned kr = 0, kc = 0;
+      int sg = 0;
+      // the rows sorted by id, as lambda_walk_high sorts them
+      int order[K];
+      pred::sort_rows_by_id(K, in.id.data(), order);
+      std::vector<const double*> sp;
+      std::vector<double> sw;
+      for (int i = 0; i < K; ++i) {
+        sp.push_back(p[static_cast<size_t>(order[i])]);
+        sw.push_back(in.w[static_cast<size_t>(order[i])]);
+      }
+      const bool walked = xp::multiprime_walk<K>(sp.data(), lifted ? sw.data() : nullptr, kr, kc, sg) == 1;
+      ++t[0];
+      t[1] += walked;
+      t[2] += walked && kr != (1u << K) - 1u;
+    }
+}
+
+TEST_CASE("oracle: the walk modulo primes decides degenerate off-lattice calls of 9..11 rows as the oracle") {
+  Det g(9011);
+  long t[3] = {};
+  const int reps = std::max(2, static_cast<int>(10 * release_scale()));
+  for (bool lifted : {false, true}) {
+    multiprime_high<9>(g, lifted, reps, t);
+    multiprime_high<10>(g, lifted, reps, t);
+    multiprime_high<11>(g, lifted, std::max(1, reps / 2), t);
+  }
+  std::printf("multi-prime walk k = 9..11: %ld calls, %ld walked (%ld with det 0)\n", t[0], t[1], t[2]);
+  CHECK(t[1] * 2 > t[0]);
+  CHECK(t[2] * 2 > t[1]);
+}
+
 // ---- mixed rows: an exact centroid (rational_point.hpp) --------------------------------------
 TEST_CASE("oracle: mixed_sign with an exact centroid row equals the oracle") {
   Det g(6);

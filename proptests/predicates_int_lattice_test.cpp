@@ -324,25 +324,33 @@ namespace {
 double gen_mm(int bound) { return *rc::gen::inRange(-bound, bound + 1) / 1000.0; }
 
 template <int K>
-void planes_call(bool lifted, long& calls, long& zero) {
+void planes_call(bool lifted, long& calls, long& zero, long& walked) {
   const int d = lifted ? K - 2 : K - 1;
   std::vector<double> x(static_cast<size_t>(K * d)), w(static_cast<size_t>(K), 0.0);
   const int bound = *rc::gen::element(50, 5000, 50000);
   for (double& v : x) v = gen_mm(bound);
-  const int shape = *rc::gen::inRange(0, 4);
+  const int shape = *rc::gen::inRange(0, 5);
   if (shape == 0) {  // a floor or a wall: coordinate j = c for every point
     const int j = *rc::gen::inRange(0, d);
     const double c = *rc::gen::arbitrary<bool>() ? 0.0 : gen_mm(bound);
     for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + j)] = c;
   } else if (shape == 1 && d >= 2) {  // the plane x_last = x_0 (exact)
     for (int i = 0; i < K; ++i) x[static_cast<size_t>(i * d + d - 1)] = x[static_cast<size_t>(i * d)];
-  } else if (shape == 2) {  // duplicated points
-    const int a = *rc::gen::inRange(0, K), b = *rc::gen::inRange(0, K);
-    for (int j = 0; j < d; ++j) x[static_cast<size_t>(a * d + j)] = x[static_cast<size_t>(b * d + j)];
+  }
+  if (shape == 4) {  // a tensor grid of non-dyadic spacing (np.mgrid step s): k s rounded, k = -2 .. 2
+    const double step = *rc::gen::element(0.1, 0.7, 0.3, 1.1e-3, 123.456);
+    for (double& v : x) v = *rc::gen::inRange(-2, 3) * step;
   }
   if (*rc::gen::arbitrary<bool>())
-    for (double& v : w) v = gen_mm(bound);
-  if (shape == 2 && lifted) w[0] = w[1];  // sometimes the duplicate's weight too
+    for (double& v : w) v = shape == 4 ? *rc::gen::inRange(0, 3) * 0.01 : gen_mm(bound);
+  if (shape == 2 || (shape == 4 && *rc::gen::arbitrary<bool>())) {  // duplicated points: 1 .. K/2 copies, of the weight too or not (sos_search's eq)
+    const int copies = *rc::gen::inRange(1, K / 2 + 1);
+    for (int t = 0; t < copies; ++t) {
+      const int a = *rc::gen::inRange(0, K), b = *rc::gen::inRange(0, K);
+      for (int j = 0; j < d; ++j) x[static_cast<size_t>(a * d + j)] = x[static_cast<size_t>(b * d + j)];
+      if (*rc::gen::arbitrary<bool>()) w[static_cast<size_t>(a)] = w[static_cast<size_t>(b)];
+    }
+  }
   const std::vector<PointId> ids = gen_distinct_ids(K);
   const double* p[K];
   for (int i = 0; i < K; ++i) p[i] = x.data() + i * d;
@@ -373,16 +381,36 @@ void planes_call(bool lifted, long& calls, long& zero) {
            << ", sos_expansions " << expansions << ", gmp " << g << " (parity " << parity << ")\n";
   RC_ASSERT(lazy == expansions);
   RC_ASSERT(parity * lazy == g);
+#if defined(FLIPFLOP_INT128)
+  unsigned kr = 0, kc = 0;
+  int sg = 0;
+  // the walk on its own (sos_lazy asks it only where its cheap search stops):
+  // its leaf's minor is not 0, and its sign with the walk's is the answer
+  if (xp::multiprime_walk<K>(sp, swp, kr, kc, sg) == 1) {
+    ++walked;
+    xp::RawLambda<xp::Dbl, K> L;
+    xp::build_lambda<xp::Dbl, K>(sp, swp, L);
+    const int leaf = xp::MinorOf<xp::Dbl, K>::sign(L, kr, kc);
+    RC_LOG() << "multi-prime walk: leaf rows " << kr << " columns " << kc << " sign " << sg << " minor " << leaf
+             << "\n";
+    RC_ASSERT(leaf != 0);
+    RC_ASSERT(parity * sg * leaf == g);
+  }
+#endif
 }
 
 template <int K>
 void planes_property(bool lifted) {
-  long calls = 0, zero = 0;
+  long calls = 0, zero = 0, walked = 0;
   const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
-  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero); });
+  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero, walked); });
   if (calls == 0) return;
-  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld\n", name.c_str(), calls, zero);
+  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld decided by the multi-prime walk %6ld\n", name.c_str(), calls,
+              zero, walked);
   CHECK(zero * 2 > calls);
+#if defined(FLIPFLOP_INT128)
+  CHECK(walked * 2 > zero);  // the walk, not the search, decides most of them
+#endif
 }
 
 }  // namespace
@@ -392,10 +420,57 @@ TEST_CASE("sos_lazy: millimetre floors, walls, planes and duplicates equal sos_e
   planes_property<3>(false);
   planes_property<4>(false);
   planes_property<5>(false);
+  planes_property<6>(false);
+  planes_property<7>(false);
   planes_property<4>(true);
   planes_property<5>(true);
   planes_property<6>(true);
+  planes_property<7>(true);
+  planes_property<8>(true);
 }
+
+#if defined(FLIPFLOP_INT128)
+// The multi-prime walk's moduli 2^61 - c are primes: Miller-Rabin with the
+// first 12 prime bases is deterministic below 2^64 (3.3 * 10^24); the
+// arithmetic is the walk's own (PseudoMersenne61::mul), checked here against
+// __int128 remainders first.
+TEST_CASE("multi-prime walk: the moduli are primes, their products reduced right", "[predicates][int_lattice]") {
+  std::mt19937_64 g(5);
+  for (int q = 0; q < xp::kMultiprimeCount; ++q) {
+    xp::PseudoMersenne61 F;
+    F.c = xp::kMultiprimeC[q];
+    F.p = xp::PseudoMersenne61::kM + 1ull - F.c;
+    for (int t = 0; t < 2000; ++t) {
+      const unsigned long long a = t < 2 ? F.p - 1 : g() % F.p, b = t < 1 ? F.p - 1 : g() % F.p;
+      REQUIRE(F.mul(a, b) == static_cast<unsigned long long>(static_cast<xp::uint128_t>(a) * b % F.p));
+    }
+    auto pw = [&](unsigned long long a, unsigned long long e) {
+      unsigned long long r = 1;
+      for (; e; e >>= 1, a = F.mul(a, a))
+        if (e & 1u) r = F.mul(r, a);
+      return r;
+    };
+    unsigned long long d = F.p - 1;
+    int s = 0;
+    while (!(d & 1u)) {
+      d >>= 1;
+      ++s;
+    }
+    for (unsigned long long a : {2ull, 3ull, 5ull, 7ull, 11ull, 13ull, 17ull, 19ull, 23ull, 29ull, 31ull, 37ull}) {
+      unsigned long long x = pw(a, d);
+      bool witness = x != 1 && x != F.p - 1;
+      for (int r = 1; r < s && witness; ++r) {
+        x = F.mul(x, x);
+        witness = x != F.p - 1;
+      }
+      INFO("2^61 - " << F.c << ", base " << a);
+      CHECK(!witness);
+    }
+    CHECK(F.pow2(61) == F.c % F.p);
+    CHECK(F.pow2(200) == pw(2, 200));
+  }
+}
+#endif
 
 // Values the path must refuse: a decimal fraction (long mantissa), a spread
 // beyond the int64 entry bounds, non-finite values; and a value it must take
