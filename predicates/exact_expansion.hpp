@@ -1342,7 +1342,8 @@ FF_HD inline void lambda_row_eq(const double (&a)[K][K], const double* const* p,
 // one prime): 1 with the leaf's rows, columns and sign, 2 where it does not
 // apply or cannot decide.
 template <int K>
-int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg);
+int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg,
+                    bool zero_test = false);
 #endif
 
 template <int K>
@@ -1464,6 +1465,104 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
 #endif
   return sos_search<K>(true, minor_fn, nullptr, eq);
 }
+
+#if !defined(__CUDA_ARCH__) && defined(__SIZEOF_INT128__)
+// The sign of one minor of Λ (rows kr, columns kc; K points inside the Dbl
+// window), exactly: its ErrDouble value where the bound certifies the sign,
+// else the expansion minor (MinorOf, as sos_lazy's last resort). For a
+// minor the walk modulo primes has shown not to be 0.
+template <int K>
+inline int lambda_minor_sign(const double* const* p, const double* w, unsigned kr, unsigned kc) {
+  const int ncoord = w ? K - 2 : K - 1;
+  const bool lifted = w && ((kc >> (K - 2)) & 1u);
+  if constexpr (K >= 3) {
+    const Kept<K> kept(kr, kc);
+    const int r = kept.r;
+    if (r >= 3 && ((kc >> (K - 1)) & 1u)) {
+      // the 1-column kept (the last kept column): the last kept row b
+      // subtracted from the others leaves det = det T, T the (r - 1)^2
+      // differences (as det_translated) — one order less than Λ's minor by
+      // minors (the 3^5 grid of step 0.1: its leaves are mostly 6 x 6
+      // orientations, minor_levels<6, 6, ErrDouble> 10 % of `rtd`). A lifted
+      // entry's difference h_i - h_b = Σ_j (x_ij - x_bj)(x_ij + x_bj) -
+      // (w_i - w_b), without cancelling |p|^2 terms.
+      const int b = kept.ri[r - 1];
+      const int n = r - 1;
+      ErrDouble t[(K - 1) * (K - 1)];
+      for (int i = 0; i < n; ++i) {
+        const int row = kept.ri[i];
+        for (int jj = 0; jj < n; ++jj) {
+          const int col = kept.ci[jj];
+          if (col < ncoord) {
+            t[i * n + jj] = ErrDouble(p[row][col]) - ErrDouble(p[b][col]);
+          } else {  // the lifted column
+            ErrDouble h = -(ErrDouble(w[row]) - ErrDouble(w[b]));
+            for (int j = 0; j < ncoord; ++j)
+              h = h + (ErrDouble(p[row][j]) - ErrDouble(p[b][j])) * (ErrDouble(p[row][j]) + ErrDouble(p[b][j]));
+            t[i * n + jj] = h;
+          }
+        }
+      }
+      ErrDouble v(0.0, HUGE_VAL);
+      if (n == 2) v = det_by_minors<2>(t);
+      if (n == 3) v = det_by_minors<3>(t);
+      if constexpr (K >= 5) if (n == 4) v = det_by_minors<4>(t);
+      if constexpr (K >= 6) if (n == 5) v = det_by_minors<5>(t);
+      if constexpr (K >= 7) if (n == 6) v = det_by_minors<6>(t);
+      if constexpr (K >= 8) if (n == 7) v = det_by_minors<7>(t);
+      if (const int s = sign_if_certain(v); s != 0) return s;
+      RawLambda<Dbl, K> L;
+      build_lambda<Dbl, K>(p, w, L);
+      return MinorOf<Dbl, K>::sign(L, kr, kc);
+    }
+  }
+  ErrDouble ap[K * K];  // the kept rows only (errdouble_minor reads no other)
+  for (int i = 0; i < K; ++i) {
+    if (!((kr >> i) & 1u)) continue;
+    ErrDouble h = ErrDouble(lifted ? -w[i] : 0.0);
+    for (int j = 0; j < ncoord; ++j) {
+      ap[i * K + j] = ErrDouble(p[i][j]);
+      if (lifted) h = h + ErrDouble(p[i][j]) * ErrDouble(p[i][j]);
+    }
+    if (w) ap[i * K + K - 2] = h;
+    ap[i * K + K - 1] = ErrDouble(1.0);
+  }
+  if (const int s = sign_if_certain(errdouble_minor<K>(ap, kr, kc)); s != 0) return s;
+  RawLambda<Dbl, K> L;
+  build_lambda<Dbl, K>(p, w, L);
+  return MinorOf<Dbl, K>::sign(L, kr, kc);
+}
+
+// The SoS sign of K points whose determinant the filters left undecided
+// (inside the Dbl window, rows sorted by index), by the walk modulo primes
+// first: 2 where the walk finds det Λ not 0 (the caller's exact stages give
+// its sign) or does not apply; else det Λ = 0 exactly, and the sign is the
+// walk's parity times its leaf's minor — without the exact determinant. On
+// tensor grids of non-dyadic spacing (np.mgrid step 0.1, np.linspace) nearly
+// every call the filters leave is exactly degenerate, and its exact
+// determinant (lifted_adaptive / orient_adaptive running to their last,
+// exact stage) was the largest cost: 31 % of `dt3` on a 20^3 grid of step
+// 0.1, one thread (perf), before the perturbation's search (sos_lazy) began.
+template <int K>
+inline int sos_walk_first(const double* const* p, const double* w) {
+  constexpr unsigned kAll = (1u << K) - 1u;
+  unsigned kr = 0, kc = 0;
+  int sg = 1;
+  if (multiprime_walk<K>(p, w, kr, kc, sg) != 1) return 2;
+  if (kr == kAll && kc == kAll) return 2;  // det Λ is not 0
+  const int s = lambda_minor_sign<K>(p, w, kr, kc);
+  return s == 1 || s == -1 ? sg * s : 2;  // (0: contradicts the walk; the search decides)
+}
+
+// det Λ = 0, shown by the walk modulo primes (its first dependence, every
+// prime agreeing); false where det Λ is not 0 or the walk cannot tell.
+template <int K>
+inline bool det_zero_by_walk(const double* const* p, const double* w) {
+  unsigned kr = 0, kc = 0;
+  int sg = 1;
+  return multiprime_walk<K>(p, w, kr, kc, sg, true) == 1 && kr != (1u << K) - 1u;
+}
+#endif
 
 // The expansion stages' entry points, one function each, Dbl and XDbl apart.
 // On the device (FF_DEVICE_NOINLINE) each is a call with its own frame, so a
@@ -2363,10 +2462,14 @@ struct PseudoMersenne61 {
     return s >= p ? s - p : s;
   }
   unsigned long long sub(unsigned long long a, unsigned long long b) const { return a >= b ? a - b : a + (p - b); }
-  // a x - b y (ModEchelon's row operation)
+  // a x - b y (ModEchelon's row operation) as a x + b (p - y), one
+  // reduction: both products are below 2^122 (p - y <= p), their sum below
+  // 2^123, where red still holds (t < 2^62 c + 2^61 < 2^73, then r < 2^61 +
+  // 2^12 c < 2p). The walk's elimination is mostly this (perf, a 20^3 grid
+  // of step 0.1: 45 % of `dt3` in multiprime_walk<5>, its hottest loop here)
   unsigned long long cross(unsigned long long a, unsigned long long x, unsigned long long b,
                            unsigned long long y) const {
-    return sub(mul(a, x), mul(b, y));
+    return red(static_cast<uint128_t>(a) * x + static_cast<uint128_t>(b) * (p - y));
   }
   // 2^e, e >= 0: 2^61 = c (mod p)
   unsigned long long pow2(int e) const {
@@ -2386,7 +2489,7 @@ inline unsigned long long odd_part(double v) {
 }
 
 template <int K>
-int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg) {
+int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsigned& kc, int& sg, bool zero_test) {
   constexpr int W = K - 1;  // D's columns: Λ's columns but the 1-column
   constexpr int kMaxPrimes = kMultiprimeCount;
   const unsigned long long* kC = kMultiprimeC;
@@ -2428,12 +2531,84 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
   }
   const int N = B / 60 + 1;
   if (N > kMaxPrimes) return 2;
+  // Λ' once, exactly, where it fits (every coordinate below 2^60 after the
+  // scaling, so each |x| is a uint64 and Σ x^2 < 2^124 a uint128): then a
+  // prime's entries are one fold per coordinate and one reduction per row,
+  // instead of two products per coordinate
+  int maxb = 0;
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < ncoord; ++j)
+      if (p[i][j] != 0.0 && hi[i][j] - E > maxb) maxb = hi[i][j] - E;
+  const bool once = maxb <= 60;
+  // once: D's coordinate entries (differences below 2^61 in magnitude) and
+  // the lifted column's Σ x^2 differences (below 2^124), signed, exact
+  long long dx[W][W];
+  uint128_t dsq[W];
+  bool dneg[W];
+  if (once) {
+    unsigned long long X[K][W];
+    uint128_t sq[K];
+    for (int i = 0; i < K; ++i) {
+      sq[i] = 0;
+      for (int j = 0; j < ncoord; ++j) {
+        const unsigned long long x = p[i][j] != 0.0 ? odd_part(p[i][j]) << (lo[i][j] - E) : 0ull;
+        X[i][j] = x;
+        sq[i] += static_cast<uint128_t>(x) * x;
+      }
+    }
+    for (int i = 0; i < W; ++i) {
+      for (int j = 0; j < ncoord; ++j) {
+        const long long a = p[i][j] < 0.0 ? -static_cast<long long>(X[i][j]) : static_cast<long long>(X[i][j]);
+        const long long b = p[K - 1][j] < 0.0 ? -static_cast<long long>(X[K - 1][j])
+                                              : static_cast<long long>(X[K - 1][j]);
+        dx[i][j] = a - b;
+      }
+      dneg[i] = sq[i] < sq[K - 1];
+      dsq[i] = dneg[i] ? sq[K - 1] - sq[i] : sq[i] - sq[K - 1];
+    }
+  }
   PseudoMersenne61 P[kMaxPrimes];
   unsigned long long m[kMaxPrimes][W][W];
-  for (int q = 0; q < N; ++q) {
+  // prime q's D = Λ' minus its last row, modulo p_q
+  auto build = [&](int q) {
     P[q].c = kC[q];
     P[q].p = PseudoMersenne61::kM + 1ull - kC[q];
     const PseudoMersenne61& F = P[q];
+    if (once) {
+      for (int i = 0; i < W; ++i) {
+        for (int j = 0; j < ncoord; ++j) {
+          // |d| < 2^61 < 2p: d, or d + 2p for d < 0, lies in [0, 2p): two
+          // conditional subtractions at most, as masks (the differences'
+          // signs are data: branches on them were mispredicted, a third of
+          // the walk's time on a 20^3 grid of step 0.1)
+          const long long d = dx[i][j];
+          unsigned long long u =
+              static_cast<unsigned long long>(d) + ((0ull - static_cast<unsigned long long>(d < 0)) & (2 * F.p));
+          u -= F.p & (0ull - static_cast<unsigned long long>(u >= F.p));
+          u -= F.p & (0ull - static_cast<unsigned long long>(u >= F.p));
+          m[q][i][j] = u;
+        }
+        if (w) {
+          const unsigned long long h = F.red(dsq[i]);
+          const unsigned long long n = F.p - h;  // (h = 0: p, reduced below)
+          unsigned long long u = dneg[i] ? n : h;
+          u -= F.p & (0ull - static_cast<unsigned long long>(u >= F.p));
+          m[q][i][K - 2] = u;
+        }
+      }
+      if (w)
+        for (int i = 0; i < K; ++i) {
+          if (w[i] == 0.0) continue;
+          // - (w_i - w_last) 2^-2E on row i, or on every row for the last
+          const unsigned long long y = F.mul(odd_part(w[i]), F.pow2(lw[i] - 2 * E));
+          const bool plus = (w[i] > 0.0) == (i == K - 1);
+          for (int t = 0; t < W; ++t) {
+            if (i != K - 1 && t != i) continue;
+            m[q][t][K - 2] = plus ? F.add(m[q][t][K - 2], y) : F.sub(m[q][t][K - 2], y);
+          }
+        }
+      return;
+    }
     unsigned long long row[K][W];
     for (int i = 0; i < K; ++i) {
       unsigned long long h = 0;
@@ -2456,52 +2631,96 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     }
     for (int i = 0; i < W; ++i)
       for (int j = 0; j < W; ++j) m[q][i][j] = F.sub(row[i][j], row[K - 1][j]);
-  }
+  };
+  // The walk runs on the first prime; the others are asked only where it
+  // finds a dependence. Independence modulo one prime is independence over
+  // Q, so the first prime's "independent" needs no other; its "dependent"
+  // holds over Q only where every prime says so, and any prime that
+  // disagrees makes the walk return 2, as before. A prime's echelon is built
+  // (again) for the walk's current rows and columns when it is asked: on a
+  // 20^3 grid of step 0.1 (K = 5, N = 5 primes) the typical exactly
+  // degenerate call meets one dependence, and the other primes skip the
+  // option tests that the first prime passes.
   using Ech = ModEchelon<PseudoMersenne61, W>;
   Ech ech[kMaxPrimes];
-  for (int q = 0; q < N; ++q) ech[q].ar = P[q];
+  bool built[kMaxPrimes] = {}, valid[kMaxPrimes] = {};
+  build(0);
+  built[0] = true;
+  ech[0].ar = P[0];
   kr = kc = (1u << K) - 1u;
   sg = 1;
+  // prime q's echelon of F (the kept rows after r) on kc; false: F is not
+  // independent there modulo p_q, against the first prime
+  auto ready = [&](int q, int r) -> bool {
+    if (!built[q]) {
+      build(q);
+      built[q] = true;
+      ech[q].ar = P[q];
+    }
+    if (valid[q]) return true;
+    ech[q].n = 0;
+    for (int i = K - 2; i > r; --i) {
+      if (!((kr >> i) & 1u)) continue;
+      unsigned long long v[W];
+      for (int j = 0; j < W; ++j) v[j] = m[q][i][j];
+      if (!ech[q].add(v, kc)) return false;
+    }
+    valid[q] = true;
+    return true;
+  };
+  // e_c outside F's row space on kc modulo p_q: F keeps its rank without c
+  auto passes = [&](int q, int c) -> bool {
+    if (!ech[q].is_pivot(c)) return true;
+    unsigned long long e[W] = {};
+    e[c] = 1;
+    ech[q].reduce(e);
+    return Ech::first_nonzero(e, kc) >= 0;
+  };
   for (int r = K - 2; r >= 0; --r) {
-    int yes = 0;
-    for (int q = 0; q < N; ++q) {
+    {
+      unsigned long long v[W];
+      for (int j = 0; j < W; ++j) v[j] = m[0][r][j];
+      if (ech[0].add(v, kc)) {  // not perturbed: F + row r independent on kc
+        for (int q = 1; q < N; ++q) valid[q] = false;
+        continue;
+      }
+    }
+    for (int q = 1; q < N; ++q) {  // dependent: every prime must say so
+      if (!ready(q, r)) return 2;
       unsigned long long v[W];
       for (int j = 0; j < W; ++j) v[j] = m[q][r][j];
-      yes += ech[q].add(v, kc);
+      if (ech[q].add(v, kc)) return 2;  // the primes disagree
     }
-    if (yes == N) continue;  // not perturbed: F + row r independent on kc
-    if (yes != 0) return 2;  // the primes disagree
+    if (zero_test) {  // det Λ = 0: row r depends on the rows after it, on every column
+      kr &= ~(1u << r);
+      return 1;
+    }
     bool moved = false;
     for (int c = K - 2; c >= 0 && !moved; --c) {  // options 1 .. K-1: columns K-2 .. 0
       if (!((kc >> c) & 1u)) continue;
-      bool pivot[kMaxPrimes];
-      int pass = 0;
-      for (int q = 0; q < N; ++q) {
-        pivot[q] = ech[q].is_pivot(c);
-        if (!pivot[q]) {
-          ++pass;
-          continue;
+      if (!passes(0, c)) {
+        // e_c in F's row space: F loses rank without c — on every prime
+        for (int q = 1; q < N; ++q) {
+          if (!ready(q, r)) return 2;
+          if (passes(q, c)) return 2;  // the primes disagree
         }
-        unsigned long long e[W] = {};
-        e[c] = 1;
-        ech[q].reduce(e);
-        pass += Ech::first_nonzero(e, kc) >= 0;
+        continue;
       }
-      if (pass == 0) continue;  // e_c in F's row space: F loses rank without c
-      if (pass != N) return 2;
+      const bool pivot = ech[0].is_pivot(c);
       const int parity = popcount32(kr & ((1u << r) - 1u)) + popcount32(kc & ((1u << c) - 1u));
       if (parity & 1) sg = -sg;
       kr &= ~(1u << r);
       kc &= ~(1u << c);
       moved = true;
-      for (int q = 0; q < N && r > 0; ++q) {
-        if (!pivot[q]) continue;
-        ech[q].n = 0;  // re-pivot: F's rows again, on kc (independent there by the test)
+      for (int q = 1; q < N; ++q)
+        if (valid[q] && ech[q].is_pivot(c)) valid[q] = false;
+      if (pivot && r > 0) {
+        ech[0].n = 0;  // re-pivot: F's rows again, on kc (independent there by the test)
         for (int i = K - 2; i > r; --i) {
           if (!((kr >> i) & 1u)) continue;
           unsigned long long v[W];
-          for (int j = 0; j < W; ++j) v[j] = m[q][i][j];
-          if (!ech[q].add(v, kc)) return 2;
+          for (int j = 0; j < W; ++j) v[j] = m[0][i][j];
+          if (!ech[0].add(v, kc)) return 2;
         }
       }
     }
@@ -2835,7 +3054,8 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos,
   // x_j = c, e.g. the floors and walls of a building: the column minus c
   // times the 1-column is 0); the perturbation decides.
   // Likewise when two points are equal (exact copies).
-  const bool flat = constant_column<K>(p, w ? K - 2 : K - 1) || equal_points<K>(p, w);
+  const bool copies = equal_points<K>(p, w);
+  const bool flat = copies || constant_column<K>(p, w ? K - 2 : K - 1);
   if (range.fits(degree)) {
     double a[K][K];
     if constexpr (K <= 7) {
@@ -2857,6 +3077,17 @@ FF_HD inline int lambda_exact(const double* const* p, const double* w, bool sos,
       const bool near_lattice = moved >= 1 && moved <= K - 3;
       s = (dd_ran || near_lattice) ? 2 : lambda_sign_dd<K>(p, w);
     }
+#if !defined(__CUDA_ARCH__) && defined(__SIZEOF_INT128__)
+    // undecided so far: on degenerate input an exact 0 far more often than
+    // not, which the walk modulo primes shows without the exact determinant
+    // (points on a plane x_j = c, det Λ = 0 known, likewise: the search's
+    // cheap first pass is for copies, whose zero minors are equal rows)
+    if (sos && (s == 2 || (flat && !copies)))
+      if (const int t = sos_walk_first<K>(p, w); t != 2) return t;
+    // the exact sign alone (no ids: the projections of flat_sign_sorted,
+    // mostly exact zeros on those grids) — 0 without the exact determinant
+    if (!sos && s == 2 && det_zero_by_walk<K>(p, w)) return 0;
+#endif
     if constexpr (K == 3 || K == 4)
       if (!w && s == 2) s = orient_adaptive<K>(p);
     if constexpr (K == 4 || K == 5)

@@ -324,7 +324,7 @@ namespace {
 double gen_mm(int bound) { return *rc::gen::inRange(-bound, bound + 1) / 1000.0; }
 
 template <int K>
-void planes_call(bool lifted, long& calls, long& zero, long& walked) {
+void planes_call(bool lifted, long& calls, long& zero, long& walked, long& first_decided) {
   const int d = lifted ? K - 2 : K - 1;
   std::vector<double> x(static_cast<size_t>(K * d)), w(static_cast<size_t>(K), 0.0);
   const int bound = *rc::gen::element(50, 5000, 50000);
@@ -365,9 +365,15 @@ void planes_call(bool lifted, long& calls, long& zero, long& walked) {
   }
   const double* swp = lifted ? sw : nullptr;
   const int g = pred::stage::gmp_sos(K, ids.data(), p, wp);
+  const int exact = pred::stage::gmp(K, p, wp);  // no perturbation: may be 0
   ++calls;
   RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(ids.data(), p, wp)) == g);
   RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, false>(ids.data(), p, wp)) == g);
+  // without ids (the exact sign; K >= 6 asks the walk whether det Λ = 0 first)
+  RC_ASSERT((pred::lambda_sign_after_filters<K, PointId, true>(nullptr, p, wp)) == exact);
+#if defined(FLIPFLOP_INT128)
+  RC_ASSERT((!xp::det_zero_by_walk<K>(p, wp) || exact == 0));
+#endif
   if (xp::det_translated<xp::Dbl, K>(sp, swp) != 0) return;
   ++zero;
   xp::Range range;
@@ -382,6 +388,10 @@ void planes_call(bool lifted, long& calls, long& zero, long& walked) {
   RC_ASSERT(lazy == expansions);
   RC_ASSERT(parity * lazy == g);
 #if defined(FLIPFLOP_INT128)
+  // lambda_exact's walk before the exact determinant: 2, or det Λ = 0 and the answer
+  const int first = xp::sos_walk_first<K>(sp, swp);
+  RC_ASSERT((first == 2 || parity * first == g));
+  first_decided += first != 2;
   unsigned kr = 0, kc = 0;
   int sg = 0;
   // the walk on its own (sos_lazy asks it only where its cheap search stops):
@@ -395,21 +405,27 @@ void planes_call(bool lifted, long& calls, long& zero, long& walked) {
              << "\n";
     RC_ASSERT(leaf != 0);
     RC_ASSERT(parity * sg * leaf == g);
+    // the leaf's minor as sos_walk_first decides it (ErrDouble, translated
+    // where the 1-column is kept, else the expansion minor)
+    RC_ASSERT(xp::lambda_minor_sign<K>(sp, swp, kr, kc) == leaf);
+    RC_ASSERT(xp::det_zero_by_walk<K>(sp, swp));  // det Λ = 0 here, and the walk applies
   }
 #endif
 }
 
 template <int K>
 void planes_property(bool lifted) {
-  long calls = 0, zero = 0, walked = 0;
+  long calls = 0, zero = 0, walked = 0, first_decided = 0;
   const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
-  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero, walked); });
+  rc::prop(name, [&] { planes_call<K>(lifted, calls, zero, walked, first_decided); });
   if (calls == 0) return;
-  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld decided by the multi-prime walk %6ld\n", name.c_str(), calls,
-              zero, walked);
+  std::printf("sos_lazy %-14s calls %6ld det 0 %6ld decided by the multi-prime walk %6ld (before the exact "
+              "determinant: %6ld)\n",
+              name.c_str(), calls, zero, walked, first_decided);
   CHECK(zero * 2 > calls);
 #if defined(FLIPFLOP_INT128)
-  CHECK(walked * 2 > zero);  // the walk, not the search, decides most of them
+  CHECK(walked * 2 > zero);         // the walk, not the search, decides most of them
+  CHECK(first_decided * 2 > zero);  // and lambda_exact's walk-first does too
 #endif
 }
 
@@ -443,6 +459,10 @@ TEST_CASE("multi-prime walk: the moduli are primes, their products reduced right
     for (int t = 0; t < 2000; ++t) {
       const unsigned long long a = t < 2 ? F.p - 1 : g() % F.p, b = t < 1 ? F.p - 1 : g() % F.p;
       REQUIRE(F.mul(a, b) == static_cast<unsigned long long>(static_cast<xp::uint128_t>(a) * b % F.p));
+      // the row operation a x - b y in one reduction, against __int128 remainders
+      const unsigned long long x = t < 3 ? F.p - 1 : g() % F.p, y = t < 4 ? (t & 1u ? 0 : F.p - 1) : g() % F.p;
+      const xp::uint128_t ax = static_cast<xp::uint128_t>(a) * x % F.p, by = static_cast<xp::uint128_t>(b) * y % F.p;
+      REQUIRE(F.cross(a, x, b, y) == static_cast<unsigned long long>((ax + F.p - by) % F.p));
     }
     auto pw = [&](unsigned long long a, unsigned long long e) {
       unsigned long long r = 1;
