@@ -327,6 +327,11 @@ FF_HD FF_FORCEINLINE int lambda_sign_after_filters(const Id* ids, const double* 
   if (xp::constant_column<K>(p, w ? K - 2 : K - 1)) return ids ? flat_sign_sorted<K>(ids, p, w) : 0;
   if (xp::equal_points<K>(p, w)) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
   if constexpr (K >= 3 && K <= 5) {
+#if !defined(__CUDA_ARCH__) && defined(__SIZEOF_INT128__)
+    if constexpr (K >= 4)
+      if (ids)
+        if (const int s = walk_first_sorted<K>(ids, p, w); s != 2) return s;
+#endif
     const int s = dd_filter_sign<K, Fma>(p, w, window);
     if (s == 1 || s == -1) return s;
     if (s == 0) return lambda_exact_sorted<K>(ids, p, w, ids != nullptr, true);
