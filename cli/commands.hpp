@@ -6,9 +6,11 @@
 #include <string>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <vector>
 
 #include "io/write_result.hpp"
+#include "reference/lattice_quotient.hpp"
 #include "reference/point_set.hpp"
 
 namespace flipflop::cli {
@@ -77,6 +79,10 @@ void write_result_file(const std::string& path, io::Format f, const std::functio
 void write_result_file(const std::string& path, io::Format f, const std::function<void(std::ostream&)>& index_text,
                        const PointSet& ps, const Index* flat, std::size_t count, std::size_t k, io::CellKind kind,
                        const std::vector<Index>& marked, bool ascii);
+
+// --stats' note where a command ran on lattice_quotient's small-integer
+// lattice ("; computed and certified on ... x / g ..."), empty otherwise.
+std::string quotient_note(const std::optional<LatticeQuotient>& quotient);
 
 int run_gen(const GenArgs& a);
 int run_compute(const ComputeArgs& a);

@@ -111,6 +111,12 @@ int run_rt3(const Rt3Args& a) {
   // ---- the canonical answer, certified -------------------------------------------
   progress->stage("computing (" + std::to_string(ps.size()) + " points, backend " + backend + ")");
   const auto t0 = Clock::now();
+  // a lattice up to one exact common factor (steps of 0.5, 0.25, ...) runs
+  // as that small-integer lattice: the same index answer, by the argument of
+  // reference/lattice_quotient.hpp; `ps` stays for the output's coordinates,
+  // and the reference backend reads the values as given
+  const std::optional<LatticeQuotient> quotient = backend != "reference" ? lattice_quotient(ps) : std::nullopt;
+  const PointSet& pk = quotient ? quotient->points : ps;
   Tets tets;
   std::vector<Index> redundant;
   cpu::Rt3Stats kst;
@@ -127,11 +133,11 @@ int run_rt3(const Rt3Args& a) {
       // kernels_cuda/rt3: insertion rounds on the device, and the witness
       // the cpu kernel's certifier checks
       auto witness = std::make_unique<cpu::Rt3Witness>();
-      cpu::Rt3Result r = kernels::rt3_gpu(backend, ps, &gst, &stages, witness.get());
+      cpu::Rt3Result r = kernels::rt3_gpu(backend, pk, &gst, &stages, witness.get());
       t_compute = seconds_since(t0);
       progress->stage("certifying");
       const auto t1 = Clock::now();
-      const certify::Report rep = cpu::certify_rt3(ps, *witness, r.tets, certify::Level::canonical);
+      const certify::Report rep = cpu::certify_rt3(pk, *witness, r.tets, certify::Level::canonical);
       t_certify = seconds_since(t1);
       witness.reset();
       if (rep.condition == "input-dimension") throw UsageError(a.in + ": " + rep.detail);
@@ -147,11 +153,11 @@ int run_rt3(const Rt3Args& a) {
       o.threads = a.threads;
       o.times = &stages;
       auto witness = std::make_unique<cpu::Rt3Witness>();
-      cpu::Rt3Result r = cpu::rt3(ps, o, &kst, witness.get());
+      cpu::Rt3Result r = cpu::rt3(pk, o, &kst, witness.get());
       t_compute = seconds_since(t0);
       progress->stage("certifying");
       const auto t1 = Clock::now();
-      const certify::Report rep = cpu::certify_rt3(ps, *witness, r.tets, certify::Level::canonical, a.threads);
+      const certify::Report rep = cpu::certify_rt3(pk, *witness, r.tets, certify::Level::canonical, a.threads);
       t_certify = seconds_since(t1);
       witness.reset();  // (per point 24 bytes and per slot 32: freed before the output is formatted)
       if (rep.condition == "input-dimension") throw UsageError(a.in + ": " + rep.detail);
@@ -161,11 +167,11 @@ int run_rt3(const Rt3Args& a) {
       certified_by = "canonical, cpu::certify_rt3 from the kernel's witness";
     } else {
       // reference/rtd: RT+1 (sequential), certified as `flipflop rtd`
-      ref::Rtd r = ref::rtd_incremental(ps, &rst);
+      ref::Rtd r = ref::rtd_incremental(pk, &rst);
       t_compute = seconds_since(t0);
       progress->stage("certifying");
       const auto t1 = Clock::now();
-      const certify::Report rep = certify::rtd(ps, r.simplices, certify::Level::canonical);
+      const certify::Report rep = certify::rtd(pk, r.simplices, certify::Level::canonical);
       t_certify = seconds_since(t1);
       if (!rep.ok) throw InternalError("the " + kind + " result failed certification: " + rep.message());
       tets = as_tets(r.simplices);
@@ -175,6 +181,7 @@ int run_rt3(const Rt3Args& a) {
   } catch (const std::invalid_argument& e) {  // input the algorithms reject (does not span R^3, ...)
     throw UsageError(a.in + ": " + e.what());
   }
+  certified_by += quotient_note(quotient);
   const std::size_t canonical_count = tets.size(), canonical_redundant = redundant.size();
 
   // ---- the strict view: the reference's rule, from the certified answer ------------
@@ -184,16 +191,16 @@ int run_rt3(const Rt3Args& a) {
     const auto t2 = Clock::now();
     std::vector<std::vector<Index>> view;
     try {
-      view = ref::strict_rtd(ps, as_cells(tets));
+      view = ref::strict_rtd(pk, as_cells(tets));
     } catch (const std::invalid_argument& e) {
       throw InternalError("the strict view of the " + kind + " result: " + std::string(e.what()));
     }
     t_strict = seconds_since(t2);
     const auto t3 = Clock::now();
-    const certify::Report rs = certify::rtd(ps, view, certify::Level::exact);
+    const certify::Report rs = certify::rtd(pk, view, certify::Level::exact);
     t_strict_certify = seconds_since(t3);
     if (!rs.ok) throw InternalError("the strict view of the " + kind + " result failed certification: " + rs.message());
-    redundant = non_vertices(ps.size(), view);
+    redundant = non_vertices(pk.size(), view);
     tets = as_tets(view);
   }
 

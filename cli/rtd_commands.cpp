@@ -127,29 +127,34 @@ int run_rtd(const RtdArgs& a) {
   const PointSet ps = read_d(a.in, a.dim, true);
   check_spans(ps, a.in);
   const auto t0 = Clock::now();
+  // a lattice up to one exact common factor runs as that small-integer
+  // lattice: the same index answer (reference/lattice_quotient.hpp); `ps`
+  // stays for the output's coordinates, the reference reads the values as given
+  const std::optional<LatticeQuotient> quotient = backend == "cpu" ? lattice_quotient(ps) : std::nullopt;
+  const PointSet& pk = quotient ? quotient->points : ps;
   ref::RtdStats st;
   cpu::RtdCavityStats cst;
   const ref::Rtd rt = with_input_errors(a.in, [&] {
     cpu::RtdCavityOptions o;
     o.threads = a.threads;
-    return backend == "cpu" ? cpu::rtd_cavity(ps, &cst, o) : ref::rtd_incremental(ps, &st);
+    return backend == "cpu" ? cpu::rtd_cavity(pk, &cst, o) : ref::rtd_incremental(pk, &st);
   });
   const double t_compute = seconds_since(t0);
   const auto t1 = Clock::now();
   // the reference backend is certified by the sequential certifier
-  if (backend == "cpu") certify_or_throw(ps, rt.simplices, "the rtd result", a.threads);
-  else if (const certify::Report r = certify::rtd(ps, rt.simplices); !r.ok)
+  if (backend == "cpu") certify_or_throw(pk, rt.simplices, "the rtd result", a.threads);
+  else if (const certify::Report r = certify::rtd(pk, rt.simplices); !r.ok)
     throw InternalError("the rtd result failed certification: " + r.message());
   const double t_certify = seconds_since(t1);
   if (a.strict) {
     // derived from the certified canonical answer, certified in turn at the
     // exact level (no simplex of zero volume, a regular triangulation of the
     // exact input)
-    const std::vector<std::vector<Index>> view = ref::strict_rtd(ps, rt.simplices);
-    const certify::Report r = backend == "cpu" ? cpu::certify_rtd(ps, view, certify::Level::exact, false, a.threads)
-                                               : certify::rtd(ps, view, certify::Level::exact);
+    const std::vector<std::vector<Index>> view = ref::strict_rtd(pk, rt.simplices);
+    const certify::Report r = backend == "cpu" ? cpu::certify_rtd(pk, view, certify::Level::exact, false, a.threads)
+                                               : certify::rtd(pk, view, certify::Level::exact);
     if (!r.ok) throw InternalError("the strict view of the rtd result failed certification: " + r.message());
-    const std::vector<Index> missing = non_vertices(ps.size(), view);
+    const std::vector<Index> missing = non_vertices(pk.size(), view);
     write_result(a.out, fmt, ps, view, missing, a.ascii);
     report_redundant("rtd --strict", missing);
     if (a.stats)
@@ -172,6 +177,7 @@ int run_rtd(const RtdArgs& a) {
       for (int k = 1; k <= a.dim + 1; ++k) std::cerr << " " << k << "-" << (a.dim + 2 - k) << ":" << st.flips[k];
       std::cerr << ", queue pushes " << st.queue_pushes << ", pops " << st.queue_pops;
     }
+    std::cerr << quotient_note(quotient);
     std::cerr << "; compute " << t_compute << " s, certify " << t_certify << " s\n";
   }
   return 0;

@@ -62,6 +62,7 @@
 #include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
 #include "reference/dimension.hpp"
+#include "reference/lattice_quotient.hpp"
 #include "reference/hull2/hull2.hpp"
 #include "reference/hull3/hull3.hpp"
 #include "reference/hull3/strict_hull3.hpp"
@@ -609,12 +610,17 @@ HullTuple hull3(const Points& p, const std::string& backend, int threads) {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     if (backend == "cpu") {  // certified from the kernel's witness, as `flipflop hull3`
+      // a lattice up to one exact common factor as that small-integer
+      // lattice: the same triangles (reference/lattice_quotient.hpp); the
+      // attributes below read the given values
+      const std::optional<LatticeQuotient> quotient = lattice_quotient(ps);
+      const PointSet& pk = quotient ? quotient->points : ps;
       cpu::Hull3Options o;
       o.threads = threads;
       cpu::Hull3Witness witness;
       o.witness = &witness;
-      tris = cpu::hull3_ffhull(ps, o);
-      check_certified(cpu::certify_hull3_witnessed(ps, tris, certify::Level::canonical, witness, threads), "hull3");
+      tris = cpu::hull3_ffhull(pk, o);
+      check_certified(cpu::certify_hull3_witnessed(pk, tris, certify::Level::canonical, witness, threads), "hull3");
     } else if (backend == "reference") {
       tris = ref::hull3(ps, "ffhull");
       check_certified(certify::hull3(ps, tris, certify::Level::canonical), "hull3");
@@ -700,7 +706,13 @@ void certified_rtd(const PointSet& ps, ref::Rtd r, bool strict, bool furthest, i
 std::pair<IndexArray, IndexArray> triangulate_into(const Points& p, const std::optional<Vector>& w,
                                                    const std::string& backend, bool strict, int threads,
                                                    bool furthest, std::vector<std::int64_t>* neighbors) {
-  const PointSet ps = point_set(p, w);
+  const PointSet given = point_set(p, w);
+  // a lattice up to one exact common factor (np.linspace(0, 1, 5), steps of
+  // 0.5 or 0.1 with three values a row) runs as that small-integer lattice:
+  // the same index answer (reference/lattice_quotient.hpp), which is all this
+  // returns; the reference backend reads the values as given
+  const std::optional<LatticeQuotient> quotient = backend != "reference" ? lattice_quotient(given) : std::nullopt;
+  const PointSet& ps = quotient ? quotient->points : given;
   const int d = ps.dim;
   if (d < 2 || d > ref::rtd::kMaxDim) throw std::invalid_argument("Delaunay expects points of shape (n, d) with d = 2..9");
   if (furthest && (strict || (backend != "reference" && backend != "cpu")))
@@ -910,7 +922,11 @@ class IncrementalTriangulation {
 // 6-12 % faster, 10^4 even, 2000 5D points 6 % slower (the certificate of
 // 3960 facets); not made a default.
 IndexArray hull_d(const Points& p, int threads) {
-  const PointSet ps = point_set(p, std::nullopt);
+  const PointSet given = point_set(p, std::nullopt);
+  // a lattice up to one exact common factor as that small-integer lattice:
+  // the same facets (reference/lattice_quotient.hpp), which is all this returns
+  const std::optional<LatticeQuotient> quotient = lattice_quotient(given);
+  const PointSet& ps = quotient ? quotient->points : given;
   if (ps.dim < 2 || ps.dim > 9) throw std::invalid_argument("ConvexHull expects points of shape (n, d) with d = 2..9");
   if (threads < 0) throw std::invalid_argument("threads: 0 (all) or a positive count");
   std::vector<std::vector<Index>> facets;

@@ -655,6 +655,66 @@ def test_delaunay_3d_cpu_equals_reference(case):
         assert len(ref.redundant) > 0  # heavy weights hide points
 
 
+def _grid(k, d, step, start=0.0):
+    axes = [start + step * np.arange(k)] if step != 0.1 else [np.mgrid[0:k * 0.1 - 0.05:0.1]]
+    return np.stack(np.meshgrid(*(axes * d), indexing="ij"), -1).reshape(-1, d).copy()
+
+
+@pytest.mark.parametrize("d,k,step", [(2, 9, 0.25), (2, 3, 0.1), (3, 5, 0.5), (3, 3, 0.1), (3, 4, 3000.0),
+                                      (4, 3, 0.1), (4, 4, 0.25), (5, 2, 0.1)])
+def test_delaunay_on_a_lattice_with_a_step_equals_reference_and_integer_grid(d, k, step):
+    # a lattice up to one exact common factor runs as the small-integer
+    # lattice (reference/lattice_quotient.hpp): the same answer as the
+    # reference on the given values and as the integer grid, certified on the
+    # given values; likewise with copies, weights that are multiples of
+    # step^2, furthest-site and strict
+    p = _grid(k, d, step)
+    ints = _grid(k, d, 1.0)
+    ref = flipflop.Delaunay(p, backend="reference")
+    t = flipflop.Delaunay(p)
+    assert np.array_equal(t.simplices, ref.simplices) and np.array_equal(t.neighbors, ref.neighbors)
+    assert np.array_equal(t.simplices, flipflop.Delaunay(ints).simplices)
+    assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+    dup = np.vstack([p, p[::4]])
+    w = (np.arange(len(dup)) % 3 - 1).astype(np.float64) * step * step
+    a = flipflop.Delaunay(dup, weights=w)
+    b = flipflop.Delaunay(dup, weights=w, backend="reference")
+    assert np.array_equal(a.simplices, b.simplices) and np.array_equal(a.redundant, b.redundant)
+    assert flipflop.certify("delaunay", dup, a.simplices, weights=w, canonical=True)
+    a = flipflop.Delaunay(p, furthest_site=True)
+    assert np.array_equal(a.simplices, flipflop.Delaunay(p, furthest_site=True, backend="reference").simplices)
+    if d <= 3:
+        a = flipflop.Delaunay(dup, strict=True)
+        assert np.array_equal(a.simplices, flipflop.Delaunay(dup, strict=True, backend="reference").simplices)
+
+
+def test_delaunay_on_the_5d_grid_of_step_0_1_equals_integer_grid():
+    # np.mgrid's 3^5 grid of step 0.1 (0.2 is 2 x 0.1 exactly): the integer
+    # grid's answer, certified on the given values (RT+1 on it takes 10 s)
+    p, ints = _grid(3, 5, 0.1), _grid(3, 5, 1.0)
+    t = flipflop.Delaunay(p)
+    assert np.array_equal(t.simplices, flipflop.Delaunay(ints).simplices)
+    assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
+
+
+@pytest.mark.parametrize("d,k,step", [(3, 5, 0.25), (3, 3, 0.1), (4, 3, 0.1), (4, 4, 0.5), (5, 3, 0.1), (6, 2, 0.25)])
+def test_convex_hull_on_a_lattice_with_a_step(d, k, step):
+    # the hull kernels on the small-integer lattice (reference/lattice_quotient.hpp):
+    # the integer grid's facets, in 3D the reference's on the given values and
+    # certified there; the measures from the given values
+    p = _grid(k, d, step)
+    h = flipflop.ConvexHull(p)
+    assert np.array_equal(h.simplices, flipflop.ConvexHull(_grid(k, d, 1.0)).simplices)
+    if d == 3:
+        ref = flipflop.ConvexHull(p, backend="reference")
+        assert np.array_equal(h.simplices, ref.simplices)
+        assert flipflop.certify("hull3", p, h.simplices, canonical=True)
+    side = float(p[:, 0].max())
+    assert h.volume == pytest.approx(side ** d, rel=1e-12)
+    eq = h.equations[np.isfinite(h.equations).all(axis=1)]  # (NaN rows: facets of zero area)
+    assert len(eq) > 0 and (eq[:, :d] @ p.T + eq[:, d:] <= 1e-12).all()
+
+
 def test_delaunay_3d_strict_cpu_equals_reference():
     # the strict view is derived from the certified canonical answer by the
     # reference's rule: the same from either backend, d! = 6 simplices per cube
