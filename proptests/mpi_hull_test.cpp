@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,21 @@ using flipflop::test::cli::slurp;
 using flipflop::test::cli::TempDir;
 namespace fs = std::filesystem;
 
-// mpirun -q: Open MPI's own notices off (a rank's non-zero exit code is ours)
+// mpirun -q: Open MPI's own notices off (a rank's non-zero exit code is ours).
+// Where ranks end with an error, Open MPI's event library may still print
+// "[warn] Epoll MOD(1) on fd N failed. ...: Bad file descriptor" while it
+// tears the job down (first seen in a CI run of 2026-12-07 on a loaded 2-core VM:
+// two such lines after the rank's one error line); they are the transport's,
+// not flipflop-mpi's, and are dropped from err before the checks.
 Run mpi(const TempDir& t, int P, const std::string& args) {
-  return test::cli::run_command(t, std::string(FLIPFLOP_MPIEXEC) + " --allow-run-as-root --oversubscribe -q -n " +
-                                       std::to_string(P) + " " + FLIPFLOP_MPI_BINARY + " " + args);
+  Run r = test::cli::run_command(t, std::string(FLIPFLOP_MPIEXEC) + " --allow-run-as-root --oversubscribe -q -n " +
+                                        std::to_string(P) + " " + FLIPFLOP_MPI_BINARY + " " + args);
+  std::istringstream in(r.err);
+  std::string line, kept;
+  while (std::getline(in, line))
+    if (line.rfind("[warn] Epoll ", 0) != 0) kept += line + "\n";
+  r.err = kept;
+  return r;
 }
 
 PointSet rows(const PointSet& ps, std::size_t a, std::size_t b) {
