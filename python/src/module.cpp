@@ -2547,8 +2547,47 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
 // -1 where a bound fails (the general path decides). The 6^4 grid: 35,352
 // simplices, 20,352 of zero volume, each an exact orientation and the rest a
 // long double solve before.
+// (-1)^negative a / b 2^e correctly rounded to binary64 (to nearest, ties to
+// even), for a < 2^120 and 0 < b < 2^64; false where the result would leave
+// [2^-1000, 2^1000] (no subnormal or overflow case: the caller's general path
+// decides). The quotient q = floor(A / B) of A / B = a / b 2^s in [2^55,
+// 2^57) carries the remainder's being non-zero in its lowest bit (a sticky
+// bit below the round bit: at least 56 bits, three beyond the 53 kept), so
+// the one rounding of q's conversion to binary64 is the rounding of a / b 2^s;
+// the power of two after it is exact inside that range.
+inline bool rounded_ratio(bool negative, unsigned __int128 a, unsigned long long b, int e, double& out) {
+  if (a == 0) {
+    out = 0.0;
+    return true;
+  }
+  auto bits = [](unsigned __int128 x) {
+    const auto hi = static_cast<unsigned long long>(x >> 64);
+    return hi != 0 ? 128 - __builtin_clzll(hi) : 64 - __builtin_clzll(static_cast<unsigned long long>(x));
+  };
+  const int la = bits(a), lb = 64 - __builtin_clzll(b);
+  const int s = 56 + lb - la;  // A / B in (2^55, 2^57)
+  unsigned __int128 A = a, B = b;
+  if (s >= 0) {
+    if (la + s > 126) return false;
+    A <<= s;
+  } else {
+    B <<= -s;  // (lb - s = la - 56 <= 64 bits)
+  }
+  const unsigned __int128 q = A / B;
+  const unsigned long long sticky = A - q * B != 0 ? 1u : 0u;
+  const double v = static_cast<double>(static_cast<long long>(static_cast<unsigned long long>(q) | sticky));
+  const int x = e - s;  // the result: v 2^x, v in [2^55, 2^57]
+  if (x + 55 < -1000 || x + 57 > 1000) return false;
+  out = negative ? -std::ldexp(v, x) : std::ldexp(v, x);
+  return true;
+}
+
+// factor (optional): the centre of points x g for the given points x (a
+// lattice_quotient's, g = *factor > 0: every weight w g^2), that is g times
+// this lattice's centre, rounded once (rounded_ratio on g's odd mantissa
+// times the numerator).
 template <int D>
-int lattice_centre(const double* const* p, const double* w, double* out) {
+int lattice_centre(const double* const* p, const double* w, double* out, const double* factor = nullptr) {
   constexpr int N = D + 1;  // columns of [2V | b]; row D is 0 and never read (levels up to D)
   long long t[N * N] = {};
   for (int k = 1; k <= D; ++k) {
@@ -2584,6 +2623,16 @@ int lattice_centre(const double* const* p, const double* w, double* out) {
     if ((D - 1 - l) & 1) nl = -nl;
     const __int128 num = static_cast<__int128>(static_cast<long long>(p[0][l])) * det + nl;
     if (num >= kExact || num <= -kExact) return -1;
+    if (factor) {
+      // g = G 2^E (G odd, below 2^53): g num / det = (G |num|) / |det| 2^E
+      int E = 0;
+      const double frac = std::frexp(*factor, &E);  // g = frac 2^E, frac in [1/2, 1)
+      const auto G = static_cast<unsigned long long>(std::ldexp(frac, 53));  // exact: 53 bits
+      const unsigned __int128 a = static_cast<unsigned __int128>(G) * static_cast<unsigned long long>(num < 0 ? -num : num);
+      if (!rounded_ratio((num < 0) != (det < 0), a, static_cast<unsigned long long>(det < 0 ? -det : det), E - 53, c[l]))
+        return -1;
+      continue;
+    }
     c[l] = num == 0 ? 0.0 : static_cast<double>(static_cast<long long>(num)) / static_cast<double>(det);
   }
   for (int l = 0; l < D; ++l) out[l] = c[l];
@@ -2592,13 +2641,14 @@ int lattice_centre(const double* const* p, const double* w, double* out) {
 
 // lattice_centre for the run-time dimension (2..6; -1 beyond: minor_levels
 // takes up to 7 columns)
-inline int lattice_centre_d(int d, const double* const* p, const double* w, double* out) {
+inline int lattice_centre_d(int d, const double* const* p, const double* w, double* out,
+                            const double* factor = nullptr) {
   switch (d) {
-    case 2: return lattice_centre<2>(p, w, out);
-    case 3: return lattice_centre<3>(p, w, out);
-    case 4: return lattice_centre<4>(p, w, out);
-    case 5: return lattice_centre<5>(p, w, out);
-    case 6: return lattice_centre<6>(p, w, out);
+    case 2: return lattice_centre<2>(p, w, out, factor);
+    case 3: return lattice_centre<3>(p, w, out, factor);
+    case 4: return lattice_centre<4>(p, w, out, factor);
+    case 5: return lattice_centre<5>(p, w, out, factor);
+    case 6: return lattice_centre<6>(p, w, out, factor);
     default: return -1;
   }
 }
@@ -2670,8 +2720,16 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   std::vector<std::uint8_t> flat(m, 0);
   // every coordinate an integer below 2^20: the predicates' own lattice test
   // (StaticFilter::small_integers; their integer stage decides such calls)
-  const bool lattice = pred::StaticFilter::for_points(ps.coords.data(), n, d).small_integers();
-  const bool int_centres = lattice && d <= 6 && (!weighted || std::all_of(ps.weights.begin(), ps.weights.end(), [](double x) {
+  // — or such a lattice times one exact double g (lattice_quotient: a grid
+  // of step 0.1 with three values a row, 0.25, ...): its centres are g times
+  // the quotient's, rounded once, and its exact zero-volume tests the
+  // quotient's (the same signs); lps holds the lattice's points
+  const bool given_lattice = pred::StaticFilter::for_points(ps.coords.data(), n, d).small_integers();
+  const std::optional<LatticeQuotient> quotient = given_lattice ? std::nullopt : lattice_quotient(ps);
+  const PointSet& lps = quotient ? quotient->points : ps;
+  const double* factor = quotient ? &quotient->factor : nullptr;
+  const bool lattice = given_lattice || quotient.has_value();
+  const bool int_centres = lattice && d <= 6 && (!weighted || std::all_of(lps.weights.begin(), lps.weights.end(), [](double x) {
                              return x == std::trunc(x) && std::fabs(x) < 0x1p40;
                            }));
   arena.execute([&] {
@@ -2680,15 +2738,22 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
       cs.d = d;
       const double* p[kMaxD + 1];
       double w[kMaxD + 1];
+      const double* lp[kMaxD + 1];  // the lattice's points (lps)
+      double lw[kMaxD + 1];
       for (std::size_t s = rg.begin(); s != rg.end(); ++s) {
         for (std::size_t j = 0; j < k; ++j) {
+          const auto i = static_cast<std::size_t>(S[s * k + j]);
           p[j] = pt(S[s * k + j]);
-          if (weighted) w[j] = wt(S[s * k + j]);
+          lp[j] = lps.point(i);
+          if (weighted) {
+            w[j] = wt(S[s * k + j]);
+            lw[j] = lps.weights[i];
+          }
         }
         // on an integer lattice (integer weights) the centre, or zero
         // volume, in 64-bit integers where the bounds hold
         if (int_centres) {
-          const int r = lattice_centre_d(d, p, weighted ? w : nullptr, &C[s * d]);
+          const int r = lattice_centre_d(d, lp, weighted ? lw : nullptr, &C[s * d], factor);
           if (r == 0) flat[s] = 1;
           if (r >= 0) continue;
         }
@@ -2697,7 +2762,7 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
         // long double filter takes to fail on a zero-volume simplex, and
         // most of a lattice's canonical simplices have zero volume (the 6^4
         // grid: 20,352 of 35,352); the same test as below, only earlier
-        if (lattice && pred::orient_d_exact(d, p) == 0) {
+        if (lattice && pred::orient_d_exact(d, lp) == 0) {
           flat[s] = 1;
           continue;
         }

@@ -186,6 +186,41 @@ def test_vertices_correctly_rounded_on_integer_lattices(d):
     assert flat_seen > 0  # the grids' zero-volume simplices were asked
 
 
+@pytest.mark.parametrize("d", [2, 3, 4, 5])
+def test_vertices_correctly_rounded_on_lattices_with_a_step(d):
+    """A small-integer lattice times one exact double g (np.mgrid's 0.1 with
+    three values a row, 1/3, 0.7, 3000, 2^-900, a subnormal step whose centres
+    take the general path; 3/8 and 5/8 with weights that
+    are multiples of g^2): the centres are g times the quotient lattice's, rounded
+    once (module.cpp rounded_ratio), and its zero-volume tests the quotient's.
+    Every vertex against the Fraction oracle on the given values; one vertex
+    per exact centre."""
+    rng = np.random.default_rng(800 + d)
+    base = np.array(list(itertools.product(range(3), repeat=d)), dtype=float)
+    base = base[rng.permutation(len(base))[:{2: 9, 3: 27, 4: 36, 5: 24}[d]]] - 1.0
+    checked = 0
+    for g, weighted in ((0.1, False), (1 / 3, False), (0.7, False), (3000.0, False), (2.0 ** -900, False),
+                        (3 * 2.0 ** -1060, False), (0.375, True), (0.625, True)):
+        # k g for k in {-1, 0, 1}: exact for any g, and 2 g too (a binade up)
+        p = np.vstack([base * g, 2 * g * base[:3]])
+        q = np.vstack([base, 2 * base[:3]])
+        if not weighted:
+            vor = Voronoi(p)
+        else:
+            k = rng.integers(-2, 3, len(p)).astype(float)
+            w = k * (g * g)
+            assert all(Fraction(float(x)) == int(y) * Fraction(g) ** 2 for x, y in zip(w, k))  # exact multiples
+            vor = Voronoi(p, weights=w)
+        c = check_rounding(vor)
+        assert c > 0, g
+        checked += c
+        check_grouping(vor)
+        # the same topology as the integer lattice's
+        vq = Voronoi(q) if not weighted else Voronoi(q, weights=k)
+        assert np.array_equal(vor.simplices, vq.simplices) and np.array_equal(vor.simplex_vertex, vq.simplex_vertex)
+    assert checked > 10
+
+
 def test_vertices_correctly_rounded_weighted():
     rng = np.random.default_rng(3)
     p = rng.random((150, 2))
