@@ -564,10 +564,15 @@ HullTuple hull2(const Points& p, const std::string& backend, int threads) {
     nb::gil_scoped_release nogil;
     require_spanning(ps);
     if (backend == "cpu") {
+      // a lattice up to one exact common factor as that small-integer
+      // lattice: the same cycle (reference/lattice_quotient.hpp); the
+      // attributes below read the given values
+      const std::optional<LatticeQuotient> quotient = lattice_quotient(ps);
+      const PointSet& pk = quotient ? quotient->points : ps;
       cpu::Hull2Options o;
       o.threads = threads;
-      cycle = cpu::hull2_graham_sort(ps, o);
-      check_certified(cpu::certify_hull2(ps, cycle, certify::Level::canonical, threads), "hull2");
+      cycle = cpu::hull2_graham_sort(pk, o);
+      check_certified(cpu::certify_hull2(pk, cycle, certify::Level::canonical, threads), "hull2");
     } else if (backend == "reference") {
       cycle = ref::hull2(ps, ref::hull2_algorithms().front());
       check_certified(certify::hull2(ps, cycle, certify::Level::canonical), "hull2");

@@ -697,7 +697,8 @@ def test_delaunay_on_the_5d_grid_of_step_0_1_equals_integer_grid():
     assert flipflop.certify("delaunay", p, t.simplices, canonical=True)
 
 
-@pytest.mark.parametrize("d,k,step", [(3, 5, 0.25), (3, 3, 0.1), (4, 3, 0.1), (4, 4, 0.5), (5, 3, 0.1), (6, 2, 0.25)])
+@pytest.mark.parametrize("d,k,step", [(2, 9, 0.25), (2, 3, 0.1), (3, 5, 0.25), (3, 3, 0.1), (4, 3, 0.1), (4, 4, 0.5),
+                                      (5, 3, 0.1), (6, 2, 0.25)])
 def test_convex_hull_on_a_lattice_with_a_step(d, k, step):
     # the hull kernels on the small-integer lattice (reference/lattice_quotient.hpp):
     # the integer grid's facets, in 3D the reference's on the given values and
@@ -705,10 +706,10 @@ def test_convex_hull_on_a_lattice_with_a_step(d, k, step):
     p = _grid(k, d, step)
     h = flipflop.ConvexHull(p)
     assert np.array_equal(h.simplices, flipflop.ConvexHull(_grid(k, d, 1.0)).simplices)
-    if d == 3:
+    if d <= 3:
         ref = flipflop.ConvexHull(p, backend="reference")
         assert np.array_equal(h.simplices, ref.simplices)
-        assert flipflop.certify("hull3", p, h.simplices, canonical=True)
+        assert flipflop.certify(f"hull{d}", p, h.simplices, canonical=True)
     side = float(p[:, 0].max())
     assert h.volume == pytest.approx(side ** d, rel=1e-12)
     eq = h.equations[np.isfinite(h.equations).all(axis=1)]  # (NaN rows: facets of zero area)
