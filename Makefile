@@ -146,6 +146,7 @@ ASAN_TESTS := io_test cli_test gen_test gen_planes_test values_test regression_t
               instant_flip_perturbation_order_test instant_flip_rt_plus_2_test instant_flip_cli_test \
               kernels_test hull2_cpu_test hull3_cpu_test hull3_witness_test rt2_cpu_test certify_rt2_cpu_test \
               rt2_witness_test rt3_cpu_test certify_rt3_cpu_test rtd_hull_d_test rtd_cavity_test rtd_flips_test \
+              rtd_lattice_quotient_test \
               distributed_test
 asan_space := $(subst ,, )
 ASAN_TESTS_LIST = $(subst $(asan_space),;,$(strip $(ASAN_TESTS)))

@@ -24,6 +24,9 @@
 //     d+1 + placed + 1-(d+1) flips; insertions + redundant - removed = n;
 //     removed = (d+1)-1 flips; the queue runs empty); its strict view
 //     (reference/rtd/strict_rtd.hpp) is certified at the exact level;
+//   * where the set is a small-integer lattice times one double g
+//     (reference/lattice_quotient.hpp), the quotient is exact and the cavity
+//     kernel on it returns RT+1's answer on the given values;
 //   * the cavity-insertion kernel (kernels_cpu/rtd/rtd_cavity.hpp) returns
 //     the same simplices and redundant points, nearest- and furthest-site
 //     (the furthest-site answer of RT+1 certified with the negation); the
@@ -64,6 +67,7 @@
 #include "proptests/support/rtd_oracles.hpp"
 #include "predicates/predicates.hpp"
 #include "proptests/support/rtd_brute.hpp"
+#include "reference/lattice_quotient.hpp"
 #include "reference/rt2/rt2.hpp"
 #include "reference/rtd/canonical_d.hpp"
 #include "reference/rtd/certify_rtd.hpp"
@@ -157,6 +161,30 @@ ref::Rtd check_rt_incremental(const PointSet& ps) {
             "rtd_incremental:\n" + describe(R.simplices) + "brute_rtd:\n" + describe(test::brute_rtd(ps)));
   if (ref::rtd::real_simplices(must_return(ps, {}, "build_rtd", [&] { return ref::build_rtd(ps); })) != R.simplices)
     fail_on(ps, {}, "build_rtd differs from rtd_incremental");
+  if (const auto lq = lattice_quotient(ps)) {
+    // a lattice with a step (reference/lattice_quotient.hpp): the quotient is
+    // exact (every x = q g, every w = q_w g^2: g = G 2^e with G < 2^53, q_w G^2
+    // < 2^53 where a weight is not 0) and the kernel on it returns RT+1's
+    // answer on the given values
+    int e = 0;
+    const double G = std::ldexp(std::frexp(lq->factor, &e), 53);
+    for (std::size_t i = 0; i < ps.coords.size(); ++i) {
+      const double q = lq->points.coords[i];
+      if (q != std::trunc(q) || !(std::fabs(q) < 0x1p20) || std::fma(q, lq->factor, -ps.coords[i]) != 0.0)
+        fail_on(ps, {}, "lattice_quotient: a coordinate is not q g");
+    }
+    if (ps.weighted)
+      for (std::size_t i = 0; i < ps.size(); ++i) {
+        const double q = lq->points.weights[i];
+        if (q != std::trunc(q) || !(std::fabs(q) < 0x1p20) ||
+            (q != 0.0 && std::ldexp(q * G * G, 2 * (e - 53)) != ps.weights[i]) || (q == 0.0 && ps.weights[i] != 0.0))
+          fail_on(ps, {}, "lattice_quotient: a weight is not q_w g^2");
+      }
+    const ref::Rtd Q = must_return(ps, {}, "rtd_cavity on the quotient", [&] { return cpu::rtd_cavity(lq->points); });
+    if (Q.simplices != R.simplices || Q.redundant != R.redundant)
+      fail_on(ps, {}, "the cavity kernel on lattice_quotient's lattice differs from RT+1 on the given values",
+              "on the quotient:\n" + describe(Q.simplices) + "rtd_incremental:\n" + describe(R.simplices));
+  }
   for (bool furthest : {false, true}) {
     cpu::RtdCavityOptions o;
     o.furthest = furthest;
