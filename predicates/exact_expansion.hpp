@@ -2449,6 +2449,11 @@ struct PseudoMersenne61 {
   // s < 2^122: s = h 2^61 + l = h c + l (mod p), below 2^71 + 2^61 (c <
   // 2^10); once more below 2^61 + 2^21 < 2p: one subtraction
   unsigned long long red(uint128_t s) const {
+    if (c == 1) {  // 2^61 - 1 (the walk's first prime): folds without products
+      const unsigned long long t = static_cast<unsigned long long>(s >> 61) + (static_cast<unsigned long long>(s) & kM);
+      const unsigned long long r = (t & kM) + (t >> 61);
+      return r >= p ? r - p : r;
+    }
     const uint128_t t = static_cast<uint128_t>(static_cast<unsigned long long>(s >> 61)) * c +
                         (static_cast<unsigned long long>(s) & kM);
     unsigned long long r = (static_cast<unsigned long long>(t) & kM) + static_cast<unsigned long long>(t >> 61) * c;
@@ -2545,6 +2550,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
   long long dx[W][W];
   uint128_t dsq[W];
   bool dneg[W];
+  int cb[W] = {};           // per column of D: its minors' bound, in bits (0: a zero column)
+  bool per_column = false;  // cb holds (once, weights 0)
   if (once) {
     unsigned long long X[K][W];
     uint128_t sq[K];
@@ -2566,23 +2573,32 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       dneg[i] = sq[i] < sq[K - 1];
       dsq[i] = dneg[i] ? sq[K - 1] - sq[i] : sq[i] - sq[K - 1];
     }
-    // Fewer primes from D itself where the weights are 0 (six rows and more):
-    // every dependence the walk claims is the vanishing, modulo every prime,
-    // of minors of D (rows of F and row r on columns of kc; for an option's
-    // test, of F on kc less a column), and by Hadamard's inequality such a
-    // minor is at most the product over its columns of sqrt(W) times the
-    // column's largest entry. A column of zeros (points on a plane x_j = c,
-    // the flat calls: 643,000 of the 875,000 seven-row walks of the 4^5 grid
-    // of step 0.1) only has zero minors, and differences are smaller than the
-    // coordinates B counts. With 2^bl > that entry and sqrt(W) <= 2^2 (W <=
-    // 16), every such minor is below 2^Bd, and Π p_q > 2^(60.99 N) > 2^Bd for
-    // N = Bd / 60 + 1. Callgrind, `rtd` one thread, grids of step 0.1: 5D
-    // (values 0, 0.1, 0.1 + 0.2) 5.549 -> 5.205 G instructions, 4D 5^4 1.761
-    // -> 1.709 G; in 3D (K = 5) it saved nothing and cost 0.5 %.
-    bool wzero = K >= 6;
+    // Fewer primes from D itself where the weights are 0: every dependence
+    // the walk claims is the vanishing, modulo every prime, of minors of D —
+    // of order |F| + 1 on the rows of F and row r and the columns kc (row r
+    // depends on F), or of order |F| on F's rows and kc less the option's
+    // column c (e_c lies in F's row space: F loses rank without c). By
+    // Hadamard's inequality such a minor is at most the product over its
+    // columns of sqrt(W) times the column's largest entry: below 2^cb_j per
+    // column, cb_j = bit_length(max |D_ij|) + 2 (sqrt(W) <= 2^2, W <= 16),
+    // and a column of zeros (points on a plane x_j = c, the flat calls) has
+    // only zero minors. So a claim of order n on the columns S needs the
+    // primes whose product exceeds 2^s, s the sum of the n largest cb_j over
+    // S: N = s / 60 + 1 of them (each p_q > 2^60.99), and none beyond the
+    // first where S holds fewer than n non-zero columns (the rows are then
+    // dependent by their number). Counted on the 4^5 grid of step 0.1 (`rtd`,
+    // 1.46 M walks, 5.2 primes each by the whole-D bound): 54 % of the
+    // 2.5 M dependences and 82 % of the 3.3 M failed options are such counts,
+    // and the others need 4.1 and 3.1 primes on average. Callgrind, `rtd` on
+    // one thread, against the whole-D bound for every claim (six rows and
+    // more): the 3^5 grid of values 0, 0.1, 0.1 + 0.2 5.204 -> 4.045 G
+    // instructions, the 4D 5^4 grid of step 0.1 1.721 -> 1.529 G (with the
+    // first prime's reduction without products, below: 1.522 G).
+    bool wzero = true;
     if (w)
       for (int i = 0; i < K; ++i) wzero = wzero && w[i] == 0.0;
     if (wzero) {
+      per_column = true;
       int Bd = 0;
       for (int j = 0; j < ncoord; ++j) {
         unsigned long long mx = 0;
@@ -2591,17 +2607,36 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
                                                     : static_cast<unsigned long long>(dx[i][j]);
           mx = a > mx ? a : mx;
         }
-        if (mx != 0) Bd += bit_length(mx) + 2;
+        cb[j] = mx != 0 ? bit_length(mx) + 2 : 0;
+        Bd += cb[j];
       }
       if (w) {
         uint128_t mx = 0;
         for (int i = 0; i < W; ++i) mx = dsq[i] > mx ? dsq[i] : mx;
         const unsigned long long hi64 = static_cast<unsigned long long>(mx >> 64);
-        if (mx != 0) Bd += (hi64 != 0 ? 64 + bit_length(hi64) : bit_length(static_cast<unsigned long long>(mx))) + 2;
+        cb[K - 2] =
+            mx != 0 ? (hi64 != 0 ? 64 + bit_length(hi64) : bit_length(static_cast<unsigned long long>(mx))) + 2 : 0;
+        Bd += cb[K - 2];
       }
       if (Bd / 60 + 1 < N) N = Bd / 60 + 1;
     }
   }
+  // The primes a claim of order n on the columns cols needs (above): at most N
+  auto primes_for = [&](unsigned cols, int n) -> int {
+    if (!per_column) return N;
+    int b[W];
+    int nb = 0;
+    for (int j = 0; j < W; ++j) {
+      if (!((cols >> j) & 1u) || cb[j] == 0) continue;
+      int t = nb++;  // insertion, largest first
+      for (; t > 0 && b[t - 1] < cb[j]; --t) b[t] = b[t - 1];
+      b[t] = cb[j];
+    }
+    if (n > nb) return 1;  // dependent by the count of non-zero columns
+    int s = 0;
+    for (int t = 0; t < n; ++t) s += b[t];
+    return s / 60 + 1 < N ? s / 60 + 1 : N;
+  };
   PseudoMersenne61 P[kMaxPrimes];
   unsigned long long m[kMaxPrimes][W][W];
   // prime q's D = Λ' minus its last row, modulo p_q
@@ -2720,7 +2755,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
         continue;
       }
     }
-    for (int q = 1; q < N; ++q) {  // dependent: every prime must say so
+    const int Nr = primes_for(kc, ech[0].n + 1);
+    for (int q = 1; q < Nr; ++q) {  // dependent: every prime it needs must say so
       if (!ready(q, r)) return 2;
       unsigned long long v[W];
       for (int j = 0; j < W; ++j) v[j] = m[q][r][j];
@@ -2734,8 +2770,9 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     for (int c = K - 2; c >= 0 && !moved; --c) {  // options 1 .. K-1: columns K-2 .. 0
       if (!((kc >> c) & 1u)) continue;
       if (!passes(0, c)) {
-        // e_c in F's row space: F loses rank without c — on every prime
-        for (int q = 1; q < N; ++q) {
+        // e_c in F's row space: F loses rank without c — on every prime needed
+        const int Nc = primes_for(kc & ~(1u << c), ech[0].n);
+        for (int q = 1; q < Nc; ++q) {
           if (!ready(q, r)) return 2;
           if (passes(q, c)) return 2;  // the primes disagree
         }
