@@ -2245,9 +2245,9 @@ struct ModEchelon {
   }
   FF_HD void reduce_pattern(unsigned long long* v) const { reduce(v); }  // (the walk's zero tests)
   FF_HD bool is_pivot(int c) const {
-    bool p = false;
-    for (int t = 0; t < K; ++t) p = p || (t < n && piv[t] == c);
-    return p;
+    for (int t = 0; t < n; ++t)
+      if (piv[t] == c) return true;
+    return false;
   }
   FF_HD static int first_nonzero(const unsigned long long* v, unsigned cols) {
     unsigned nz = 0;  // (a mask, without a branch per entry: the residues' zeros are data)
@@ -2635,17 +2635,25 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       const int i = ctz64(rs);
       for (int j = 0; j < W; ++j) mb[j] = bl[i][j] > mb[j] ? bl[i][j] : mb[j];
     }
-    int b[W];
-    int nb = 0;
-    for (int j = 0; j < W; ++j) {
-      if (!((cols >> j) & 1u) || mb[j] == 0) continue;
-      int t = nb++;  // insertion, largest first
-      for (; t > 0 && b[t - 1] < mb[j] + 2; --t) b[t] = b[t - 1];
-      b[t] = mb[j] + 2;
-    }
+    unsigned nz = 0;
+    for (int j = 0; j < W; ++j) nz |= static_cast<unsigned>(mb[j] != 0) << j;
+    nz &= cols;
+    const int nb = popcount32(nz);
     if (n > nb) return 1;  // dependent by the count of non-zero columns
     int s = 0;
-    for (int t = 0; t < n; ++t) s += b[t];
+    if (n == nb) {  // every non-zero column (the usual case: no order needed)
+      for (unsigned z = nz; z != 0; z &= z - 1u) s += mb[ctz64(z)] + 2;
+    } else {  // the n largest, by insertion
+      int b[W];
+      int m = 0;
+      for (unsigned z = nz; z != 0; z &= z - 1u) {
+        const int v = mb[ctz64(z)] + 2;
+        int t = m++;
+        for (; t > 0 && b[t - 1] < v; --t) b[t] = b[t - 1];
+        b[t] = v;
+      }
+      for (int t = 0; t < n; ++t) s += b[t];
+    }
     return s / 60 + 1 < N ? s / 60 + 1 : N;
   };
   PseudoMersenne61 P[kMaxPrimes];
@@ -2724,21 +2732,21 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
   // option tests that the first prime passes.
   using Ech = ModEchelon<PseudoMersenne61, W>;
   Ech ech[kMaxPrimes];
-  bool built[kMaxPrimes] = {}, valid[kMaxPrimes] = {};
+  unsigned built = 0, valid = 0;  // bit q: prime q's D built / its echelon holds F on kc
   build(0);
-  built[0] = true;
+  built = 1u;
   ech[0].ar = P[0];
   kr = kc = (1u << K) - 1u;
   sg = 1;
   // prime q's echelon of F (the kept rows after r) on kc; false: F is not
   // independent there modulo p_q, against the first prime
   auto ready = [&](int q, int r) -> bool {
-    if (!built[q]) {
+    if (!((built >> q) & 1u)) {
       build(q);
-      built[q] = true;
+      built |= 1u << q;
       ech[q].ar = P[q];
     }
-    if (valid[q]) return true;
+    if ((valid >> q) & 1u) return true;
     ech[q].n = 0;
     for (int i = K - 2; i > r; --i) {
       if (!((kr >> i) & 1u)) continue;
@@ -2746,7 +2754,7 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       for (int j = 0; j < W; ++j) v[j] = m[q][i][j];
       if (!ech[q].add(v, kc)) return false;
     }
-    valid[q] = true;
+    valid |= 1u << q;
     return true;
   };
   // e_c outside F's row space on kc modulo p_q: F keeps its rank without c
@@ -2762,7 +2770,7 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       unsigned long long v[W];
       for (int j = 0; j < W; ++j) v[j] = m[0][r][j];
       if (ech[0].add(v, kc)) {  // not perturbed: F + row r independent on kc
-        for (int q = 1; q < N; ++q) valid[q] = false;
+        valid = 0;
         continue;
       }
     }
@@ -2797,7 +2805,7 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       kc &= ~(1u << c);
       moved = true;
       for (int q = 1; q < N; ++q)
-        if (valid[q] && ech[q].is_pivot(c)) valid[q] = false;
+        if (((valid >> q) & 1u) && ech[q].is_pivot(c)) valid &= ~(1u << q);
       if (pivot && r > 0) {
         ech[0].n = 0;  // re-pivot: F's rows again, on kc (independent there by the test)
         for (int i = K - 2; i > r; --i) {
