@@ -2583,11 +2583,11 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     // columns of sqrt(W) times the column's largest entry on the claim's
     // rows: below 2^cb_j per column, cb_j = bit_length(max_i |D_ij|) + 2
     // (sqrt(W) <= 2^2, W <= 16), and a column of zeros on those rows (points
-    // on a plane x_j = c, the flat calls) has only zero minors. So a claim of order n on the columns S needs the
-    // primes whose product exceeds 2^s, s the sum of the n largest cb_j over
-    // S: N = s / 60 + 1 of them (each p_q > 2^60.99), and none beyond the
-    // first where S holds fewer than n non-zero columns (the rows are then
-    // dependent by their number). Counted on the 4^5 grid of step 0.1 (`rtd`,
+    // on a plane x_j = c, the flat calls) has only zero minors. So a claim of
+    // order n on the columns S needs the primes whose product exceeds 2^s, s
+    // the sum of the n largest cb_j over S: N = s / 60 + 1 of them (each p_q
+    // > 2^60.99), and none beyond the first where S holds fewer than n
+    // non-zero columns (the rows are then dependent by their number). Counted on the 4^5 grid of step 0.1 (`rtd`,
     // 1.46 M walks, 5.2 primes each by the whole-D bound): 54 % of the
     // 2.5 M dependences and 82 % of the 3.3 M failed options are such counts,
     // and the others need 4.1 and 3.1 primes on average. Callgrind, `rtd` on
