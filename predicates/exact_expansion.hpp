@@ -2450,11 +2450,10 @@ struct PseudoMersenne61 {
   // s < 2^122: s = h 2^61 + l = h c + l (mod p), below 2^71 + 2^61 (c <
   // 2^10); once more below 2^61 + 2^21 < 2p: one subtraction
   unsigned long long red(uint128_t s) const {
-    if (c == 1) {  // 2^61 - 1 (the walk's first prime): folds without products
-      const unsigned long long t = static_cast<unsigned long long>(s >> 61) + (static_cast<unsigned long long>(s) & kM);
-      const unsigned long long r = (t & kM) + (t >> 61);
-      return r >= p ? r - p : r;
-    }
+    // 2^61 - 1 (the walk's first prime): ModP61's folds, without the
+    // products by c (s < 2^123: the two halves sum below 2^63)
+    if (c == 1)
+      return ModP61::fold((static_cast<unsigned long long>(s) & kM) + static_cast<unsigned long long>(s >> 61));
     const uint128_t t = static_cast<uint128_t>(static_cast<unsigned long long>(s >> 61)) * c +
                         (static_cast<unsigned long long>(s) & kM);
     unsigned long long r = (static_cast<unsigned long long>(t) & kM) + static_cast<unsigned long long>(t >> 61) * c;
@@ -2535,7 +2534,7 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     if (lifted_bits > 720) return 2;
     B += lifted_bits + 4;
   }
-  int N = B / 60 + 1;
+  const int N = B / 60 + 1;
   if (N > kMaxPrimes) return 2;
   // Λ' once, exactly, where it fits (every coordinate below 2^60 after the
   // scaling, so each |x| is a uint64 and Σ x^2 < 2^124 a uint128): then a
@@ -2587,12 +2586,13 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     // order n on the columns S needs the primes whose product exceeds 2^s, s
     // the sum of the n largest cb_j over S: N = s / 60 + 1 of them (each p_q
     // > 2^60.99), and none beyond the first where S holds fewer than n
-    // non-zero columns (the rows are then dependent by their number). Counted on the 4^5 grid of step 0.1 (`rtd`,
-    // 1.46 M walks, 5.2 primes each by the whole-D bound): 54 % of the
-    // 2.5 M dependences and 82 % of the 3.3 M failed options are such counts,
-    // and the others need 4.1 and 3.1 primes on average. Callgrind, `rtd` on
-    // one thread, against the whole-D bound for every claim (six rows and
-    // more): the 3^5 grid of values 0, 0.1, 0.1 + 0.2 5.204 -> 4.045 G
+    // non-zero columns (the rows are then dependent by their number); never
+    // more than N, the bound over all of Λ. Counted on the 4^5 grid of step
+    // 0.1 (`rtd`, 1.46 M walks, 5.2 primes each by the whole-D bound): 54 %
+    // of the 2.5 M dependences and 82 % of the 3.3 M failed options are such
+    // counts, and the others need 4.1 and 3.1 primes on average. Callgrind,
+    // `rtd` on one thread, against the whole-D bound for every claim (six
+    // rows and more): the 3^5 grid of values 0, 0.1, 0.1 + 0.2 5.204 -> 4.045 G
     // instructions, the 4D 5^4 grid of step 0.1 1.721 -> 1.529 G (with the
     // first prime's reduction without products, below: 1.522 G). Each
     // column's largest entry over the claim's rows rather than all of D's:
@@ -2602,28 +2602,18 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       for (int i = 0; i < K; ++i) wzero = wzero && w[i] == 0.0;
     if (wzero) {
       per_column = true;
-      int Bd = 0;
-      for (int j = 0; j < ncoord; ++j) {
-        int mb = 0;
-        for (int i = 0; i < W; ++i) {
+      for (int i = 0; i < W; ++i) {
+        for (int j = 0; j < ncoord; ++j) {
           const unsigned long long a = dx[i][j] < 0 ? 0ull - static_cast<unsigned long long>(dx[i][j])
                                                     : static_cast<unsigned long long>(dx[i][j]);
           bl[i][j] = static_cast<unsigned char>(bit_length(a));
-          mb = bl[i][j] > mb ? bl[i][j] : mb;
         }
-        Bd += mb != 0 ? mb + 2 : 0;
-      }
-      if (w) {
-        int mb = 0;
-        for (int i = 0; i < W; ++i) {
+        if (w) {
           const unsigned long long hi64 = static_cast<unsigned long long>(dsq[i] >> 64);
           bl[i][K - 2] = static_cast<unsigned char>(hi64 != 0 ? 64 + bit_length(hi64)
                                                               : bit_length(static_cast<unsigned long long>(dsq[i])));
-          mb = bl[i][K - 2] > mb ? bl[i][K - 2] : mb;
         }
-        Bd += mb != 0 ? mb + 2 : 0;
       }
-      if (Bd / 60 + 1 < N) N = Bd / 60 + 1;
     }
   }
   // The primes a claim of order n on D's rows `rows` and columns `cols`
@@ -2804,8 +2794,10 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       kr &= ~(1u << r);
       kc &= ~(1u << c);
       moved = true;
-      for (int q = 1; q < N; ++q)
-        if (((valid >> q) & 1u) && ech[q].is_pivot(c)) valid &= ~(1u << q);
+      for (unsigned vq = valid; vq != 0; vq &= vq - 1u) {
+        const int q = ctz64(vq);
+        if (ech[q].is_pivot(c)) valid &= ~(1u << q);
+      }
       if (pivot && r > 0) {
         ech[0].n = 0;  // re-pivot: F's rows again, on kc (independent there by the test)
         for (int i = K - 2; i > r; --i) {
