@@ -743,6 +743,26 @@ FF_HD inline ErrDouble errdouble_minor(const ErrDouble* ap, unsigned rows, unsig
   }
 }
 
+// errdouble_minor for the search of sos_lazy: orders 5..7 by Gaussian
+// elimination (det_gauss, a proven running bound like det_by_minors'):
+// about r^3/3 operations against r 2^(r-1).
+template <int K>
+FF_HD inline ErrDouble errdouble_minor_lazy(const ErrDouble* ap, unsigned rows, unsigned cols) {
+  if constexpr (K >= 6) {
+    const Kept<K> kept(rows, cols);
+    if (kept.r >= 5) {
+      ErrDouble t[K * K];
+      kept.gather(t, [&](int i, int j) { return ap[i * K + j]; });
+      switch (kept.r) {
+        case 5: return det_gauss<5>(t);
+        case 6: return det_gauss<6>(t);
+        default: if constexpr (K >= 7) if (kept.r == 7) return det_gauss<7>(t);
+      }
+    }
+  }
+  return errdouble_minor<K>(ap, rows, cols);
+}
+
 // det_plain<N>(t) for the run-time order r, N <= r <= min(K, 7): only orders
 // that fit t (K x K entries) are instantiated.
 template <int N, int K>
@@ -1426,7 +1446,7 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
     int integral = 0;
     for (int t = 0; t < r; ++t) integral += int_row[ri[t]];
     if (integral < r - 2) {
-      const int s = sign_if_certain(errdouble_minor<K>(ap, kr, kc));
+      const int s = sign_if_certain(errdouble_minor_lazy<K>(ap, kr, kc));
       if (s != 0) return s;
     }
     if (cheap) return 2;

@@ -143,17 +143,21 @@ FF_HD inline V det_by_minors(const V* t) {
   }
 }
 
-// det of an n x n ErrDouble matrix (row-major, n <= 10; host only) by
-// Gaussian elimination with partial pivoting on the computed values: exact
-// arithmetic on the exact entries with the same pivot order gives det T
-// exactly (every pivot used is certainly non-zero: ErrDouble's division
-// answers e = inf otherwise), so the bound covers det T. n^3/3 operations
-// against det_by_minors' n 2^(n-1): the dynamic filter of 9..11-row
-// predicates and the d-dimensional certifier's facet forms beyond 5D.
-inline ErrDouble det_gauss_rt(const ErrDouble* t, int n) {
-  constexpr int kMaxN = 10;
-  if (n < 1 || n > kMaxN) return ErrDouble(0.0, HUGE_VAL);
-  ErrDouble a[kMaxN * kMaxN];
+// det of an n x n ErrDouble matrix (row-major, n <= MaxN) by Gaussian
+// elimination with partial pivoting on the computed values: exact arithmetic
+// on the exact entries with the same pivot order gives det T exactly (every
+// pivot used is certainly non-zero, tested below), so the running bound
+// covers det T. Row i's factor is a_ip (1 / a_pp), one ErrDouble reciprocal
+// per pivot and a product (covered as the quotient would be). n^3/3
+// operations against det_by_minors' n 2^(n-1). det_gauss_rt (n <= 10): the
+// dynamic filter of 9..11-row predicates and the d-dimensional certifier's
+// facet forms beyond 5D; det_gauss<N> (a compile-time order, the loops
+// unrolled): sos_lazy's search (exact_expansion.hpp errdouble_minor_lazy),
+// N = 5..7. Tested on its own against exact determinants
+// (predicates_stages_test, "the ErrDouble Gaussian eliminations").
+template <int MaxN>
+FF_HD inline ErrDouble det_gauss_n(const ErrDouble* t, int n) {
+  ErrDouble a[MaxN * MaxN];
   for (int i = 0; i < n * n; ++i) a[i] = t[i];
   bool negate = false;
   ErrDouble det(1.0);
@@ -172,12 +176,22 @@ inline ErrDouble det_gauss_rt(const ErrDouble* t, int n) {
     const ErrDouble piv = a[p * n + p];
     if (!(std::fabs(piv.v) > piv.e)) return ErrDouble(0.0, HUGE_VAL);  // the pivot may be 0
     det = p == 0 ? piv : det * piv;
+    if (p + 1 == n) break;
+    const ErrDouble inv = ErrDouble(1.0) / piv;
     for (int i = p + 1; i < n; ++i) {
-      const ErrDouble f = a[i * n + p] / piv;
+      const ErrDouble f = a[i * n + p] * inv;
       for (int j = p + 1; j < n; ++j) a[i * n + j] = a[i * n + j] - f * a[p * n + j];
     }
   }
   return negate ? -det : det;
+}
+template <int N>
+FF_HD inline ErrDouble det_gauss(const ErrDouble* t) {
+  return det_gauss_n<N>(t, N);
+}
+inline ErrDouble det_gauss_rt(const ErrDouble* t, int n) {
+  if (n < 1 || n > 10) return ErrDouble(0.0, HUGE_VAL);
+  return det_gauss_n<10>(t, n);
 }
 
 // The (k-1) x (k-1) matrix T of det Λ translated by the last row, in
