@@ -1527,9 +1527,9 @@ inline int lambda_minor_sign(const double* const* p, const double* w, unsigned k
       if (n == 2) v = det_by_minors<2>(t);
       if (n == 3) v = det_by_minors<3>(t);
       if constexpr (K >= 5) if (n == 4) v = det_by_minors<4>(t);
-      if constexpr (K >= 6) if (n == 5) v = det_by_minors<5>(t);
-      if constexpr (K >= 7) if (n == 6) v = det_by_minors<6>(t);
-      if constexpr (K >= 8) if (n == 7) v = det_by_minors<7>(t);
+      if constexpr (K >= 6) if (n == 5) v = det_gauss<5>(t);
+      if constexpr (K >= 7) if (n == 6) v = det_gauss<6>(t);
+      if constexpr (K >= 8) if (n == 7) v = det_gauss<7>(t);
       if (const int s = sign_if_certain(v); s != 0) return s;
       RawLambda<Dbl, K> L;
       build_lambda<Dbl, K>(p, w, L);
