@@ -1404,11 +1404,6 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
     }
   }
   const int hc = (w && !exact) ? K - 2 : K;  // the column that is not compared (none: K)
-  auto same_point = [&](int r0, int r1) {
-    for (int j = 0; j < ncoord; ++j)
-      if (p[r0][j] != p[r1][j]) return false;
-    return w[r0] == w[r1];
-  };
   RawLambda<Dbl, K> L;
   bool built = false;
   bool int_row[K];  // the point's Λ row is one of small integers (2^13: |x|^2 < 2^31)
@@ -1433,15 +1428,12 @@ FF_HD FF_DEVICE_NOINLINE int sos_lazy(const double* const* p, const double* w, c
       }
       if (zero || (one && constant)) return 0;
     }
+    // two kept rows equal on the kept columns (eq: lambda_row_eq's masks of
+    // equal columns; where the lifted entries are not doubles, theirs is
+    // equal when the points and weights are): the minor is 0
     for (int x = 1; x < r; ++x)
-      for (int y = 0; y < x; ++y) {
-        bool same = true;
-        for (int t = 0; t < r && same; ++t) {
-          const int j = ci[t];
-          same = j == hc ? same_point(ri[x], ri[y]) : a[ri[x]][j] == a[ri[y]][j];
-        }
-        if (same) return 0;
-      }
+      for (int y = 0; y < x; ++y)
+        if ((kc & ~eq[ri[x] * K + ri[y]]) == 0) return 0;
     // near-lattice minors straight to the exact ones (minor_quick)
     int integral = 0;
     for (int t = 0; t < r; ++t) integral += int_row[ri[t]];
