@@ -2456,6 +2456,16 @@ FF_HD inline int int_lattice_sos_mod(const IntLambda<K>& L, bool sos = true) {
 inline constexpr int kMultiprimeCount = 12;
 inline constexpr unsigned long long kMultiprimeC[kMultiprimeCount] = {1,   31,  45,  229, 259, 283,
                                                                       339, 391, 403, 465, 531, 579};
+// How often, on this thread, multiprime_walk showed a dependence over Z
+// (exact_dependence) instead of asking the other primes; the tests read it
+// so that the path they cover cannot vanish unnoticed.
+struct WalkCounts {
+  long long certificates = 0;
+};
+inline WalkCounts& walk_counts() {
+  thread_local WalkCounts c;
+  return c;
+}
 struct PseudoMersenne61 {
   static constexpr unsigned long long kM = (1ull << 61) - 1ull;
   unsigned long long p = kM, c = 1;
@@ -2562,6 +2572,7 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
   long long dx[W][W];
   uint128_t dsq[W];
   bool dneg[W];
+  unsigned long long dx_or = 0;  // the |D_ij| OR-ed: below 2^60 (< every p_q), one correction in build
   unsigned char bl[W][W] = {};  // bit lengths of |D_ij| (0: a zero entry)
   bool per_column = false;  // bl holds (once, weights 0)
   if (once) {
@@ -2581,6 +2592,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
         const long long b = p[K - 1][j] < 0.0 ? -static_cast<long long>(X[K - 1][j])
                                               : static_cast<long long>(X[K - 1][j]);
         dx[i][j] = a - b;
+        dx_or |= dx[i][j] < 0 ? 0ull - static_cast<unsigned long long>(dx[i][j])
+                              : static_cast<unsigned long long>(dx[i][j]);
       }
       dneg[i] = sq[i] < sq[K - 1];
       dsq[i] = dneg[i] ? sq[K - 1] - sq[i] : sq[i] - sq[K - 1];
@@ -2672,7 +2685,12 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
           // conditional subtractions at most, as masks (the differences'
           // signs are data: branches on them were mispredicted, a third of
           // the walk's time on a 20^3 grid of step 0.1)
+          // (|d| < 2^60 < p, the usual case: d, or p + d for d < 0, at once)
           const long long d = dx[i][j];
+          if (dx_or < (1ull << 60)) {
+            m[q][i][j] = static_cast<unsigned long long>(d) + ((0ull - static_cast<unsigned long long>(d < 0)) & F.p);
+            continue;
+          }
           unsigned long long u =
               static_cast<unsigned long long>(d) + ((0ull - static_cast<unsigned long long>(d < 0)) & (2 * F.p));
           u -= F.p & (0ull - static_cast<unsigned long long>(u >= F.p));
@@ -2767,6 +2785,114 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     ech[q].reduce(e);
     return Ech::first_nonzero(e, kc) >= 0;
   };
+  // A dependence the first prime claims, shown over Z instead of modulo the
+  // other primes: the rows `rows` of D are dependent on the columns `cols`
+  // when some integer vector λ != 0 has Σ_i λ_i D_i = 0 on them. A candidate
+  // λ comes from binary64: the null vector of those rows (each column scaled
+  // to its largest entry, elimination with partial pivoting and the rows'
+  // combinations carried along, entries below 2^-40 after the scaling taken
+  // as 0; the claims' nullity is 1, F being independent on kc), divided by
+  // its smallest entry, then multiplied by d = 1 .. 12; where every entry is
+  // then within 10^-6 of an integer below 2^24, those integers are tested on
+  // D itself, exactly: in the coordinate
+  // columns in __int128 (|λ| |D| < 2^24 2^60, at most 16 terms), in the
+  // lifted column (Σ x^2 differences below 2^124) modulo 2^128 where
+  // Σ |λ_i| |dsq_i| < 2^127 — a sum that is 0 modulo 2^128 and smaller than
+  // that in magnitude is 0. Nothing rests on the rounding or on the prime: a
+  // verified λ is a proof, and a candidate that fails leaves the primes to
+  // decide, as before. Weights 0 only (dsq is then the lifted column of D).
+  // Tensor grids' dependences are sums and differences of rows (a box's
+  // corners: D_a - D_b - D_c + D_d = 0 whatever the spacing), where the
+  // other primes cost up to N - 1 echelons of F, each of D modulo p_q.
+  auto exact_dependence = [&](unsigned rows, unsigned cols) -> bool {
+    if (!per_column || dx_or >= (1ull << 60)) return false;
+    int ri[W] = {}, ci[W] = {}, n = 0, nc = 0;
+    for (int i = 0; i < W; ++i) {
+      if ((rows >> i) & 1u) ri[n++] = i;
+      if ((cols >> i) & 1u) ci[nc++] = i;
+    }
+    if (n == 0) return false;
+    double a[W][W], b[W][W];
+    for (int jj = 0; jj < nc; ++jj) {
+      const int j = ci[jj];
+      double big = 0.0;
+      for (int t = 0; t < n; ++t) {
+        const int i = ri[t];
+        const double v = j < ncoord ? static_cast<double>(dx[i][j])
+                                    : (dneg[i] ? -1.0 : 1.0) * static_cast<double>(dsq[i]);
+        a[t][jj] = v;
+        big = std::fabs(v) > big ? std::fabs(v) : big;
+      }
+      const double sc = big > 0.0 ? 1.0 / big : 0.0;
+      for (int t = 0; t < n; ++t) a[t][jj] *= sc;
+    }
+    for (int t = 0; t < n; ++t)
+      for (int k = 0; k < n; ++k) b[t][k] = t == k ? 1.0 : 0.0;
+    int rank = 0;
+    for (int jj = 0; jj < nc && rank < n; ++jj) {
+      int piv = rank;
+      for (int t = rank + 1; t < n; ++t)
+        if (std::fabs(a[t][jj]) > std::fabs(a[piv][jj])) piv = t;
+      if (std::fabs(a[piv][jj]) < 0x1p-40) continue;  // (0 here: rounding of the others' combination)
+      if (piv != rank) {
+        for (int k = 0; k < nc; ++k) std::swap(a[piv][k], a[rank][k]);
+        for (int k = 0; k < n; ++k) std::swap(b[piv][k], b[rank][k]);
+      }
+      const double g = 1.0 / a[rank][jj];
+      for (int t = rank + 1; t < n; ++t) {
+        const double f = a[t][jj] * g;
+        if (f == 0.0) continue;
+        for (int k = jj; k < nc; ++k) a[t][k] -= f * a[rank][k];
+        for (int k = 0; k < n; ++k) b[t][k] -= f * b[rank][k];
+      }
+      ++rank;
+    }
+    if (rank == n) return false;
+    const double* lam = b[rank];
+    double top = 0.0;
+    for (int t = 0; t < n; ++t) top = std::fabs(lam[t]) > top ? std::fabs(lam[t]) : top;
+    double low = top;
+    for (int t = 0; t < n; ++t)
+      if (std::fabs(lam[t]) > 1e-6 * top && std::fabs(lam[t]) < low) low = std::fabs(lam[t]);
+    if (!(low > 0.0)) return false;
+    long long c[W];
+    bool found = false;
+    for (int d = 1; d <= 12 && !found; ++d) {
+      found = true;
+      const double sc = d / low;
+      for (int t = 0; t < n && found; ++t) {
+        const double x = lam[t] * sc;
+        const double rx = std::nearbyint(x);
+        if (!(std::fabs(rx) < 16777216.0) || std::fabs(x - rx) > 1e-6) found = false;
+        else c[t] = static_cast<long long>(rx);
+      }
+    }
+    if (!found) return false;
+    uint128_t total = 0;  // Σ |λ_i|, for the lifted column's bound
+    for (int t = 0; t < n; ++t) total += static_cast<uint128_t>(c[t] < 0 ? -c[t] : c[t]);
+    for (int jj = 0; jj < nc; ++jj) {
+      const int j = ci[jj];
+      if (j < ncoord) {
+        int128_t sum = 0;
+        for (int t = 0; t < n; ++t) sum += static_cast<int128_t>(c[t]) * dx[ri[t]][j];
+        if (sum != 0) return false;
+      } else {  // the lifted column (w: weights 0)
+        uint128_t big = 0, sum = 0;
+        for (int t = 0; t < n; ++t) {
+          const uint128_t v = dsq[ri[t]];
+          if (v > big) big = v;
+          const uint128_t mag = static_cast<uint128_t>(c[t] < 0 ? -c[t] : c[t]) * v;  // mod 2^128
+          sum += (c[t] < 0) != dneg[ri[t]] ? 0 - mag : mag;
+        }
+        // Σ |λ| max|dsq| < 2^127: big < 2^(127 - bit_length(total)), total < 2^28
+        const int tb = bit_length(static_cast<unsigned long long>(total));
+        if ((big >> (127 - tb)) != 0) return false;
+        if (sum != 0) return false;
+      }
+    }
+    ++walk_counts().certificates;
+    return true;
+  };
   for (int r = K - 2; r >= 0; --r) {
     {
       unsigned long long v[W];
@@ -2778,7 +2904,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
     }
     const unsigned frows = kr & ~((2u << r) - 1u) & ((1u << W) - 1u);  // F: the kept rows after r
     const int Nr = primes_for(frows | (1u << r), kc, ech[0].n + 1);
-    for (int q = 1; q < Nr; ++q) {  // dependent: every prime it needs must say so
+    const bool shown = Nr > 1 && exact_dependence(frows | (1u << r), kc);
+    for (int q = 1; q < Nr && !shown; ++q) {  // dependent: every prime it needs must say so
       if (!ready(q, r)) return 2;
       unsigned long long v[W];
       for (int j = 0; j < W; ++j) v[j] = m[q][r][j];
@@ -2793,8 +2920,10 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       if (!((kc >> c) & 1u)) continue;
       if (!passes(0, c)) {
         // e_c in F's row space: F loses rank without c — on every prime needed
-        const int Nc = primes_for(kr & ~((2u << r) - 1u) & ((1u << W) - 1u), kc & ~(1u << c), ech[0].n);
-        for (int q = 1; q < Nc; ++q) {
+        const unsigned fr = kr & ~((2u << r) - 1u) & ((1u << W) - 1u);
+        const int Nc = primes_for(fr, kc & ~(1u << c), ech[0].n);
+        const bool shown = Nc > 1 && exact_dependence(fr, kc & ~(1u << c) & ((1u << W) - 1u));
+        for (int q = 1; q < Nc && !shown; ++q) {
           if (!ready(q, r)) return 2;
           if (passes(q, c)) return 2;  // the primes disagree
         }

@@ -417,15 +417,26 @@ template <int K>
 void planes_property(bool lifted) {
   long calls = 0, zero = 0, walked = 0, first_decided = 0;
   const std::string name = "k = " + std::to_string(K) + (lifted ? " lifted" : " plain");
+#if defined(FLIPFLOP_INT128)
+  const long long certificates0 = xp::walk_counts().certificates;
+#endif
   rc::prop(name, [&] { planes_call<K>(lifted, calls, zero, walked, first_decided); });
   if (calls == 0) return;
+  long long certificates = 0;
+#if defined(FLIPFLOP_INT128)
+  certificates = xp::walk_counts().certificates - certificates0;
+#endif
   std::printf("sos_lazy %-14s calls %6ld det 0 %6ld decided by the multi-prime walk %6ld (before the exact "
-              "determinant: %6ld)\n",
-              name.c_str(), calls, zero, walked, first_decided);
+              "determinant: %6ld; dependences shown over Z: %lld)\n",
+              name.c_str(), calls, zero, walked, first_decided, certificates);
   CHECK(zero * 2 > calls);
 #if defined(FLIPFLOP_INT128)
   CHECK(walked * 2 > zero);         // the walk, not the search, decides most of them
   CHECK(first_decided * 2 > zero);  // and lambda_exact's walk-first does too
+  // from 5 rows the walk's dependences need more than one prime, and the
+  // integer certificates (multiprime_walk's exact_dependence) stand in for
+  // them on these grids: the path the GMP comparison above covers
+  if (K >= 5) CHECK(certificates > 0);
 #endif
 }
 
@@ -489,6 +500,42 @@ TEST_CASE("multi-prime walk: the moduli are primes, their products reduced right
     CHECK(F.pow2(61) == F.c % F.p);
     CHECK(F.pow2(200) == pw(2, 200));
   }
+}
+
+// The walk's first prime (2^61 - 1) claims a dependence that the integers
+// deny: det = 2^61 - 1 exactly, rows apart by 2^-43, equal in binary64's
+// elimination (below its 2^-40). The
+// candidate integer vector (1, -1) that binary64 suggests must be refused
+// by the exact test (multiprime_walk's exact_dependence), and the second
+// prime then finds the rows independent: the walk must not report det = 0.
+// Hand-derived: A D - B C = (C + 512) D - (D + 1) C = 512 D - C = 2^61 +
+// 2^52 - 2^52 - 1. Accepting the candidate unverified fails here.
+TEST_CASE("multi-prime walk: a dependence modulo the first prime alone is not taken", "[predicates][int_lattice]") {
+  const double C = 4503599627370497.0;                  // 2^52 + 1
+  const double D = 4503599627370496.0 + 8796093022208.0;  // 2^52 + 2^43
+  const double r0[2] = {C + 512.0, D + 1.0}, r1[2] = {C, D}, r2[2] = {0.0, 0.0};
+  REQUIRE(r0[0] - 512.0 == C);  // every value an exact double (below 2^53)
+  REQUIRE(r0[1] - 1.0 == D);
+  const double* p[3] = {r0, r1, r2};
+  const long long before = xp::walk_counts().certificates;
+  unsigned kr = 0, kc = 0;
+  int sg = 1;
+  const int w = xp::multiprime_walk<3>(p, nullptr, kr, kc, sg);
+  CHECK(xp::walk_counts().certificates == before);
+  CHECK((w == 2 || (kr == 7u && kc == 7u)));  // never a leaf below det Λ
+  CHECK(!xp::det_zero_by_walk<3>(p, nullptr));
+  CHECK(pred::stage::gmp(3, p, nullptr) == 1);  // det Λ = A D - B C > 0
+  // a true dependence of the same size is shown over Z: with the last point
+  // at the origin, D's rows are the points, and q3 - 2 q0 + q1 = 0 (q0 = q1 +
+  // (2^20, 1, 0), q3 = q1 + 2 (2^20, 1, 0): rows apart by 2^-32, above
+  // binary64's 2^-40 for a zero); two primes needed (55 + 55 + 3 bits), none asked
+  const double q0[3] = {C + 1048576.0, D + 1.0, 1.0}, q1[3] = {C, D, 1.0}, q3[3] = {C + 2097152.0, D + 2.0, 1.0},
+               q4[3] = {0.0, 0.0, 0.0};
+  const double* q[4] = {q0, q1, q3, q4};
+  const long long before2 = xp::walk_counts().certificates;
+  CHECK(xp::det_zero_by_walk<4>(q, nullptr));
+  CHECK(xp::walk_counts().certificates > before2);
+  CHECK(pred::stage::gmp(4, q, nullptr) == 0);
 }
 #endif
 
