@@ -753,11 +753,9 @@ FF_HD inline ErrDouble errdouble_minor_lazy(const ErrDouble* ap, unsigned rows, 
     if (kept.r >= 5) {
       ErrDouble t[K * K];
       kept.gather(t, [&](int i, int j) { return ap[i * K + j]; });
-      switch (kept.r) {
-        case 5: return det_gauss<5>(t);
-        case 6: return det_gauss<6>(t);
-        default: if constexpr (K >= 7) if (kept.r == 7) return det_gauss<7>(t);
-      }
+      if (kept.r == 5) return det_gauss<5>(t);
+      if (kept.r == 6) return det_gauss<6>(t);
+      if constexpr (K >= 7) if (kept.r == 7) return det_gauss<7>(t);
     }
   }
   return errdouble_minor<K>(ap, rows, cols);
@@ -2794,11 +2792,10 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
   // as 0; the claims' nullity is 1, F being independent on kc), divided by
   // its smallest entry, then multiplied by d = 1 .. 12; where every entry is
   // then within 10^-6 of an integer below 2^24, those integers are tested on
-  // D itself, exactly: in the coordinate
-  // columns in __int128 (|λ| |D| < 2^24 2^60, at most 16 terms), in the
-  // lifted column (Σ x^2 differences below 2^124) modulo 2^128 where
-  // Σ |λ_i| |dsq_i| < 2^127 — a sum that is 0 modulo 2^128 and smaller than
-  // that in magnitude is 0. Nothing rests on the rounding or on the prime: a
+  // D itself, exactly: in the coordinate columns in __int128 (|λ| |D| < 2^24
+  // 2^60, at most 16 terms), in the lifted column (Σ x^2 differences below
+  // 2^124) modulo 2^128 where Σ |λ_i| |dsq_i| < 2^127 — a sum that is 0
+  // modulo 2^128 and smaller than that in magnitude is 0. Nothing rests on the rounding or on the prime: a
   // verified λ is a proof, and a candidate that fails leaves the primes to
   // decide, as before. Weights 0 only (dsq is then the lifted column of D).
   // Tensor grids' dependences are sums and differences of rows (a box's
@@ -2868,8 +2865,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
       }
     }
     if (!found) return false;
-    uint128_t total = 0;  // Σ |λ_i|, for the lifted column's bound
-    for (int t = 0; t < n; ++t) total += static_cast<uint128_t>(c[t] < 0 ? -c[t] : c[t]);
+    unsigned long long total = 0;  // Σ |λ_i| (below 2^28), for the lifted column's bound
+    for (int t = 0; t < n; ++t) total += static_cast<unsigned long long>(c[t] < 0 ? -c[t] : c[t]);
     for (int jj = 0; jj < nc; ++jj) {
       const int j = ci[jj];
       if (j < ncoord) {
@@ -2884,8 +2881,8 @@ int multiprime_walk(const double* const* p, const double* w, unsigned& kr, unsig
           const uint128_t mag = static_cast<uint128_t>(c[t] < 0 ? -c[t] : c[t]) * v;  // mod 2^128
           sum += (c[t] < 0) != dneg[ri[t]] ? 0 - mag : mag;
         }
-        // Σ |λ| max|dsq| < 2^127: big < 2^(127 - bit_length(total)), total < 2^28
-        const int tb = bit_length(static_cast<unsigned long long>(total));
+        // Σ |λ| max|dsq| < 2^127: big < 2^(127 - bit_length(total))
+        const int tb = bit_length(total);
         if ((big >> (127 - tb)) != 0) return false;
         if (sum != 0) return false;
       }
