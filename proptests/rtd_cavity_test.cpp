@@ -17,12 +17,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
+#include "kernels_cpu/rtd/visible_region.hpp"
 #include "proptests/support/families.hpp"
 #include "proptests/support/neighbours.hpp"
 #include "proptests/support/rc_scaled.hpp"
@@ -54,8 +56,15 @@ std::string ref_text(const PointSet& ps, bool furthest) {
 struct Setting {
   std::size_t brio;
   int threads;
+  double parallel_min_ns = 40e3;
 };
-constexpr Setting kSettings[] = {{1, 1}, {64, 2}};
+// {1, 1}: a cavity's cells tested one by one (visible_region); 2 and 3
+// threads: the filters first, then the wave's undecided cells
+// (visible_region_waves), in parallel where the work is estimated to pay
+// (2 threads) or wherever there are two of them (3 threads: the parallel
+// path on small inputs too), which must do the same search: {1, 3} against
+// {1, 1}, the same counters
+constexpr Setting kSettings[] = {{1, 1}, {64, 2}, {1, 3, 0.0}};
 
 // the kernel's answer as text (or "error: " and the message); *out receives it
 std::string cavity_text(const PointSet& ps, bool furthest, const Setting& s, cpu::RtdCavityStats* st,
@@ -63,6 +72,7 @@ std::string cavity_text(const PointSet& ps, bool furthest, const Setting& s, cpu
   cpu::RtdCavityOptions o;
   o.brio_min = s.brio;
   o.threads = s.threads;
+  o.parallel_min_ns = s.parallel_min_ns;
   o.furthest = furthest;
   try {
     ref::Rtd r = cpu::rtd_cavity(ps, st, o);
@@ -82,16 +92,21 @@ bool is_error(const std::string& s) { return s.rfind("error: ", 0) == 0; }
 template <class Assert>
 void check(const PointSet& ps, bool furthest, const Assert& require) {
   const std::string expect = ref_text(ps, furthest);
-  for (const Setting& s : kSettings) {
-    cpu::RtdCavityStats st;
+  cpu::RtdCavityStats sts[std::size(kSettings)];
+  for (std::size_t k = 0; k < std::size(kSettings); ++k) {
+    cpu::RtdCavityStats& st = sts[k];
     ref::Rtd r;
-    require(cavity_text(ps, furthest, s, &st, &r) == expect);
+    require(cavity_text(ps, furthest, kSettings[k], &st, &r) == expect);
     if (!is_error(expect)) {
       require(st.inserted + st.discarded == ps.size());
       require(st.discarded + st.removed == r.redundant.size());
       require(certify::rtd(ps, r.simplices, certify::Level::canonical, furthest).ok);
     }
   }
+  // the same BRIO order, one thread and three: the same insertions, walks and cavities
+  const cpu::RtdCavityStats &a = sts[0], &b = sts[2];
+  require(a.inserted == b.inserted && a.placed == b.placed && a.discarded == b.discarded && a.removed == b.removed &&
+          a.cavity == b.cavity && a.created == b.created && a.walk_steps == b.walk_steps);
 }
 
 int nmax_of(int d) { return d <= 3 ? 60 : d == 4 ? 36 : 24; }
@@ -130,14 +145,15 @@ FlatSeed flat_seed(const std::vector<std::vector<Index>>& cells, std::vector<std
 // 3D: the one-shot kernels' certified answer, then in-place adds).
 template <class Assert>
 void check_batches(const PointSet& ps, bool furthest, const std::vector<std::size_t>& cuts, std::size_t start_extra,
-                   const Assert& require, bool seeded = false) {
+                   const Assert& require, bool seeded = false, int threads = 1) {
   std::size_t k = static_cast<std::size_t>(ps.dim) + 1;
   while (k <= ps.size() && !dimension_problem(prefix(ps, k)).empty()) ++k;
   if (k > ps.size()) return;  // lower-dimensional: the one-shot test covers the rejection
   k = std::min(ps.size(), k + start_extra);
   cpu::RtdCavityOptions o;
   o.furthest = furthest;
-  o.threads = 1;
+  o.threads = threads;
+  o.parallel_min_ns = 0.0;  // (threads 2: every wave of two undecided cells or more in parallel)
   const ref::Rtd first = cpu::rtd_cavity(prefix(ps, k), nullptr, o);
   const FlatSeed seed = seeded ? flat_seed(first.simplices) : FlatSeed{};
   cpu::RtdCavityIncremental inc = seeded ? cpu::RtdCavityIncremental(prefix(ps, k), seed.cells, seed.nb, o)
@@ -178,6 +194,58 @@ TEST_CASE("rtd cavity: a kernel seeded with a certified triangulation, then poin
                           check_batches(ps, false, cuts, *rc::gen::inRange<std::size_t>(0, 6),
                                         [](bool ok) { RC_ASSERT(ok); }, true);
                         });
+}
+
+// visible_region_waves against visible_region on any graph of W links a
+// cell and any visibility (not only a triangulation's: the claim is about
+// the search), the filters deciding a random part of the cells: the same
+// region in the same order, the same horizon calls in the same order, every
+// cell decided once; stale stamps of earlier searches left in the marks.
+TEST_CASE("rtd cavity: the two-pass search by waves visits as the one-by-one search (shrinking)", "[rtd_cavity]") {
+  rc::prop("visible_region_waves == visible_region", [] {
+    constexpr int W = 4;
+    const std::uint32_t n = *rc::gen::inRange<std::uint32_t>(1, 60);
+    std::vector<std::uint32_t> links;
+    for (std::uint32_t k = 0; k < n * W; ++k)
+      links.push_back(*rc::gen::inRange<std::uint32_t>(0, n) * W + *rc::gen::inRange<std::uint32_t>(0, W));
+    const auto sees = *rc::gen::container<std::vector<bool>>(n, rc::gen::arbitrary<bool>());
+    const auto filtered = *rc::gen::container<std::vector<bool>>(n, rc::gen::arbitrary<bool>());
+    const std::uint32_t root = *rc::gen::inRange<std::uint32_t>(0, n);
+    const auto old_marks = *rc::gen::container<std::vector<std::uint32_t>>(n, rc::gen::inRange<std::uint32_t>(0, 8));
+    const std::uint32_t in = 8;  // above every old stamp
+    struct Call {
+      std::uint32_t t;
+      int i;
+      std::uint32_t l;
+      bool operator==(const Call& o) const { return t == o.t && i == o.i && l == o.l; }
+    };
+    std::vector<std::uint32_t> mark1 = old_marks, region1;
+    std::vector<Call> h1;
+    std::vector<int> tested1(n, 0);
+    cpu::visible_region<W>(root, links, mark1, in, region1, [&](std::uint32_t u) { ++tested1[u]; return bool(sees[u]); },
+                           [&](std::uint32_t t, int i, std::uint32_t l) { h1.push_back({t, i, l}); });
+    std::vector<std::uint32_t> mark2 = old_marks, region2, pending;
+    std::vector<char> result;
+    std::vector<Call> h2;
+    std::vector<int> tested2(n, 0);
+    cpu::visible_region_waves<W>(
+        root, links, mark2, in, region2, pending, result,
+        [&](std::uint32_t u) {
+          ++tested2[u];
+          return filtered[u] ? int(sees[u]) : 2;
+        },
+        [&](const std::uint32_t* cells, std::size_t m, char* r) {
+          for (std::size_t k = 0; k < m; ++k) {
+            RC_ASSERT(!filtered[cells[k]]);
+            r[k] = sees[cells[k]];
+          }
+        },
+        [&](std::uint32_t t, int i, std::uint32_t l) { h2.push_back({t, i, l}); });
+    RC_ASSERT(region1 == region2);
+    RC_ASSERT(h1 == h2);
+    RC_ASSERT(tested1 == tested2);  // each cell tested (by the filters) at most once, the same cells
+    for (std::uint32_t u : region2) RC_ASSERT(mark2[u] == in);
+  });
 }
 
 TEST_CASE("rtd cavity: a seed that is not a triangulation glued along its facets is refused", "[rtd_cavity]") {
@@ -333,7 +401,8 @@ TEST_CASE("rtd cavity: in-place insertion in batches equals the one-shot kernel 
                           const auto cuts = *rc::gen::container<std::vector<std::size_t>>(
                               *rc::gen::inRange(0, 6), rc::gen::inRange<std::size_t>(0, ps.size() + 1));
                           const std::size_t extra = *rc::gen::inRange<std::size_t>(0, 4);
-                          check_batches(ps, furthest, cuts, extra, [](bool ok) { RC_ASSERT(ok); });
+                          const int threads = *rc::gen::element(1, 2);
+                          check_batches(ps, furthest, cuts, extra, [](bool ok) { RC_ASSERT(ok); }, false, threads);
                         });
 }
 

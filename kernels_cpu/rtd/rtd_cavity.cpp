@@ -40,10 +40,24 @@
 // ridge, so a real new simplex stays positive and a virtual one keeps the
 // orientation rule; across every facet the two tuples still induce opposite
 // orientations.
+//
+// With more than one thread the search runs a wave at a time
+// (visible_region_waves): the cells a wave names are tested by the filters
+// first, and those the filters leave go through the exact stages together,
+// in parallel where their measured cost pays for it (visible_all) — the
+// two passes of thesis §6.4.2 that the GPU hull runs. On exactly degenerate
+// input (decimal and moved lattices) nearly every test is left to the exact
+// stages and those are most of the run; the insertions themselves stay in
+// order. The search visits the same cells in the same order and makes the
+// same horizon calls as the one-by-one search (rtd_cavity_test, "the
+// two-pass search by waves"), so the triangulation, its slots and the
+// counters are those of one thread.
+
 #include "kernels_cpu/rtd/rtd_cavity.hpp"
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -69,7 +83,8 @@ class Builder {
   static constexpr int kKey = D - 1;  // vertices of a cone facet's key (its ridge minus one corner)
 
  public:
-  Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest) : furthest_(furthest) {
+  Builder(const PointSet& ps, const std::vector<Index>& order, bool furthest, int threads, double parallel_min_ns)
+      : furthest_(furthest), threads_(threads), parallel_min_ns_(parallel_min_ns) {
     // Room for the slots the run will use, so that the arrays do not move:
     // each move copies them into fresh pages, and a fresh page costs about
     // 2.4 us on the 2-core VM (a page fault; 3^5 grid: 24,000 slots at the
@@ -213,6 +228,8 @@ class Builder {
   // so that in-place insertion can append positions
   static constexpr std::uint32_t V_ = kDead - 1;
   bool furthest_;
+  int threads_;  // RtdCavityOptions::threads: 1 tests a cavity's cells one by one (visible_region)
+  double parallel_min_ns_;  // RtdCavityOptions::parallel_min_ns
   std::vector<double> xs_, ws_;
   std::vector<pred::PointId> ids_;
   pred::StaticFilter f_;
@@ -227,6 +244,10 @@ class Builder {
     std::uint32_t out;   // link W u + j of the invisible neighbour across it
   };
   std::vector<std::uint32_t> cavity_;
+  std::vector<std::uint32_t> pending_;  // visible_region_waves' undecided cells
+  std::vector<char> result_;
+  std::uint32_t batches_ = 0;  // visible_all's batches, and its latest cost per cell (ns)
+  double cell_ns_ = 0.0;
   std::vector<Horizon> horizon_;
   RidgeTable<kKey> ridges_;  // link_cone's
 
@@ -290,6 +311,66 @@ class Builder {
         return orient(u) > 0;
       }
     return power(v, p) > 0;
+  }
+  // visible()'s first stage alone (lambda_sign_staged's static and
+  // semi-static filters on the same rows): 1 or 0 where they decide, 2
+  // where the exact stages must. On an input of small integers
+  // (StaticFilter::lattice) lambda_sign_staged runs the integer walk before
+  // any filter from kLatticeFirstK rows on (most of those calls are exactly
+  // degenerate): 2 at once there.
+  // Beyond kMaxStagedK rows (8D, 9D) there is no such stage: 2.
+  int visible_fast(std::uint32_t t, std::uint32_t p) const {
+    const std::uint32_t* v = simplex(t);
+    const double* x[W + 1];
+    for (int j = 0; j < W; ++j)
+      if (v[j] == V_) {
+        if constexpr (W > pred::kMaxStagedK) {
+          return 2;
+        } else {
+          if (W >= pred::kLatticeFirstK && f_.lattice(W, false) >= 1) return 2;
+          for (int q = 0; q < W; ++q) x[q] = xs_.data() + static_cast<std::size_t>(q == j ? p : v[q]) * D;
+          const int s = pred::static_semi_static_sign<W>(&f_, x, static_cast<const double*>(nullptr));
+          return s == 0 ? 2 : s > 0;
+        }
+      }
+    if constexpr (W + 1 > pred::kMaxStagedK) {
+      return 2;
+    } else {
+      if (W + 1 >= pred::kLatticeFirstK && f_.lattice(W + 1, true) >= 1) return 2;
+      double w[W + 1];
+      for (int j = 0; j <= W; ++j) {
+        const std::uint32_t q = j < W ? v[j] : p;
+        x[j] = xs_.data() + static_cast<std::size_t>(q) * D;
+        w[j] = ws_[q];
+      }
+      const int s = pred::static_semi_static_sign<W + 1>(&f_, x, w) * (furthest_ ? -1 : 1);
+      return s == 0 ? 2 : s > 0;
+    }
+  }
+  // visible(cells[k], p) into result[k] (the exact stages of a wave's
+  // undecided cells): in parallel where the wave's work pays for the fork
+  // and join. That work differs by three orders of magnitude between inputs
+  // — a call of the integer walk on a small-integer grid costs about a
+  // microsecond, a perturbation's search on a moved or decimal lattice tens
+  // — so it is measured: every kProbe-th batch runs on this thread, timed,
+  // and sets the cost per cell that the next batches are judged by (two
+  // cells at least, and RtdCavityOptions::parallel_min_ns of work
+  // estimated). Only the time taken depends on the clock; every result is
+  // visible()'s. The predicates keep no shared state.
+  static constexpr std::uint32_t kProbe = 16;
+  void visible_all(const std::uint32_t* cells, std::size_t n, std::uint32_t p, char* result) {
+    const bool probe = batches_++ % kProbe == 0;
+    if (probe || n < 2 || cell_ns_ * static_cast<double>(n) < parallel_min_ns_) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t k = 0; k < n; ++k) result[k] = visible(cells[k], p);
+      if (probe)
+        cell_ns_ = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+                   static_cast<double>(n);
+      return;
+    }
+    par_for(n, 1, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k < hi; ++k) result[k] = visible(cells[k], p);
+    });
   }
 
   std::uint32_t take_slot() {
@@ -430,22 +511,27 @@ class Builder {
       last_ = root;
       return;
     }
-    stamp_ += 2;
-    if (stamp_ < 2) {  // wrapped: clear the stamps
+    stamp_ += 4;  // (visible_region_waves' four stamps; visible_region uses two of them)
+    if (stamp_ < 4) {  // wrapped: clear the stamps
       std::fill(mark_.begin(), mark_.end(), 0u);
-      stamp_ = 2;
+      stamp_ = 4;
     }
     horizon_.clear();
-    visible_region<W>(root, tn_, mark_, stamp_, cavity_, [&](std::uint32_t u) { return visible(u, p); },
-                      [&](std::uint32_t t, int i, std::uint32_t l) {
-                        Horizon h;
-                        const std::uint32_t* v = simplex(t);
-                        for (int j = 0; j < W; ++j) h.v[j] = v[j];
-                        h.v[i] = p;
-                        h.i = i;
-                        h.out = l;
-                        horizon_.push_back(h);
-                      });
+    auto on_horizon = [&](std::uint32_t t, int i, std::uint32_t l) {
+      Horizon h;
+      const std::uint32_t* v = simplex(t);
+      for (int j = 0; j < W; ++j) h.v[j] = v[j];
+      h.v[i] = p;
+      h.i = i;
+      h.out = l;
+      horizon_.push_back(h);
+    };
+    if (threads_ == 1)
+      visible_region<W>(root, tn_, mark_, stamp_, cavity_, [&](std::uint32_t u) { return visible(u, p); }, on_horizon);
+    else
+      visible_region_waves<W>(
+          root, tn_, mark_, stamp_, cavity_, pending_, result_, [&](std::uint32_t u) { return visible_fast(u, p); },
+          [&](const std::uint32_t* cells, std::size_t n, char* r) { visible_all(cells, n, p, r); }, on_horizon);
     if (is_virtual(root)) ++st.placed;
     link_cone(st);
     ++st.inserted;
@@ -489,18 +575,19 @@ template <int D>
 struct BuilderOf final : AnyBuilder {
   Builder<D> b;
   BuilderOf(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st)
-      : b(ps, insertion_order<D>(ps, 0, o), o.furthest) {
-    b.run(st);
+      : b(ps, insertion_order<D>(ps, 0, o), o.furthest, o.threads, o.parallel_min_ns) {
+    with_threads(o.threads, [&] { b.run(st); });
   }
   // seeded (RtdCavityIncremental's second constructor)
   BuilderOf(const PointSet& ps, const RtdCavityOptions& o, RtdCavityStats& st, const Index* simplices,
             const std::int64_t* nb, std::size_t m)
-      : b(ps, identity_order(ps.size()), o.furthest) {
+      : b(ps, identity_order(ps.size()), o.furthest, o.threads, o.parallel_min_ns) {
     if (!b.seed(simplices, nb, m, st))
       throw std::invalid_argument("rtd (cpu): the seed simplices and neighbours are not a closed triangulation");
   }
   void append(const PointSet& ps, std::size_t first, const RtdCavityOptions& o, RtdCavityStats& st) override {
-    b.append(ps, insertion_order<D>(ps, first, o), st);
+    const std::vector<Index> order = insertion_order<D>(ps, first, o);
+    with_threads(o.threads, [&] { b.append(ps, order, st); });
   }
   ref::Rtd output() const override { return b.output(); }
 };

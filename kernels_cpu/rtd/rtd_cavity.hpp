@@ -53,7 +53,17 @@ struct RtdCavityOptions {
   // 3,023,334 created).
   std::size_t brio_min = 8;
   bool furthest = false;      // the furthest-site triangulation (ref::rtd_incremental's `furthest`)
-  int threads = 0;            // workers of the BRIO sort (0: the runtime's default); the insertion is sequential
+  // workers (0: the runtime's default) of the BRIO sort and of each cavity's
+  // exact tests (rtd_cavity.cpp, visible_region_waves); the insertions are
+  // sequential, and 1 tests a cavity's cells one by one. The answer does not
+  // depend on it.
+  int threads = 0;
+  // with more than one thread, a wave's exact tests run in parallel where
+  // their work, estimated from the cost per cell of a timed sequential
+  // batch, is at least this many nanoseconds (tuning: the fork and join of
+  // two threads cost a few microseconds on the 2-core VM); 0 sends every
+  // wave of two cells or more (tests)
+  double parallel_min_ns = 40e3;
 };
 
 struct RtdCavityStats {
