@@ -277,7 +277,25 @@ class Builder {
     return any;
   }
 
+  // The sign of K rows: lambda_sign_staged, or with FiltersOnly its first
+  // stage alone — the static and semi-static filters, 0 where they do not
+  // decide. On an input of small integers (StaticFilter::lattice)
+  // lambda_sign_staged runs the integer walk before any filter from
+  // kLatticeFirstK rows on (most of those calls are exactly degenerate), and
+  // beyond kMaxStagedK rows (8D, 9D) it has no such stage: 0 there.
+  template <int K, bool FiltersOnly>
+  int sign_of(const pred::PointId* id, const double* const* x, const double* w) const {
+    if constexpr (!FiltersOnly) {
+      return pred::lambda_sign_staged<K>(&f_, id, x, w);
+    } else if constexpr (K > pred::kMaxStagedK) {
+      return 0;
+    } else {
+      if (K >= pred::kLatticeFirstK && f_.lattice(K, w != nullptr) >= 1) return 0;
+      return pred::static_semi_static_sign<K>(&f_, x, w);
+    }
+  }
   // orient_d of D+1 positions (none virtual)
+  template <bool FiltersOnly = false>
   int orient(const std::uint32_t* u) const {
     pred::PointId id[W];
     const double* p[W];
@@ -285,9 +303,10 @@ class Builder {
       id[j] = ids_[u[j]];
       p[j] = xs_.data() + static_cast<std::size_t>(u[j]) * D;
     }
-    return pred::lambda_sign_staged<W>(&f_, id, p, static_cast<const double*>(nullptr));
+    return sign_of<W, FiltersOnly>(id, p, static_cast<const double*>(nullptr));
   }
   // power_d of a real simplex and p: > 0 iff p̂ strictly below its lifted hyperplane
+  template <bool FiltersOnly = false>
   int power(const std::uint32_t* u, std::uint32_t q) const {
     pred::PointId id[W + 1];
     const double* p[W + 1];
@@ -298,55 +317,28 @@ class Builder {
       p[j] = xs_.data() + static_cast<std::size_t>(x) * D;
       w[j] = ws_[x];
     }
-    const int s = pred::lambda_sign_staged<W + 1>(&f_, id, p, w);
+    const int s = sign_of<W + 1, FiltersOnly>(id, p, w);
     return furthest_ ? -s : s;
   }
-  bool visible(std::uint32_t t, std::uint32_t p) const {
+  // Is p̂ strictly beyond cell t (1) or not (0)? With FiltersOnly, 2 where
+  // the filters do not decide (visible_region_waves' first pass).
+  template <bool FiltersOnly = false>
+  int visibility(std::uint32_t t, std::uint32_t p) const {
     const std::uint32_t* v = simplex(t);
-    for (int j = 0; j < W; ++j)
+    int s = 0;
+    bool virt = false;
+    for (int j = 0; j < W && !virt; ++j)
       if (v[j] == V_) {
         std::uint32_t u[W];
         for (int q = 0; q < W; ++q) u[q] = v[q];
         u[j] = p;
-        return orient(u) > 0;
+        s = orient<FiltersOnly>(u);
+        virt = true;
       }
-    return power(v, p) > 0;
+    if (!virt) s = power<FiltersOnly>(v, p);
+    return FiltersOnly && s == 0 ? 2 : s > 0;
   }
-  // visible()'s first stage alone (lambda_sign_staged's static and
-  // semi-static filters on the same rows): 1 or 0 where they decide, 2
-  // where the exact stages must. On an input of small integers
-  // (StaticFilter::lattice) lambda_sign_staged runs the integer walk before
-  // any filter from kLatticeFirstK rows on (most of those calls are exactly
-  // degenerate): 2 at once there.
-  // Beyond kMaxStagedK rows (8D, 9D) there is no such stage: 2.
-  int visible_fast(std::uint32_t t, std::uint32_t p) const {
-    const std::uint32_t* v = simplex(t);
-    const double* x[W + 1];
-    for (int j = 0; j < W; ++j)
-      if (v[j] == V_) {
-        if constexpr (W > pred::kMaxStagedK) {
-          return 2;
-        } else {
-          if (W >= pred::kLatticeFirstK && f_.lattice(W, false) >= 1) return 2;
-          for (int q = 0; q < W; ++q) x[q] = xs_.data() + static_cast<std::size_t>(q == j ? p : v[q]) * D;
-          const int s = pred::static_semi_static_sign<W>(&f_, x, static_cast<const double*>(nullptr));
-          return s == 0 ? 2 : s > 0;
-        }
-      }
-    if constexpr (W + 1 > pred::kMaxStagedK) {
-      return 2;
-    } else {
-      if (W + 1 >= pred::kLatticeFirstK && f_.lattice(W + 1, true) >= 1) return 2;
-      double w[W + 1];
-      for (int j = 0; j <= W; ++j) {
-        const std::uint32_t q = j < W ? v[j] : p;
-        x[j] = xs_.data() + static_cast<std::size_t>(q) * D;
-        w[j] = ws_[q];
-      }
-      const int s = pred::static_semi_static_sign<W + 1>(&f_, x, w) * (furthest_ ? -1 : 1);
-      return s == 0 ? 2 : s > 0;
-    }
-  }
+  bool visible(std::uint32_t t, std::uint32_t p) const { return visibility(t, p) == 1; }
   // visible(cells[k], p) into result[k] (the exact stages of a wave's
   // undecided cells): in parallel where the wave's work pays for the fork
   // and join. That work differs by three orders of magnitude between inputs
@@ -361,7 +353,7 @@ class Builder {
   void visible_all(const std::uint32_t* cells, std::size_t n, std::uint32_t p, char* result) {
     const bool probe = batches_++ % kProbe == 0;
     if (probe || n < 2 || cell_ns_ * static_cast<double>(n) < parallel_min_ns_) {
-      const auto t0 = std::chrono::steady_clock::now();
+      const auto t0 = probe ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
       for (std::size_t k = 0; k < n; ++k) result[k] = visible(cells[k], p);
       if (probe)
         cell_ns_ = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
@@ -530,7 +522,7 @@ class Builder {
       visible_region<W>(root, tn_, mark_, stamp_, cavity_, [&](std::uint32_t u) { return visible(u, p); }, on_horizon);
     else
       visible_region_waves<W>(
-          root, tn_, mark_, stamp_, cavity_, pending_, result_, [&](std::uint32_t u) { return visible_fast(u, p); },
+          root, tn_, mark_, stamp_, cavity_, pending_, result_, [&](std::uint32_t u) { return visibility<true>(u, p); },
           [&](const std::uint32_t* cells, std::size_t n, char* r) { visible_all(cells, n, p, r); }, on_horizon);
     if (is_virtual(root)) ++st.placed;
     link_cone(st);
