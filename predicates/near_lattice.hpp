@@ -347,12 +347,22 @@ class NlMinors {
   // integer rows' minor (int64, int_slot). Terms with M = 0 cost nothing:
   // their P is not computed (on lattices most of the integer minors are 0).
   int sign(unsigned kr, unsigned kc) {
+    NlAcc acc;
+    if (!poly(kr, kc, acc)) return 2;
+    return acc.lead_sign();
+  }
+
+  // The same minor as a polynomial, added into acc (empty on entry); false
+  // where this stage cannot compute it (more than six moved rows kept, an
+  // overflow, an integer minor out of int64's reach). acc.over may still be
+  // set (an overflow while summing): its reader checks it.
+  bool poly(unsigned kr, unsigned kc, NlAcc& acc) {
     int mv[kNlMaxMoved], m = 0, rowpar = 0, r = 0;
     unsigned ints = 0, mset = 0;
     for (int i = 0; i < K; ++i) {
       if (!(kr & (1u << i))) continue;
       if (L.moved[i]) {
-        if (m == kNlMaxMoved) return 2;
+        if (m == kNlMaxMoved) return false;
         rowpar += r - m;  // moved to the top past the integer rows above it
         mv[m++] = i;
         mset |= 1u << i;
@@ -361,15 +371,17 @@ class NlMinors {
       }
       ++r;
     }
-    if (r == 0) return 1;
+    if (r == 0) {
+      acc.add(0, 1);
+      return true;
+    }
     const int slot = int_slot(ints);
-    if (slot < 0) return 2;
+    if (slot < 0) return false;
     const long long* M = M_[slot];
     if (m == 0) {
-      const long long D = M[kc];
-      return (D > 0) - (D < 0);
+      if (M[kc] != 0) acc.add(0, M[kc]);
+      return true;
     }
-    NlAcc acc;
     if (m == 1) {
       // one moved row: Σ_c (-1)^(pos c) L[mv][c] M(kc \ c)
       const NlEntry* row = L.a[mv[0]];
@@ -389,13 +401,13 @@ class NlMinors {
         const long long D = M[kc & ~S];
         if (D == 0) continue;
         const NlPoly* p = moved_minor(S);
-        if (!p) return 2;
+        if (!p) return false;
         int possum = base;
         for (unsigned U = S; U; U &= U - 1) possum += nl_popcount(kc & ((U & (0u - U)) - 1u));
         acc.add_scaled(*p, (possum & 1) ? -D : D);
       }
     }
-    return acc.lead_sign();
+    return true;
   }
 
  private:

@@ -58,6 +58,7 @@
 #endif
 #include "predicates/expansion.hpp"
 #include "predicates/lambda_filter.hpp"
+#include "predicates/near_lattice.hpp"
 #include "predicates/predicates.hpp"
 #include "reference/canonical.hpp"
 #include "reference/certify/certify.hpp"
@@ -2531,6 +2532,158 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
   for (int l = 0; l < d; ++l) out[l] = c[l];
   return true;
 }
+
+// The centre of a simplex of a lattice moved by some ulp (the slivers the
+// filters above leave: a simplex flat on the lattice and of volume O(ulp)
+// once moved, its centre far out), from the exact minors of the lifted
+// matrix as polynomials in ε = 2^-60 and η = 2^-1074 (predicates/
+// near_lattice.hpp: each value n + a ε + b η with small integers n, a, b).
+// With Λ the (D + 1) x (D + 2) matrix of rows (p_k, |p_k|^2 - w_k, 1), the
+// centre c solves |p_k|^2 - w_k = 2 p_k . c + t for every k, so by Cramer's
+// rule 2 c_l = (-1)^(D - 1 - l) M_l / M_h, M_l the minor of Λ without
+// column l and M_h without the heights' column (the orientation: 0 exactly
+// when its polynomial is 0, the zero-volume answer). Each coordinate is
+// then rounded in one of two ways:
+//  * a filter: a minor's polynomial is η^j A(ε) + R with j its least
+//    η-degree; A(ε) = Σ_i a_i 2^(-60 i) has at most eight int64
+//    coefficients (i < 8), summed in long double (each term exact: a 64-bit
+//    significand, no underflow) within 8 u Σ |terms| (u = 2^-64), and
+//    |R| <= η^j η Σ |c| over R's coefficients (each term of R is some
+//    c ε^i η^j' with j' > j). Where M_l and M_h have the same j, the
+//    quotient's error follows as for the ev_ quotients and rounds_to decides
+//    unless the centre lies within about 2^-62 of its size from a midpoint
+//    between doubles;
+//  * else exactly: both polynomials times 2^(60 i_max + 1074 j_max) are
+//    integers X_l and X_h (GMP, a few hundred to a few thousand bits), and
+//    c_l = ±X_l / (2 X_h) is rounded by round_ratio (ties to even, overflow,
+//    subnormals), as the exact solver rounds its own fraction of the same
+//    value. On the moved lattices (issue 39) centres often fall on or within
+//    2^-60 of a midpoint: their values are half-integers plus multiples of
+//    the moves.
+// 1: out[0..D-1] hold the correctly rounded centre; 0: zero volume; -1: not
+// computed here (a value that does not split, an overflow, more than six
+// moved points): the exact solver's case.
+struct NlValue {
+  bool zero = true;
+  int j = 0;
+  long double a = 0, e = 0;
+};
+
+bool nl_value(const pred::xp::NlAcc& acc, NlValue& v) {
+  if (acc.over) return false;
+  int j = 8;
+  for (std::uint64_t u = acc.used; u; u &= u - 1) {
+    const int e = __builtin_ctzll(u);
+    if (acc.c[e] != 0) j = std::min(j, e & 7);
+  }
+  v = NlValue{};
+  if (j == 8) return true;  // the zero polynomial
+  long double a = 0, abs_sum = 0, rest = 0;
+  for (std::uint64_t u = acc.used; u; u &= u - 1) {
+    const int e = __builtin_ctzll(u);
+    const long double c = static_cast<long double>(acc.c[e]);  // exact: 64 bits
+    if ((e & 7) == j) {
+      const long double t = std::ldexp(c, -60 * (e >> 3));  // exact
+      a += t;
+      abs_sum += std::fabs(t);
+    } else {
+      rest += std::fabs(c);
+    }
+  }
+  v.zero = false;
+  v.j = j;
+  v.a = a;
+  // summation (8 terms at most) and the η^(j + 1) tail; the bounds' own
+  // rounding covered by the factor 2
+  v.e = 2 * (8 * 0x1p-64L * abs_sum + std::ldexp(rest, -1074));
+  return true;
+}
+
+// acc's polynomial at ε = 2^-60, η = 2^-1074, times 2^(60 i_max + 1074 j_max):
+// an integer (acc not overflowed)
+void nl_scaled(const pred::xp::NlAcc& acc, int imax, int jmax, mpz_t out, mpz_t t) {
+  mpz_set_ui(out, 0);
+  for (std::uint64_t u = acc.used; u; u &= u - 1) {
+    const int e = __builtin_ctzll(u);
+    if (acc.c[e] == 0) continue;
+    mpz_set_si(t, static_cast<long>(acc.c[e]));
+    mpz_mul_2exp(t, t, static_cast<mp_bitcnt_t>(60 * (imax - (e >> 3)) + 1074 * (jmax - (e & 7))));
+    mpz_add(out, out, t);
+  }
+}
+
+struct NlCentreScratch {
+  Mpz xl, xh, t, q, r, tmp;
+};
+
+template <int D>
+int nl_centre(const double* const* p, const double* w, double* out, NlCentreScratch& sc) {
+  static_assert(std::numeric_limits<long>::digits >= 63, "mpz_set_si takes the int64 coefficients");
+  constexpr int K = D + 2;
+  static constexpr double kOrigin[K] = {};  // Λ's unused row K - 1 (not in any minor asked)
+  const double* rows[K];
+  double wt[K];
+  for (int k = 0; k <= D; ++k) {
+    rows[k] = p[k];
+    wt[k] = w ? w[k] : 0.0;
+  }
+  rows[K - 1] = kOrigin;
+  wt[K - 1] = 0.0;
+  pred::xp::NlMinors<K> N;  // (on the stack, as in the predicates' near_lattice_sign)
+  if (!pred::xp::nl_build<K>(rows, wt, N.L)) return -1;
+  constexpr unsigned kRows = (1u << (K - 1)) - 1u, kAll = (1u << K) - 1u;
+  pred::xp::NlAcc hacc;
+  NlValue h;
+  if (!N.poly(kRows, kAll & ~(1u << (K - 2)), hacc) || !nl_value(hacc, h)) return -1;
+  if (h.zero) return 0;
+  auto degrees = [](const pred::xp::NlAcc& acc, int& imax, int& jmax) {
+    for (std::uint64_t u = acc.used; u; u &= u - 1) {
+      const int e = __builtin_ctzll(u);
+      if (acc.c[e] != 0) imax = std::max(imax, e >> 3), jmax = std::max(jmax, e & 7);
+    }
+  };
+  double c[D];
+  for (int l = 0; l < D; ++l) {
+    pred::xp::NlAcc acc;
+    NlValue m;
+    if (!N.poly(kRows, kAll & ~(1u << l), acc) || !nl_value(acc, m)) return -1;
+    if (m.zero) {
+      c[l] = 0.0;
+      continue;
+    }
+    const bool negate = ((D - 1 - l) & 1) != 0;
+    if (m.j == h.j && std::fabs(h.a) > h.e) {
+      const long double q = (negate ? -m.a : m.a) / (2 * h.a);
+      const long double ah = std::fabs(h.a);
+      const long double e =
+          ((std::fabs(m.a) * h.e + ah * m.e) / (ah * (ah - h.e)) / 2 + 2 * 0x1p-64L * std::fabs(q)) * (1 + 0x1p-50L);
+      if (rounds_to(q, e, c[l])) continue;
+    }
+    int imax = 0, jmax = 0;
+    degrees(hacc, imax, jmax);
+    degrees(acc, imax, jmax);
+    nl_scaled(acc, imax, jmax, sc.xl.v, sc.t.v);
+    nl_scaled(hacc, imax, jmax, sc.xh.v, sc.t.v);
+    if (negate) mpz_neg(sc.xl.v, sc.xl.v);
+    if (mpz_sgn(sc.xh.v) < 0) {
+      mpz_neg(sc.xh.v, sc.xh.v);
+      mpz_neg(sc.xl.v, sc.xl.v);
+    }
+    c[l] = round_ratio(sc.xl.v, sc.xh.v, -1, sc.q.v, sc.r.v, sc.tmp.v);  // X_l / (2 X_h)
+  }
+  for (int l = 0; l < D; ++l) out[l] = c[l];
+  return 1;
+}
+
+int nl_centre_d(int d, const double* const* p, const double* w, double* out, NlCentreScratch& sc) {
+  switch (d) {
+    case 2: return nl_centre<2>(p, w, out, sc);
+    case 3: return nl_centre<3>(p, w, out, sc);
+    case 4: return nl_centre<4>(p, w, out, sc);
+    case 5: return nl_centre<5>(p, w, out, sc);
+    default: return -1;
+  }
+}
 #endif
 
 // The centre of a simplex of a small-integer lattice (every coordinate an
@@ -2741,6 +2894,9 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
       CentreSolver cs;
       cs.d = d;
+#ifdef FLIPFLOP_VORONOI_FILTER
+      NlCentreScratch nls;
+#endif
       const double* p[kMaxD + 1];
       double w[kMaxD + 1];
       const double* lp[kMaxD + 1];  // the lattice's points (lps)
@@ -2776,6 +2932,12 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
                    : centre_filtered_gauss(d, p, weighted ? w : nullptr, &C[s * d]))
           continue;
         if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
+        // a lattice moved by some ulp: the centre, or zero volume, from the
+        // minors as polynomials (nl_centre)
+        if (const int r = nl_centre_d(d, p, weighted ? w : nullptr, &C[s * d], nls); r >= 0) {
+          if (r == 0) flat[s] = 1;
+          continue;
+        }
 #endif
         // zero volume decided by the exact (unperturbed) orientation first:
         // on lattices most simplices the filter leaves are flat, and the
@@ -3719,6 +3881,33 @@ nb::object _exact_centre(const std::vector<std::vector<double>>& points, std::op
   return nb::make_tuple(M, str(cs->Dn.v), cs->E, cs->used_split);
 }
 
+
+// nl_centre alone, for the tests: the correctly rounded centre of the
+// simplex `points` ((d + 1) x d, optional weights) as a list, False for zero
+// volume, None where it does not decide (the exact solver's case).
+nb::object _near_lattice_centre(const std::vector<std::vector<double>>& points,
+                                std::optional<std::vector<double>> weights) {
+  const int d = static_cast<int>(points.size()) - 1;
+  if (d < 1 || d > kMaxD) throw std::invalid_argument("need d + 1 points, 1 <= d <= 9");
+  for (const auto& q : points)
+    if (static_cast<int>(q.size()) != d) throw std::invalid_argument("each point needs d coordinates");
+  if (weights && static_cast<int>(weights->size()) != d + 1) throw std::invalid_argument("need d + 1 weights");
+  const double* p[kMaxD + 1];
+  for (int k = 0; k <= d; ++k) p[k] = points[static_cast<std::size_t>(k)].data();
+  double c[kMaxD];
+#ifdef FLIPFLOP_VORONOI_FILTER
+  NlCentreScratch sc;
+  const int r = nl_centre_d(d, p, weights ? weights->data() : nullptr, c, sc);
+#else
+  const int r = -1;
+#endif
+  if (r < 0) return nb::none();
+  if (r == 0) return nb::bool_(false);
+  nb::list out;
+  for (int l = 0; l < d; ++l) out.append(c[l]);
+  return out;
+}
+
 }  // namespace
 
 NB_MODULE(_flipflop, m) {
@@ -3773,4 +3962,5 @@ NB_MODULE(_flipflop, m) {
         nb::arg("neighbors").none() = nb::none());
   m.def("_round_ratio", &_round_ratio, nb::arg("M"), nb::arg("D"), nb::arg("E"));
   m.def("_exact_centre", &_exact_centre, nb::arg("points"), nb::arg("weights").none());
+  m.def("_near_lattice_centre", &_near_lattice_centre, nb::arg("points"), nb::arg("weights").none());
 }

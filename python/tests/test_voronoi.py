@@ -160,6 +160,78 @@ def test_vertices_correctly_rounded_4d_5d_weighted_and_near_degenerate(d):
         assert check_rounding(Voronoi(q)) > 20
 
 
+def moved_lattice(rng, k, d, moved=0.2, ulps=2):
+    """The grid {0..k-1}^d with a share of its points moved by `ulps` ulp per
+    coordinate (np.nextafter in a random direction; a moved 0 becomes a
+    subnormal), as docs/bench/lattices.py's benchmark grids."""
+    g = np.array(list(itertools.product(range(k), repeat=d)), dtype=float)
+    for i in rng.choice(len(g), max(1, int(len(g) * moved)), replace=False):
+        for j in range(d):
+            to = np.inf if rng.random() < 0.5 else -np.inf
+            for _ in range(ulps):
+                g[i, j] = np.nextafter(g[i, j], to)
+    return g
+
+
+@pytest.mark.parametrize("d", [2, 3, 4, 5])
+def test_near_lattice_centres_against_fraction(d):
+    """The moved-lattice centre (module.cpp nl_centre: Cramer's rule on the
+    lifted minors as polynomials in 2^-60 and 2^-1074, a long double filter,
+    else the exact integers rounded by round_ratio) alone, on simplices of
+    lattices moved by 1 or 2 ulp (moved zeros: subnormals; + 1: none; with
+    weights that are moved integers too), against the Fraction oracle: every
+    centre it returns correctly rounded, every zero volume exact, and the
+    midpoint ties and subnormal or far-out centres it must round exactly are
+    among those it decides."""
+    rng = np.random.default_rng(1100 + d)
+    decided = flat = ties = extreme = undecided = 0
+    for it in range(1500 if d <= 3 else 700):
+        g = moved_lattice(rng, 3, d, moved=0.4, ulps=1 + it % 2) + (1.0 if it % 3 == 1 else 0.0)
+        if it % 2:  # d + 1 points of one lattice hyperplane x_j = c: flat, or a sliver once moved
+            j, c = rng.integers(d), rng.integers(3) + (1.0 if it % 3 == 1 else 0.0)
+            g = g[np.abs(g[:, j] - c) < 0.5]
+        p = g[rng.choice(len(g), d + 1, replace=False)]
+        w = None
+        if it % 4 == 3:  # weights: integers, some moved by ulps
+            w = rng.integers(-2, 3, d + 1).astype(float)
+            w = np.where(rng.random(d + 1) < 0.5, np.nextafter(w, w + rng.choice([-1.0, 1.0], d + 1)), w)
+        got = _ff._near_lattice_centre(p.tolist(), None if w is None else w.tolist())
+        want = exact_centre(p, w)
+        if got is None:
+            undecided += 1
+            continue
+        if want is None:
+            assert got is False, (p, w)
+            flat += 1
+            continue
+        assert got is not False, (p, w)
+        assert got == [rounded(x) for x in want], (p, w)
+        decided += 1
+        for x in want:
+            if x == 0:
+                continue
+            if abs(x) > 2 ** 1000 or abs(x) < 2 ** -1000:
+                extreme += 1
+                continue
+            h = float(x)
+            # halfway between two doubles, or within 2^-10 ulp of it (beyond a
+            # long double quotient's reach: the exact rounding's cases)
+            ties += (Fraction(math.ulp(h)) / 2 - abs(x - Fraction(h))) * 2 ** 10 <= Fraction(math.ulp(h))
+    print(d, "decided", decided, "flat", flat, "ties", ties, "extreme", extreme, "undecided", undecided)
+    assert decided > 200 and flat > 50 and undecided < decided // 10
+    assert ties > 20 and extreme > 20
+
+
+def test_voronoi_of_moved_lattices_correctly_rounded():
+    """Whole diagrams of moved lattices (the issue-39 benchmark's kind, 3^4 and
+    3^5 subsets): every vertex against the Fraction oracle."""
+    rng = np.random.default_rng(1200)
+    for d, n, shift in ((4, 81, 0.0), (4, 81, 1.0), (5, 60, 0.0)):
+        g = moved_lattice(rng, 3, d) + shift
+        g = g[rng.permutation(len(g))[:n]]
+        assert check_rounding(Voronoi(g)) > 50
+
+
 @pytest.mark.parametrize("d", [2, 3, 4, 5, 6])
 def test_vertices_correctly_rounded_on_integer_lattices(d):
     """Small-integer points (integer weights or none): the centres in 64-bit
