@@ -122,11 +122,12 @@ int main(int argc, char** argv) {
                   ".vtu (d <= 3), .npy, and for d = 2 also .off .obj .ply .stl .svg");
   rtd->add_flag("--ascii", r.ascii, ".ply and .stl output in ASCII (default binary)");
   rtd->add_option("--backend", r.backend,
-                  "cpu (d = 3: kernels_cpu/rt3, multithreaded, as flipflop rt3; d = 2, 4, 5: kernels_cpu/rtd, "
-                  "cavity insertion on one thread; the default for d = 3, 4, 5) or reference (RT+1, the default "
-                  "for d = 2); the same answer byte for byte")
+                  "cpu (d = 3: kernels_cpu/rt3, multithreaded, as flipflop rt3; d = 2, 4..9: kernels_cpu/rtd, "
+                  "cavity insertion, one point after another, each cavity's exact tests shared by the threads "
+                  "where they pay; the default for d = 3..9) or reference (RT+1, the default for d = 2); the "
+                  "same answer byte for byte")
       ->check(CLI::IsMember({"cpu", "reference"}));
-  rtd->add_option("--threads", r.threads, "cpu backend: worker threads (d = 3: the whole kernel; other d: the BRIO sort and the certifier, the insertion on one; default: all cores)")
+  rtd->add_option("--threads", r.threads, "cpu backend: worker threads (d = 3: the whole kernel; other d: the BRIO sort, the cavities' exact tests on degenerate input and the certifier; the same answer at any count; default: all cores)")
       ->check(CLI::PositiveNumber);
   rtd->add_flag("--stats", r.stats, "print counts and timings to standard error");
   rtd->add_flag("--strict", r.strict,

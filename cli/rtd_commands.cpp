@@ -103,8 +103,9 @@ void report_redundant(const char* cmd, const std::vector<Index>& redundant) {
 int run_rtd(const RtdArgs& a) {
   check_dim(a.dim, ref::rtd::kMaxDim);
   // the backend: cpu — kernels_cpu/rt3 for d = 3 (multithreaded), the cavity
-  // kernel kernels_cpu/rtd for d = 2, 4..9 (BRIO sort and certification on
-  // --threads workers, the insertion on one); both return the reference's
+  // kernel kernels_cpu/rtd for d = 2, 4..9 (BRIO sort, each cavity's exact
+  // tests where they pay, and certification on --threads workers; the points
+  // inserted one after another); both return the reference's
   // answer byte for byte and are the default for d = 3..9 — or the reference
   // (RT+1) itself, the default for d = 2, sequential throughout
   const std::string backend = !a.backend.empty() ? a.backend : a.dim == 2 ? "reference" : "cpu";
