@@ -284,13 +284,16 @@ struct NlAcc {
   }
   // += ± x p
   void add_product(const NlEntry& x, const NlPoly& p, bool negate) {
-    for (int s = 0; s < x.n; ++s)
+    for (int s = 0; s < x.n; ++s) {
+      long long xs = x.c[s];
+      if (negate) over |= __builtin_sub_overflow(0LL, xs, &xs);  // (-x) p = -(x p): negated once per monomial
+      const int es = x.e[s];
       for (int t = 0; t < p.n; ++t) {
         long long v;
-        over |= __builtin_mul_overflow(x.c[s], p.c[t], &v);
-        if (negate) over |= __builtin_sub_overflow(0LL, v, &v);
-        add(x.e[s] + p.e[t], v);
+        over |= __builtin_mul_overflow(xs, p.c[t], &v);
+        add(es + p.e[t], v);
       }
+    }
   }
   // the non-zero monomials, in increasing e; false on overflow
   bool to_poly(NlPoly& p) const {
@@ -454,9 +457,28 @@ class NlMinors {
     key_[slot] = ints;
     long long* M = M_[slot];
     M[0] = 1;
-    const NlMasks<K>& T = kNlMasks<K>;
     for (int t = 1; t <= q; ++t) {
       const long long* row = L.n[ir[q - t]];
+      switch (t) {  // the level's loops unrolled for its size (t <= K <= 8)
+        case 1: int_level<1>(row, M); break;
+        case 2: int_level<2>(row, M); break;
+        case 3: int_level<3>(row, M); break;
+        case 4: int_level<4>(row, M); break;
+        case 5: int_level<5>(row, M); break;
+        case 6: int_level<6>(row, M); break;
+        case 7: int_level<7>(row, M); break;
+        default: int_level<8>(row, M); break;
+      }
+    }
+    return slot;
+  }
+
+  // One Laplace level: the minors of the last t rows on every t-column set,
+  // from the level below (row: the new top row).
+  template <int t>
+  static void int_level(const long long* row, long long* M) {
+    if constexpr (t <= K) {
+      const NlMasks<K>& T = kNlMasks<K>;
       for (int k = T.start[t]; k < T.start[t + 1]; ++k) {
         const unsigned char* col = T.col[k];
         const unsigned char* sub = T.sub[k];
@@ -466,7 +488,6 @@ class NlMinors {
         M[T.mask[k]] = sum;
       }
     }
-    return slot;
   }
 
   // The moved rows of the next minors (increasing; mset their mask).
