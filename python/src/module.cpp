@@ -2664,6 +2664,10 @@ int nl_centre(const double* const* p, const double* w, double* out, NlCentreScra
     degrees(acc, imax, jmax);
     nl_scaled(acc, imax, jmax, sc.xl.v, sc.t.v);
     nl_scaled(hacc, imax, jmax, sc.xh.v, sc.t.v);
+    // a non-zero polynomial can still vanish at the units (a_0 + a_1 2^-60 =
+    // 0 with |a_1| = 2^60 |a_0|): zero volume after all, the exact solver's
+    // to say
+    if (mpz_sgn(sc.xh.v) == 0) return -1;
     if (negate) mpz_neg(sc.xl.v, sc.xl.v);
     if (mpz_sgn(sc.xh.v) < 0) {
       mpz_neg(sc.xh.v, sc.xh.v);
