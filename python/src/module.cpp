@@ -2932,16 +2932,18 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
           continue;
         }
 #ifdef FLIPFLOP_VORONOI_FILTER
-        if (d <= 3 ? centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])
-                   : centre_filtered_gauss(d, p, weighted ? w : nullptr, &C[s * d]))
-          continue;
-        if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
         // a lattice moved by some ulp: the centre, or zero volume, from the
-        // minors as polynomials (nl_centre)
+        // minors as polynomials (nl_centre), before the filter, which fails
+        // on such a lattice's slivers; elsewhere its first value that does
+        // not split ends it
         if (const int r = nl_centre_d(d, p, weighted ? w : nullptr, &C[s * d], nls); r >= 0) {
           if (r == 0) flat[s] = 1;
           continue;
         }
+        if (d <= 3 ? centre_filtered(d, p, weighted ? w : nullptr, &C[s * d])
+                   : centre_filtered_gauss(d, p, weighted ? w : nullptr, &C[s * d]))
+          continue;
+        if (timing) exact_count.fetch_add(1, std::memory_order_relaxed);
 #endif
         // zero volume decided by the exact (unperturbed) orientation first:
         // on lattices most simplices the filter leaves are flat, and the
