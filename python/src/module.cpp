@@ -2533,8 +2533,8 @@ bool centre_filtered_gauss(int d, const double* const* p, const double* w, doubl
   return true;
 }
 
-// The centre of a simplex of a lattice moved by some ulp (the slivers the
-// filters above leave: a simplex flat on the lattice and of volume O(ulp)
+// The centre of a simplex of a lattice moved by some ulp (its slivers defeat
+// the filters above: a simplex flat on the lattice and of volume O(ulp)
 // once moved, its centre far out), from the exact minors of the lifted
 // matrix as polynomials in ε = 2^-60 and η = 2^-1074 (predicates/
 // near_lattice.hpp: each value n + a ε + b η with small integers n, a, b).
@@ -2894,6 +2894,20 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
   const bool int_centres = lattice && d <= 6 && (!weighted || std::all_of(lps.weights.begin(), lps.weights.end(), [](double x) {
                              return x == std::trunc(x) && std::fabs(x) < 0x1p40;
                            }));
+  // every value n + a 2^-60 + b 2^-1074 with small integers (near_lattice.hpp
+  // nl_split): a lattice moved by some ulp, whose centres nl_centre computes;
+  // elsewhere it is not asked (on random input the scan stops at its first
+  // value)
+  const bool near_lattice = [&] {
+    long long n0, a0, b0;
+    const double* x = ps.coords.data();
+    for (std::size_t i = 0; i < n * static_cast<std::size_t>(d); ++i)
+      if (!pred::xp::nl_split(x[i], n0, a0, b0)) return false;
+    if (weighted)
+      for (std::size_t i = 0; i < n; ++i)
+        if (!pred::xp::nl_split(ps.weights[i], n0, a0, b0)) return false;
+    return true;
+  }();
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m, 256), [&](const tbb::blocked_range<std::size_t>& rg) {
       CentreSolver cs;
@@ -2934,9 +2948,8 @@ VoronoiResult voronoi_core(const PointSet& ps, const std::int64_t* S, std::size_
 #ifdef FLIPFLOP_VORONOI_FILTER
         // a lattice moved by some ulp: the centre, or zero volume, from the
         // minors as polynomials (nl_centre), before the filter, which fails
-        // on such a lattice's slivers; elsewhere its first value that does
-        // not split ends it
-        if (const int r = nl_centre_d(d, p, weighted ? w : nullptr, &C[s * d], nls); r >= 0) {
+        // on such a lattice's slivers
+        if (const int r = near_lattice ? nl_centre_d(d, p, weighted ? w : nullptr, &C[s * d], nls) : -1; r >= 0) {
           if (r == 0) flat[s] = 1;
           continue;
         }
